@@ -1,0 +1,69 @@
+//! Command-line interface (clap derive). Flags override the values of a `--scenario` file;
+//! what neither gives takes the paper's default set.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+/// Stick-slip models of a physics paper: closed forms checked against exact integration.
+#[derive(Debug, Parser)]
+#[command(name = "stickslip", version, about, long_about = None)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum Command {
+    /// Evaluate every closed form of a model, check it against the exact integration of the
+    /// linearized law, and compare with the harmonic law.
+    Eval {
+        #[command(subcommand)]
+        model: EvalModel,
+    },
+}
+
+#[derive(Debug, Subcommand)]
+pub enum EvalModel {
+    /// The pulled mass pressed by an oscillating normal force (paper Sec. 2).
+    PulledMass(PulledMassArgs),
+}
+
+/// Options shared by every model.
+#[derive(Debug, Args)]
+pub struct CommonArgs {
+    /// Scenario file (TOML) with the parameters; flags given as well override it.
+    #[arg(long, value_name = "FILE")]
+    pub scenario: Option<PathBuf>,
+    /// Periods to integrate (1 to 1000000) [default: 8, or the scenario's].
+    #[arg(long, allow_negative_numbers = true)]
+    pub periods: Option<i64>,
+    /// Print the JSON object of physics.md §7 instead of tables.
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// Parameters of the pulled mass [defaults: the paper's Fig. 6 set].
+#[derive(Debug, Args)]
+pub struct PulledMassArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Static friction coefficient μs [default: 0.4].
+    #[arg(long, allow_negative_numbers = true)]
+    pub mu_s: Option<f64>,
+    /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.25].
+    #[arg(long, allow_negative_numbers = true)]
+    pub mu_d: Option<f64>,
+    /// Mass m of the block in kg (the hanging mass is equal) [default: 0.06].
+    #[arg(long, allow_negative_numbers = true)]
+    pub mass: Option<f64>,
+    /// Spring constant k in N/m [default: 45].
+    #[arg(long, allow_negative_numbers = true)]
+    pub k: Option<f64>,
+    /// Pulling force F in N [default: 0.18].
+    #[arg(long, allow_negative_numbers = true)]
+    pub force: Option<f64>,
+    /// Gravitational acceleration g in m/s² [default: 9.81].
+    #[arg(long, allow_negative_numbers = true)]
+    pub g: Option<f64>,
+}

@@ -1,0 +1,299 @@
+//! Closed-form motion on one piece while slipping.
+//!
+//! With D and N_f affine in b(t), the acceleration while slipping in direction s is
+//! a(t) = A0 + A1 b(t), A = (D − s μd N_f)/M, and
+//!
+//! ```text
+//! linear basis:   v = v_c + a_c w + A1 w²/2,           x = x_c + v_c w + a_c w²/2 + A1 w³/6
+//! cos basis:      v = v_c + A0 w + (A1/ω)(sin ωt − sin ωt_c)
+//!                 x = x_c + v_c w + A0 w²/2 + (A1/ω)[(cos ωt_c − cos ωt)/ω − w sin ωt_c]
+//! ```
+//! with w = t − t_c (physics.md §0). Differences of sines and cosines are written as products
+//! so that short intervals keep their relative accuracy.
+
+use super::law::{Affine, Basis};
+
+/// The motion from a state (t_c, x_c, v_c) under a(t) = A0 + A1 b(t); t is time in the period.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Arc {
+    /// Polynomial motion: a = a_c + jerk·(t − t_c).
+    Poly {
+        t_c: f64,
+        x_c: f64,
+        v_c: f64,
+        a_c: f64,
+        jerk: f64,
+    },
+    /// Trigonometric motion: a = a0 + a1 cos ωt.
+    Trig {
+        t_c: f64,
+        x_c: f64,
+        v_c: f64,
+        a0: f64,
+        a1: f64,
+        omega: f64,
+        sin_c: f64,
+    },
+}
+
+impl Arc {
+    /// The arc starting at (t_c, x_c, v_c) with acceleration `accel` (m/s², affine in b).
+    pub fn new(basis: Basis, accel: Affine, t_c: f64, x_c: f64, v_c: f64) -> Arc {
+        match basis {
+            Basis::Linear { t_ref } => Arc::Poly {
+                t_c,
+                x_c,
+                v_c,
+                a_c: accel.at(t_c - t_ref),
+                jerk: accel.c1,
+            },
+            Basis::Cos { omega } => Arc::Trig {
+                t_c,
+                x_c,
+                v_c,
+                a0: accel.c0,
+                a1: accel.c1,
+                omega,
+                sin_c: (omega * t_c).sin(),
+            },
+        }
+    }
+
+    /// Start time t_c of the arc (s, within the period).
+    pub fn t_start(&self) -> f64 {
+        match *self {
+            Arc::Poly { t_c, .. } | Arc::Trig { t_c, .. } => t_c,
+        }
+    }
+
+    /// Acceleration a(t) (m/s²).
+    #[inline]
+    pub fn a(&self, t: f64) -> f64 {
+        match *self {
+            Arc::Poly { t_c, a_c, jerk, .. } => a_c + jerk * (t - t_c),
+            Arc::Trig { a0, a1, omega, .. } => a0 + a1 * (omega * t).cos(),
+        }
+    }
+
+    /// Velocity v(t) (m/s).
+    #[inline]
+    pub fn v(&self, t: f64) -> f64 {
+        match *self {
+            Arc::Poly {
+                t_c,
+                v_c,
+                a_c,
+                jerk,
+                ..
+            } => {
+                let w = t - t_c;
+                v_c + w * (a_c + 0.5 * jerk * w)
+            }
+            Arc::Trig {
+                t_c,
+                v_c,
+                a0,
+                a1,
+                omega,
+                ..
+            } => {
+                let w = t - t_c;
+                // sin ωt − sin ωt_c = 2 cos(ω(t + t_c)/2) sin(ωw/2)
+                let dsin = 2.0 * (0.5 * omega * (t + t_c)).cos() * (0.5 * omega * w).sin();
+                v_c + a0 * w + a1 / omega * dsin
+            }
+        }
+    }
+
+    /// Position x(t) (m).
+    #[inline]
+    pub fn x(&self, t: f64) -> f64 {
+        match *self {
+            Arc::Poly {
+                t_c,
+                x_c,
+                v_c,
+                a_c,
+                jerk,
+            } => {
+                let w = t - t_c;
+                x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0))
+            }
+            Arc::Trig {
+                t_c,
+                x_c,
+                v_c,
+                a0,
+                a1,
+                omega,
+                sin_c,
+            } => {
+                let w = t - t_c;
+                // cos ωt_c − cos ωt = 2 sin(ω(t + t_c)/2) sin(ωw/2)
+                let dcos = 2.0 * (0.5 * omega * (t + t_c)).sin() * (0.5 * omega * w).sin();
+                x_c + v_c * w + 0.5 * a0 * w * w + a1 / omega * (dcos / omega - w * sin_c)
+            }
+        }
+    }
+
+    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two).
+    pub fn accel_zeros(&self, lo: f64, hi: f64) -> Vec<f64> {
+        let mut zeros = Vec::with_capacity(2);
+        match *self {
+            Arc::Poly { t_c, a_c, jerk, .. } => {
+                if jerk != 0.0 {
+                    zeros.push(t_c - a_c / jerk);
+                }
+            }
+            Arc::Trig { a0, a1, omega, .. } => {
+                zeros.extend(
+                    cos_level_crossings(a0, a1, omega, lo, hi)
+                        .into_iter()
+                        .map(|c| c.0),
+                );
+            }
+        }
+        zeros.retain(|&t| t > lo && t < hi);
+        zeros
+    }
+
+    /// ∫ s·N_f(t)·v(t) dt over [t0, t1] on which v keeps its sign, by Gauss–Legendre
+    /// quadrature (exact for the polynomial arcs, ~1e-15 relative for the trigonometric ones
+    /// on intervals up to half a period).
+    pub fn integrate_normal_times_speed(
+        &self,
+        normal: impl Fn(f64) -> f64,
+        t0: f64,
+        t1: f64,
+    ) -> f64 {
+        let (nodes, weights): (&[f64], &[f64]) = match self {
+            Arc::Poly { .. } => (&GL2_NODES, &GL2_WEIGHTS),
+            Arc::Trig { .. } => (&GL8_NODES, &GL8_WEIGHTS),
+        };
+        let half = 0.5 * (t1 - t0);
+        let mid = 0.5 * (t1 + t0);
+        let sum: f64 = nodes
+            .iter()
+            .zip(weights)
+            .map(|(&xi, &wi)| {
+                let t = mid + half * xi;
+                wi * normal(t) * self.v(t).abs()
+            })
+            .sum();
+        half * sum
+    }
+}
+
+/// Solutions in [lo, hi) of c0 + c1 cos ωt = 0 with t in [0, 2π/ω], each with the sign of the
+/// derivative there (+1 up-crossing, −1 down-crossing), ascending. A tangency (|c0| = |c1|) is
+/// not a crossing and is not returned.
+pub fn cos_level_crossings(c0: f64, c1: f64, omega: f64, lo: f64, hi: f64) -> Vec<(f64, i8)> {
+    let mut out = Vec::with_capacity(2);
+    if c1 == 0.0 {
+        return out;
+    }
+    let r = -c0 / c1;
+    if !(r > -1.0 && r < 1.0) {
+        return out;
+    }
+    let theta = r.acos();
+    let period = std::f64::consts::TAU / omega;
+    // d/dt (c1 cos ωt) = −c1 ω sin ωt: sin > 0 on (0, π), < 0 on (π, 2π).
+    let first = theta / omega;
+    let second = period - first;
+    let up_first: i8 = if c1 < 0.0 { 1 } else { -1 };
+    for (t, dir) in [(first, up_first), (second, -up_first)] {
+        if t >= lo && t < hi {
+            out.push((t, dir));
+        }
+    }
+    out
+}
+
+const GL2_NODES: [f64; 2] = [-0.577_350_269_189_625_8, 0.577_350_269_189_625_8];
+const GL2_WEIGHTS: [f64; 2] = [1.0, 1.0];
+const GL8_NODES: [f64; 8] = [
+    -0.960_289_856_497_536_3,
+    -0.796_666_477_413_626_7,
+    -0.525_532_409_916_329,
+    -0.183_434_642_495_649_8,
+    0.183_434_642_495_649_8,
+    0.525_532_409_916_329,
+    0.796_666_477_413_626_7,
+    0.960_289_856_497_536_3,
+];
+const GL8_WEIGHTS: [f64; 8] = [
+    0.101_228_536_290_376_26,
+    0.222_381_034_453_374_47,
+    0.313_706_645_877_887_3,
+    0.362_683_783_378_362,
+    0.362_683_783_378_362,
+    0.313_706_645_877_887_3,
+    0.222_381_034_453_374_47,
+    0.101_228_536_290_376_26,
+];
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Numerical derivative check: x' = v and v' = a for both kinds of arc.
+    #[test]
+    fn arcs_are_consistent_derivatives() {
+        let arcs = [
+            Arc::new(
+                Basis::Linear { t_ref: 0.1 },
+                Affine::new(1.5, -7.0),
+                0.3,
+                0.2,
+                0.4,
+            ),
+            Arc::new(
+                Basis::Cos { omega: 9.0 },
+                Affine::new(0.5, -2.0),
+                0.3,
+                0.2,
+                0.4,
+            ),
+        ];
+        for arc in arcs {
+            for &t in &[0.31, 0.5, 0.7] {
+                let h = 1e-6;
+                let dx = (arc.x(t + h) - arc.x(t - h)) / (2.0 * h);
+                let dv = (arc.v(t + h) - arc.v(t - h)) / (2.0 * h);
+                assert!((dx - arc.v(t)).abs() < 1e-8, "{arc:?} x' at {t}");
+                assert!((dv - arc.a(t)).abs() < 1e-7, "{arc:?} v' at {t}");
+            }
+            assert_eq!(arc.v(0.3), 0.4);
+            assert_eq!(arc.x(0.3), 0.2);
+        }
+    }
+
+    #[test]
+    fn cos_crossings_have_the_right_direction() {
+        let omega = 2.0;
+        let period = std::f64::consts::TAU / omega;
+        // g = 0.5 − cos ωt: up-crossing at ωt = π/3, down-crossing at 5π/3.
+        let c = cos_level_crossings(0.5, -1.0, omega, 0.0, period);
+        assert_eq!(c.len(), 2);
+        assert!((c[0].0 - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
+        assert_eq!((c[0].1, c[1].1), (1, -1));
+        // Tangency is not a crossing.
+        assert!(cos_level_crossings(1.0, 1.0, omega, 0.0, period).is_empty());
+    }
+
+    #[test]
+    fn gauss_legendre_is_exact_for_cubics() {
+        let arc = Arc::new(
+            Basis::Linear { t_ref: 0.0 },
+            Affine::new(1.0, 2.0),
+            0.0,
+            0.0,
+            1.0,
+        );
+        // v = 1 + t + t², N = 3 − t: ∫0^1 (3 − t)(1 + t + t²) dt = 3·(1+1/2+1/3) − (1/2+1/3+1/4)
+        let exact = 3.0 * (11.0 / 6.0) - 13.0 / 12.0;
+        let got = arc.integrate_normal_times_speed(|t| 3.0 - t, 0.0, 1.0);
+        assert!((got - exact).abs() < 1e-14);
+    }
+}

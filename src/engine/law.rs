@@ -1,0 +1,146 @@
+//! Force laws as data: a period tiled by pieces on which the driving force D and the
+//! friction-bearing normal force N_f are affine in one basis function b(t).
+
+use crate::error::{Error, Result};
+
+/// The basis function b(t) of a piece; t is the time within the period (s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Basis {
+    /// b(t) = t − t_ref (s): the triangle-wave (linearized) laws.
+    Linear { t_ref: f64 },
+    /// b(t) = cos ωt (ω in rad/s): the harmonic laws.
+    Cos { omega: f64 },
+}
+
+impl Basis {
+    /// b(t) at time t within the period.
+    #[inline]
+    pub fn eval(&self, t: f64) -> f64 {
+        match *self {
+            Basis::Linear { t_ref } => t - t_ref,
+            Basis::Cos { omega } => (omega * t).cos(),
+        }
+    }
+}
+
+/// An affine function of the basis, c0 + c1·b(t) (units of the quantity it stands for).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Affine {
+    pub c0: f64,
+    pub c1: f64,
+}
+
+impl Affine {
+    pub const fn new(c0: f64, c1: f64) -> Self {
+        Self { c0, c1 }
+    }
+
+    /// Value at basis value b.
+    #[inline]
+    pub fn at(&self, b: f64) -> f64 {
+        self.c0 + self.c1 * b
+    }
+
+    /// a·self + c·other.
+    #[inline]
+    pub fn combine(a: f64, x: Affine, c: f64, y: Affine) -> Affine {
+        Affine::new(a * x.c0 + c * y.c0, a * x.c1 + c * y.c1)
+    }
+}
+
+/// One piece of a force law, on [start, end) within the period (s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Piece {
+    pub start: f64,
+    pub end: f64,
+    pub basis: Basis,
+    /// Driving force D along the motion axis (N).
+    pub drive: Affine,
+    /// Friction-bearing normal force N_f ≥ 0 (N).
+    pub normal: Affine,
+}
+
+impl Piece {
+    /// D(t) (N).
+    pub fn drive_at(&self, t: f64) -> f64 {
+        self.drive.at(self.basis.eval(t))
+    }
+
+    /// N_f(t) (N).
+    pub fn normal_at(&self, t: f64) -> f64 {
+        self.normal.at(self.basis.eval(t))
+    }
+}
+
+/// A periodic force law: pieces tiling [0, period).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ForceLaw {
+    /// Period T (s).
+    pub period: f64,
+    pub pieces: Vec<Piece>,
+}
+
+impl ForceLaw {
+    /// Checks that the pieces are finite and tile [0, period) in order.
+    pub fn new(period: f64, pieces: Vec<Piece>) -> Result<Self> {
+        if !(period.is_finite() && period > 0.0) {
+            return Err(Error::InvalidLaw(format!(
+                "period {period} s must be finite and > 0"
+            )));
+        }
+        let mut expected = 0.0;
+        for p in &pieces {
+            let finite = [
+                p.start,
+                p.end,
+                p.drive.c0,
+                p.drive.c1,
+                p.normal.c0,
+                p.normal.c1,
+            ]
+            .iter()
+            .all(|c| c.is_finite());
+            if !finite || p.start != expected || p.end <= p.start {
+                return Err(Error::InvalidLaw(format!(
+                    "piece [{}, {}) does not continue the tiling at {expected} s",
+                    p.start, p.end
+                )));
+            }
+            expected = p.end;
+        }
+        if pieces.is_empty() || expected != period {
+            return Err(Error::InvalidLaw(format!(
+                "pieces end at {expected} s, not at the period {period} s"
+            )));
+        }
+        Ok(Self { period, pieces })
+    }
+
+    /// The piece containing time t (absolute, s); t is reduced modulo the period.
+    pub fn piece_at(&self, t: f64) -> &Piece {
+        let local = t.rem_euclid(self.period);
+        let i = self.pieces.partition_point(|p| p.end <= local);
+        &self.pieces[i.min(self.pieces.len() - 1)]
+    }
+
+    /// D(t) at absolute time t (N).
+    pub fn drive(&self, t: f64) -> f64 {
+        self.piece_at(t).drive_at(t.rem_euclid(self.period))
+    }
+
+    /// N_f(t) at absolute time t (N).
+    pub fn normal(&self, t: f64) -> f64 {
+        self.piece_at(t).normal_at(t.rem_euclid(self.period))
+    }
+}
+
+/// The body: inertial mass and friction coefficients.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Body {
+    /// Inertial mass M (kg).
+    pub mass: f64,
+    /// Static friction coefficient μs.
+    pub mu_s: f64,
+    /// Dynamic friction coefficient μd ≤ μs.
+    pub mu_d: f64,
+}

@@ -1,0 +1,368 @@
+//! The driver: walks the force law piece by piece through the requested periods, switching
+//! between STUCK and SLIP at located events, and records events, per-period positions and
+//! friction dissipation.
+
+use super::arc::Arc;
+use super::law::{Affine, Body, ForceLaw, Piece};
+use super::roots::{first_up_crossing, monotone_zero};
+use crate::error::{Error, Result};
+
+/// Events of the first `KEEP_FIRST` and the last `KEEP_LAST` periods are kept; that is all the
+/// checks (first cycle) and the steady-state analysis (multiplicity ≤ 4) read, and it bounds
+/// memory for runs of up to 10⁶ periods.
+const KEEP_FIRST: u32 = 2;
+const KEEP_LAST: u32 = 10;
+/// A local minimum of s·v below this fraction of the speed before it is a tangential stick.
+const TOUCH_REL: f64 = 1e-13;
+/// More transitions than this inside one piece means the state machine cannot advance.
+const MAX_TRANSITIONS_PER_PIECE: u32 = 64;
+
+/// What happened at an event.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// Slip onset from rest in direction `dir` (±1).
+    Slip { dir: i8 },
+    /// Return to rest after slipping in direction `dir`.
+    Stick { dir: i8 },
+    /// v returned to 0 where |D| > μs N_f: the slip goes on in the other direction.
+    Reversal { from: i8, to: i8 },
+    /// A local maximum of the speed |v| while slipping.
+    SpeedMax,
+}
+
+/// One located event.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Event {
+    /// Absolute time (s), t = 0 at the start of the first period.
+    pub t: f64,
+    /// Index of the period the event falls in.
+    pub period: u32,
+    pub kind: EventKind,
+    /// Position (m) and velocity (m/s) at the event.
+    pub x: f64,
+    pub v: f64,
+}
+
+impl Event {
+    /// True for slip, stick and reversal events (not speed maxima).
+    pub fn is_transition(&self) -> bool {
+        !matches!(self.kind, EventKind::SpeedMax)
+    }
+}
+
+/// What the body does during a recorded segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Motion {
+    Rest { x: f64 },
+    Slide { arc: Arc },
+}
+
+/// A piece of the trajectory, [t0, t1] in absolute time (s), for sampling x, v, a.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub t0: f64,
+    pub t1: f64,
+    /// Absolute time of the start of the period the segment lies in (arcs use local time).
+    pub period_start: f64,
+    pub motion: Motion,
+}
+
+/// Options of a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RunOptions {
+    /// Number of periods to integrate.
+    pub periods: u32,
+    /// Keep every segment of the trajectory (for figures and time series).
+    pub record_segments: bool,
+}
+
+/// The outcome of an integration.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Run {
+    /// Period T (s) and number of periods integrated.
+    pub period: f64,
+    pub periods: u32,
+    /// |D(0)| > μs N_f(0): the body slips at once.
+    pub immediate_slip: bool,
+    /// Time of the first slip onset (s), if any.
+    pub first_slip: Option<f64>,
+    /// Events of the first and the last periods, in time order (see `KEEP_FIRST`, `KEEP_LAST`).
+    pub events: Vec<Event>,
+    /// Position (m) and velocity (m/s) at the start of each period and at the end (periods + 1).
+    pub x_at_period_start: Vec<f64>,
+    pub v_at_period_start: Vec<f64>,
+    /// Friction dissipation ∫ μd N_f |v| dt in each period (J).
+    pub dissipation: Vec<f64>,
+    /// Recorded segments (empty unless asked for).
+    pub segments: Vec<Segment>,
+}
+
+impl Run {
+    /// (x, v, a) at absolute time t from the recorded segments, if t is covered.
+    pub fn state_at(&self, t: f64) -> Option<(f64, f64, f64)> {
+        let i = self.segments.partition_point(|s| s.t1 < t);
+        let seg = self.segments.get(i)?;
+        if t < seg.t0 {
+            return None;
+        }
+        Some(match seg.motion {
+            Motion::Rest { x } => (x, 0.0, 0.0),
+            Motion::Slide { arc } => {
+                let local = t - seg.period_start;
+                (arc.x(local), arc.v(local), arc.a(local))
+            }
+        })
+    }
+
+    /// Whether the body is at rest at absolute time t (recorded segments only).
+    pub fn stuck_at(&self, t: f64) -> Option<bool> {
+        let i = self.segments.partition_point(|s| s.t1 < t);
+        self.segments
+            .get(i)
+            .map(|s| matches!(s.motion, Motion::Rest { .. }))
+    }
+}
+
+/// Keeps the events that are needed and merges a stick and a slip at the same instant.
+struct Recorder {
+    events: Vec<Event>,
+    periods: u32,
+    period: f64,
+    snap: f64,
+    last_transition: Option<Event>,
+    first_slip: Option<f64>,
+}
+
+impl Recorder {
+    fn keeps(&self, n: u32) -> bool {
+        n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
+    }
+
+    fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
+        let t = f64::from(n) * self.period + t_local;
+        let mut event = Event {
+            t,
+            period: n,
+            kind,
+            x,
+            v,
+        };
+        if let EventKind::Slip { dir } = kind {
+            self.first_slip.get_or_insert(t);
+            if let Some(last) = self.last_transition {
+                let same_instant = (t - last.t).abs() <= self.snap * (1.0 + f64::from(n));
+                if let (EventKind::Stick { dir: was }, true) = (last.kind, same_instant) {
+                    // A stick and a slip at one instant are one event: a touch (v grazes 0 and
+                    // the slip goes on) or a reversal.
+                    if self.events.last() == Some(&last) {
+                        self.events.pop();
+                    }
+                    if was == dir {
+                        self.last_transition = None;
+                        return;
+                    }
+                    event = Event {
+                        kind: EventKind::Reversal { from: was, to: dir },
+                        ..last
+                    };
+                }
+            }
+        }
+        if event.is_transition() {
+            self.last_transition = Some(event);
+        }
+        if self.keeps(event.period) {
+            self.events.push(event);
+        }
+    }
+}
+
+/// The result of sliding through (part of) a piece.
+struct Slide {
+    /// Stick time (s, local), if the body came to rest.
+    stick: Option<f64>,
+    /// ∫ N_f |v| dt over the slide (N·m).
+    normal_work: f64,
+}
+
+/// Integrates `body` under `law` from rest at x = 0, t = 0 for `opts.periods` periods.
+pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> {
+    let period = law.period;
+    let snap = 8.0 * f64::EPSILON * period;
+    let periods = opts.periods;
+    let first = &law.pieces[0];
+    let immediate_slip = first.drive_at(0.0).abs() > body.mu_s * first.normal_at(0.0);
+    let mut rec = Recorder {
+        events: Vec::new(),
+        periods,
+        period,
+        snap,
+        last_transition: None,
+        first_slip: None,
+    };
+    let cap = periods as usize + 1;
+    let mut x_at_period_start = Vec::with_capacity(cap);
+    let mut v_at_period_start = Vec::with_capacity(cap);
+    let mut dissipation = Vec::with_capacity(cap);
+    let mut segments = Vec::new();
+    let (mut x, mut v) = (0.0_f64, 0.0_f64);
+    // Direction of slip, 0 when stuck.
+    let mut dir: i8 = 0;
+    // Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
+    let mut accel_sign: i8 = 0;
+
+    for n in 0..periods {
+        let period_start = f64::from(n) * period;
+        x_at_period_start.push(x);
+        v_at_period_start.push(v);
+        let mut normal_work = 0.0;
+        for piece in &law.pieces {
+            let mut t = piece.start;
+            let mut transitions = 0;
+            loop {
+                transitions += 1;
+                if transitions > MAX_TRANSITIONS_PER_PIECE {
+                    return Err(Error::Stalled {
+                        t: period_start + t,
+                        reason: "too many transitions within one piece of the force law",
+                    });
+                }
+                if dir == 0 {
+                    let onset = slip_onset(body, piece, t, snap);
+                    let t_end = onset.map_or(piece.end, |(t_slip, _)| t_slip);
+                    if opts.record_segments && t_end > t {
+                        segments.push(Segment {
+                            t0: period_start + t,
+                            t1: period_start + t_end,
+                            period_start,
+                            motion: Motion::Rest { x },
+                        });
+                    }
+                    let Some((t_slip, s)) = onset else { break };
+                    rec.push(n, t_slip, EventKind::Slip { dir: s }, x, 0.0);
+                    dir = s;
+                    accel_sign = 0;
+                    t = t_slip;
+                    continue;
+                }
+                let s = f64::from(dir);
+                let accel = Affine::combine(
+                    1.0 / body.mass,
+                    piece.drive,
+                    -s * body.mu_d / body.mass,
+                    piece.normal,
+                );
+                let arc = Arc::new(piece.basis, accel, t, x, v);
+                let slide = slide(&arc, dir, piece, t, snap, &mut accel_sign, |tm| {
+                    rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
+                });
+                normal_work += slide.normal_work;
+                let t_end = slide.stick.unwrap_or(piece.end);
+                if opts.record_segments && t_end > t {
+                    segments.push(Segment {
+                        t0: period_start + t,
+                        t1: period_start + t_end,
+                        period_start,
+                        motion: Motion::Slide { arc },
+                    });
+                }
+                x = arc.x(t_end);
+                match slide.stick {
+                    Some(t_stick) => {
+                        v = 0.0;
+                        rec.push(n, t_stick, EventKind::Stick { dir }, x, 0.0);
+                        dir = 0;
+                        t = t_stick;
+                    }
+                    None => {
+                        v = arc.v(t_end);
+                        break;
+                    }
+                }
+            }
+        }
+        dissipation.push(body.mu_d * normal_work);
+    }
+    x_at_period_start.push(x);
+    v_at_period_start.push(v);
+    Ok(Run {
+        period,
+        periods,
+        immediate_slip,
+        first_slip: rec.first_slip,
+        events: rec.events,
+        x_at_period_start,
+        v_at_period_start,
+        dissipation,
+        segments,
+    })
+}
+
+/// Earliest slip onset in [from, piece.end) from rest, with its direction.
+fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(f64, i8)> {
+    [1i8, -1]
+        .into_iter()
+        .filter_map(|s| {
+            // g = s·D − μs N_f > 0 ⇔ the static friction cannot hold the body in direction s.
+            let g = Affine::combine(f64::from(s), piece.drive, -body.mu_s, piece.normal);
+            first_up_crossing(piece.basis, g, from, piece.end, snap).map(|t| (t, s))
+        })
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+}
+
+/// Slides along `arc` from `from` to the end of the piece or to the first stick. The interval
+/// is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is reported
+/// where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of a).
+fn slide(
+    arc: &Arc,
+    dir: i8,
+    piece: &Piece,
+    from: f64,
+    snap: f64,
+    accel_sign: &mut i8,
+    mut on_max: impl FnMut(f64),
+) -> Slide {
+    let s = f64::from(dir);
+    let speed = |t: f64| s * arc.v(t);
+    let normal = |t: f64| piece.normal_at(t);
+    let mut bounds = arc.accel_zeros(from + snap, piece.end - snap);
+    bounds.push(piece.end);
+    let mut p = from;
+    let mut normal_work = 0.0;
+    for (i, &q) in bounds.iter().enumerate() {
+        let sign = (s * arc.a(0.5 * (p + q))).signum() as i8;
+        if *accel_sign > 0 && sign < 0 {
+            on_max(p);
+        }
+        if sign != 0 {
+            *accel_sign = sign;
+        }
+        if sign < 0 {
+            let speed_p = speed(p);
+            let speed_q = speed(q);
+            let at_zero_of_a = i + 1 < bounds.len();
+            let stick = if speed_p <= 0.0 {
+                Some(p)
+            } else if speed_q <= 0.0 {
+                Some(monotone_zero(speed, |t| s * arc.a(t), p, q))
+            } else if at_zero_of_a && speed_q <= TOUCH_REL * speed_p {
+                Some(q)
+            } else {
+                None
+            };
+            if let Some(t_stick) = stick {
+                normal_work += arc.integrate_normal_times_speed(normal, p, t_stick);
+                return Slide {
+                    stick: Some(t_stick),
+                    normal_work,
+                };
+            }
+        }
+        normal_work += arc.integrate_normal_times_speed(normal, p, q);
+        p = q;
+    }
+    Slide {
+        stick: None,
+        normal_work,
+    }
+}

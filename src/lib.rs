@@ -1,0 +1,25 @@
+//! # stickslip
+//!
+//! Stick-slip models of Moggio, Onorato & Oss (Phys. Educ.): a pulled mass pressed by an
+//! oscillating normal force, and the falling woodpecker toy. Every closed form of the paper's
+//! linearized (triangle-wave) law is evaluated and checked against an exact, event-driven
+//! integration of the same non-smooth equations; the harmonic law is integrated exactly too.
+//!
+//! ```text
+//! params (clap / TOML, validated) → model (forces as data) → engine (exact, events located)
+//!        → results (serde) → checks (closed form vs numeric) → output (text, JSON)
+//! ```
+//!
+//! Both models are the same system: one body of mass M with Coulomb friction under a prescribed
+//! driving force D(t) and friction-bearing normal force N_f(t) (physics.md §0). The engine in
+//! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
+//! force law.
+
+pub mod cli;
+pub mod engine;
+pub mod error;
+pub mod formula;
+pub mod model;
+pub mod output;
+pub mod params;
+pub mod results;

@@ -1,0 +1,119 @@
+//! `stickslip`: thin entry point. Parses the command line, runs it, prints the error chain.
+//!
+//! Exit codes: 0 success; 2 bad input (usage, parameter out of range, unreadable or malformed
+//! scenario, unwritable output); 1 an internal failure of the engine.
+
+use std::io::Write;
+use std::path::Path;
+use std::process::ExitCode;
+
+use anyhow::{Context, Result};
+use clap::Parser;
+
+use stickslip::cli::{Cli, Command, CommonArgs, EvalModel, PulledMassArgs};
+use stickslip::error::Error;
+use stickslip::params::{invalid, PulledMassParams, Scenario, DEFAULT_PERIODS};
+use stickslip::{output, results};
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) if e.use_stderr() => {
+            // One line: clap's first line names the flag and the problem.
+            let text = e.render().to_string();
+            eprintln!("{}", text.lines().next().unwrap_or("error: invalid usage"));
+            return ExitCode::from(2);
+        }
+        Err(e) => {
+            let _ = e.print();
+            return ExitCode::SUCCESS;
+        }
+    };
+    match run(cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            let internal = matches!(e.downcast_ref::<Error>(), Some(Error::Stalled { .. }));
+            ExitCode::from(if internal { 1 } else { 2 })
+        }
+    }
+}
+
+fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Eval { model } => match model {
+            EvalModel::PulledMass(args) => eval_pulled_mass(&args),
+        },
+    }
+}
+
+/// The scenario (if any) and the number of periods, flags first.
+fn load_common(common: &CommonArgs) -> Result<(Option<Scenario>, u32)> {
+    let scenario = common.scenario.as_deref().map(Scenario::load).transpose()?;
+    let periods = match common.periods {
+        Some(n) => u32::try_from(n).map_err(|_| {
+            invalid(
+                "periods",
+                n,
+                format!("1 <= periods <= {}", stickslip::params::MAX_PERIODS),
+            )
+        })?,
+        None => scenario
+            .as_ref()
+            .and_then(|s| s.periods)
+            .unwrap_or(DEFAULT_PERIODS),
+    };
+    Ok((scenario, periods))
+}
+
+fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
+    let (scenario, periods) = load_common(&args.common)?;
+    let mut p: PulledMassParams = match (&scenario, &args.common.scenario) {
+        (Some(s), Some(path)) => {
+            ensure_model(s, stickslip::params::ModelName::PulledMass, path)?;
+            s.params(path)?
+        }
+        _ => PulledMassParams::default(),
+    };
+    let set = |slot: &mut f64, flag: Option<f64>| {
+        if let Some(v) = flag {
+            *slot = v;
+        }
+    };
+    set(&mut p.mu_s, args.mu_s);
+    set(&mut p.mu_d, args.mu_d);
+    set(&mut p.mass, args.mass);
+    set(&mut p.k, args.k);
+    set(&mut p.force, args.force);
+    set(&mut p.g, args.g);
+    let evaluation = results::pulled_mass::evaluate(&p, periods)?;
+    let text = if args.common.json {
+        serde_json::to_string_pretty(&evaluation)? + "\n"
+    } else {
+        output::text::pulled_mass(&evaluation)
+    };
+    print_stdout(&text)
+}
+
+fn ensure_model(s: &Scenario, want: stickslip::params::ModelName, path: &Path) -> Result<()> {
+    if s.model != want {
+        return Err(Error::Scenario {
+            path: path.display().to_string(),
+            reason: format!("describes model {:?}, not {:?}", s.model, want),
+        }
+        .into());
+    }
+    Ok(())
+}
+
+fn print_stdout(text: &str) -> Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        // A closed pipe (`| head`) is not an error of ours.
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other.context("writing to standard output"),
+    }
+}

@@ -1,0 +1,4 @@
+//! Rendering of results for people: number formatting and the terminal tables of `eval`.
+
+pub mod format;
+pub mod text;

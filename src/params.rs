@@ -1,0 +1,228 @@
+//! Input parameters: serde structs with the paper's values as defaults, validation that names
+//! the rule, and scenario files (TOML).
+
+use std::path::Path;
+
+use serde::{Deserialize, Serialize};
+
+use crate::error::{Error, Result};
+
+/// Standard gravity used throughout the paper (m/s²).
+pub const G_STANDARD: f64 = 9.81;
+/// Largest number of periods a run may ask for.
+pub const MAX_PERIODS: u32 = 1_000_000;
+/// Periods integrated unless asked otherwise (physics.md §0: 8–12).
+pub const DEFAULT_PERIODS: u32 = 8;
+
+/// The pulled mass of Sec. 2 (physics.md §1). Defaults: the paper's Fig. 6 set.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct PulledMassParams {
+    /// Static friction coefficient μs.
+    pub mu_s: f64,
+    /// Dynamic friction coefficient μd (0 < μd ≤ μs).
+    pub mu_d: f64,
+    /// Mass m of the block (kg); the hanging mass m' = m, so the inertial mass is 2m.
+    pub mass: f64,
+    /// Spring constant k (N/m) of the hanging mass' spring.
+    pub k: f64,
+    /// Constant pulling force F (N).
+    pub force: f64,
+    /// Gravitational acceleration g (m/s²).
+    pub g: f64,
+}
+
+impl Default for PulledMassParams {
+    /// The Fig. 6 set: μs = 0.4, μd = 0.25, m = 0.06 kg, k = 45 N/m, F = 0.18 N.
+    fn default() -> Self {
+        Self {
+            mu_s: 0.4,
+            mu_d: 0.25,
+            mass: 0.06,
+            k: 45.0,
+            force: 0.18,
+            g: G_STANDARD,
+        }
+    }
+}
+
+impl PulledMassParams {
+    /// Checks every parameter against its valid range.
+    pub fn validate(&self) -> Result<()> {
+        positive("mu_s", self.mu_s)?;
+        positive("mu_d", self.mu_d)?;
+        if self.mu_d > self.mu_s {
+            return Err(invalid(
+                "mu_d",
+                self.mu_d,
+                format!("0 < mu_d <= mu_s (mu_s = {})", self.mu_s),
+            ));
+        }
+        positive("mass", self.mass)?;
+        positive("k", self.k)?;
+        positive("force", self.force)?;
+        positive("g", self.g)
+    }
+
+    /// Weight W = m g (N).
+    pub fn weight(&self) -> f64 {
+        self.mass * self.g
+    }
+
+    /// Angular frequency ω = √(k/m') with m' = m (rad/s), eq. (6).
+    pub fn omega(&self) -> f64 {
+        (self.k / self.mass).sqrt()
+    }
+
+    /// Period T = 2π/ω (s).
+    pub fn period(&self) -> f64 {
+        std::f64::consts::TAU / self.omega()
+    }
+
+    /// φ = F/W.
+    pub fn phi(&self) -> f64 {
+        self.force / self.weight()
+    }
+}
+
+/// Checks the number of periods to integrate: 1 ≤ periods ≤ 10⁶.
+pub fn validate_periods(periods: u32) -> Result<()> {
+    if (1..=MAX_PERIODS).contains(&periods) {
+        Ok(())
+    } else {
+        Err(invalid(
+            "periods",
+            periods,
+            format!("1 <= periods <= {MAX_PERIODS}"),
+        ))
+    }
+}
+
+/// An error for parameter `name` with `value`, which must satisfy `rule`.
+pub fn invalid(name: &'static str, value: impl ToString, rule: impl Into<String>) -> Error {
+    Error::InvalidParam {
+        name,
+        value: value.to_string(),
+        rule: rule.into(),
+    }
+}
+
+/// Requires a finite value > 0.
+pub fn positive(name: &'static str, value: f64) -> Result<()> {
+    if value.is_finite() && value > 0.0 {
+        Ok(())
+    } else {
+        Err(invalid(name, value, format!("0 < {name} < inf")))
+    }
+}
+
+/// Which model a scenario describes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ModelName {
+    PulledMass,
+    Woodpecker,
+}
+
+/// A scenario file: a model, a title, optionally the number of periods, and the parameters
+/// (missing ones take the model's defaults).
+#[derive(Clone, Debug, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scenario {
+    pub model: ModelName,
+    pub title: String,
+    #[serde(default)]
+    pub description: String,
+    pub periods: Option<u32>,
+    #[serde(default)]
+    pub params: toml::Table,
+}
+
+impl Scenario {
+    /// Reads and parses a scenario file.
+    pub fn load(path: &Path) -> Result<Self> {
+        let text = std::fs::read_to_string(path).map_err(|e| Error::Scenario {
+            path: path.display().to_string(),
+            reason: e.to_string(),
+        })?;
+        Self::parse(&text, path)
+    }
+
+    /// Parses scenario text; `path` only names the file in errors.
+    pub fn parse(text: &str, path: &Path) -> Result<Self> {
+        toml::from_str(text).map_err(|e| toml_error(&e, text, path))
+    }
+
+    /// The parameters as the model's struct (defaults for keys not given).
+    pub fn params<P: for<'de> Deserialize<'de>>(&self, path: &Path) -> Result<P> {
+        P::deserialize(toml::Value::Table(self.params.clone())).map_err(|e| Error::Scenario {
+            path: path.display().to_string(),
+            reason: format!("[params]: {}", e.message().trim()),
+        })
+    }
+}
+
+/// One line from a TOML error: the line number and the message, without the source snippet.
+fn toml_error(e: &toml::de::Error, text: &str, path: &Path) -> Error {
+    let line = e
+        .span()
+        .map(|s| text[..s.start.min(text.len())].matches('\n').count() + 1);
+    let reason = match line {
+        Some(l) => format!("line {l}: {}", e.message().trim()),
+        None => e.message().trim().to_string(),
+    };
+    Error::Scenario {
+        path: path.display().to_string(),
+        reason: reason.replace('\n', " "),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn defaults_are_the_fig6_set_and_valid() {
+        let p = PulledMassParams::default();
+        p.validate().unwrap();
+        assert!((p.period() - 0.229_429_488_381_819_04).abs() < 1e-15);
+    }
+
+    #[test]
+    fn each_bad_value_names_its_parameter() {
+        let cases: [(&str, fn(&mut PulledMassParams)); 7] = [
+            ("mu_s", |p| p.mu_s = 0.0),
+            ("mu_d", |p| p.mu_d = 0.5),
+            ("mu_d", |p| p.mu_d = -0.1),
+            ("mass", |p| p.mass = f64::NAN),
+            ("k", |p| p.k = f64::INFINITY),
+            ("force", |p| p.force = 0.0),
+            ("g", |p| p.g = -9.81),
+        ];
+        for (name, spoil) in cases {
+            let mut p = PulledMassParams::default();
+            spoil(&mut p);
+            match p.validate() {
+                Err(Error::InvalidParam { name: got, .. }) => assert_eq!(got, name),
+                other => panic!("{name}: expected an error, got {other:?}"),
+            }
+        }
+        assert!(validate_periods(0).is_err());
+        assert!(validate_periods(MAX_PERIODS + 1).is_err());
+    }
+
+    #[test]
+    fn unknown_scenario_keys_are_refused_with_the_line() {
+        let text = "model = \"pulled-mass\"\ntitle = \"x\"\ncolour = 3\n";
+        let err = Scenario::parse(text, Path::new("s.toml")).unwrap_err();
+        let msg = err.to_string();
+        assert!(msg.contains("line 3") && msg.contains("colour"), "{msg}");
+        assert!(!msg.contains('\n'));
+        let text = "model = \"pulled-mass\"\ntitle = \"x\"\n[params]\nmu = 3\n";
+        let sc = Scenario::parse(text, Path::new("s.toml")).unwrap();
+        let err = sc
+            .params::<PulledMassParams>(Path::new("s.toml"))
+            .unwrap_err();
+        assert!(err.to_string().contains("unknown field `mu`"), "{err}");
+    }
+}

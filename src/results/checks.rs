@@ -1,0 +1,98 @@
+//! A check: a closed form beside the value measured on the exact integration of the same law.
+
+use serde::Serialize;
+
+/// Relative tolerance of every numeric check (physics.md §4: observed ≤ 4e-13).
+pub const TOLERANCE: f64 = 1e-9;
+
+/// A checked value: a number, or a label such as a regime name.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum CheckValue {
+    Number(f64),
+    Text(String),
+}
+
+/// One entry of the §7 `checks` array.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Check {
+    /// The closed_form key of the quantity checked.
+    pub quantity: String,
+    /// Equation number in the paper, or the physics.md section of a derived result.
+    pub equation: String,
+    pub closed_form: CheckValue,
+    pub numeric: CheckValue,
+    /// |closed − numeric| / max(|closed|, |numeric|); null for labels.
+    pub rel_error: Option<f64>,
+    pub tolerance: f64,
+    pub pass: bool,
+}
+
+impl Check {
+    /// A numeric check at the standard tolerance.
+    pub fn number(quantity: &str, equation: &str, closed_form: f64, numeric: f64) -> Self {
+        let scale = closed_form.abs().max(numeric.abs());
+        let rel_error = if scale == 0.0 {
+            0.0
+        } else {
+            (closed_form - numeric).abs() / scale
+        };
+        Self {
+            quantity: quantity.to_string(),
+            equation: equation.to_string(),
+            closed_form: CheckValue::Number(closed_form),
+            numeric: CheckValue::Number(numeric),
+            rel_error: Some(rel_error),
+            tolerance: TOLERANCE,
+            pass: rel_error <= TOLERANCE,
+        }
+    }
+
+    /// A numeric check whose numeric side may be missing; a missing value fails the check.
+    pub fn measured(
+        quantity: &str,
+        equation: &str,
+        closed_form: f64,
+        numeric: Option<f64>,
+    ) -> Self {
+        match numeric {
+            Some(n) => Self::number(quantity, equation, closed_form, n),
+            None => Self {
+                quantity: quantity.to_string(),
+                equation: equation.to_string(),
+                closed_form: CheckValue::Number(closed_form),
+                numeric: CheckValue::Text("not observed".to_string()),
+                rel_error: None,
+                tolerance: TOLERANCE,
+                pass: false,
+            },
+        }
+    }
+
+    /// A check of a label (regime, flag): passes when both are equal.
+    pub fn label(quantity: &str, equation: &str, closed_form: &str, numeric: &str) -> Self {
+        Self {
+            quantity: quantity.to_string(),
+            equation: equation.to_string(),
+            closed_form: CheckValue::Text(closed_form.to_string()),
+            numeric: CheckValue::Text(numeric.to_string()),
+            rel_error: None,
+            tolerance: TOLERANCE,
+            pass: closed_form == numeric,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn relative_error_and_verdict() {
+        let c = Check::number("v_max", "(26)", 2.0, 2.0 * (1.0 + 2e-9));
+        assert!(!c.pass);
+        assert!((c.rel_error.unwrap() - 2e-9).abs() < 1e-15);
+        assert!(Check::number("x", "", 0.0, 0.0).pass);
+        assert!(!Check::label("regime", "", "slip_stick", "continuous_slip").pass);
+    }
+}

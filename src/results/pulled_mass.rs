@@ -1,0 +1,246 @@
+//! The whole evaluation of the pulled mass: closed forms, both laws integrated exactly, and the
+//! checks of every closed form against the linearized integration (physics.md §1, §7).
+
+use serde::Serialize;
+
+use super::checks::Check;
+use super::summary::{Power, Summary};
+use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
+use crate::error::Result;
+use crate::formula::pulled_mass::{self as cf, ClosedForm, Regime};
+use crate::model::{pulled_mass, LawKind};
+use crate::params::{validate_periods, PulledMassParams};
+
+/// Input parameters and the derived W, T, ω, φ (keys of §7 `params`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ParamsOut {
+    #[serde(flatten)]
+    pub input: PulledMassParams,
+    pub periods: u32,
+    #[serde(rename = "W")]
+    pub weight: f64,
+    #[serde(rename = "T")]
+    pub period: f64,
+    pub omega: f64,
+    pub phi: f64,
+}
+
+/// The §7 object for the pulled mass.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Evaluation {
+    pub model: &'static str,
+    pub params: ParamsOut,
+    pub closed_form: ClosedForm,
+    pub linear: Summary,
+    pub harmonic: Summary,
+    pub checks: Vec<Check>,
+}
+
+/// Both laws integrated, kept for figures and time series.
+pub struct Runs {
+    pub linear: Run,
+    pub harmonic: Run,
+}
+
+/// Validates `p`, evaluates the closed forms and integrates both laws for `periods` periods.
+pub fn evaluate(p: &PulledMassParams, periods: u32) -> Result<Evaluation> {
+    Ok(evaluate_with_runs(p, periods, false)?.0)
+}
+
+/// As [`evaluate`], also returning the runs (with segments when `record_segments`).
+pub fn evaluate_with_runs(
+    p: &PulledMassParams,
+    periods: u32,
+    record_segments: bool,
+) -> Result<(Evaluation, Runs)> {
+    p.validate()?;
+    validate_periods(periods)?;
+    let (g, period, phi) = (p.g, p.period(), p.phi());
+    let closed_form = cf::evaluate(g, period, p.force, phi, p.mu_s, p.mu_d);
+    let opts = RunOptions {
+        periods,
+        record_segments,
+    };
+    let body = pulled_mass::body(p);
+    let run_of = |law| -> Result<Run> { integrate(&body, &pulled_mass::force_law(p, law)?, &opts) };
+    let runs = Runs {
+        linear: run_of(LawKind::Linear)?,
+        harmonic: run_of(LawKind::Harmonic)?,
+    };
+    let summary_of = |run: &Run| {
+        Summary::new(run, &analyse(run), |v_avg, friction| Power::PulledMass {
+            power: v_avg.map(|v| p.force * v),
+            power_friction: friction,
+        })
+    };
+    let linear = summary_of(&runs.linear);
+    let checks = checks(p, &closed_form, &runs.linear, &linear);
+    let evaluation = Evaluation {
+        model: "pulled-mass",
+        params: ParamsOut {
+            input: *p,
+            periods,
+            weight: p.weight(),
+            period,
+            omega: p.omega(),
+            phi,
+        },
+        closed_form,
+        linear,
+        harmonic: summary_of(&runs.harmonic),
+        checks,
+    };
+    Ok((evaluation, runs))
+}
+
+/// The regime the linear integration must show for a closed-form regime.
+fn expected_integration_regime(regime: Regime) -> &'static str {
+    match regime {
+        Regime::SlipStick | Regime::SlipStickLate => "single_slip_stick",
+        Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => "continuous_slip",
+    }
+}
+
+/// Every closed form with a measurable counterpart on the linear run, in the regime where it
+/// describes the motion. A quantity the run should show but does not fails its check.
+fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) -> Vec<Check> {
+    let first = FirstCycle::of(run);
+    let t_of = |e: Option<Event>| e.map(|e| e.t);
+    let mut out = Vec::new();
+    if !c.immediate_slip {
+        out.push(Check::measured(
+            "t_slip",
+            "(13),(25)",
+            c.t_slip,
+            t_of(first.slip),
+        ));
+        // a just after the onset, from the force law at the located slip time.
+        let body = pulled_mass::body(p);
+        let a_at = |t: f64| {
+            pulled_mass::force_law(p, LawKind::Linear)
+                .ok()
+                .map(|law| (law.drive(t) - body.mu_d * law.normal(t)) / body.mass)
+        };
+        let a = t_of(first.slip).and_then(a_at);
+        out.push(Check::measured("a_slip", "§1.3 [D]", c.a_slip, a));
+        // τ_M < 1: the first maximum is the (17) one, in every non-immediate regime.
+        if c.tau_max_speed < 1.0 {
+            out.push(Check::measured(
+                "t_max_speed",
+                "(17)",
+                c.t_max_speed,
+                t_of(first.maximum),
+            ));
+            out.push(Check::measured(
+                "v_max",
+                "(26)",
+                c.v_max,
+                first.maximum.map(|e| e.v),
+            ));
+        }
+    }
+    match c.regime {
+        Regime::SlipStick => {
+            let stick = t_of(first.stick);
+            let duration = stick.zip(t_of(first.slip)).map(|(st, sl)| st - sl);
+            out.push(Check::measured("t_stick", "(18),(25)", c.t_stick, stick));
+            out.push(Check::measured(
+                "slip_duration",
+                "(21)",
+                c.slip_duration,
+                duration,
+            ));
+            push_steady(
+                &mut out,
+                summary,
+                p.force,
+                c.v_avg,
+                c.advance_per_period,
+                "",
+            );
+        }
+        Regime::SlipStickLate => {
+            if let (Some(late), Some(v), Some(x)) =
+                (c.tau_stick_late, c.v_avg_late, c.advance_per_period_late)
+            {
+                let tau = t_of(first.stick).map(|t| t / run.period);
+                out.push(Check::measured("tau_stick_late", "§1.4", late, tau));
+                push_steady(&mut out, summary, p.force, v, x, "_late");
+            }
+        }
+        Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => {}
+    }
+    out.push(Check::label(
+        "regime",
+        "§1.5",
+        expected_integration_regime(c.regime),
+        summary.regime.id(),
+    ));
+    out.push(Check::label(
+        "immediate_slip",
+        "φ > 2μs",
+        &c.immediate_slip.to_string(),
+        &run.immediate_slip.to_string(),
+    ));
+    out
+}
+
+/// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation).
+fn push_steady(out: &mut Vec<Check>, s: &Summary, force: f64, v: f64, x: f64, suffix: &str) {
+    let dissipated = match s.power {
+        Power::PulledMass { power_friction, .. } => power_friction,
+        Power::Woodpecker { .. } => None,
+    };
+    let (eq_v, eq_x, eq_p) = if suffix.is_empty() {
+        ("(27)", "(30)", "(29)")
+    } else {
+        ("§1.4", "§1.4", "(29) with v̄_late")
+    };
+    out.push(Check::measured(&format!("v_avg{suffix}"), eq_v, v, s.v_avg));
+    out.push(Check::measured(
+        &format!("advance_per_period{suffix}"),
+        eq_x,
+        x,
+        s.advance_per_period,
+    ));
+    out.push(Check::measured(
+        &format!("power{suffix}"),
+        eq_p,
+        force * v,
+        dissipated,
+    ));
+}
+
+/// The first slip of a run from rest: its onset, first speed maximum and stick.
+struct FirstCycle {
+    slip: Option<Event>,
+    maximum: Option<Event>,
+    stick: Option<Event>,
+}
+
+impl FirstCycle {
+    fn of(run: &Run) -> Self {
+        let mut events = run.events.iter();
+        let slip = events
+            .find(|e| matches!(e.kind, EventKind::Slip { .. }))
+            .copied();
+        let mut maximum = None;
+        let mut stick = None;
+        for e in events {
+            match e.kind {
+                EventKind::SpeedMax if maximum.is_none() => maximum = Some(*e),
+                EventKind::Stick { .. } => {
+                    stick = Some(*e);
+                    break;
+                }
+                EventKind::Reversal { .. } | EventKind::Slip { .. } => break,
+                EventKind::SpeedMax => {}
+            }
+        }
+        Self {
+            slip,
+            maximum,
+            stick,
+        }
+    }
+}

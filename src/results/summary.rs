@@ -1,0 +1,109 @@
+//! The integration summary of one law (physics.md §7 `linear` / `harmonic`).
+
+use serde::Serialize;
+
+use crate::engine::{Event, EventKind, IntegrationRegime, Run, Steady};
+
+/// One slip/stick event of the steady period.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct EventOut {
+    /// Absolute time (s).
+    pub t: f64,
+    /// "slip", "stick" or "reversal".
+    pub kind: &'static str,
+    /// (t mod T)/T.
+    pub phase: f64,
+}
+
+/// One speed maximum of the steady period.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MaximumOut {
+    /// Absolute time (s), velocity (m/s), phase (t mod T)/T.
+    pub t: f64,
+    pub v: f64,
+    pub phase: f64,
+}
+
+/// The power keys, which differ by model.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Power {
+    /// Pulled mass: P = F v̄ (W), and the friction dissipation measured on the run (W).
+    PulledMass {
+        power: Option<f64>,
+        power_friction: Option<f64>,
+    },
+    /// Woodpecker: P_W = W_S v̄ (W), and the friction dissipation (W).
+    Woodpecker {
+        power_weight: Option<f64>,
+        power_friction: Option<f64>,
+    },
+}
+
+/// Summary of an exact integration of one law; keys as physics.md §7.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Summary {
+    pub regime: IntegrationRegime,
+    pub immediate_slip: bool,
+    pub first_slip_time: Option<f64>,
+    pub period_multiplicity: Option<u32>,
+    pub slips_per_period: u32,
+    pub sticks_per_period: u32,
+    pub v_avg: Option<f64>,
+    pub advance_per_period: Option<f64>,
+    #[serde(flatten)]
+    pub power: Power,
+    pub steady_events: Vec<EventOut>,
+    pub steady_speed_maxima: Vec<MaximumOut>,
+}
+
+impl Summary {
+    /// Builds the summary of `run` with its steady state; `power` computes the power keys from
+    /// (v̄, friction power).
+    pub fn new(
+        run: &Run,
+        steady: &Steady,
+        power: impl FnOnce(Option<f64>, Option<f64>) -> Power,
+    ) -> Self {
+        let phase = |t: f64| (t / run.period).rem_euclid(1.0);
+        Self {
+            regime: steady.regime(),
+            immediate_slip: run.immediate_slip,
+            first_slip_time: run.first_slip,
+            period_multiplicity: steady.multiplicity(),
+            slips_per_period: steady.slips_per_period,
+            sticks_per_period: steady.sticks_per_period,
+            v_avg: steady.v_avg,
+            advance_per_period: steady.advance_per_period,
+            power: power(steady.v_avg, steady.friction_power),
+            steady_events: steady
+                .events
+                .iter()
+                .map(|e: &Event| EventOut {
+                    t: e.t,
+                    kind: kind_name(e.kind),
+                    phase: phase(e.t),
+                })
+                .collect(),
+            steady_speed_maxima: steady
+                .maxima
+                .iter()
+                .map(|e| MaximumOut {
+                    t: e.t,
+                    v: e.v,
+                    phase: phase(e.t),
+                })
+                .collect(),
+        }
+    }
+}
+
+/// The §7 name of an event kind.
+pub fn kind_name(kind: EventKind) -> &'static str {
+    match kind {
+        EventKind::Slip { .. } => "slip",
+        EventKind::Stick { .. } => "stick",
+        EventKind::Reversal { .. } => "reversal",
+        EventKind::SpeedMax => "speed_max",
+    }
+}
