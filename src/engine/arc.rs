@@ -23,6 +23,7 @@ pub enum Arc {
         v_c: f64,
         a_c: f64,
         jerk: f64,
+        t_ref: f64,
     },
     /// Trigonometric motion: a = a0 + a1 cos ωt.
     Trig {
@@ -46,6 +47,7 @@ impl Arc {
                 v_c,
                 a_c: accel.at(t_c - t_ref),
                 jerk: accel.c1,
+                t_ref,
             },
             Basis::Cos { omega } => Arc::Trig {
                 t_c,
@@ -115,6 +117,7 @@ impl Arc {
                 v_c,
                 a_c,
                 jerk,
+                ..
             } => {
                 let w = t - t_c;
                 x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0))
@@ -157,30 +160,39 @@ impl Arc {
         zeros
     }
 
-    /// ∫ s·N_f(t)·v(t) dt over [t0, t1] on which v keeps its sign, by Gauss–Legendre
-    /// quadrature (exact for the polynomial arcs, ~1e-15 relative for the trigonometric ones
-    /// on intervals up to half a period).
-    pub fn integrate_normal_times_speed(
-        &self,
-        normal: impl Fn(f64) -> f64,
-        t0: f64,
-        t1: f64,
-    ) -> f64 {
-        let (nodes, weights): (&[f64], &[f64]) = match self {
-            Arc::Poly { .. } => (&GL2_NODES, &GL2_WEIGHTS),
-            Arc::Trig { .. } => (&GL8_NODES, &GL8_WEIGHTS),
+    /// ∫ N_f(t)·|v(t)| dt over [t0, t1] on which v keeps its sign (N·m), with N_f = c0 + c1 b(t)
+    /// in the arc's basis. Exact for both kinds of arc:
+    ///
+    /// ```text
+    /// polynomial: two-point Gauss–Legendre (the integrand is a cubic)
+    /// cos basis:  c0 Δx + c1 [sin ωt · v/ω + A0 cos ωt/ω² − A1 sin² ωt/(2ω²)]  (by parts)
+    /// ```
+    pub fn integrate_normal_times_speed(&self, normal: Affine, t0: f64, t1: f64) -> f64 {
+        let signed = match *self {
+            Arc::Poly { .. } => {
+                let (half, mid) = (0.5 * (t1 - t0), 0.5 * (t1 + t0));
+                let node = half * GL2_NODE;
+                let f = |t: f64| normal.at(self.b(t)) * self.v(t);
+                half * (f(mid - node) + f(mid + node))
+            }
+            Arc::Trig { a0, a1, omega, .. } => {
+                let antiderivative = |t: f64| {
+                    let (sin, cos) = (omega * t).sin_cos();
+                    sin * self.v(t) / omega + (a0 * cos - 0.5 * a1 * sin * sin) / (omega * omega)
+                };
+                normal.c0 * (self.x(t1) - self.x(t0))
+                    + normal.c1 * (antiderivative(t1) - antiderivative(t0))
+            }
         };
-        let half = 0.5 * (t1 - t0);
-        let mid = 0.5 * (t1 + t0);
-        let sum: f64 = nodes
-            .iter()
-            .zip(weights)
-            .map(|(&xi, &wi)| {
-                let t = mid + half * xi;
-                wi * normal(t) * self.v(t).abs()
-            })
-            .sum();
-        half * sum
+        signed.abs()
+    }
+
+    /// The basis value b(t) of the arc's piece (t − t_ref, or cos ωt).
+    fn b(&self, t: f64) -> f64 {
+        match *self {
+            Arc::Poly { t_ref, .. } => t - t_ref,
+            Arc::Trig { omega, .. } => (omega * t).cos(),
+        }
     }
 }
 
@@ -210,28 +222,8 @@ pub fn cos_level_crossings(c0: f64, c1: f64, omega: f64, lo: f64, hi: f64) -> Ve
     out
 }
 
-const GL2_NODES: [f64; 2] = [-0.577_350_269_189_625_8, 0.577_350_269_189_625_8];
-const GL2_WEIGHTS: [f64; 2] = [1.0, 1.0];
-const GL8_NODES: [f64; 8] = [
-    -0.960_289_856_497_536_3,
-    -0.796_666_477_413_626_7,
-    -0.525_532_409_916_329,
-    -0.183_434_642_495_649_8,
-    0.183_434_642_495_649_8,
-    0.525_532_409_916_329,
-    0.796_666_477_413_626_7,
-    0.960_289_856_497_536_3,
-];
-const GL8_WEIGHTS: [f64; 8] = [
-    0.101_228_536_290_376_26,
-    0.222_381_034_453_374_47,
-    0.313_706_645_877_887_3,
-    0.362_683_783_378_362,
-    0.362_683_783_378_362,
-    0.313_706_645_877_887_3,
-    0.222_381_034_453_374_47,
-    0.101_228_536_290_376_26,
-];
+/// Node of the two-point Gauss–Legendre rule on [−1, 1] (weights 1).
+const GL2_NODE: f64 = 0.577_350_269_189_625_8;
 
 #[cfg(test)]
 mod tests {
@@ -293,7 +285,34 @@ mod tests {
         );
         // v = 1 + t + t², N = 3 − t: ∫0^1 (3 − t)(1 + t + t²) dt = 3·(1+1/2+1/3) − (1/2+1/3+1/4)
         let exact = 3.0 * (11.0 / 6.0) - 13.0 / 12.0;
-        let got = arc.integrate_normal_times_speed(|t| 3.0 - t, 0.0, 1.0);
+        let got = arc.integrate_normal_times_speed(Affine::new(3.0, -1.0), 0.0, 1.0);
         assert!((got - exact).abs() < 1e-14);
+    }
+
+    #[test]
+    fn trigonometric_friction_integral_matches_fine_quadrature() {
+        let arc = Arc::new(
+            Basis::Cos { omega: 3.0 },
+            Affine::new(0.2, -1.1),
+            0.1,
+            0.0,
+            0.7,
+        );
+        let normal = Affine::new(2.0, 0.5);
+        let (t0, t1) = (0.1, 0.6);
+        let n = 20_000;
+        let h = (t1 - t0) / f64::from(n);
+        // Composite Simpson, error ~ h⁴.
+        let f = |t: f64| normal.at((3.0 * t).cos()) * arc.v(t);
+        let mut sum = f(t0) + f(t1);
+        for i in 1..n {
+            sum += f(t0 + f64::from(i) * h) * if i % 2 == 1 { 4.0 } else { 2.0 };
+        }
+        let simpson = sum * h / 3.0;
+        let got = arc.integrate_normal_times_speed(normal, t0, t1);
+        assert!(
+            ((got - simpson) / simpson).abs() < 1e-12,
+            "{got} vs {simpson}"
+        );
     }
 }

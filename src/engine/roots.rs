@@ -31,8 +31,12 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
             }
         }
         Basis::Cos { omega } => {
-            let slope_from = -g.c1 * omega * (omega * from).sin();
-            if g_from > 0.0 || (g_from == 0.0 && slope_from > 0.0) {
+            // At g = 0, look at the slope, and at the curvature where the slope vanishes too
+            // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
+            let slope = -g.c1 * omega * (omega * from).sin();
+            let curvature = -g.c1 * omega * omega * (omega * from).cos();
+            let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
+            if g_from > 0.0 || (g_from == 0.0 && rising) {
                 return Some(from);
             }
             // An up-crossing within snap before `from` happens at `from`.

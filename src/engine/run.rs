@@ -213,6 +213,15 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
 
     for n in 0..periods {
         let period_start = f64::from(n) * period;
+        let next_start = f64::from(n + 1) * period;
+        // Absolute time of a local time, with the period end landing exactly on the next start.
+        let absolute = |t: f64| {
+            if t >= period {
+                next_start
+            } else {
+                period_start + t
+            }
+        };
         x_at_period_start.push(x);
         v_at_period_start.push(v);
         let mut normal_work = 0.0;
@@ -232,8 +241,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     let t_end = onset.map_or(piece.end, |(t_slip, _)| t_slip);
                     if opts.record_segments && t_end > t {
                         segments.push(Segment {
-                            t0: period_start + t,
-                            t1: period_start + t_end,
+                            t0: absolute(t),
+                            t1: absolute(t_end),
                             period_start,
                             motion: Motion::Rest { x },
                         });
@@ -260,8 +269,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 let t_end = slide.stick.unwrap_or(piece.end);
                 if opts.record_segments && t_end > t {
                     segments.push(Segment {
-                        t0: period_start + t,
-                        t1: period_start + t_end,
+                        t0: absolute(t),
+                        t1: absolute(t_end),
                         period_start,
                         motion: Motion::Slide { arc },
                     });
@@ -324,7 +333,6 @@ fn slide(
 ) -> Slide {
     let s = f64::from(dir);
     let speed = |t: f64| s * arc.v(t);
-    let normal = |t: f64| piece.normal_at(t);
     let mut bounds = arc.accel_zeros(from + snap, piece.end - snap);
     bounds.push(piece.end);
     let mut p = from;
@@ -351,14 +359,14 @@ fn slide(
                 None
             };
             if let Some(t_stick) = stick {
-                normal_work += arc.integrate_normal_times_speed(normal, p, t_stick);
+                normal_work += arc.integrate_normal_times_speed(piece.normal, p, t_stick);
                 return Slide {
                     stick: Some(t_stick),
                     normal_work,
                 };
             }
         }
-        normal_work += arc.integrate_normal_times_speed(normal, p, q);
+        normal_work += arc.integrate_normal_times_speed(piece.normal, p, q);
         p = q;
     }
     Slide {
