@@ -5,6 +5,9 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::formula::woodpecker::Counterpart;
+use crate::params::OmegaMode;
+
 /// Stick-slip models of a physics paper: closed forms checked against exact integration.
 #[derive(Debug, Parser)]
 #[command(name = "stickslip", version, about, long_about = None)]
@@ -27,6 +30,8 @@ pub enum Command {
 pub enum EvalModel {
     /// The pulled mass pressed by an oscillating normal force (paper Sec. 2).
     PulledMass(PulledMassArgs),
+    /// The falling woodpecker toy: the sleeve on the pole (paper Sec. 3).
+    Woodpecker(WoodpeckerArgs),
 }
 
 /// Options shared by every model.
@@ -66,4 +71,50 @@ pub struct PulledMassArgs {
     /// Gravitational acceleration g in m/s² [default: 9.81].
     #[arg(long, allow_negative_numbers = true)]
     pub g: Option<f64>,
+}
+
+/// Parameters of the woodpecker [defaults: the paper's Fig. 15 set].
+#[derive(Debug, Args)]
+pub struct WoodpeckerArgs {
+    #[command(flatten)]
+    pub common: CommonArgs,
+    /// Static friction coefficient μs [default: 0.65].
+    #[arg(long, allow_negative_numbers = true)]
+    pub mu_s: Option<f64>,
+    /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.32].
+    #[arg(long, allow_negative_numbers = true)]
+    pub mu_d: Option<f64>,
+    /// Spring constant k in N/m [default: 20].
+    #[arg(long, allow_negative_numbers = true)]
+    pub k: Option<f64>,
+    /// Sleeve mass m_S in kg [default: 0.006].
+    #[arg(long, allow_negative_numbers = true)]
+    pub m_sleeve: Option<f64>,
+    /// Woodpecker (bird) mass m_W in kg [default: 0.014].
+    #[arg(long, allow_negative_numbers = true)]
+    pub m_bird: Option<f64>,
+    /// Lever arm l of the spring force in m [default: 0.016].
+    #[arg(long, allow_negative_numbers = true)]
+    pub l: Option<f64>,
+    /// Distance h between the two pole contacts in m [default: 0.007].
+    #[arg(long, allow_negative_numbers = true)]
+    pub h: Option<f64>,
+    /// Spring offset z0 in m [default: 0.007].
+    #[arg(long, allow_negative_numbers = true)]
+    pub z0: Option<f64>,
+    /// Spring oscillation amplitude d0 in m [default: 0.009].
+    #[arg(long, allow_negative_numbers = true)]
+    pub d0: Option<f64>,
+    /// Gravitational acceleration g in m/s² [default: 9.81].
+    #[arg(long, allow_negative_numbers = true)]
+    pub g: Option<f64>,
+    /// Lever ratio λ (each contact carries λ|F_e|) [default: l/h].
+    #[arg(long, allow_negative_numbers = true)]
+    pub lever: Option<f64>,
+    /// Definition of ω [default: bird].
+    #[arg(long, value_enum)]
+    pub omega: Option<OmegaMode>,
+    /// Linear counterpart of the harmonic spring coordinate [default: zeros].
+    #[arg(long, value_enum)]
+    pub counterpart: Option<Counterpart>,
 }

@@ -10,9 +10,11 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::Parser;
 
-use stickslip::cli::{Cli, Command, CommonArgs, EvalModel, PulledMassArgs};
+use stickslip::cli::{Cli, Command, CommonArgs, EvalModel, PulledMassArgs, WoodpeckerArgs};
 use stickslip::error::Error;
-use stickslip::params::{invalid, PulledMassParams, Scenario, DEFAULT_PERIODS};
+use stickslip::params::{
+    invalid, ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS,
+};
 use stickslip::{output, results};
 
 fn main() -> ExitCode {
@@ -43,6 +45,7 @@ fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Eval { model } => match model {
             EvalModel::PulledMass(args) => eval_pulled_mass(&args),
+            EvalModel::Woodpecker(args) => eval_woodpecker(&args),
         },
     }
 }
@@ -66,20 +69,32 @@ fn load_common(common: &CommonArgs) -> Result<(Option<Scenario>, u32)> {
     Ok((scenario, periods))
 }
 
+/// The model's parameters: the scenario's (defaults for keys it omits), or the defaults.
+fn base_params<P: Default + for<'de> serde::Deserialize<'de>>(
+    scenario: Option<&Scenario>,
+    common: &CommonArgs,
+    model: ModelName,
+) -> Result<P> {
+    match (scenario, &common.scenario) {
+        (Some(s), Some(path)) => {
+            ensure_model(s, model, path)?;
+            Ok(s.params(path)?)
+        }
+        _ => Ok(P::default()),
+    }
+}
+
+/// Overrides `slot` with a flag's value when the flag was given.
+fn set<T: Copy>(slot: &mut T, flag: Option<T>) {
+    if let Some(v) = flag {
+        *slot = v;
+    }
+}
+
 fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     let (scenario, periods) = load_common(&args.common)?;
-    let mut p: PulledMassParams = match (&scenario, &args.common.scenario) {
-        (Some(s), Some(path)) => {
-            ensure_model(s, stickslip::params::ModelName::PulledMass, path)?;
-            s.params(path)?
-        }
-        _ => PulledMassParams::default(),
-    };
-    let set = |slot: &mut f64, flag: Option<f64>| {
-        if let Some(v) = flag {
-            *slot = v;
-        }
-    };
+    let mut p: PulledMassParams =
+        base_params(scenario.as_ref(), &args.common, ModelName::PulledMass)?;
     set(&mut p.mu_s, args.mu_s);
     set(&mut p.mu_d, args.mu_d);
     set(&mut p.mass, args.mass);
@@ -87,15 +102,41 @@ fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     set(&mut p.force, args.force);
     set(&mut p.g, args.g);
     let evaluation = results::pulled_mass::evaluate(&p, periods)?;
-    let text = if args.common.json {
+    print_stdout(&if args.common.json {
         serde_json::to_string_pretty(&evaluation)? + "\n"
     } else {
         output::text::pulled_mass(&evaluation)
-    };
-    print_stdout(&text)
+    })
 }
 
-fn ensure_model(s: &Scenario, want: stickslip::params::ModelName, path: &Path) -> Result<()> {
+fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
+    let (scenario, periods) = load_common(&args.common)?;
+    let mut p: WoodpeckerParams =
+        base_params(scenario.as_ref(), &args.common, ModelName::Woodpecker)?;
+    set(&mut p.mu_s, args.mu_s);
+    set(&mut p.mu_d, args.mu_d);
+    set(&mut p.k, args.k);
+    set(&mut p.m_sleeve, args.m_sleeve);
+    set(&mut p.m_bird, args.m_bird);
+    set(&mut p.l, args.l);
+    set(&mut p.h, args.h);
+    set(&mut p.z0, args.z0);
+    set(&mut p.d0, args.d0);
+    set(&mut p.g, args.g);
+    if args.lever.is_some() {
+        p.lever = args.lever;
+    }
+    set(&mut p.omega, args.omega);
+    set(&mut p.counterpart, args.counterpart);
+    let evaluation = results::woodpecker::evaluate(&p, periods)?;
+    print_stdout(&if args.common.json {
+        serde_json::to_string_pretty(&evaluation)? + "\n"
+    } else {
+        output::text::woodpecker(&evaluation)
+    })
+}
+
+fn ensure_model(s: &Scenario, want: ModelName, path: &Path) -> Result<()> {
     if s.model != want {
         return Err(Error::Scenario {
             path: path.display().to_string(),

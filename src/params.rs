@@ -6,6 +6,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
+use crate::formula::woodpecker::Counterpart;
 
 /// Standard gravity used throughout the paper (m/s²).
 pub const G_STANDARD: f64 = 9.81;
@@ -82,6 +83,126 @@ impl PulledMassParams {
     /// φ = F/W.
     pub fn phi(&self) -> f64 {
         self.force / self.weight()
+    }
+}
+
+/// How ω of the harmonic woodpecker is defined (physics.md §2; regimes do not depend on it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "lowercase")]
+pub enum OmegaMode {
+    /// ω = √(k/m_W) (default: reproduces the paper's figures).
+    Bird,
+    /// ω = √(k (m_S + m_W)/(m_S m_W)), the reduced mass.
+    Reduced,
+    /// ω = √(k/(m_S + m_W)).
+    Total,
+}
+
+/// The falling woodpecker of Sec. 3 (physics.md §2–3). Defaults: the paper's Fig. 15 set.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct WoodpeckerParams {
+    /// Static friction coefficient μs.
+    pub mu_s: f64,
+    /// Dynamic friction coefficient μd (0 < μd ≤ μs).
+    pub mu_d: f64,
+    /// Spring constant k (N/m).
+    pub k: f64,
+    /// Sleeve mass m_S (kg).
+    pub m_sleeve: f64,
+    /// Woodpecker (bird) mass m_W (kg).
+    pub m_bird: f64,
+    /// Lever arm l of the spring force about the sleeve centre (m).
+    pub l: f64,
+    /// Distance h between the two pole contacts (m).
+    pub h: f64,
+    /// Spring offset z0 (m).
+    pub z0: f64,
+    /// Spring oscillation amplitude d0 (m).
+    pub d0: f64,
+    /// Gravitational acceleration g (m/s²).
+    pub g: f64,
+    /// Lever ratio λ (N = λ|F_e| at each contact); `None` = l/h.
+    pub lever: Option<f64>,
+    /// Definition of ω.
+    pub omega: OmegaMode,
+    /// Linear counterpart of the harmonic spring coordinate (§3.1).
+    pub counterpart: Counterpart,
+}
+
+impl Default for WoodpeckerParams {
+    /// The Fig. 15 set: μs = 0.65, μd = 0.32, k = 20 N/m, m_S = 6 g, m_W = 14 g, l = 16 mm,
+    /// h = 7 mm, z0 = 7 mm, d0 = 9 mm; λ = l/h, ω = √(k/m_W), counterpart `zeros`.
+    fn default() -> Self {
+        Self {
+            mu_s: 0.65,
+            mu_d: 0.32,
+            k: 20.0,
+            m_sleeve: 0.006,
+            m_bird: 0.014,
+            l: 0.016,
+            h: 0.007,
+            z0: 0.007,
+            d0: 0.009,
+            g: G_STANDARD,
+            lever: None,
+            omega: OmegaMode::Bird,
+            counterpart: Counterpart::Zeros,
+        }
+    }
+}
+
+impl WoodpeckerParams {
+    /// Checks every parameter against its valid range.
+    pub fn validate(&self) -> Result<()> {
+        positive("mu_s", self.mu_s)?;
+        positive("mu_d", self.mu_d)?;
+        if self.mu_d > self.mu_s {
+            return Err(invalid(
+                "mu_d",
+                self.mu_d,
+                format!("0 < mu_d <= mu_s (mu_s = {})", self.mu_s),
+            ));
+        }
+        positive("k", self.k)?;
+        positive("m_sleeve", self.m_sleeve)?;
+        positive("m_bird", self.m_bird)?;
+        positive("l", self.l)?;
+        positive("h", self.h)?;
+        if !self.z0.is_finite() {
+            return Err(invalid("z0", self.z0, "-inf < z0 < inf"));
+        }
+        positive("d0", self.d0)?;
+        positive("g", self.g)?;
+        if let Some(lever) = self.lever {
+            positive("lever", lever)?;
+        }
+        Ok(())
+    }
+
+    /// Lever ratio λ: the given one, else l/h.
+    pub fn lambda(&self) -> f64 {
+        self.lever.unwrap_or(self.l / self.h)
+    }
+
+    /// Sleeve weight W_S = m_S g (N).
+    pub fn sleeve_weight(&self) -> f64 {
+        self.m_sleeve * self.g
+    }
+
+    /// Angular frequency ω (rad/s) of the chosen mode.
+    pub fn omega(&self) -> f64 {
+        let (k, ms, mw) = (self.k, self.m_sleeve, self.m_bird);
+        match self.omega {
+            OmegaMode::Bird => (k / mw).sqrt(),
+            OmegaMode::Reduced => (k * (ms + mw) / (ms * mw)).sqrt(),
+            OmegaMode::Total => (k / (ms + mw)).sqrt(),
+        }
+    }
+
+    /// Period T = 2π/ω (s).
+    pub fn period(&self) -> f64 {
+        std::f64::consts::TAU / self.omega()
     }
 }
 
@@ -190,7 +311,8 @@ mod tests {
 
     #[test]
     fn each_bad_value_names_its_parameter() {
-        let cases: [(&str, fn(&mut PulledMassParams)); 7] = [
+        type Spoil = fn(&mut PulledMassParams);
+        let cases: [(&str, Spoil); 7] = [
             ("mu_s", |p| p.mu_s = 0.0),
             ("mu_d", |p| p.mu_d = 0.5),
             ("mu_d", |p| p.mu_d = -0.1),

@@ -1,4 +1,4 @@
-//! The lobe engine of physics.md §3.6 [D]: one slip of the linearized woodpecker sleeve, from rest,
+//! The lobe engine of physics.md §3.6 \[D\]: one slip of the linearized woodpecker sleeve, from rest,
 //! through the chain of triangular lobes of |F_e|, in closed form and in dimensionless units.
 //!
 //! ```text
@@ -14,6 +14,9 @@
 //! t_zero = t0^(I); phase II with the swap (u_s^(+), u_d^(+), u_d^(−), η, η'), t_zero = t0^(II).
 //! On every flank the acceleration is affine in θ, so v is a parabola and y a cubic: a halt is the
 //! root of a quadratic, a speed maximum the zero of a where it turns from + to −.
+//!
+//! This module also owns the exact halt boundaries μd,HALT and the orbit selection that turns
+//! the slips of the two phases into the period-T orbit in SI units ([`periodic_orbit`]).
 
 use serde::{Deserialize, Serialize};
 
@@ -198,6 +201,217 @@ fn falling_flank(s: State, u: f64, h: f64) -> FlankEnd {
     })
 }
 
+// ---------------------------------------------------------------------------------------------
+// Exact halt boundaries (closed form)
+
+/// Least u_B for which the slip halts in lobe B (rising or falling flank), dimensionless:
+/// ```text
+/// u_B ≥ max(x₊, 1/h_B),  x₊ = [B + √(B² − A U²)]/A,  A = 1 + 2h_B²U²,  B = U + σ + 2h_B U²
+/// ```
+/// with σ the ±1 of u_B = 2λμd + σ (phase I: +1, phase II: −1). Equivalent to
+/// 2 v_ext(end of the rising flank) ≤ v_M. When B² < A U² the quadratic has no real root and every
+/// u_B ≥ 1/h_B halts (x₋ < 1/h_B always, so the halt set is the one interval).      \[D\] §3.6
+pub fn halt_threshold(u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
+    let a = 1.0 + 2.0 * h_b * h_b * u_s * u_s;
+    let b = u_s + sigma + 2.0 * h_b * u_s * u_s;
+    let floor = 1.0 / h_b;
+    let disc = b * b - a * u_s * u_s;
+    // a ≥ 1, so only h_B = 0 or a non-finite input can make this undefined.
+    let x = if disc >= 0.0 {
+        ((b + disc.sqrt()) / a).max(floor)
+    } else {
+        floor
+    };
+    x.is_finite().then_some(x)
+}
+
+/// Exact least μd for a halt in lobe B (dimensionless):
+/// ```text
+/// μd,HALT = (max(x₊, 1/h_B) − σ)/(2λ)
+///   phase I:  halt before the phase-II slip,      (max(x₊, 1/η) − 1)/(2λ)            [D] §3.6
+///   phase II: halt before the next phase-I slip,  (max(x'₊, 1/η') + 1)/(2λ)          [D] §3.6
+/// ```
+pub fn mu_d_halt(lambda: f64, u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
+    let mu = (halt_threshold(u_s, h_b, sigma)? - sigma) / (2.0 * lambda);
+    mu.is_finite().then_some(mu)
+}
+
+// ---------------------------------------------------------------------------------------------
+// The periodic orbit in SI units (§3.6, orbit selection)
+
+/// Half period in which a slip starts: I (F_e decreasing) or II (F_e increasing).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum Phase {
+    #[serde(rename = "I")]
+    One,
+    #[serde(rename = "II")]
+    Two,
+}
+
+impl Phase {
+    /// Index in [phase I, phase II] arrays.
+    pub fn index(self) -> usize {
+        match self {
+            Phase::One => 0,
+            Phase::Two => 1,
+        }
+    }
+
+    /// The other half period.
+    pub fn other(self) -> Phase {
+        match self {
+            Phase::One => Phase::Two,
+            Phase::Two => Phase::One,
+        }
+    }
+}
+
+/// Regime of the periodic orbit of the linear model (§3.6, orbit selection).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum OrbitRegime {
+    /// (39): the sleeve never slips.
+    NoSlip,
+    /// Two slips and two sticks per period (the paper's regime when both halts are "B").
+    DoubleSlipStick,
+    /// One merged slip per period whose speed dips in lobe B (two maxima).
+    DoubleSlipNoHalt,
+    /// One merged slip per period with a single speed maximum.
+    SingleSlipStick,
+    /// The engine finds no halt: integrate numerically (continuous slip in all tests).
+    ContinuousOrMultiperiod,
+    /// δ0 ≥ ζ0 (or δ0 < 0), u_s^(−) ≤ 0, μd > μs, or degenerate k, W_S, ζ0, τ.
+    OutsideClosedFormDomain,
+}
+
+/// One slip of the periodic orbit (SI). Times are measured from the start of the period in which
+/// the slip starts (0 ≤ t_slip < T) and are not reduced mod T: a halt may come after T (every
+/// phase-II slip that halts in A/A_late or B_late, and phase-I slips that halt in A_late).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct OrbitSlip {
+    /// Half period in which the slip starts.
+    pub phase: Phase,
+    /// Flank on which it halts.
+    pub halt: HaltKind,
+    pub t_slip: f64,
+    pub t_halt: f64,
+    /// Speed maxima (t in s, v in m/s), in time order.
+    pub speed_maxima: Vec<(f64, f64)>,
+    /// Distance from the slip onset to the halt (m).
+    pub distance: f64,
+}
+
+/// The period-T orbit of the linear model (§3.6), SI.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Orbit {
+    /// Slips in order of their slip time within the period (empty for `no_slip`).
+    pub slips: Vec<OrbitSlip>,
+    /// T = 4τ (s).
+    pub period: f64,
+    /// Advance per period (m).
+    pub distance_per_period: f64,
+    /// v̄ = distance per period / T (m/s).
+    pub v_avg: f64,
+}
+
+impl Orbit {
+    /// The orbit made of `slips` (in order of slip time), advancing their summed distance per period.
+    pub fn new(slips: Vec<OrbitSlip>, period: f64) -> Self {
+        let distance_per_period: f64 = slips.iter().map(|s| s.distance).sum();
+        // A sleeve at rest advances 0 per period, whatever T is.
+        let v_avg = match slips.is_empty() {
+            true => 0.0,
+            false => distance_per_period / period,
+        };
+        Orbit {
+            slips,
+            period,
+            distance_per_period,
+            v_avg,
+        }
+    }
+}
+
+/// The lobes met by the slip of one phase, with the SI scales that place it in the period.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhaseLobes {
+    pub phase: Phase,
+    /// U of the lobe where the slip starts.
+    pub u_s: f64,
+    /// Dynamic factors of lobes A and B.
+    pub u_a: f64,
+    pub u_b: f64,
+    /// Heights of lobes A and B in units of W_S.
+    pub h_a: f64,
+    pub h_b: f64,
+    /// The zero of F_e that ends lobe A: t0 of the phase (s).
+    pub t_zero: f64,
+    /// τε = τ W_S/(k ζ0) (s).
+    pub time_unit: f64,
+    /// g (m/s²).
+    pub g: f64,
+}
+
+impl PhaseLobes {
+    /// The slip of this phase in SI units (times from the start of the period of the slip), if
+    /// it can start from rest and halts.
+    pub fn orbit_slip(&self) -> Option<OrbitSlip> {
+        let slip = lobe_engine(self.u_s, self.u_a, self.u_b, self.h_a, self.h_b)?;
+        let halt = slip.halt?;
+        let time = |theta: f64| self.t_zero + theta * self.time_unit;
+        let speed_unit = self.g * self.time_unit;
+        Some(OrbitSlip {
+            phase: self.phase,
+            halt: halt.kind,
+            t_slip: time(slip.theta_slip),
+            t_halt: time(halt.theta),
+            speed_maxima: (slip.maxima.iter())
+                .map(|&(theta, v)| (time(theta), v * speed_unit))
+                .collect(),
+            distance: halt.distance * speed_unit * self.time_unit,
+        })
+    }
+}
+
+/// Orbit selection (§3.6) from the halting slips of the two phases, `[phase I, phase II]`
+/// (`None`: that slip cannot start from rest or never halts), starting with the slip of `first`.
+///
+/// After a halt in lobe B the next slip is the ordinary slip of the other phase (at a halt a < 0,
+/// so |F_e| > W_S/u_d ≥ W_S/u_s and the sleeve stays stuck until then); after a merged halt
+/// (lobe A) it is the ordinary slip of the same phase one period later. Two B halts make
+/// `double_slip_stick`; a merged slip is `double_slip_no_halt` with two speed maxima and
+/// `single_slip_stick` with one; no halt on the way is `continuous_or_multiperiod`.
+pub fn periodic_orbit(
+    slips: &[Option<OrbitSlip>; 2],
+    first: Phase,
+    period: f64,
+) -> (OrbitRegime, Option<Orbit>) {
+    let Some(slips) = periodic_slips(slips, first) else {
+        return (OrbitRegime::ContinuousOrMultiperiod, None);
+    };
+    let regime = match slips.as_slice() {
+        [merged] if merged.speed_maxima.len() >= 2 => OrbitRegime::DoubleSlipNoHalt,
+        [_] => OrbitRegime::SingleSlipStick,
+        _ => OrbitRegime::DoubleSlipStick,
+    };
+    (regime, Some(Orbit::new(slips, period)))
+}
+
+/// The slips of the periodic orbit reached from phase `first`, in order of slip time.
+fn periodic_slips(slips: &[Option<OrbitSlip>; 2], first: Phase) -> Option<Vec<OrbitSlip>> {
+    let a = slips[first.index()].clone()?;
+    if a.halt.is_merged() {
+        return Some(vec![a]);
+    }
+    let b = slips[first.other().index()].clone()?;
+    if b.halt.is_merged() {
+        return Some(vec![b]);
+    }
+    let mut both = vec![a, b];
+    both.sort_by(|x, y| x.t_slip.total_cmp(&y.t_slip));
+    Some(both)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -258,5 +472,62 @@ mod tests {
         let slip = lobe_engine(0.3, -0.36, 1.64, 5.4, 0.5).unwrap();
         assert!(slip.halt.is_none());
         assert!(slip.maxima.is_empty());
+    }
+
+    #[test]
+    fn halt_threshold_without_a_real_root_is_the_lobe_floor() {
+        // σ = −1, U = 1.5, h_B = 0.05: B² < A U², every u_B ≥ 1/h_B halts.
+        assert_relative_eq!(
+            halt_threshold(1.5, 0.05, -1.0).unwrap(),
+            20.0,
+            max_relative = 1e-15
+        );
+        assert_eq!(halt_threshold(1.5, 0.0, 1.0), None);
+    }
+
+    #[test]
+    fn halt_threshold_separates_the_engine_halts_in_lobe_b() {
+        // Phase-I factors of the Fig 15 `zeros` set, varying μd through u_A = u_B − 2.
+        let (u_s, h_a, h_b) = (1.971428571, 4.792985346, 1.323222605);
+        let thr = halt_threshold(u_s, h_b, 1.0).unwrap();
+        let kind = |u_b: f64| lobe_engine(u_s, u_b - 2.0, u_b, h_a, h_b).and_then(|s| s.halt);
+        assert!(!kind(thr * (1.0 + 1e-9)).unwrap().kind.is_merged());
+        assert!(kind(thr * (1.0 - 1e-9)).map_or(true, |h| h.kind.is_merged()));
+    }
+
+    fn slip(phase: Phase, halt: HaltKind, t_slip: f64, distance: f64) -> OrbitSlip {
+        OrbitSlip {
+            phase,
+            halt,
+            t_slip,
+            t_halt: t_slip + 0.01,
+            speed_maxima: vec![(t_slip + 0.005, 0.1)],
+            distance,
+        }
+    }
+
+    #[test]
+    fn orbit_selection_follows_the_halts_of_both_phases() {
+        let one_b = slip(Phase::One, HaltKind::B, 0.05, 0.001);
+        let two_b = slip(Phase::Two, HaltKind::BLate, 0.09, 0.002);
+        let two_a = slip(Phase::Two, HaltKind::A, 0.09, 0.004);
+        // I halts in B, II halts in B: two slips, in time order whatever the start.
+        let (regime, orbit) =
+            periodic_orbit(&[Some(one_b.clone()), Some(two_b.clone())], Phase::Two, 0.2);
+        assert_eq!(regime, OrbitRegime::DoubleSlipStick);
+        let orbit = orbit.unwrap();
+        assert_eq!(orbit.slips, vec![one_b.clone(), two_b]);
+        assert_relative_eq!(orbit.v_avg, 0.003 / 0.2, max_relative = 1e-15);
+        // I halts in B, II merges into the next period: the steady orbit is the II slip alone.
+        let (regime, orbit) =
+            periodic_orbit(&[Some(one_b.clone()), Some(two_a.clone())], Phase::One, 0.2);
+        assert_eq!(regime, OrbitRegime::SingleSlipStick);
+        assert_eq!(orbit.unwrap().slips, vec![two_a]);
+        // I never halts: no closed-form orbit.
+        let (regime, orbit) = periodic_orbit(&[None, Some(one_b)], Phase::One, 0.2);
+        assert_eq!(
+            (regime, orbit),
+            (OrbitRegime::ContinuousOrMultiperiod, None)
+        );
     }
 }

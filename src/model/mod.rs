@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 pub mod pulled_mass;
+pub mod woodpecker;
 
 /// Which force law drives the model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -5,7 +5,8 @@ use std::fmt::Write;
 
 use super::format::{rel, sig};
 use crate::results::pulled_mass::Evaluation;
-use crate::results::quantity::{find, Quantity, PULLED_MASS};
+use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
+use crate::results::woodpecker;
 use crate::results::{Check, CheckValue, Summary};
 
 const DIGITS: usize = 10;
@@ -38,7 +39,62 @@ pub fn pulled_mass(e: &Evaluation) -> String {
     let values = serde_json::to_value(c).unwrap_or_default();
     closed_form_table(&mut out, PULLED_MASS, &values);
     checks_table(&mut out, &e.checks, PULLED_MASS);
-    laws_table(&mut out, &e.harmonic, &e.linear);
+    laws_table(&mut out, &e.harmonic, Some(&e.linear));
+    out
+}
+
+/// Renders a woodpecker evaluation as plain-text tables.
+pub fn woodpecker(e: &woodpecker::Evaluation) -> String {
+    let p = &e.params;
+    let i = &p.input;
+    let c = &e.closed_form;
+    let mut out = String::new();
+    let _ = writeln!(out, "stickslip eval woodpecker");
+    let _ = writeln!(
+        out,
+        "parameters: mu_s = {}, mu_d = {}, k = {} N/m, m_S = {} kg, m_W = {} kg, l = {} m, h = {} m, \
+         z0 = {} m, d0 = {} m, g = {} m/s², periods = {}",
+        i.mu_s, i.mu_d, i.k, i.m_sleeve, i.m_bird, i.l, i.h, i.z0, i.d0, i.g, p.periods
+    );
+    let _ = writeln!(
+        out,
+        "options:    lambda = {} ({}), omega = {:?}, counterpart = {:?}",
+        sig(Some(p.lambda), DIGITS),
+        if i.lever.is_some() { "given" } else { "l/h" },
+        i.omega,
+        i.counterpart
+    );
+    let _ = writeln!(
+        out,
+        "derived:    W_S = m_S g = {} N, omega = {} rad/s, T = {} s, zeta0 = {} m, delta0 = {} m",
+        sig(Some(p.sleeve_weight), DIGITS),
+        sig(Some(p.omega), DIGITS),
+        sig(Some(p.period), DIGITS),
+        sig(p.zeta0, DIGITS),
+        sig(p.delta0, DIGITS)
+    );
+    let _ = writeln!(
+        out,
+        "\nregime (linearized law, §3.6): {}; paper's standard regime valid: {}; immediate slip (38): {}",
+        woodpecker::orbit_regime_id(c.regime),
+        c.paper_regime_valid,
+        c.immediate_slip
+    );
+    if let Some(note) = &e.domain_note {
+        let _ = writeln!(out, "closed forms do not apply: {note}");
+    }
+    let values = serde_json::to_value(c).unwrap_or_default();
+    closed_form_table(&mut out, WOODPECKER, &values);
+    let not_applying: Vec<_> = e.applicability.iter().filter(|a| !a.applies).collect();
+    if !not_applying.is_empty() && e.domain_note.is_none() {
+        let _ = writeln!(out, "\nformulas that do not describe this motion");
+        for a in not_applying {
+            let symbol = find(WOODPECKER, a.quantity).map_or(a.quantity, |q| q.symbol);
+            let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
+        }
+    }
+    checks_table(&mut out, &e.checks, WOODPECKER);
+    laws_table(&mut out, &e.harmonic, e.linear.as_ref());
     out
 }
 
@@ -114,8 +170,17 @@ fn value(v: &CheckValue) -> String {
     }
 }
 
-fn laws_table(out: &mut String, harmonic: &Summary, linear: &Summary) {
+fn laws_table(out: &mut String, harmonic: &Summary, linear: Option<&Summary>) {
     let _ = writeln!(out, "\nexact integration: harmonic law vs linearized law");
+    let Some(linear) = linear else {
+        let _ = writeln!(out, "  (no linear law: its counterpart is undefined)");
+        laws_table_rows(out, harmonic, harmonic, true);
+        return;
+    };
+    laws_table_rows(out, harmonic, linear, false);
+}
+
+fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmonic_only: bool) {
     let row = |out: &mut String, name: &str, h: String, l: String| {
         let _ = writeln!(out, "  {name:<26} {h:>22} {l:>22}");
     };
@@ -166,7 +231,12 @@ fn laws_table(out: &mut String, harmonic: &Summary, linear: &Summary) {
     for ((name, h), (_, l)) in hp.into_iter().zip(lp) {
         row(out, name, s(h), s(l));
     }
-    for (name, law) in [("harmonic", harmonic), ("linear", linear)] {
+    let laws: &[(&str, &Summary)] = if harmonic_only {
+        &[("harmonic", harmonic)]
+    } else {
+        &[("harmonic", harmonic), ("linear", linear)]
+    };
+    for &(name, law) in laws {
         let events: Vec<String> = law
             .steady_events
             .iter()

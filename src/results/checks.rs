@@ -31,21 +31,7 @@ pub struct Check {
 impl Check {
     /// A numeric check at the standard tolerance.
     pub fn number(quantity: &str, equation: &str, closed_form: f64, numeric: f64) -> Self {
-        let scale = closed_form.abs().max(numeric.abs());
-        let rel_error = if scale == 0.0 {
-            0.0
-        } else {
-            (closed_form - numeric).abs() / scale
-        };
-        Self {
-            quantity: quantity.to_string(),
-            equation: equation.to_string(),
-            closed_form: CheckValue::Number(closed_form),
-            numeric: CheckValue::Number(numeric),
-            rel_error: Some(rel_error),
-            tolerance: TOLERANCE,
-            pass: rel_error <= TOLERANCE,
-        }
+        Self::measured(quantity, equation, closed_form, Some(numeric))
     }
 
     /// A numeric check whose numeric side may be missing; a missing value fails the check.
@@ -55,22 +41,61 @@ impl Check {
         closed_form: f64,
         numeric: Option<f64>,
     ) -> Self {
-        match numeric {
-            Some(n) => Self::number(quantity, equation, closed_form, n),
-            None => Self {
-                quantity: quantity.to_string(),
-                equation: equation.to_string(),
-                closed_form: CheckValue::Number(closed_form),
-                numeric: CheckValue::Text("not observed".to_string()),
-                rel_error: None,
-                tolerance: TOLERANCE,
-                pass: false,
-            },
+        Self::measured_on_scale(quantity, equation, closed_form, numeric, 0.0)
+    }
+
+    /// As [`Check::measured`], with the error taken relative to at least `scale`: for a
+    /// quantity that can vanish while its measurement carries the rounding of larger terms (the
+    /// acceleration at slip onset is (μs − μd) N/M, measured as D − μd N: scale g).
+    pub fn measured_on_scale(
+        quantity: &str,
+        equation: &str,
+        closed_form: f64,
+        numeric: Option<f64>,
+        scale: f64,
+    ) -> Self {
+        let rel_error = numeric.map(|n| {
+            let scale = closed_form.abs().max(n.abs()).max(scale);
+            if scale == 0.0 {
+                0.0
+            } else {
+                (closed_form - n).abs() / scale
+            }
+        });
+        Self {
+            quantity: quantity.to_string(),
+            equation: equation.to_string(),
+            closed_form: CheckValue::Number(closed_form),
+            numeric: numeric.map_or(
+                CheckValue::Text("not observed".to_string()),
+                CheckValue::Number,
+            ),
+            rel_error,
+            tolerance: TOLERANCE,
+            pass: rel_error.is_some_and(|e| e <= TOLERANCE),
         }
     }
 
     /// A check of a label (regime, flag): passes when both are equal.
     pub fn label(quantity: &str, equation: &str, closed_form: &str, numeric: &str) -> Self {
+        Self::label_agreeing(
+            quantity,
+            equation,
+            closed_form,
+            numeric,
+            closed_form == numeric,
+        )
+    }
+
+    /// A check of two labels that agree when `agree` (e.g. a closed-form regime that admits
+    /// several integration regimes).
+    pub fn label_agreeing(
+        quantity: &str,
+        equation: &str,
+        closed_form: &str,
+        numeric: &str,
+        agree: bool,
+    ) -> Self {
         Self {
             quantity: quantity.to_string(),
             equation: equation.to_string(),
@@ -78,7 +103,7 @@ impl Check {
             numeric: CheckValue::Text(numeric.to_string()),
             rel_error: None,
             tolerance: TOLERANCE,
-            pass: closed_form == numeric,
+            pass: agree,
         }
     }
 }

@@ -5,6 +5,7 @@ pub mod checks;
 pub mod pulled_mass;
 pub mod quantity;
 pub mod summary;
+pub mod woodpecker;
 
 pub use checks::{Check, CheckValue, TOLERANCE};
 pub use summary::{Power, Summary};

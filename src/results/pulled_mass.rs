@@ -122,7 +122,13 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 .map(|law| (law.drive(t) - body.mu_d * law.normal(t)) / body.mass)
         };
         let a = t_of(first.slip).and_then(a_at);
-        out.push(Check::measured("a_slip", "§1.3 [D]", c.a_slip, a));
+        out.push(Check::measured_on_scale(
+            "a_slip",
+            "§1.3 [D]",
+            c.a_slip,
+            a,
+            p.g,
+        ));
         // τ_M < 1: the first maximum is the (17) one, in every non-immediate regime.
         if c.tau_max_speed < 1.0 {
             out.push(Check::measured(

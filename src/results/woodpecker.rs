@@ -1,0 +1,542 @@
+//! The whole evaluation of the woodpecker: closed forms of the linearized law, both laws
+//! integrated exactly, which formulas describe the motion, and the checks (physics.md §3, §7).
+
+use serde::Serialize;
+
+use super::checks::Check;
+use super::summary::{Power, Summary};
+use crate::engine::{analyse, integrate, Event, EventKind, IntegrationRegime, Run, RunOptions};
+use crate::error::Result;
+use crate::formula::lobe::HaltKind;
+use crate::formula::woodpecker::{
+    self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
+};
+use crate::model::{woodpecker, LawKind};
+use crate::params::{validate_periods, WoodpeckerParams};
+
+/// Input parameters and the derived quantities (keys of §7 `params`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ParamsOut {
+    #[serde(flatten)]
+    pub input: WoodpeckerParams,
+    pub periods: u32,
+    #[serde(rename = "W_S")]
+    pub sleeve_weight: f64,
+    #[serde(rename = "T")]
+    pub period: f64,
+    pub omega: f64,
+    pub lambda: f64,
+    pub zeta0: Option<f64>,
+    pub delta0: Option<f64>,
+}
+
+/// Whether a paper formula describes the computed motion, and why not.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Applicability {
+    pub quantity: &'static str,
+    pub applies: bool,
+    pub reason: String,
+}
+
+/// The §7 object for the woodpecker.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Evaluation {
+    pub model: &'static str,
+    pub params: ParamsOut,
+    pub closed_form: WoodpeckerClosedForm,
+    /// Null when the counterpart is undefined for z0, d0 (no linear law to integrate).
+    pub linear: Option<Summary>,
+    pub harmonic: Summary,
+    pub checks: Vec<Check>,
+    /// Which paper formulas describe the motion (shown in text and reports).
+    #[serde(skip)]
+    pub applicability: Vec<Applicability>,
+    /// Why the closed forms do not apply at all, if so.
+    #[serde(skip)]
+    pub domain_note: Option<String>,
+}
+
+/// Both laws integrated (the linear one only when its counterpart is defined).
+pub struct Runs {
+    pub linear: Option<Run>,
+    pub harmonic: Run,
+}
+
+/// The closed-form inputs of `p` (NaN amplitudes when the counterpart is undefined, which the
+/// closed forms turn into nulls).
+pub fn linear_inputs(p: &WoodpeckerParams) -> LinearWoodpecker {
+    let (zeta0, delta0) = woodpecker::linear_amplitudes(p).unwrap_or((f64::NAN, f64::NAN));
+    LinearWoodpecker {
+        mu_s: p.mu_s,
+        mu_d: p.mu_d,
+        lambda: p.lambda(),
+        k: p.k,
+        w_s: p.sleeve_weight(),
+        g: p.g,
+        zeta0,
+        delta0,
+        tau_quarter: 0.25 * p.period(),
+    }
+}
+
+/// Validates `p`, evaluates the closed forms and integrates both laws for `periods` periods.
+pub fn evaluate(p: &WoodpeckerParams, periods: u32) -> Result<Evaluation> {
+    Ok(evaluate_with_runs(p, periods, false)?.0)
+}
+
+/// As [`evaluate`], also returning the runs (with segments when `record_segments`).
+pub fn evaluate_with_runs(
+    p: &WoodpeckerParams,
+    periods: u32,
+    record_segments: bool,
+) -> Result<(Evaluation, Runs)> {
+    p.validate()?;
+    validate_periods(periods)?;
+    let closed_form = cf::evaluate(&linear_inputs(p));
+    let opts = RunOptions {
+        periods,
+        record_segments,
+    };
+    let body = woodpecker::body(p);
+    let run_of = |law| -> Result<Run> { integrate(&body, &woodpecker::force_law(p, law)?, &opts) };
+    let amplitudes = woodpecker::linear_amplitudes(p);
+    let runs = Runs {
+        linear: amplitudes.map(|_| run_of(LawKind::Linear)).transpose()?,
+        harmonic: run_of(LawKind::Harmonic)?,
+    };
+    let w_s = p.sleeve_weight();
+    let summary_of = |run: &Run| {
+        Summary::new(run, &analyse(run), |v_avg, friction| Power::Woodpecker {
+            power_weight: v_avg.map(|v| w_s * v),
+            power_friction: friction,
+        })
+    };
+    let linear = runs.linear.as_ref().map(summary_of);
+    let domain_note = domain_note(p, &closed_form);
+    let applicability = applicability(&closed_form, domain_note.as_deref());
+    let checks = match (&runs.linear, &linear) {
+        (Some(run), Some(summary)) if domain_note.is_none() => {
+            checks(p, &closed_form, &applicability, run, summary)
+        }
+        _ => Vec::new(),
+    };
+    let evaluation = Evaluation {
+        model: "woodpecker",
+        params: ParamsOut {
+            input: *p,
+            periods,
+            sleeve_weight: w_s,
+            period: p.period(),
+            omega: p.omega(),
+            lambda: p.lambda(),
+            zeta0: amplitudes.map(|a| a.0),
+            delta0: amplitudes.map(|a| a.1),
+        },
+        closed_form,
+        linear,
+        harmonic: summary_of(&runs.harmonic),
+        checks,
+        applicability,
+        domain_note,
+    };
+    Ok((evaluation, runs))
+}
+
+/// Why the closed forms do not apply at all (outside their domain), if so.
+fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<String> {
+    if woodpecker::linear_amplitudes(p).is_none() {
+        return Some(format!(
+            "the {:?} counterpart is undefined for |z0| > d0 (z0 = {} m, d0 = {} m): F_e never \
+             changes sign; only the harmonic law is integrated",
+            p.counterpart, p.z0, p.d0
+        ));
+    }
+    if c.regime != OrbitRegime::OutsideClosedFormDomain {
+        return None;
+    }
+    let (zeta0, delta0) = (c.zeta0.unwrap_or(f64::NAN), c.delta0.unwrap_or(f64::NAN));
+    Some(if !(delta0 >= 0.0 && delta0 < zeta0) {
+        format!(
+            "the closed forms need 0 <= delta0 < zeta0 (F_e changes sign with the positive lobe \
+             first); here delta0 = {delta0:.6e} m, zeta0 = {zeta0:.6e} m"
+        )
+    } else {
+        format!(
+            "the closed forms need u_s^(-) = 2 lambda mu_s - 1 > 0; here u_s^(-) = {:.6}",
+            c.u_s_minus.unwrap_or(f64::NAN)
+        )
+    })
+}
+
+const PHASE_KEYS: [[&str; 8]; 2] = [
+    [
+        "t_slip_1",
+        "a_slip_1",
+        "t_max_speed_1",
+        "v_max_1",
+        "t_stick_1",
+        "s_1",
+        "gamma_1",
+        "distance_1",
+    ],
+    [
+        "t_slip_2",
+        "a_slip_2",
+        "t_max_speed_2",
+        "v_max_2",
+        "t_stick_2",
+        "s_2",
+        "gamma_2",
+        "distance_2",
+    ],
+];
+
+/// For each paper formula of the phases and of the whole period: does it describe the motion?
+fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
+    let mut out = Vec::new();
+    let mut push = |quantity: &'static str, reason: Option<String>| {
+        out.push(Applicability {
+            quantity,
+            applies: reason.is_none(),
+            reason: reason.unwrap_or_default(),
+        });
+    };
+    let orbit_slips: &[OrbitSlip] = c.orbit.as_ref().map_or(&[], |o| &o.slips);
+    for (i, keys) in PHASE_KEYS.iter().enumerate() {
+        let phase = if i == 0 { Phase::One } else { Phase::Two };
+        let name = if i == 0 { "I" } else { "II" };
+        let halt = match orbit_slips.iter().find(|s| s.phase == phase) {
+            Some(slip) => Some(Some(slip.halt)),
+            // Continuous slip: the first slip from rest still follows the phase-I onset formulas.
+            None if first_slip_only(c) && phase == Phase::One => Some(None),
+            None => None,
+        };
+        // The speed peaks in lobe B, where (46)/(62) put it, iff u_B h_B ≥ 1 (§3.6 step 2).
+        let (u_b, h_b) = if i == 0 {
+            (c.u_d_plus, c.eta)
+        } else {
+            (c.u_d_minus, c.eta_prime)
+        };
+        let max_in_lobe_b = u_b.zip(h_b).is_some_and(|(u, h)| u * h >= 1.0);
+        for (j, &key) in keys.iter().enumerate() {
+            let reason = match (domain_note, halt) {
+                (Some(note), _) => Some(note.to_string()),
+                (None, None) => Some(format!(
+                    "no slip starts from rest in phase {name} on the periodic orbit ({})",
+                    orbit_regime_id(c.regime)
+                )),
+                (None, Some(halt)) => match (j, halt) {
+                    (0 | 1, _) => None,
+                    (2 | 3, _) if max_in_lobe_b => None,
+                    (2 | 3, _) => Some(format!(
+                        "no speed maximum in the next lobe (a > 0 there): the phase-{name} \
+                         maximum is not (46)/(62)"
+                    )),
+                    (_, Some(HaltKind::B)) => None,
+                    (_, Some(h)) => Some(format!(
+                        "the phase-{name} slip halts on flank {} (§3.6), not on the rising flank \
+                         of the next lobe that (49)/(60) assume",
+                        halt_name(h)
+                    )),
+                    (_, None) => {
+                        Some("continuous slip: the first slip from rest never halts".to_string())
+                    }
+                },
+            };
+            push(key, reason);
+        }
+    }
+    let period_reason = if c.paper_regime_valid {
+        None
+    } else {
+        Some(
+            "outside the paper's standard regime (both sticks inside their half periods): \
+             (68)-(71) do not give the motion; the lobe-engine orbit does"
+                .to_string(),
+        )
+    };
+    for key in ["gamma", "distance_per_period", "v_avg", "power_weight"] {
+        push(key, period_reason.clone());
+    }
+    out
+}
+
+/// Continuous slip from a delayed start: only the first slip from rest has closed forms.
+fn first_slip_only(c: &WoodpeckerClosedForm) -> bool {
+    c.orbit.is_none() && c.regime == OrbitRegime::ContinuousOrMultiperiod && !c.immediate_slip
+}
+
+fn halt_name(h: HaltKind) -> &'static str {
+    match h {
+        HaltKind::B => "B",
+        HaltKind::BLate => "B_late",
+        HaltKind::A => "A",
+        HaltKind::ALate => "A_late",
+    }
+}
+
+/// The §7 identifier of a closed-form regime.
+pub fn orbit_regime_id(r: OrbitRegime) -> &'static str {
+    match r {
+        OrbitRegime::NoSlip => "no_slip",
+        OrbitRegime::DoubleSlipStick => "double_slip_stick",
+        OrbitRegime::DoubleSlipNoHalt => "double_slip_no_halt",
+        OrbitRegime::SingleSlipStick => "single_slip_stick",
+        OrbitRegime::ContinuousOrMultiperiod => "continuous_or_multiperiod",
+        OrbitRegime::OutsideClosedFormDomain => "outside_closed_form_domain",
+    }
+}
+
+/// Whether an integration regime is the one the closed-form regime predicts.
+fn regime_agrees(closed: OrbitRegime, numeric: IntegrationRegime) -> bool {
+    use IntegrationRegime as I;
+    match closed {
+        OrbitRegime::NoSlip => numeric == I::NoSlip,
+        OrbitRegime::DoubleSlipStick => numeric == I::DoubleSlipStick,
+        OrbitRegime::DoubleSlipNoHalt => numeric == I::DoubleSlipNoHalt,
+        OrbitRegime::SingleSlipStick => numeric == I::SingleSlipStick,
+        OrbitRegime::ContinuousOrMultiperiod => {
+            matches!(numeric, I::ContinuousSlip | I::Multiperiod | I::NotPeriodic)
+        }
+        OrbitRegime::OutsideClosedFormDomain => false,
+    }
+}
+
+/// One slip of the orbit as measured on the linear run: onset, maxima, stick.
+struct MeasuredSlip {
+    slip: Event,
+    maxima: Vec<Event>,
+    stick: Option<Event>,
+}
+
+/// The measured slip whose onset matches `expected` (s, within the period) in period `n`.
+fn measure(run: &Run, n: u32, expected: f64) -> Option<MeasuredSlip> {
+    let start = f64::from(n) * run.period;
+    let i = run.events.iter().position(|e| {
+        matches!(e.kind, EventKind::Slip { .. })
+            && e.period == n
+            && ((e.t - start) - expected).abs() <= 1e-6 * run.period
+    })?;
+    let mut maxima = Vec::new();
+    let mut stick = None;
+    for e in &run.events[i + 1..] {
+        match e.kind {
+            EventKind::SpeedMax => maxima.push(*e),
+            EventKind::Stick { .. } => {
+                stick = Some(*e);
+                break;
+            }
+            _ => break,
+        }
+    }
+    Some(MeasuredSlip {
+        slip: run.events[i],
+        maxima,
+        stick,
+    })
+}
+
+/// Checks of the closed forms that describe the motion, and of the lobe-engine orbit.
+fn checks(
+    p: &WoodpeckerParams,
+    c: &WoodpeckerClosedForm,
+    applicability: &[Applicability],
+    run: &Run,
+    summary: &Summary,
+) -> Vec<Check> {
+    let applies = |key: &str| applicability.iter().any(|a| a.quantity == key && a.applies);
+    let mut out = Vec::new();
+    // A period of the settled orbit whose slips halt before the run ends (halts come < 2T
+    // after the period start).
+    let n = run.periods.saturating_sub(3);
+    let law = woodpecker::force_law(p, LawKind::Linear).ok();
+    let body = woodpecker::body(p);
+    let accel_at = |t: f64| {
+        law.as_ref()
+            .map(|l| (l.drive(t) - body.mu_d * l.normal(t)) / body.mass)
+    };
+    // The slips to measure: the orbit's, from a settled period; or, in continuous slip, the
+    // first slip from rest in the first period.
+    let slips: Vec<(Phase, f64, u32, Option<&OrbitSlip>)> = match &c.orbit {
+        Some(orbit) => orbit
+            .slips
+            .iter()
+            .map(|s| (s.phase, s.t_slip, n, Some(s)))
+            .collect(),
+        None => c
+            .t_slip_1
+            .filter(|_| first_slip_only(c))
+            .map(|t| (Phase::One, t, 0, None))
+            .into_iter()
+            .collect(),
+    };
+    for (k, &(phase, t_expected, period, orbit_slip)) in slips.iter().enumerate() {
+        let start = f64::from(period) * run.period;
+        let m = measure(run, period, t_expected);
+        let keys = &PHASE_KEYS[usize::from(phase == Phase::Two)];
+        let phase_values = phase_values(c, phase);
+        let t_slip = m.as_ref().map(|m| m.slip.t - start);
+        let first_max = m.as_ref().and_then(|m| m.maxima.first().copied());
+        let stick = m.as_ref().and_then(|m| m.stick);
+        // Measured counterparts, by index into PHASE_KEYS (S and Γ have none).
+        let measured = [
+            (0, t_slip),
+            (1, t_slip.and_then(|t| accel_at(t + start))),
+            (2, first_max.map(|e| e.t - start)),
+            (3, first_max.map(|e| e.v)),
+            (4, stick.map(|e| e.t - start)),
+            (7, stick.zip(m.as_ref()).map(|(st, m)| st.x - m.slip.x)),
+        ];
+        for (j, value) in measured {
+            if let (true, Some(closed)) = (applies(keys[j]), phase_values[j]) {
+                let scale = if j == 1 { p.g } else { 0.0 };
+                let eq = equation(keys[j]);
+                out.push(Check::measured_on_scale(keys[j], eq, closed, value, scale));
+            }
+        }
+        if let Some(slip) = orbit_slip {
+            let covered = |j: usize| applies(keys[j]) && phase_values[j].is_some();
+            let covered = [covered(4), covered(2), covered(7)];
+            push_orbit_checks(&mut out, k + 1, slip, m.as_ref(), start, covered);
+        }
+    }
+    if let Some(orbit) = &c.orbit {
+        push_period_checks(&mut out, c, orbit, summary, applies("v_avg"));
+    }
+    out.push(Check::label_agreeing(
+        "regime",
+        "§3.6",
+        orbit_regime_id(c.regime),
+        summary.regime.id(),
+        regime_agrees(c.regime, summary.regime),
+    ));
+    out.push(Check::label(
+        "immediate_slip",
+        "(38)",
+        &c.immediate_slip.to_string(),
+        &run.immediate_slip.to_string(),
+    ));
+    out
+}
+
+/// The closed-form values of one phase in the order of [`PHASE_KEYS`].
+fn phase_values(c: &WoodpeckerClosedForm, phase: Phase) -> [Option<f64>; 8] {
+    match phase {
+        Phase::One => [
+            c.t_slip_1,
+            c.a_slip_1,
+            c.t_max_speed_1,
+            c.v_max_1,
+            c.t_stick_1,
+            c.s_1,
+            c.gamma_1,
+            c.distance_1,
+        ],
+        Phase::Two => [
+            c.t_slip_2,
+            c.a_slip_2,
+            c.t_max_speed_2,
+            c.v_max_2,
+            c.t_stick_2,
+            c.s_2,
+            c.gamma_2,
+            c.distance_2,
+        ],
+    }
+}
+
+/// The paper's equation of a phase key.
+fn equation(key: &str) -> &'static str {
+    match key {
+        "t_slip_1" => "(41)",
+        "a_slip_1" => "(45)",
+        "t_max_speed_1" => "(46)",
+        "v_max_1" => "(48)",
+        "t_stick_1" => "(49)",
+        "distance_1" => "(55)",
+        "t_slip_2" => "(58)",
+        "a_slip_2" => "(64)",
+        "t_max_speed_2" => "(62)",
+        "v_max_2" => "(63)",
+        "t_stick_2" => "(60)",
+        "distance_2" => "(68)",
+        _ => "§3.6",
+    }
+}
+
+/// Orbit checks of one slip: its halt time, every speed maximum and its distance (§3.6), less
+/// those a paper formula already checks (`covered`: stick, first maximum, distance).
+fn push_orbit_checks(
+    out: &mut Vec<Check>,
+    k: usize,
+    slip: &OrbitSlip,
+    m: Option<&MeasuredSlip>,
+    start: f64,
+    covered: [bool; 3],
+) {
+    let [stick_covered, first_max_covered, distance_covered] = covered;
+    if !stick_covered {
+        let stick = m.and_then(|m| m.stick);
+        out.push(Check::measured(
+            &format!("orbit_t_stick_{k}"),
+            "§3.6",
+            slip.t_halt,
+            stick.map(|e| e.t - start),
+        ));
+    }
+    for (j, &(t, v)) in slip.speed_maxima.iter().enumerate() {
+        if j == 0 && first_max_covered {
+            continue;
+        }
+        let measured = m.and_then(|m| m.maxima.get(j));
+        out.push(Check::measured(
+            &format!("orbit_t_max_speed_{k}_{}", j + 1),
+            "§3.6",
+            t,
+            measured.map(|e| e.t - start),
+        ));
+        out.push(Check::measured(
+            &format!("orbit_v_max_{k}_{}", j + 1),
+            "§3.6",
+            v,
+            measured.map(|e| e.v),
+        ));
+    }
+    if !distance_covered {
+        let distance = m.and_then(|m| m.stick.map(|st| st.x - m.slip.x));
+        out.push(Check::measured(
+            &format!("orbit_distance_{k}"),
+            "§3.6",
+            slip.distance,
+            distance,
+        ));
+    }
+}
+
+/// Checks of the advance and mean speed per period: (68)–(71) where they apply, and the orbit.
+fn push_period_checks(
+    out: &mut Vec<Check>,
+    c: &WoodpeckerClosedForm,
+    orbit: &Orbit,
+    s: &Summary,
+    paper_applies: bool,
+) {
+    if paper_applies {
+        if let (Some(y), Some(v)) = (c.distance_per_period, c.v_avg) {
+            out.push(Check::measured(
+                "distance_per_period",
+                "(68),(69)",
+                y,
+                s.advance_per_period,
+            ));
+            out.push(Check::measured("v_avg", "(71)", v, s.v_avg));
+        }
+    }
+    out.push(Check::measured(
+        "orbit_distance_per_period",
+        "§3.6",
+        orbit.distance_per_period,
+        s.advance_per_period,
+    ));
+    out.push(Check::measured("orbit_v_avg", "§3.6", orbit.v_avg, s.v_avg));
+}
