@@ -41,7 +41,7 @@ pub struct CommonArgs {
     #[arg(long, value_name = "FILE")]
     pub scenario: Option<PathBuf>,
     /// Periods to integrate (1 to 1000000) [default: 8, or the scenario's].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub periods: Option<i64>,
     /// Print the JSON object of physics.md §7 instead of tables.
     #[arg(long)]
@@ -54,22 +54,22 @@ pub struct PulledMassArgs {
     #[command(flatten)]
     pub common: CommonArgs,
     /// Static friction coefficient μs [default: 0.4].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mu_s: Option<f64>,
     /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.25].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mu_d: Option<f64>,
     /// Mass m of the block in kg (the hanging mass is equal) [default: 0.06].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mass: Option<f64>,
     /// Spring constant k in N/m [default: 45].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub k: Option<f64>,
     /// Pulling force F in N [default: 0.18].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub force: Option<f64>,
     /// Gravitational acceleration g in m/s² [default: 9.81].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub g: Option<f64>,
 }
 
@@ -79,37 +79,37 @@ pub struct WoodpeckerArgs {
     #[command(flatten)]
     pub common: CommonArgs,
     /// Static friction coefficient μs [default: 0.65].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mu_s: Option<f64>,
     /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.32].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub mu_d: Option<f64>,
     /// Spring constant k in N/m [default: 20].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub k: Option<f64>,
     /// Sleeve mass m_S in kg [default: 0.006].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub m_sleeve: Option<f64>,
     /// Woodpecker (bird) mass m_W in kg [default: 0.014].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub m_bird: Option<f64>,
     /// Lever arm l of the spring force in m [default: 0.016].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub l: Option<f64>,
     /// Distance h between the two pole contacts in m [default: 0.007].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub h: Option<f64>,
     /// Spring offset z0 in m [default: 0.007].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub z0: Option<f64>,
     /// Spring oscillation amplitude d0 in m [default: 0.009].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub d0: Option<f64>,
     /// Gravitational acceleration g in m/s² [default: 9.81].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub g: Option<f64>,
     /// Lever ratio λ (each contact carries λ|F_e|) [default: l/h].
-    #[arg(long, allow_negative_numbers = true)]
+    #[arg(long, allow_hyphen_values = true)]
     pub lever: Option<f64>,
     /// Definition of ω [default: bird].
     #[arg(long, value_enum)]

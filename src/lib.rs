@@ -22,4 +22,5 @@ pub mod formula;
 pub mod model;
 pub mod output;
 pub mod params;
+pub mod report;
 pub mod results;

@@ -140,7 +140,7 @@ fn ensure_model(s: &Scenario, want: ModelName, path: &Path) -> Result<()> {
     if s.model != want {
         return Err(Error::Scenario {
             path: path.display().to_string(),
-            reason: format!("describes model {:?}, not {:?}", s.model, want),
+            reason: format!("describes model {}, not {}", s.model.id(), want.id()),
         }
         .into());
     }

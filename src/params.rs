@@ -50,15 +50,7 @@ impl Default for PulledMassParams {
 impl PulledMassParams {
     /// Checks every parameter against its valid range.
     pub fn validate(&self) -> Result<()> {
-        positive("mu_s", self.mu_s)?;
-        positive("mu_d", self.mu_d)?;
-        if self.mu_d > self.mu_s {
-            return Err(invalid(
-                "mu_d",
-                self.mu_d,
-                format!("0 < mu_d <= mu_s (mu_s = {})", self.mu_s),
-            ));
-        }
+        validate_friction(self.mu_s, self.mu_d)?;
         positive("mass", self.mass)?;
         positive("k", self.k)?;
         positive("force", self.force)?;
@@ -155,22 +147,14 @@ impl Default for WoodpeckerParams {
 impl WoodpeckerParams {
     /// Checks every parameter against its valid range.
     pub fn validate(&self) -> Result<()> {
-        positive("mu_s", self.mu_s)?;
-        positive("mu_d", self.mu_d)?;
-        if self.mu_d > self.mu_s {
-            return Err(invalid(
-                "mu_d",
-                self.mu_d,
-                format!("0 < mu_d <= mu_s (mu_s = {})", self.mu_s),
-            ));
-        }
+        validate_friction(self.mu_s, self.mu_d)?;
         positive("k", self.k)?;
         positive("m_sleeve", self.m_sleeve)?;
         positive("m_bird", self.m_bird)?;
         positive("l", self.l)?;
         positive("h", self.h)?;
         if !self.z0.is_finite() {
-            return Err(invalid("z0", self.z0, "-inf < z0 < inf"));
+            return Err(invalid("z0", num(self.z0), "-inf < z0 < inf"));
         }
         positive("d0", self.d0)?;
         positive("g", self.g)?;
@@ -228,12 +212,43 @@ pub fn invalid(name: &'static str, value: impl ToString, rule: impl Into<String>
     }
 }
 
+/// Largest friction coefficient accepted: far beyond any real pair of surfaces, and small
+/// enough that μ² and μ³ in the closed forms cannot overflow.
+pub const MU_MAX: f64 = 100.0;
+
+/// Checks μs and μd: 0 < μd ≤ μs ≤ [`MU_MAX`].
+pub fn validate_friction(mu_s: f64, mu_d: f64) -> Result<()> {
+    positive("mu_s", mu_s)?;
+    if mu_s > MU_MAX {
+        return Err(invalid("mu_s", num(mu_s), format!("0 < mu_s <= {MU_MAX}")));
+    }
+    positive("mu_d", mu_d)?;
+    if mu_d > mu_s {
+        return Err(invalid(
+            "mu_d",
+            num(mu_d),
+            format!("0 < mu_d <= mu_s (mu_s = {mu_s})"),
+        ));
+    }
+    Ok(())
+}
+
+/// A parameter value as written in messages: plain for ordinary magnitudes, else scientific.
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
+        format!("{x:e}")
+    } else {
+        x.to_string()
+    }
+}
+
 /// Requires a finite value > 0.
 pub fn positive(name: &'static str, value: f64) -> Result<()> {
     if value.is_finite() && value > 0.0 {
         Ok(())
     } else {
-        Err(invalid(name, value, format!("0 < {name} < inf")))
+        Err(invalid(name, num(value), format!("0 < {name} < inf")))
     }
 }
 
@@ -243,6 +258,16 @@ pub fn positive(name: &'static str, value: f64) -> Result<()> {
 pub enum ModelName {
     PulledMass,
     Woodpecker,
+}
+
+impl ModelName {
+    /// The name used on the command line and in scenario files.
+    pub fn id(self) -> &'static str {
+        match self {
+            Self::PulledMass => "pulled-mass",
+            Self::Woodpecker => "woodpecker",
+        }
+    }
 }
 
 /// A scenario file: a model, a title, optionally the number of periods, and the parameters

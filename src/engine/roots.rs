@@ -80,11 +80,15 @@ pub fn monotone_zero(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, h
         } else {
             f64::NAN
         };
-        t = if newton > lo && newton < hi && newton != t {
-            newton
+        if newton > lo && newton < hi {
+            // Quadratic convergence: a step below a few ulps is the last one.
+            if (newton - t).abs() <= 4.0 * f64::EPSILON * t.abs() {
+                return newton;
+            }
+            t = newton;
         } else {
-            0.5 * (lo + hi)
-        };
+            t = 0.5 * (lo + hi);
+        }
     }
     // The bracket end where f ≤ 0: the state there has v ≤ 0, so the stick is not early.
     if f(lo).abs() < f(hi).abs() {

@@ -138,6 +138,24 @@ impl Recorder {
         n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
     }
 
+    /// Takes back a slip onset at absolute time `t` that led to no motion.
+    fn retract_slip(&mut self, t: f64) {
+        if let Some(last) = self.events.last() {
+            if matches!(last.kind, EventKind::Slip { .. })
+                && (last.t - t).abs() <= self.snap * (1.0 + t / self.period)
+            {
+                self.events.pop();
+            }
+        }
+        if self
+            .first_slip
+            .is_some_and(|f| (f - t).abs() <= self.snap * (1.0 + t / self.period))
+        {
+            self.first_slip = None;
+        }
+        self.last_transition = None;
+    }
+
     fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
         let t = f64::from(n) * self.period + t_local;
         let mut event = Event {
@@ -262,7 +280,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     piece.normal,
                 );
                 let arc = Arc::new(piece.basis, accel, t, x, v);
-                let slide = slide(&arc, dir, piece, t, snap, &mut accel_sign, |tm| {
+                let slide = slide(&arc, dir, piece, t, &mut accel_sign, |tm| {
                     rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
                 });
                 normal_work += slide.normal_work;
@@ -277,6 +295,16 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 }
                 x = arc.x(t_end);
                 match slide.stick {
+                    // A slip from rest that sticks where it started is shorter than the event
+                    // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
+                    Some(t_stick) if t_stick == t && v == 0.0 => {
+                        rec.retract_slip(f64::from(n) * period + t);
+                        dir = 0;
+                        t = (t + snap).min(piece.end);
+                        if t >= piece.end {
+                            break;
+                        }
+                    }
                     Some(t_stick) => {
                         v = 0.0;
                         rec.push(n, t_stick, EventKind::Stick { dir }, x, 0.0);
@@ -327,13 +355,14 @@ fn slide(
     dir: i8,
     piece: &Piece,
     from: f64,
-    snap: f64,
     accel_sign: &mut i8,
     mut on_max: impl FnMut(f64),
 ) -> Slide {
     let s = f64::from(dir);
     let speed = |t: f64| s * arc.v(t);
-    let mut bounds = arc.accel_zeros(from + snap, piece.end - snap);
+    // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
+    // progress instead of sticking where it started.
+    let mut bounds = arc.accel_zeros(from, piece.end);
     bounds.push(piece.end);
     let mut p = from;
     let mut normal_work = 0.0;

@@ -194,6 +194,34 @@ pub const PULLED_MASS: &[Quantity] = &[
     ),
 ];
 
+/// Checked quantities that are not §7 closed-form keys, shown with the checks.
+pub const EXTRA_CHECKED: &[Quantity] = &[
+    q(
+        "power_late",
+        "P_late",
+        "W",
+        "(29)",
+        "[D]",
+        r"P_{late} = F\,\bar v_{late}",
+    ),
+    q(
+        "immediate_slip",
+        "immediate slip",
+        "",
+        "(38)",
+        "[P]",
+        r"\text{immediate slip}",
+    ),
+    q(
+        "regime",
+        "regime",
+        "",
+        "§1.5, §3.6",
+        "[D]",
+        r"\text{regime}",
+    ),
+];
+
 /// The woodpecker closed forms (physics.md §3), in the order they are shown.
 pub const WOODPECKER: &[Quantity] = &[
     q(
@@ -503,7 +531,7 @@ pub const WOODPECKER: &[Quantity] = &[
     ),
 ];
 
-/// The metadata of `key` in `table`.
+/// The metadata of `key` in `table`, or among the extra checked quantities.
 pub fn find(table: &'static [Quantity], key: &str) -> Option<&'static Quantity> {
-    table.iter().find(|q| q.key == key)
+    table.iter().chain(EXTRA_CHECKED).find(|q| q.key == key)
 }

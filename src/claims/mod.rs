@@ -1,0 +1,240 @@
+//! The paper's claims checked on computed evidence (physics.md §6): for each of the eight
+//! statements, what the paper says, a verdict and the numbers behind it, computed on the given
+//! parameter sets, on variations of them (another μd, z0, m_S or λ) and, for statements about
+//! "sensible values" in general, on a seeded random sample of valid parameter sets.
+//!
+//! ```text
+//! pulled mass + woodpecker params ─┬─ closed forms (formula)      ─┐
+//!                                  ├─ exact integration (engine)  ─┼─→ Claim { verdict, finding, numbers }
+//!            Sample { seed, size } ─┴─ random sets (closed forms)   ─┘
+//! ```
+//!
+//! A verdict judges the paper's statement (`paper_says`) as written: `confirmed` (it holds on the
+//! evidence), `refuted` (a computed counterexample contradicts it), `qualified` (it holds only in
+//! part, or only after a correction the finding names). Nothing is quoted from the specification:
+//! every verdict follows from numbers computed here.
+
+mod both;
+mod lever;
+mod pulled_mass;
+mod sample;
+mod woodpecker;
+
+use serde::{Deserialize, Serialize};
+
+use crate::engine::{analyse, integrate, Run, RunOptions, Steady};
+use crate::error::Result;
+use crate::model::{self, LawKind};
+use crate::params::{invalid, PulledMassParams, WoodpeckerParams, DEFAULT_PERIODS};
+
+pub use lever::halt_threshold_z0;
+
+/// Largest random sample a caller may ask for.
+pub const MAX_SAMPLE: usize = 1_000_000;
+
+/// The seeded random sample used for statements about many parameter sets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub struct Sample {
+    /// Seed of the generator (`StdRng::seed_from_u64`): the same seed gives the same claims.
+    pub seed: u64,
+    /// Number of random parameter sets per sampled claim.
+    pub size: usize,
+}
+
+impl Default for Sample {
+    /// Seed 2017 (the paper's year), 2000 sets.
+    fn default() -> Self {
+        Self {
+            seed: 2017,
+            size: 2000,
+        }
+    }
+}
+
+/// How a claim fares against the computed evidence.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Verdict {
+    Confirmed,
+    Refuted,
+    Qualified,
+}
+
+/// Which model a claim is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum ClaimModel {
+    PulledMass,
+    Woodpecker,
+    Both,
+}
+
+/// One number behind a verdict (SI units; `unit` is "" for a pure number).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ClaimNumber {
+    pub label: String,
+    pub value: f64,
+    pub unit: String,
+}
+
+/// The outcome of a claim on the random sample.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SampleResult {
+    /// Number of valid random sets examined.
+    pub size: usize,
+    pub seed: u64,
+    /// Sets that contradict the paper's statement, and their share of `size`.
+    pub counterexamples: usize,
+    pub share: f64,
+    /// The first counterexample, described in words.
+    pub example: Option<String>,
+}
+
+/// One claim of physics.md §6 with its verdict.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Claim {
+    /// 1..=8, the numbering of physics.md §6.
+    pub id: u8,
+    pub model: ClaimModel,
+    pub title: String,
+    /// The paper's statement, short.
+    pub paper_says: String,
+    pub verdict: Verdict,
+    /// One or two sentences with the numbers.
+    pub finding: String,
+    pub numbers: Vec<ClaimNumber>,
+    pub sample: Option<SampleResult>,
+}
+
+/// All eight claims, in the order of physics.md §6.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Claims {
+    pub claims: Vec<Claim>,
+}
+
+/// Checks the parameters and the sample, then evaluates the eight claims.
+pub fn evaluate(
+    pulled: &PulledMassParams,
+    wood: &WoodpeckerParams,
+    sample: &Sample,
+) -> Result<Claims> {
+    pulled.validate()?;
+    wood.validate()?;
+    if !(1..=MAX_SAMPLE).contains(&sample.size) {
+        return Err(invalid(
+            "sample size",
+            sample.size,
+            format!("1 <= size <= {MAX_SAMPLE}"),
+        ));
+    }
+    let pulled_fallback = pulled_mass::periodic_set(pulled)?;
+    let claims = vec![
+        pulled_mass::claim_1(pulled, sample)?,
+        pulled_mass::claim_2(pulled)?,
+        both::claim_3(&pulled_fallback, wood)?,
+        woodpecker::claim_4(wood, sample),
+        woodpecker::claim_5(wood)?,
+        woodpecker::claim_6(wood)?,
+        both::claim_7(&pulled_fallback, wood)?,
+        lever::claim_8(wood)?,
+    ];
+    Ok(Claims { claims })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Helpers shared by the claim modules
+
+/// Builds the `numbers` of a claim, leaving out values that do not exist or are not finite.
+#[derive(Default)]
+struct Numbers(Vec<ClaimNumber>);
+
+impl Numbers {
+    fn push(&mut self, label: &str, value: impl Into<Option<f64>>, unit: &str) -> &mut Self {
+        if let Some(value) = value.into().filter(|v| v.is_finite()) {
+            self.0.push(ClaimNumber {
+                label: label.to_string(),
+                value,
+                unit: unit.to_string(),
+            });
+        }
+        self
+    }
+
+    fn take(&mut self) -> Vec<ClaimNumber> {
+        std::mem::take(&mut self.0)
+    }
+}
+
+/// An exact integration over the default number of periods, with its steady state.
+struct Integrated {
+    run: Run,
+    steady: Steady,
+}
+
+impl Integrated {
+    /// The first stick after the first slip onset: (slip time, stick time), absolute (s).
+    fn first_slip_and_stick(&self) -> Option<(f64, Option<f64>)> {
+        use crate::engine::EventKind;
+        let mut events = self.run.events.iter().filter(|e| e.is_transition());
+        let slip = events.find(|e| matches!(e.kind, EventKind::Slip { .. }))?;
+        let stick = events
+            .next()
+            .filter(|e| matches!(e.kind, EventKind::Stick { .. }))
+            .map(|e| e.t);
+        Some((slip.t, stick))
+    }
+}
+
+fn steady_run(body: &crate::engine::Body, law: &crate::engine::ForceLaw) -> Result<Integrated> {
+    let opts = RunOptions {
+        periods: DEFAULT_PERIODS,
+        record_segments: false,
+    };
+    let run = integrate(body, law, &opts)?;
+    let steady = analyse(&run);
+    Ok(Integrated { run, steady })
+}
+
+/// Integrates the pulled mass under `law`.
+fn run_pulled(p: &PulledMassParams, law: LawKind) -> Result<Integrated> {
+    let body = model::pulled_mass::body(p);
+    steady_run(&body, &model::pulled_mass::force_law(p, law)?)
+}
+
+/// Integrates the woodpecker sleeve under `law` (the linear law needs a defined counterpart).
+fn run_wood(p: &WoodpeckerParams, law: LawKind) -> Result<Integrated> {
+    let body = model::woodpecker::body(p);
+    steady_run(&body, &model::woodpecker::force_law(p, law)?)
+}
+
+/// |a − b| / max(|a|, |b|) (0 when both vanish).
+fn rel_diff(a: f64, b: f64) -> f64 {
+    let scale = a.abs().max(b.abs());
+    if scale == 0.0 {
+        0.0
+    } else {
+        (a - b).abs() / scale
+    }
+}
+
+/// (max − min) / max|x| of the values (0 for fewer than two).
+fn spread(values: &[f64]) -> f64 {
+    let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let min = values.iter().copied().fold(f64::INFINITY, f64::min);
+    let scale = values.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    if values.len() < 2 || scale == 0.0 {
+        0.0
+    } else {
+        (max - min) / scale
+    }
+}
+
+/// A speed in mm/s for the findings.
+fn mm_s(v: f64) -> String {
+    format!("{:.2} mm/s", 1e3 * v)
+}
+
+/// An optional value formatted with `f`, or "none".
+fn or_none(v: Option<f64>, f: impl Fn(f64) -> String) -> String {
+    v.map_or_else(|| "none".to_string(), f)
+}

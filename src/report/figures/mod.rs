@@ -1,0 +1,7 @@
+//! Figures as SVG strings: plain-data specifications ([`spec`]) drawn by the renderers
+//! ([`chart`], [`map`]) in one style ([`style`]).
+
+pub mod chart;
+pub mod map;
+pub mod spec;
+pub mod style;

@@ -1,0 +1,66 @@
+//! What a figure shows, as plain data: the physics side fills these, the renderers in
+//! [`super::chart`] and [`super::map`] draw them. No physics here.
+
+/// How a curve is stroked, so that curves stay distinguishable in black-and-white print.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stroke {
+    Solid,
+    Dashed,
+    Dotted,
+    DashDot,
+}
+
+/// One curve: (x, y) points in plot units, a legend label, a palette index and a stroke.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Curve {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    /// Index into the palette (0 = first colour).
+    pub color: usize,
+    pub stroke: Stroke,
+}
+
+/// A vertical marker (a characteristic time) with a short label such as "t_SL".
+#[derive(Clone, Debug, PartialEq)]
+pub struct Marker {
+    pub x: f64,
+    pub label: String,
+}
+
+/// One panel of a stacked chart: its curves share the x axis of the chart.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Panel {
+    /// y-axis label with unit, e.g. "v (mm/s)".
+    pub y_label: String,
+    pub curves: Vec<Curve>,
+    /// Horizontal reference lines (y value, label); drawn thin and grey.
+    pub h_lines: Vec<(f64, String)>,
+}
+
+/// A chart of one or more panels stacked vertically over a common x axis.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LineChart {
+    /// x-axis label with unit, e.g. "t (s)".
+    pub x_label: String,
+    /// x range; `None` = from the data.
+    pub x_range: Option<(f64, f64)>,
+    pub panels: Vec<Panel>,
+    /// Vertical markers drawn through every panel, labelled in the top one.
+    pub markers: Vec<Marker>,
+}
+
+/// A category map: a grid of cells coloured by category, with analytic curves on top.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CategoryMap {
+    pub x_label: String,
+    pub y_label: String,
+    /// Cell-centre ranges: column i is at x0 + (i + ½)(x1 − x0)/nx, likewise for rows.
+    pub x_range: (f64, f64),
+    pub y_range: (f64, f64),
+    /// cells[row][col], row 0 at the bottom (smallest y); values index `categories`.
+    pub cells: Vec<Vec<u8>>,
+    /// Legend entries of the categories: (label, palette index of the fill).
+    pub categories: Vec<(String, usize)>,
+    /// Boundaries drawn over the cells.
+    pub curves: Vec<Curve>,
+}

@@ -1,0 +1,38 @@
+//! LaTeX to MathML for the HTML pages (pulldown-latex); the Markdown pages keep the LaTeX
+//! between `$…$`, which GitHub renders.
+
+use pulldown_latex::{push_mathml, Parser, RenderConfig, Storage};
+
+/// MathML of an inline LaTeX formula; the escaped source in a `<code>` when it does not parse.
+pub fn mathml(latex: &str) -> String {
+    let storage = Storage::new();
+    let parser = Parser::new(latex, &storage);
+    let mut out = String::new();
+    match push_mathml(&mut out, parser, RenderConfig::default()) {
+        Ok(()) => out,
+        Err(_) => format!("<code>{}</code>", escape(latex)),
+    }
+}
+
+/// Minimal HTML escaping for text placed in markup.
+pub fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::results::quantity::{PULLED_MASS, WOODPECKER};
+
+    #[test]
+    fn every_formula_of_the_tables_renders_to_mathml() {
+        for q in PULLED_MASS.iter().chain(WOODPECKER) {
+            let m = mathml(q.latex);
+            assert!(m.starts_with("<math"), "{}: {m}", q.key);
+            assert!(!m.contains("merror"), "{}: {m}", q.key);
+        }
+    }
+}
