@@ -7,6 +7,7 @@ use clap::{Args, Parser, Subcommand};
 
 use crate::formula::woodpecker::Counterpart;
 use crate::params::OmegaMode;
+use crate::report::Format;
 
 /// Stick-slip models of a physics paper: closed forms checked against exact integration.
 #[derive(Debug, Parser)]
@@ -24,6 +25,35 @@ pub enum Command {
         #[command(subcommand)]
         model: EvalModel,
     },
+    /// Render the report: the built-in scenes of the paper's figures, or the given scenario
+    /// files, as HTML and Markdown.
+    Report(ReportArgs),
+    /// Evaluate the claims of the paper (physics.md §6) on the given parameters (the other
+    /// model keeps the paper's default set) and on a seeded random sample.
+    Claims {
+        /// Seed of the random sample.
+        #[arg(long, default_value_t = 2017)]
+        seed: u64,
+        /// Random parameter sets per sampled claim (1 to 1000000).
+        #[arg(long, default_value_t = 2000)]
+        samples: usize,
+        #[command(subcommand)]
+        model: EvalModel,
+    },
+}
+
+/// Options of `stickslip report`.
+#[derive(Debug, Args)]
+pub struct ReportArgs {
+    /// Scenario files (TOML) to render, one scene each [default: the built-in scenes].
+    #[arg(value_name = "SCENARIO")]
+    pub scenarios: Vec<PathBuf>,
+    /// Output folder.
+    #[arg(long, default_value = "reports")]
+    pub out: PathBuf,
+    /// Formats, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
+    pub format: Vec<Format>,
 }
 
 #[derive(Debug, Subcommand)]

@@ -19,6 +19,15 @@ pub enum Error {
     /// The engine could not advance (should not happen for valid laws).
     #[error("integration stalled at t = {t} s: {reason}")]
     Stalled { t: f64, reason: &'static str },
+    /// A figure that could not be drawn.
+    #[error("figure {id}: {reason}")]
+    Figure { id: String, reason: String },
+    /// A report template that failed to render (a bug in a template).
+    #[error("template {name}: {reason}")]
+    Template { name: String, reason: String },
+    /// An output file or folder that cannot be written.
+    #[error("cannot write {path}: {reason}")]
+    Output { path: String, reason: String },
     /// A scenario file that cannot be read or parsed.
     #[error("scenario {path}: {reason}")]
     Scenario { path: String, reason: String },

@@ -15,6 +15,7 @@
 //! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
 //! force law.
 
+pub mod claims;
 pub mod cli;
 pub mod engine;
 pub mod error;

@@ -10,12 +10,14 @@ use std::process::ExitCode;
 use anyhow::{Context, Result};
 use clap::Parser;
 
-use stickslip::cli::{Cli, Command, CommonArgs, EvalModel, PulledMassArgs, WoodpeckerArgs};
+use stickslip::cli::{
+    Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, WoodpeckerArgs,
+};
 use stickslip::error::Error;
 use stickslip::params::{
     invalid, ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS,
 };
-use stickslip::{output, results};
+use stickslip::{output, report, results};
 
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -47,7 +49,58 @@ fn run(cli: Cli) -> Result<()> {
             EvalModel::PulledMass(args) => eval_pulled_mass(&args),
             EvalModel::Woodpecker(args) => eval_woodpecker(&args),
         },
+        Command::Report(args) => report(&args),
+        Command::Claims {
+            seed,
+            samples,
+            model,
+        } => claims(seed, samples, &model),
     }
+}
+
+fn report(args: &ReportArgs) -> Result<()> {
+    let scenes = if args.scenarios.is_empty() {
+        report::builtin_scenes()?
+    } else {
+        args.scenarios
+            .iter()
+            .map(|path| report::Scene::from_file(path))
+            .collect::<stickslip::error::Result<Vec<_>>>()?
+    };
+    // Everything is rendered before anything is written: an error leaves no partial report.
+    let files = report::render(&scenes, &args.format)?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} scenes to {}\n",
+        written.len(),
+        scenes.len(),
+        args.out.display()
+    ))
+}
+
+fn claims(seed: u64, samples: usize, model: &EvalModel) -> Result<()> {
+    let (pulled, wood, json) = match model {
+        EvalModel::PulledMass(args) => (
+            pulled_params(args)?.0,
+            WoodpeckerParams::default(),
+            args.common.json,
+        ),
+        EvalModel::Woodpecker(args) => (
+            PulledMassParams::default(),
+            woodpecker_params(args)?.0,
+            args.common.json,
+        ),
+    };
+    let sample = stickslip::claims::Sample {
+        seed,
+        size: samples,
+    };
+    let claims = stickslip::claims::evaluate(&pulled, &wood, &sample)?;
+    print_stdout(&if json {
+        serde_json::to_string_pretty(&claims)? + "\n"
+    } else {
+        output::text::claims(&claims)
+    })
 }
 
 /// The scenario (if any) and the number of periods, flags first.
@@ -91,7 +144,7 @@ fn set<T: Copy>(slot: &mut T, flag: Option<T>) {
     }
 }
 
-fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
+fn pulled_params(args: &PulledMassArgs) -> Result<(PulledMassParams, u32)> {
     let (scenario, periods) = load_common(&args.common)?;
     let mut p: PulledMassParams =
         base_params(scenario.as_ref(), &args.common, ModelName::PulledMass)?;
@@ -101,6 +154,11 @@ fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     set(&mut p.k, args.k);
     set(&mut p.force, args.force);
     set(&mut p.g, args.g);
+    Ok((p, periods))
+}
+
+fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
+    let (p, periods) = pulled_params(args)?;
     let evaluation = results::pulled_mass::evaluate(&p, periods)?;
     print_stdout(&if args.common.json {
         serde_json::to_string_pretty(&evaluation)? + "\n"
@@ -109,7 +167,7 @@ fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     })
 }
 
-fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
+fn woodpecker_params(args: &WoodpeckerArgs) -> Result<(WoodpeckerParams, u32)> {
     let (scenario, periods) = load_common(&args.common)?;
     let mut p: WoodpeckerParams =
         base_params(scenario.as_ref(), &args.common, ModelName::Woodpecker)?;
@@ -128,6 +186,11 @@ fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
     }
     set(&mut p.omega, args.omega);
     set(&mut p.counterpart, args.counterpart);
+    Ok((p, periods))
+}
+
+fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
+    let (p, periods) = woodpecker_params(args)?;
     let evaluation = results::woodpecker::evaluate(&p, periods)?;
     print_stdout(&if args.common.json {
         serde_json::to_string_pretty(&evaluation)? + "\n"

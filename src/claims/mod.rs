@@ -13,8 +13,14 @@
 //! evidence), `refuted` (a computed counterexample contradicts it), `qualified` (it holds only in
 //! part, or only after a correction the finding names). Nothing is quoted from the specification:
 //! every verdict follows from numbers computed here.
+//!
+//! ```text
+//! claims 1, 2  pulled_mass.rs     claims 3, 7  both.rs      claims 4, 6  woodpecker.rs
+//! claim 5      halt.rs            claim 8      lever.rs     random sets  sample.rs
+//! ```
 
 mod both;
+mod halt;
 mod lever;
 mod pulled_mass;
 mod sample;
@@ -22,8 +28,11 @@ mod woodpecker;
 
 use serde::{Deserialize, Serialize};
 
-use crate::engine::{analyse, integrate, Run, RunOptions, Steady};
+use crate::engine::{
+    analyse, integrate, Body, EventKind, ForceLaw, IntegrationRegime, Run, RunOptions, Steady,
+};
 use crate::error::Result;
+use crate::formula::woodpecker::Counterpart;
 use crate::model::{self, LawKind};
 use crate::params::{invalid, PulledMassParams, WoodpeckerParams, DEFAULT_PERIODS};
 
@@ -127,15 +136,15 @@ pub fn evaluate(
             format!("1 <= size <= {MAX_SAMPLE}"),
         ));
     }
-    let pulled_fallback = pulled_mass::periodic_set(pulled)?;
+    let pulled_periodic = pulled_mass::periodic_set(pulled)?;
     let claims = vec![
         pulled_mass::claim_1(pulled, sample)?,
         pulled_mass::claim_2(pulled)?,
-        both::claim_3(&pulled_fallback, wood)?,
+        both::claim_3(&pulled_periodic, wood)?,
         woodpecker::claim_4(wood, sample),
-        woodpecker::claim_5(wood)?,
+        halt::claim_5(wood)?,
         woodpecker::claim_6(wood)?,
-        both::claim_7(&pulled_fallback, wood)?,
+        both::claim_7(&pulled_periodic, wood)?,
         lever::claim_8(wood)?,
     ];
     Ok(Claims { claims })
@@ -174,7 +183,6 @@ struct Integrated {
 impl Integrated {
     /// The first stick after the first slip onset: (slip time, stick time), absolute (s).
     fn first_slip_and_stick(&self) -> Option<(f64, Option<f64>)> {
-        use crate::engine::EventKind;
         let mut events = self.run.events.iter().filter(|e| e.is_transition());
         let slip = events.find(|e| matches!(e.kind, EventKind::Slip { .. }))?;
         let stick = events
@@ -185,7 +193,8 @@ impl Integrated {
     }
 }
 
-fn steady_run(body: &crate::engine::Body, law: &crate::engine::ForceLaw) -> Result<Integrated> {
+/// Integrates `body` under `law` for the default number of periods.
+fn steady_run(body: &Body, law: &ForceLaw) -> Result<Integrated> {
     let opts = RunOptions {
         periods: DEFAULT_PERIODS,
         record_segments: false,
@@ -232,6 +241,41 @@ fn spread(values: &[f64]) -> f64 {
 /// A speed in mm/s for the findings.
 fn mm_s(v: f64) -> String {
     format!("{:.2} mm/s", 1e3 * v)
+}
+
+/// The lowercase name of a counterpart, as on the command line.
+fn counterpart_name(c: Counterpart) -> &'static str {
+    match c {
+        Counterpart::Extremes => "extremes",
+        Counterpart::Zeros => "zeros",
+        Counterpart::Tangent => "tangent",
+    }
+}
+
+/// An integrated regime in plain words, for the findings.
+fn regime_words(r: IntegrationRegime) -> &'static str {
+    match r {
+        IntegrationRegime::NoSlip => "no slip at all",
+        IntegrationRegime::SingleSlipStick => "one slip and one stick per period",
+        IntegrationRegime::DoubleSlipStick => "two slips and two sticks per period",
+        IntegrationRegime::DoubleSlipNoHalt => {
+            "one slip per period that slows down without stopping in between"
+        }
+        IntegrationRegime::ContinuousSlip => "continuous slip, never sticking",
+        IntegrationRegime::Multiperiod => "a motion repeating only after several periods",
+        IntegrationRegime::NotPeriodic => "no periodic motion within the periods integrated",
+    }
+}
+
+/// A relative error in words: scientific below 0.1 %, else in percent.
+fn rel_text(e: f64) -> String {
+    if e == 0.0 {
+        "0".to_string()
+    } else if e < 1e-3 {
+        format!("{e:.1e}")
+    } else {
+        format!("{:.1} %", 100.0 * e)
+    }
 }
 
 /// An optional value formatted with `f`, or "none".

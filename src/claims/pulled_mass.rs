@@ -62,8 +62,8 @@ pub(super) fn periodic_set(p: &PulledMassParams) -> Result<PeriodicSet> {
     }
     PeriodicSet::of(
         &set_b(),
-        "set B (μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m; the given set is not periodic \
-         in both laws)"
+        "set B (μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m), as the given set does not \
+         reach a periodic, advancing motion in both laws"
             .to_string(),
     )
 }
@@ -99,17 +99,30 @@ pub(super) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         .push("phi_c, any-stick bound (given set)", phi_c, "")
         .push("mu = mu_s = mu_d tried", mu, "")
         .push("mu_MIN of (22)", mu_min, "")
-        .push("stick time / T, integration (mu_s = mu_d = mu)", tau_stick, "")
-        .push("tau_ST,late closed form (mu_s = mu_d = mu)", late_closed, "")
+        .push(
+            "stick time / T, integration (mu_s = mu_d = mu)",
+            tau_stick,
+            "",
+        )
+        .push(
+            "tau_ST,late closed form (mu_s = mu_d = mu)",
+            late_closed,
+            "",
+        )
         .push("share of late-stick sets in the sample", result.share, "");
     let finding = format!(
-        "Given set: φ = F/W = {phi:.4}, 1/Θ = {stick_max:.4}, φ_c = {phi_c:.4} (linear regime {}). \
+        "Given set: φ = F/W = {phi:.4}, 1/Θ = {stick_max:.4}, φ_c = {phi_c:.4} (linearized law: {}). \
          With μs = μd = μ = {mu:.4}, below the (22) minimum {mu_min:.4} but above φ, the exact \
          integration of the linearized law {}; so (20) only decides whether the stick comes within \
          the same period. Of {} random sets in the \"non-stick\" area of Fig. 9 (μs in [0.1, 1], \
          μd/μs in [0.05, 1], φ uniform between 1/Θ and 2μs), {} ({:.1} %) stick early in the next \
          period{}.",
-        regime.id(),
+        match regime {
+            cf::Regime::SlipStick => "a stick within the same period",
+            cf::Regime::SlipStickLate => "a stick early in the next period",
+            cf::Regime::ContinuousSlip => "continuous slip",
+            cf::Regime::ImmediateContinuousSlip => "continuous slip from t = 0",
+        },
         match tau_stick {
             Some(t) if sticks => format!(
                 "shows the mass stopping at t = {t:.6} T, early in the next period (closed form \
@@ -170,8 +183,8 @@ pub(super) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
     } else {
         (
             set_b(),
-            "set B (μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m; the given set is not in the \
-             slip-stick regime)",
+            "set B (μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m), as the given set is not in \
+             the slip-stick regime",
         )
     };
     let (g, period, phi) = (q.g, q.period(), q.phi());
@@ -186,7 +199,7 @@ pub(super) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
         (false, true) => Verdict::Refuted,
         _ => Verdict::Qualified,
     };
-    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), |e| format!("{e:.1e}"));
+    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), super::rel_text);
     let finding = format!(
         "On {name}, the exact integration of the linearized law gives v̄ = {}. Eq. (27) with \
          coefficient 1 gives {} (relative error {}); with coefficient 2 it gives {} (relative \

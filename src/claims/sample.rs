@@ -65,10 +65,7 @@ pub(super) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<Pulled
         }
     }
     let (text, example) = example.unzip();
-    (
-        result(sample, sample.size, counterexamples, text),
-        example,
-    )
+    (result(sample, sample.size, counterexamples, text), example)
 }
 
 /// Claim 4 on the sample: valid sets with μd,MIN^(I) ≤ μd,MIN^(II). `g` (m/s²) and the quarter

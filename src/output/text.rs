@@ -280,3 +280,25 @@ fn power_rows(s: &Summary) -> Vec<(&'static str, Option<f64>)> {
         }
     }
 }
+
+/// Renders the claims of the paper with their verdicts and numbers.
+pub fn claims(claims: &crate::claims::Claims) -> String {
+    let mut out = String::new();
+    for c in &claims.claims {
+        let ctx = crate::report::context::claim(c);
+        let _ = writeln!(
+            out,
+            "claim {}: {} — {}",
+            c.id,
+            c.title,
+            ctx.verdict.to_uppercase()
+        );
+        let _ = writeln!(out, "  the paper: {}", c.paper_says);
+        let _ = writeln!(out, "  finding:   {}", c.finding);
+        for n in &ctx.numbers {
+            let _ = writeln!(out, "    {n}");
+        }
+        let _ = writeln!(out);
+    }
+    out
+}

@@ -9,3 +9,24 @@ pub mod woodpecker;
 
 pub use checks::{Check, CheckValue, TOLERANCE};
 pub use summary::{Power, Summary};
+
+/// Whether a paper formula describes the computed motion, and why not.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Applicability {
+    /// The closed_form key.
+    pub quantity: &'static str,
+    pub applies: bool,
+    /// Why not (empty when it applies).
+    pub reason: String,
+}
+
+impl Applicability {
+    /// An entry that applies when `reason` is `None`.
+    pub fn new(quantity: &'static str, reason: Option<String>) -> Self {
+        Self {
+            quantity,
+            applies: reason.is_none(),
+            reason: reason.unwrap_or_default(),
+        }
+    }
+}

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::checks::Check;
 use super::summary::{Power, Summary};
+use super::Applicability;
 use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
 use crate::error::Result;
 use crate::formula::pulled_mass::{self as cf, ClosedForm, Regime};
@@ -34,6 +35,9 @@ pub struct Evaluation {
     pub linear: Summary,
     pub harmonic: Summary,
     pub checks: Vec<Check>,
+    /// Which closed forms describe the motion (shown in text and reports).
+    #[serde(skip)]
+    pub applicability: Vec<Applicability>,
 }
 
 /// Both laws integrated, kept for figures and time series.
@@ -75,6 +79,7 @@ pub fn evaluate_with_runs(
     };
     let linear = summary_of(&runs.linear);
     let checks = checks(p, &closed_form, &runs.linear, &linear);
+    let applicability = applicability(&closed_form);
     let evaluation = Evaluation {
         model: "pulled-mass",
         params: ParamsOut {
@@ -89,8 +94,56 @@ pub fn evaluate_with_runs(
         linear,
         harmonic: summary_of(&runs.harmonic),
         checks,
+        applicability,
     };
     Ok((evaluation, runs))
+}
+
+/// Which closed forms of §1.3–1.4 describe the motion in the regime of `c`.
+pub fn applicability(c: &ClosedForm) -> Vec<Applicability> {
+    let same_period = [
+        "tau_stick",
+        "t_stick",
+        "slip_duration",
+        "v_avg",
+        "advance_per_period",
+        "power",
+    ];
+    let late = ["tau_stick_late", "advance_per_period_late", "v_avg_late"];
+    let onset = ["tau_slip", "t_slip", "a_slip"];
+    let maximum = ["tau_max_speed", "t_max_speed", "v_max"];
+    let reason = |key: &str| -> Option<String> {
+        let immediate = "immediate slip (φ > 2μs): the mass slips from t = 0 and never sticks";
+        match c.regime {
+            Regime::ImmediateContinuousSlip
+                if onset.contains(&key) || maximum.contains(&key) || same_period.contains(&key) =>
+            {
+                Some(immediate.to_string())
+            }
+            _ if maximum.contains(&key) && c.tau_max_speed >= 1.0 => Some(
+                "τ_M ≥ 1 (φ ≥ 2μd): the speed maximum of (17) falls outside the first period"
+                    .to_string(),
+            ),
+            Regime::SlipStick if late.contains(&key) => {
+                Some("the mass sticks within the period (20): no late stick".to_string())
+            }
+            Regime::SlipStickLate if same_period.contains(&key) => Some(
+                "(20) fails (φ > 1/Θ): the mass sticks early in the next period; the late-stick \
+                 forms of §1.4 apply"
+                    .to_string(),
+            ),
+            Regime::ContinuousSlip | Regime::ImmediateContinuousSlip
+                if same_period.contains(&key) || late.contains(&key) =>
+            {
+                Some("continuous slip (φ > φ_c): the mass never sticks again".to_string())
+            }
+            _ => None,
+        }
+    };
+    crate::results::quantity::PULLED_MASS
+        .iter()
+        .map(|q| Applicability::new(q.key, reason(q.key)))
+        .collect()
 }
 
 /// The regime the linear integration must show for a closed-form regime.

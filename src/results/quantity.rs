@@ -110,7 +110,7 @@ pub const PULLED_MASS: &[Quantity] = &[
         "",
         "(18)",
         "[P]",
-        r"\Theta = \frac{\mu_s + \sqrt{D}}{2\mu_s\mu_d},\ D = \mu_s^2 + 2\mu_s\mu_d - \mu_d^2",
+        r"\Theta = \frac{\mu_s + \sqrt{D}}{2\mu_s\mu_d},\quad D = \mu_s^2 + 2\mu_s\mu_d - \mu_d^2",
     ),
     q(
         "phi_stick_max",
@@ -230,7 +230,7 @@ pub const WOODPECKER: &[Quantity] = &[
         "m",
         "§3.1",
         "[D]",
-        r"\zeta_0\ \text{(counterpart of } d_0)",
+        r"\zeta_0 \quad \text{(counterpart of } d_0)",
     ),
     q(
         "delta0",
@@ -238,7 +238,7 @@ pub const WOODPECKER: &[Quantity] = &[
         "m",
         "§3.1",
         "[D]",
-        r"\delta_0\ \text{(counterpart of } z_0)",
+        r"\delta_0 \quad \text{(counterpart of } z_0)",
     ),
     q("tau_quarter", "τ = T/4", "s", "§3.1", "[P]", r"\tau = T/4"),
     q(
@@ -527,7 +527,7 @@ pub const WOODPECKER: &[Quantity] = &[
         "m",
         "§3.6",
         "[D]",
-        r"y_{orbit}\ \text{(lobe engine)}",
+        r"y_{orbit} \quad \text{(lobe engine)}",
     ),
 ];
 

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::checks::Check;
 use super::summary::{Power, Summary};
+use super::Applicability;
 use crate::engine::{analyse, integrate, Event, EventKind, IntegrationRegime, Run, RunOptions};
 use crate::error::Result;
 use crate::formula::lobe::HaltKind;
@@ -28,14 +29,6 @@ pub struct ParamsOut {
     pub lambda: f64,
     pub zeta0: Option<f64>,
     pub delta0: Option<f64>,
-}
-
-/// Whether a paper formula describes the computed motion, and why not.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Applicability {
-    pub quantity: &'static str,
-    pub applies: bool,
-    pub reason: String,
 }
 
 /// The §7 object for the woodpecker.
@@ -195,11 +188,7 @@ const PHASE_KEYS: [[&str; 8]; 2] = [
 fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
     let mut out = Vec::new();
     let mut push = |quantity: &'static str, reason: Option<String>| {
-        out.push(Applicability {
-            quantity,
-            applies: reason.is_none(),
-            reason: reason.unwrap_or_default(),
-        });
+        out.push(Applicability::new(quantity, reason));
     };
     let orbit_slips: &[OrbitSlip] = c.orbit.as_ref().map_or(&[], |o| &o.slips);
     for (i, keys) in PHASE_KEYS.iter().enumerate() {

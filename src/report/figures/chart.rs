@@ -8,16 +8,16 @@
 use plotters::element::{Rectangle, Text};
 use plotters::prelude::{ChartBuilder, IntoDrawingArea, SVGBackend};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use plotters::style::{Color, ShapeStyle, WHITE};
+use plotters::style::{ShapeStyle, WHITE};
 
-pub use super::style::FigureError;
 use super::spec::{LineChart, Panel};
+pub use super::style::FigureError;
 use super::style::{
-    curve_color, dash_pattern, draw_err, draw_legend, draw_stroked, finish_svg, font,
-    legend_size, text_width, tick_label, LegendEntry, LegendKey, AXIS_COLOR, CURVE_WIDTH,
-    FIGURE_WIDTH, FRAME_WIDTH, GRID_COLOR, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH,
+    curve_color, dash_pattern, draw_err, draw_legend, draw_stroked, finish_svg, font, legend_size,
+    text_width, tick_label, LegendEntry, LegendKey, AXIS_COLOR, CURVE_WIDTH, FIGURE_WIDTH,
+    FRAME_WIDTH, GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH,
     MARKER_FONT_PX, MARKER_WIDTH, PANEL_HEIGHT, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN,
-    TICK_FONT_PX, LABEL_FONT_PX, X_LABEL_AREA, Y_LABEL_AREA,
+    TICK_FONT_PX, X_LABEL_AREA, Y_LABEL_AREA,
 };
 
 /// At most this many points of one curve are drawn (first, last and local extrema kept).
@@ -164,15 +164,19 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
         let (left, right) = frames.first().map_or((0, 0), |f| (f.0 .0, f.1 .0));
         let label_style = font(MARKER_FONT_PX).pos(Pos::new(HPos::Center, VPos::Bottom));
         for (marker, row) in markers.iter().zip(&rows) {
-            let px = left
-                + ((marker.x - x.0) / (x.1 - x.0) * f64::from(right - left)).round() as i32;
+            let px =
+                left + ((marker.x - x.0) / (x.1 - x.0) * f64::from(right - left)).round() as i32;
             let base = (strip - 4 - *row as u32 * MARKER_ROW) as i32;
             let line = [(px, base + 3), (px, bottom)];
             draw_stroked(&root, &line, MARKER_COLOR, MARKER_WIDTH, &MARKER_DASH)?;
             let half = (text_width(&marker.label, MARKER_FONT_PX) / 2.0).ceil() as i32;
             let tx = px.clamp(half + 2, FIGURE_WIDTH as i32 - half - 2);
-            root.draw(&Text::new(marker.label.clone(), (tx, base), label_style.clone()))
-                .map_err(draw_err)?;
+            root.draw(&Text::new(
+                marker.label.clone(),
+                (tx, base),
+                label_style.clone(),
+            ))
+            .map_err(draw_err)?;
         }
 
         for ((panel, frame), lines) in panels.iter().zip(&frames).zip(&drawn) {
@@ -509,8 +513,12 @@ mod tests {
                 Panel {
                     y_label: "v (mm/s)".to_string(),
                     curves: vec![
-                        curve("velocity exact", 2, Stroke::Dotted, |t| 3.0 * (3.0 * t).cos() + 1.0),
-                        curve("friction limit", 3, Stroke::DashDot, |t| 2.0 + 0.5 * (6.0 * t).cos()),
+                        curve("velocity exact", 2, Stroke::Dotted, |t| {
+                            3.0 * (3.0 * t).cos() + 1.0
+                        }),
+                        curve("friction limit", 3, Stroke::DashDot, |t| {
+                            2.0 + 0.5 * (6.0 * t).cos()
+                        }),
                     ],
                     h_lines: vec![],
                 },
@@ -587,7 +595,10 @@ mod tests {
             x_range: Some((1.0, 1.0)),
             ..sample_chart()
         };
-        assert!(matches!(line_chart(&bad), Err(FigureError::BadRange { .. })));
+        assert!(matches!(
+            line_chart(&bad),
+            Err(FigureError::BadRange { .. })
+        ));
     }
 
     #[test]
@@ -622,8 +633,14 @@ mod tests {
 
     #[test]
     fn close_marker_labels_are_staggered() {
-        assert_eq!(stagger(&[(100.0, 30.0), (130.0, 30.0), (300.0, 30.0)]), [0, 1, 0]);
-        assert_eq!(stagger(&[(100.0, 30.0), (110.0, 30.0), (120.0, 30.0)]), [0, 1, 2]);
+        assert_eq!(
+            stagger(&[(100.0, 30.0), (130.0, 30.0), (300.0, 30.0)]),
+            [0, 1, 0]
+        );
+        assert_eq!(
+            stagger(&[(100.0, 30.0), (110.0, 30.0), (120.0, 30.0)]),
+            [0, 1, 2]
+        );
     }
 
     #[test]

@@ -1,0 +1,539 @@
+//! The template context of a scene: every number already formatted, every formula already
+//! rendered, so that the templates hold no computation (STYLE habit 7).
+
+use serde::Serialize;
+
+use crate::error::Result;
+use crate::formula::woodpecker::Counterpart;
+use crate::output::format::{rel, sig};
+use crate::params::{PulledMassParams, WoodpeckerParams};
+use crate::report::math::mathml;
+use crate::report::scene::{Scene, Setup};
+use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
+use crate::results::woodpecker::orbit_regime_id;
+use crate::results::{pulled_mass, woodpecker, Applicability, Check, CheckValue, Summary};
+
+/// Significant digits of the tables.
+const DIGITS: usize = 8;
+
+/// A row of the parameter table.
+#[derive(Clone, Debug, Serialize)]
+pub struct ParamRow {
+    pub name: String,
+    pub value: String,
+    pub unit: String,
+}
+
+/// The regime of one law and the reason.
+#[derive(Clone, Debug, Serialize)]
+pub struct RegimeRow {
+    pub law: String,
+    pub regime: String,
+    pub why: String,
+}
+
+/// A row of the verification table.
+#[derive(Clone, Debug, Serialize)]
+pub struct VerificationRow {
+    pub symbol: String,
+    /// MathML for HTML and LaTeX for Markdown.
+    pub formula_mathml: String,
+    pub formula_tex: String,
+    pub equation: String,
+    pub tag: String,
+    pub closed_form: String,
+    pub numeric: String,
+    pub rel_error: String,
+    pub tolerance: String,
+    /// "pass", "FAIL", "n/a" (outside its regime) or "—" (no numeric counterpart).
+    pub verdict: String,
+    /// CSS class: pass, fail, na, none.
+    pub class: String,
+    /// Why the formula does not describe this motion (greyed rows).
+    pub note: String,
+}
+
+/// A table with a header row.
+#[derive(Clone, Debug, Serialize)]
+pub struct Table {
+    pub header: Vec<String>,
+    pub rows: Vec<Vec<String>>,
+}
+
+/// A figure: the SVG for HTML (inline) and the file name for Markdown.
+#[derive(Clone, Debug, Serialize)]
+pub struct FigureCtx {
+    pub id: String,
+    pub caption: String,
+    pub svg: String,
+    pub file: String,
+}
+
+/// A claim of the paper with its computed verdict.
+#[derive(Clone, Debug, Serialize)]
+pub struct ClaimCtx {
+    pub id: u8,
+    pub title: String,
+    pub paper_says: String,
+    pub verdict: String,
+    pub finding: String,
+    pub numbers: Vec<String>,
+}
+
+/// Everything a scene page shows.
+#[derive(Clone, Debug, Serialize)]
+pub struct SceneCtx {
+    pub id: String,
+    pub title: String,
+    pub model: String,
+    pub caption: String,
+    pub description: String,
+    pub params: Vec<ParamRow>,
+    pub regimes: Vec<RegimeRow>,
+    pub verification: Vec<VerificationRow>,
+    pub checks_passed: usize,
+    pub checks_total: usize,
+    pub all_pass: bool,
+    pub figures: Vec<FigureCtx>,
+    pub linearization: Table,
+    pub claims: Vec<ClaimCtx>,
+    /// Why the closed forms do not apply at all, if so.
+    pub domain_note: String,
+    /// Regimes for the index: closed form (linear) and harmonic integration.
+    pub closed_regime: String,
+    pub harmonic_regime: String,
+}
+
+/// The numbers of a scene that do not depend on rendering: tables and regimes.
+pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
+    let mut ctx = match &scene.setup {
+        Setup::PulledMass(p) => pulled_tables(scene, p)?,
+        Setup::Woodpecker(p) => woodpecker_tables(scene, p)?,
+    };
+    ctx.closed_regime = ctx
+        .regimes
+        .first()
+        .map(|r| r.regime.clone())
+        .unwrap_or_default();
+    ctx.harmonic_regime = ctx
+        .regimes
+        .last()
+        .map(|r| r.regime.clone())
+        .unwrap_or_default();
+    Ok(ctx)
+}
+
+/// A claim of the paper for the page.
+pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
+    let verdict = serde_json::to_value(c.verdict)
+        .ok()
+        .and_then(|v| v.as_str().map(str::to_string))
+        .unwrap_or_default();
+    let mut numbers: Vec<String> = c
+        .numbers
+        .iter()
+        .map(|n| {
+            let unit = if n.unit.is_empty() {
+                String::new()
+            } else {
+                format!(" {}", n.unit)
+            };
+            format!("{} = {}{unit}", n.label, num(n.value))
+        })
+        .collect();
+    if let Some(s) = &c.sample {
+        numbers.push(format!(
+            "random sample (seed {}): {} of {} sets contradict the statement ({:.1} %){}",
+            s.seed,
+            s.counterexamples,
+            s.size,
+            100.0 * s.share,
+            s.example
+                .as_ref()
+                .map_or(String::new(), |e| format!("; e.g. {e}"))
+        ));
+    }
+    ClaimCtx {
+        id: c.id,
+        title: c.title.clone(),
+        paper_says: c.paper_says.clone(),
+        verdict,
+        finding: c.finding.clone(),
+        numbers,
+    }
+}
+
+fn num(x: f64) -> String {
+    sig(Some(x), DIGITS)
+}
+
+fn opt(x: Option<f64>) -> String {
+    sig(x, DIGITS)
+}
+
+/// A derived value, to the table's significant digits.
+fn row(name: &str, value: f64, unit: &str) -> ParamRow {
+    ParamRow {
+        name: name.to_string(),
+        value: num(value),
+        unit: unit.to_string(),
+    }
+}
+
+/// An input value, exactly as given (shortest representation).
+fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
+    ParamRow {
+        name: name.to_string(),
+        value: value.to_string(),
+        unit: unit.to_string(),
+    }
+}
+
+fn blank(scene: &Scene, model: &str) -> SceneCtx {
+    SceneCtx {
+        id: scene.id.clone(),
+        title: scene.title.clone(),
+        model: model.to_string(),
+        caption: scene.caption.clone(),
+        description: scene.description.clone(),
+        params: Vec::new(),
+        regimes: Vec::new(),
+        verification: Vec::new(),
+        checks_passed: 0,
+        checks_total: 0,
+        all_pass: true,
+        figures: Vec::new(),
+        linearization: Table {
+            header: Vec::new(),
+            rows: Vec::new(),
+        },
+        claims: Vec::new(),
+        domain_note: String::new(),
+        closed_regime: String::new(),
+        harmonic_regime: String::new(),
+    }
+}
+
+fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
+    let e = pulled_mass::evaluate(p, scene.periods)?;
+    let mut ctx = blank(scene, "pulled mass");
+    let pp = &e.params;
+    ctx.params = vec![
+        input("μs (static friction)", p.mu_s, ""),
+        input("μd (dynamic friction)", p.mu_d, ""),
+        input("m (block; hanging mass m' = m)", p.mass, "kg"),
+        input("k (spring)", p.k, "N/m"),
+        input("F (pull)", p.force, "N"),
+        input("g", p.g, "m/s²"),
+        row("W = m g", pp.weight, "N"),
+        row("ω = √(k/m')", pp.omega, "rad/s"),
+        row("T = 2π/ω", pp.period, "s"),
+        row("φ = F/W", pp.phi, ""),
+        input("periods integrated", pp.periods, ""),
+    ];
+    let c = &e.closed_form;
+    let why = pulled_regime_reason(c, p.mu_s);
+    ctx.regimes = vec![
+        RegimeRow {
+            law: "linearized law, closed forms (§1.5)".to_string(),
+            regime: c.regime.id().to_string(),
+            why,
+        },
+        integration_regime("linearized law, exact integration", &e.linear),
+        integration_regime("harmonic law, exact integration", &e.harmonic),
+    ];
+    let values = serde_json::to_value(c).unwrap_or_default();
+    fill_checks(&mut ctx, PULLED_MASS, &values, &e.checks, &e.applicability);
+    ctx.linearization = laws_table(
+        &[
+            ("harmonic", Some(&e.harmonic)),
+            ("linearized", Some(&e.linear)),
+        ],
+        pp.period,
+    );
+    Ok(ctx)
+}
+
+/// The §1.5 inequality that decides the pulled-mass regime, with numbers.
+fn pulled_regime_reason(c: &crate::formula::pulled_mass::ClosedForm, mu_s: f64) -> String {
+    let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
+    let two_mu_s = num(2.0 * mu_s);
+    match c.regime.id() {
+        "immediate_continuous_slip" => format!("φ = {phi} > 2μs = {two_mu_s}"),
+        "slip_stick" => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
+        "slip_stick_late" => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
+        _ => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
+    }
+}
+
+fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
+    let slips = format!(
+        "{} slip(s) and {} stick(s) in the last period, period multiplicity {}",
+        s.slips_per_period,
+        s.sticks_per_period,
+        s.period_multiplicity
+            .map_or("—".to_string(), |n| n.to_string())
+    );
+    let why = if s.immediate_slip {
+        format!("slips at t = 0 (|D| > μs N_f at t = 0); {slips}")
+    } else {
+        slips
+    };
+    RegimeRow {
+        law: law.to_string(),
+        regime: s.regime.id().to_string(),
+        why,
+    }
+}
+
+fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
+    let e = woodpecker::evaluate(p, scene.periods)?;
+    let mut ctx = blank(scene, "woodpecker");
+    let pp = &e.params;
+    ctx.params = vec![
+        input("μs (static friction)", p.mu_s, ""),
+        input("μd (dynamic friction)", p.mu_d, ""),
+        input("k (spring)", p.k, "N/m"),
+        input("m_S (sleeve)", p.m_sleeve, "kg"),
+        input("m_W (woodpecker)", p.m_bird, "kg"),
+        input("l (lever arm of the spring force)", p.l, "m"),
+        input("h (distance of the two contacts)", p.h, "m"),
+        input("z0 (spring offset)", p.z0, "m"),
+        input("d0 (spring amplitude)", p.d0, "m"),
+        input("g", p.g, "m/s²"),
+        row("λ (lever ratio)", pp.lambda, ""),
+        row("W_S = m_S g", pp.sleeve_weight, "N"),
+        row("ω", pp.omega, "rad/s"),
+        row("T = 2π/ω", pp.period, "s"),
+        ParamRow {
+            name: "ζ0, δ0 (linear counterpart)".to_string(),
+            value: format!("{}, {}", opt(pp.zeta0), opt(pp.delta0)),
+            unit: "m".to_string(),
+        },
+        ParamRow {
+            name: "options".to_string(),
+            value: format!("ω: {:?}, counterpart: {:?}", p.omega, p.counterpart).to_lowercase(),
+            unit: String::new(),
+        },
+        input("periods integrated", pp.periods, ""),
+    ];
+    let c = &e.closed_form;
+    ctx.regimes = vec![RegimeRow {
+        law: "linearized law, closed forms (§3.6)".to_string(),
+        regime: orbit_regime_id(c.regime).to_string(),
+        why: format!(
+            "paper's standard regime (both sticks within their half periods): {}; immediate \
+             slip (38): {}",
+            if c.paper_regime_valid { "yes" } else { "no" },
+            if c.immediate_slip { "yes" } else { "no" }
+        ),
+    }];
+    if let Some(linear) = &e.linear {
+        ctx.regimes.push(integration_regime(
+            "linearized law, exact integration",
+            linear,
+        ));
+    }
+    ctx.regimes.push(integration_regime(
+        "harmonic law, exact integration",
+        &e.harmonic,
+    ));
+    ctx.domain_note = e.domain_note.clone().unwrap_or_default();
+    let values = serde_json::to_value(c).unwrap_or_default();
+    fill_checks(&mut ctx, WOODPECKER, &values, &e.checks, &e.applicability);
+    // Harmonic against each linear counterpart.
+    let mut columns: Vec<(String, Option<Summary>)> = vec![("harmonic".into(), Some(e.harmonic))];
+    for cp in [
+        Counterpart::Extremes,
+        Counterpart::Zeros,
+        Counterpart::Tangent,
+    ] {
+        let q = WoodpeckerParams {
+            counterpart: cp,
+            ..*p
+        };
+        let linear = woodpecker::evaluate(&q, scene.periods)?.linear;
+        columns.push((format!("linear, {cp:?}").to_lowercase(), linear));
+    }
+    let cols: Vec<(&str, Option<&Summary>)> = columns
+        .iter()
+        .map(|(n, s)| (n.as_str(), s.as_ref()))
+        .collect();
+    ctx.linearization = laws_table(&cols, pp.period);
+    Ok(ctx)
+}
+
+/// The verification rows: every closed form with its check (or why it has none), then the
+/// checks of quantities outside the table (orbit, regime).
+fn fill_checks(
+    ctx: &mut SceneCtx,
+    table: &'static [Quantity],
+    values: &serde_json::Value,
+    checks: &[Check],
+    applicability: &[Applicability],
+) {
+    let mut rows = Vec::new();
+    for q in table {
+        let closed = values.get(q.key).and_then(serde_json::Value::as_f64);
+        let check = checks.iter().find(|c| c.quantity == q.key);
+        let note = applicability
+            .iter()
+            .find(|a| a.quantity == q.key && !a.applies)
+            .map(|a| a.reason.clone());
+        rows.push(match (check, note) {
+            (Some(c), _) => check_row(q, c),
+            (None, Some(note)) => plain_row(q, closed, "n/a", "na", note),
+            (None, None) => {
+                let via_time = q.key.strip_prefix("tau_").map(|rest| format!("t_{rest}"));
+                let note = match via_time {
+                    Some(t) if checks.iter().any(|c| c.quantity == t) => {
+                        "checked as t = T·τ (row below)"
+                    }
+                    _ => "no direct counterpart in the integration",
+                };
+                plain_row(q, closed, "—", "none", note.to_string())
+            }
+        });
+    }
+    for c in checks
+        .iter()
+        .filter(|c| !table.iter().any(|q| q.key == c.quantity))
+    {
+        let q = find(table, &c.quantity).copied().unwrap_or(Quantity {
+            key: "",
+            symbol: "",
+            unit: "",
+            equation: "§3.6",
+            tag: "[D]",
+            latex: "",
+        });
+        let mut r = check_row(&q, c);
+        if r.symbol.is_empty() {
+            r.symbol = c.quantity.replace('_', " ");
+        }
+        rows.push(r);
+    }
+    ctx.checks_total = checks.len();
+    ctx.checks_passed = checks.iter().filter(|c| c.pass).count();
+    ctx.all_pass = ctx.checks_passed == ctx.checks_total;
+    ctx.verification = rows;
+}
+
+fn value(v: &CheckValue) -> String {
+    match v {
+        CheckValue::Number(x) => num(*x),
+        CheckValue::Text(s) => s.clone(),
+    }
+}
+
+fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
+    VerificationRow {
+        symbol: q.symbol.to_string(),
+        formula_mathml: if q.latex.is_empty() {
+            String::new()
+        } else {
+            mathml(q.latex)
+        },
+        formula_tex: q.latex.to_string(),
+        equation: c.equation.clone(),
+        tag: q.tag.to_string(),
+        closed_form: value(&c.closed_form),
+        numeric: value(&c.numeric),
+        rel_error: rel(c.rel_error),
+        tolerance: format!("{:.0e}", c.tolerance),
+        verdict: if c.pass { "pass" } else { "FAIL" }.to_string(),
+        class: if c.pass { "pass" } else { "fail" }.to_string(),
+        note: String::new(),
+    }
+}
+
+fn plain_row(
+    q: &Quantity,
+    closed: Option<f64>,
+    verdict: &str,
+    class: &str,
+    note: String,
+) -> VerificationRow {
+    VerificationRow {
+        symbol: q.symbol.to_string(),
+        formula_mathml: mathml(q.latex),
+        formula_tex: q.latex.to_string(),
+        equation: q.equation.to_string(),
+        tag: q.tag.to_string(),
+        closed_form: opt(closed),
+        numeric: "—".to_string(),
+        rel_error: "—".to_string(),
+        tolerance: "—".to_string(),
+        verdict: verdict.to_string(),
+        class: class.to_string(),
+        note,
+    }
+}
+
+/// Harmonic against linear: regime, first slip, steady slip/stick times (mod T), v̄, power.
+fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> Table {
+    let mut header = vec!["quantity".to_string()];
+    header.extend(columns.iter().map(|(n, _)| n.to_string()));
+    let cell = |f: &dyn Fn(&Summary) -> String| -> Vec<String> {
+        columns
+            .iter()
+            .map(|(_, s)| s.map_or("— (undefined)".to_string(), f))
+            .collect()
+    };
+    let events = |kind: &'static str| {
+        move |s: &Summary| {
+            let times: Vec<String> = s
+                .steady_events
+                .iter()
+                .filter(|e| e.kind == kind)
+                .map(|e| num(e.phase * period))
+                .collect();
+            if times.is_empty() {
+                "—".to_string()
+            } else {
+                times.join(", ")
+            }
+        }
+    };
+    let mut rows = Vec::new();
+    let mut push = |name: &str, values: Vec<String>| {
+        let mut r = vec![name.to_string()];
+        r.extend(values);
+        rows.push(r);
+    };
+    push("regime", cell(&|s| s.regime.id().to_string()));
+    push("first slip (s)", cell(&|s| opt(s.first_slip_time)));
+    push(
+        "slips / sticks per period",
+        cell(&|s| format!("{} / {}", s.slips_per_period, s.sticks_per_period)),
+    );
+    push("steady slip times, t mod T (s)", cell(&events("slip")));
+    push("steady stick times, t mod T (s)", cell(&events("stick")));
+    push(
+        "speed maxima (mm/s)",
+        cell(&|s| {
+            let v: Vec<String> = s
+                .steady_speed_maxima
+                .iter()
+                .map(|m| num(1e3 * m.v))
+                .collect();
+            if v.is_empty() {
+                "—".to_string()
+            } else {
+                v.join(", ")
+            }
+        }),
+    );
+    push(
+        "mean speed v̄ (mm/s)",
+        cell(&|s| sig(s.v_avg.map(|v| 1e3 * v), DIGITS)),
+    );
+    push(
+        "friction dissipation (W)",
+        cell(&|s| match s.power {
+            crate::results::Power::PulledMass { power_friction, .. }
+            | crate::results::Power::Woodpecker { power_friction, .. } => opt(power_friction),
+        }),
+    );
+    Table { header, rows }
+}

@@ -1,0 +1,221 @@
+//! Rendering the report: scenes → contexts (in parallel) → tera pages and SVG files, all in
+//! memory; [`super::writer`] writes them.
+
+use std::path::PathBuf;
+
+use rayon::prelude::*;
+use serde::Serialize;
+use tera::Tera;
+
+use super::context::{claim, scene_tables, FigureCtx, SceneCtx};
+use super::figures::{chart, map};
+use super::scene::{Drawing, Scene, Setup};
+use super::writer::OutFile;
+use crate::claims::{self, Claims, Sample};
+use crate::error::{Error, Result};
+use crate::params::{PulledMassParams, WoodpeckerParams};
+
+/// Output formats of the report.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Format {
+    /// One self-contained HTML file per scene (inline SVG and CSS, MathML), plus an index.
+    Html,
+    /// GitHub-flavoured Markdown per scene, figures as SVG files beside it.
+    Md,
+}
+
+const TEMPLATES: &[(&str, &str)] = &[
+    (
+        "scene_body.html",
+        include_str!("../../templates/scene_body.html.tera"),
+    ),
+    (
+        "scene.html",
+        include_str!("../../templates/scene.html.tera"),
+    ),
+    ("all.html", include_str!("../../templates/all.html.tera")),
+    (
+        "index.html",
+        include_str!("../../templates/index.html.tera"),
+    ),
+    ("scene.md", include_str!("../../templates/scene.md.tera")),
+    ("index.md", include_str!("../../templates/index.md.tera")),
+];
+const CSS: &str = include_str!("../../templates/style.css");
+const TITLE: &str = "stickslip: the paper's stick-slip models, verified";
+
+fn templates() -> Result<Tera> {
+    let mut tera = Tera::default();
+    tera.autoescape_on(vec![".html"]);
+    tera.add_raw_templates(TEMPLATES.to_vec())
+        .map_err(|e| template_error("(all)", &e))?;
+    Ok(tera)
+}
+
+fn template_error(name: &str, e: &tera::Error) -> Error {
+    // tera keeps the cause in the source chain.
+    let mut reason = e.to_string();
+    let mut source = std::error::Error::source(e);
+    while let Some(s) = source {
+        reason = format!("{reason}: {s}");
+        source = s.source();
+    }
+    Error::Template {
+        name: name.to_string(),
+        reason,
+    }
+}
+
+/// SVG of a drawing.
+fn draw(id: &str, drawing: &Drawing) -> Result<String> {
+    let svg = match drawing {
+        Drawing::Chart(c) => chart::line_chart(c),
+        Drawing::Map(m) => map::category_map(m),
+    };
+    svg.map_err(|e| Error::Figure {
+        id: id.to_string(),
+        reason: e.to_string(),
+    })
+}
+
+/// The parameter pair the claims of a scene are computed on: the scene's own set for its
+/// model, the paper's default set for the other.
+fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
+    match &scene.setup {
+        Setup::PulledMass(p) => (*p, WoodpeckerParams::default()),
+        Setup::Woodpecker(p) => (PulledMassParams::default(), *p),
+    }
+}
+
+/// The full context of a scene: tables, drawn figures and its claims.
+fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> {
+    let mut ctx = scene_tables(scene)?;
+    ctx.figures = scene
+        .build_figures()?
+        .par_iter()
+        .map(|f| {
+            Ok(FigureCtx {
+                id: f.id.clone(),
+                caption: f.caption.clone(),
+                svg: draw(&f.id, &f.drawing)?,
+                file: format!("figures/{}.svg", f.id),
+            })
+        })
+        .collect::<Result<_>>()?;
+    ctx.claims = claims
+        .claims
+        .iter()
+        .filter(|c| scene.claims.contains(&c.id))
+        .map(claim)
+        .collect();
+    Ok(ctx)
+}
+
+#[derive(Serialize)]
+struct IndexRow<'a> {
+    id: &'a str,
+    title: &'a str,
+    model: &'a str,
+    closed_regime: &'a str,
+    harmonic_regime: &'a str,
+    passed: usize,
+    total: usize,
+    all_pass: bool,
+}
+
+/// Renders `scenes` in the given formats: pages, index and figure files.
+pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
+    let tera = templates()?;
+    // Claims are computed once per distinct parameter pair.
+    let mut pairs: Vec<(PulledMassParams, WoodpeckerParams)> = Vec::new();
+    for s in scenes {
+        let pair = claim_params(s);
+        if !pairs.contains(&pair) {
+            pairs.push(pair);
+        }
+    }
+    let all_claims: Vec<Claims> = pairs
+        .par_iter()
+        .map(|(p, w)| claims::evaluate(p, w, &Sample::default()))
+        .collect::<Result<_>>()?;
+    let contexts: Vec<SceneCtx> = scenes
+        .par_iter()
+        .map(|s| {
+            let pair = claim_params(s);
+            let i = pairs.iter().position(|p| *p == pair).unwrap_or(0);
+            scene_context(s, &all_claims[i])
+        })
+        .collect::<Result<_>>()?;
+    let version = env!("CARGO_PKG_VERSION");
+    let mut files = Vec::new();
+    let page = |name: &str, ctx: &tera::Context| -> Result<Vec<u8>> {
+        tera.render(name, ctx)
+            .map(String::into_bytes)
+            .map_err(|e| template_error(name, &e))
+    };
+    let index_rows: Vec<IndexRow> = contexts
+        .iter()
+        .map(|c| IndexRow {
+            id: &c.id,
+            title: &c.title,
+            model: &c.model,
+            closed_regime: &c.closed_regime,
+            harmonic_regime: &c.harmonic_regime,
+            passed: c.checks_passed,
+            total: c.checks_total,
+            all_pass: c.all_pass,
+        })
+        .collect();
+    let passed: usize = contexts.iter().map(|c| c.checks_passed).sum();
+    let total: usize = contexts.iter().map(|c| c.checks_total).sum();
+    let mut index = tera::Context::new();
+    index.insert("title", TITLE);
+    index.insert("version", version);
+    index.insert("css", CSS);
+    index.insert("scenes", &index_rows);
+    index.insert("passed", &passed);
+    index.insert("total", &total);
+    index.insert("all_pass", &(passed == total));
+    for format in formats {
+        let ext = match format {
+            Format::Html => "html",
+            Format::Md => "md",
+        };
+        files.push(OutFile {
+            path: PathBuf::from(format!("index.{ext}")),
+            bytes: page(&format!("index.{ext}"), &index)?,
+        });
+        for (i, ctx) in contexts.iter().enumerate() {
+            let mut c = tera::Context::new();
+            c.insert("scene", ctx);
+            c.insert("css", CSS);
+            c.insert("version", version);
+            c.insert("prev", &i.checked_sub(1).map(|j| contexts[j].id.as_str()));
+            c.insert("next", &contexts.get(i + 1).map(|n| n.id.as_str()));
+            files.push(OutFile {
+                path: PathBuf::from(format!("{}.{ext}", ctx.id)),
+                bytes: page(&format!("scene.{ext}"), &c)?,
+            });
+        }
+        match format {
+            Format::Html => {
+                let mut all = tera::Context::new();
+                all.insert("scenes", &contexts);
+                all.insert("css", CSS);
+                files.push(OutFile {
+                    path: PathBuf::from("all-scenes.html"),
+                    bytes: page("all.html", &all)?,
+                });
+            }
+            Format::Md => {
+                for f in contexts.iter().flat_map(|c| &c.figures) {
+                    files.push(OutFile {
+                        path: PathBuf::from(&f.file),
+                        bytes: f.svg.clone().into_bytes(),
+                    });
+                }
+            }
+        }
+    }
+    Ok(files)
+}

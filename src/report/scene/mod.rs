@@ -1,0 +1,397 @@
+//! Scenes: one per figure (or figure group) of the paper, each a scenario file plus what to
+//! show. The built-in scenes are the default report; a user's scenario file becomes a scene
+//! with the standard figures of its model.
+
+use std::path::Path;
+
+use crate::error::{Error, Result};
+use crate::params::{ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS};
+use crate::report::figures::spec::{CategoryMap, LineChart};
+
+pub mod pulled_mass;
+pub mod sampling;
+pub mod woodpecker;
+
+/// The model and parameters of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Setup {
+    PulledMass(PulledMassParams),
+    Woodpecker(WoodpeckerParams),
+}
+
+/// What a scene draws. Each kind may produce one or more figures.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FigureKind {
+    /// Pulled mass: x, v, a against t for both laws, with t_SL, t_M, t_ST (Figs. 5, 6, 10).
+    PulledMotion { periods: f64 },
+    /// Pulled mass: F against μs N(t) and μd N(t), with t_SL, t_M, t_ST.
+    PulledForces,
+    /// Pulled mass: the (μd, μs) domain for the scene's φ, both laws on a grid (Fig. 9).
+    PulledDomain,
+    /// Pulled mass: position over 10 periods and the line of slope v̄ (Fig. 11).
+    PulledLongRun,
+    /// Pulled mass: speed and acceleration, harmonic against linear (Fig. 12).
+    PulledCompare,
+    /// Woodpecker: y_S and v against t for both laws, with the characteristic times (Figs. 15,
+    /// 16, 26).
+    WoodMotion { periods: f64 },
+    /// Woodpecker: the spring coordinate, harmonic against the three counterparts (Fig. 17).
+    WoodSpring,
+    /// Woodpecker: W_S + F_e against 2λμs|F_e| and 2λμd|F_e|, with t_SL^(I) (Fig. 18).
+    WoodForces,
+    /// Woodpecker: a, v, y and the characteristic times of phase 1 or 2 (Fig. 19).
+    WoodPhase { phase: u8 },
+    /// Woodpecker: v for μd below, at and above μd,MIN of phase 1 or 2 (Fig. 20).
+    WoodMuSweep { phase: u8 },
+    /// Woodpecker: sleeve and woodpecker positions and the speed (Fig. 23).
+    WoodPositions,
+    /// Woodpecker: regimes in the (μd, z0) plane with μd,MIN and μd,HALT of both phases.
+    WoodRegimeMap,
+}
+
+/// A drawing ready for a renderer.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Drawing {
+    Chart(LineChart),
+    Map(CategoryMap),
+}
+
+/// One figure of a scene: a file-name id, a caption and the drawing.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Figure {
+    pub id: String,
+    pub caption: String,
+    pub drawing: Drawing,
+}
+
+/// A scene of the report.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    /// File stem of the scene's pages.
+    pub id: String,
+    pub title: String,
+    /// What the scene shows and what to look for.
+    pub caption: String,
+    /// The scenario's description of the parameters.
+    pub description: String,
+    pub setup: Setup,
+    /// Periods integrated for the results tables.
+    pub periods: u32,
+    pub figures: Vec<FigureKind>,
+    /// Claims of the paper (physics.md §6) that concern the scene.
+    pub claims: Vec<u8>,
+}
+
+impl Scene {
+    /// A scene from a scenario: its parameters, title and description.
+    pub fn from_scenario(
+        id: &str,
+        scenario: &Scenario,
+        path: &Path,
+        caption: &str,
+        figures: Vec<FigureKind>,
+        claims: Vec<u8>,
+    ) -> Result<Self> {
+        let setup = match scenario.model {
+            ModelName::PulledMass => Setup::PulledMass(scenario.params(path)?),
+            ModelName::Woodpecker => Setup::Woodpecker(scenario.params(path)?),
+        };
+        match &setup {
+            Setup::PulledMass(p) => p.validate()?,
+            Setup::Woodpecker(p) => p.validate()?,
+        }
+        Ok(Self {
+            id: id.to_string(),
+            title: scenario.title.clone(),
+            caption: caption.to_string(),
+            description: scenario.description.trim().to_string(),
+            setup,
+            periods: scenario.periods.unwrap_or(DEFAULT_PERIODS),
+            figures,
+            claims,
+        })
+    }
+
+    /// A user's scenario file as a scene with the standard figures of its model.
+    pub fn from_file(path: &Path) -> Result<Self> {
+        let scenario = Scenario::load(path)?;
+        let id = path
+            .file_stem()
+            .and_then(|s| s.to_str())
+            .filter(|s| !s.is_empty())
+            .ok_or_else(|| Error::Scenario {
+                path: path.display().to_string(),
+                reason: "the file name gives no scene name".to_string(),
+            })?;
+        let (figures, claims, caption) = match scenario.model {
+            ModelName::PulledMass => (
+                vec![
+                    FigureKind::PulledMotion { periods: 2.0 },
+                    FigureKind::PulledForces,
+                    FigureKind::PulledCompare,
+                ],
+                vec![1, 2, 3, 7],
+                "Motion of the pulled mass under both force laws, the competing forces, and the \
+                 harmonic law against its linearization.",
+            ),
+            ModelName::Woodpecker => (
+                vec![
+                    FigureKind::WoodMotion { periods: 2.0 },
+                    FigureKind::WoodForces,
+                    FigureKind::WoodSpring,
+                ],
+                vec![3, 4, 5, 6, 7, 8],
+                "Motion of the woodpecker's sleeve under both force laws, the forces that decide \
+                 the slip, and the linear counterparts of the spring coordinate.",
+            ),
+        };
+        Self::from_scenario(id, &scenario, path, caption, figures, claims)
+    }
+
+    /// The figures of the scene, built from its parameters.
+    pub fn build_figures(&self) -> Result<Vec<Figure>> {
+        let mut out = Vec::new();
+        for kind in &self.figures {
+            let built = match &self.setup {
+                Setup::PulledMass(p) => pulled_mass::figures(&self.id, p, *kind)?,
+                Setup::Woodpecker(p) => woodpecker::figures(&self.id, p, *kind)?,
+            };
+            out.extend(built);
+        }
+        Ok(out)
+    }
+}
+
+/// A built-in scenario file, compiled into the binary.
+struct Builtin {
+    id: &'static str,
+    file: &'static str,
+    text: &'static str,
+    caption: &'static str,
+    figures: &'static [FigureKind],
+    claims: &'static [u8],
+}
+
+macro_rules! scenario_file {
+    ($name:literal) => {
+        ($name, include_str!(concat!("../../../scenarios/", $name)))
+    };
+}
+
+const FIG05: (&str, &str) = scenario_file!("fig05-immediate-slip.toml");
+const FIG06: (&str, &str) = scenario_file!("fig06-continuous-slip.toml");
+const SET_B: (&str, &str) = scenario_file!("set-b-slip-stick.toml");
+const SET_C: (&str, &str) = scenario_file!("set-c-late-stick.toml");
+const FIG15: (&str, &str) = scenario_file!("fig15-double-slip-stick.toml");
+const FIG16: (&str, &str) = scenario_file!("fig16-no-intermediate-halt.toml");
+const FIG26: (&str, &str) = scenario_file!("fig26-tracked-toy.toml");
+const LAMBDA1: (&str, &str) = scenario_file!("lambda1-printed-formulas.toml");
+
+const fn builtin(
+    id: &'static str,
+    scenario: (&'static str, &'static str),
+    caption: &'static str,
+    figures: &'static [FigureKind],
+    claims: &'static [u8],
+) -> Builtin {
+    Builtin {
+        id,
+        file: scenario.0,
+        text: scenario.1,
+        caption,
+        figures,
+        claims,
+    }
+}
+
+const BUILTINS: &[Builtin] = &[
+    builtin(
+        "fig05-immediate-slip",
+        FIG05,
+        "Immediate slip: F exceeds the largest static capacity 2μsW, so the mass slips at t = 0 \
+         and never sticks. Position, speed and acceleration under both laws.",
+        &[FigureKind::PulledMotion { periods: 2.0 }],
+        &[],
+    ),
+    builtin(
+        "fig06-continuous-slip",
+        FIG06,
+        "Non-immediate continuous slip (the paper's Fig. 6 set): the slip starts where F = μs N, \
+         the speed peaks where F = μd N, and the mass never comes back to rest.",
+        &[FigureKind::PulledMotion { periods: 2.0 }],
+        &[1],
+    ),
+    builtin(
+        "pulled-forces",
+        SET_B,
+        "The competing forces: the pull F against the static capacity μs N(t) and the dynamic \
+         friction μd N(t). The slip starts where F crosses μs N (t_SL), the speed is largest \
+         where F = μd N (t_M), and the mass sticks at t_ST.",
+        &[FigureKind::PulledForces],
+        &[1],
+    ),
+    builtin(
+        "fig09-domain",
+        FIG06,
+        "The (μd, μs) plane for the Fig. 6 value of φ = F/W: where the mass sticks in the same \
+         period (20), sticks late in the next period (§1.4), or slips for ever, for the linear \
+         closed forms and for the exact harmonic integration; the analytic boundaries are drawn \
+         over the computed regimes.",
+        &[FigureKind::PulledDomain],
+        &[1],
+    ),
+    builtin(
+        "fig10-linear-slip-stick",
+        SET_B,
+        "Slip-stick within one period (set B): position, speed and acceleration with the \
+         characteristic times of the closed forms.",
+        &[FigureKind::PulledMotion { periods: 1.5 }],
+        &[2],
+    ),
+    builtin(
+        "late-stick",
+        SET_C,
+        "Late stick (set C): (20) is violated, yet the mass stops early in the next period, \
+         before the next slip onset — the band the paper's Fig. 9 calls non-stick.",
+        &[FigureKind::PulledMotion { periods: 2.0 }],
+        &[1],
+    ),
+    builtin(
+        "fig11-position",
+        SET_B,
+        "Position over ten periods and the line of slope v̄ through the slip onsets.",
+        &[FigureKind::PulledLongRun],
+        &[2, 7],
+    ),
+    builtin(
+        "fig12-harmonic-vs-linear",
+        SET_B,
+        "Speed and acceleration of the harmonic law against its linearization, in the settled \
+         motion.",
+        &[FigureKind::PulledCompare],
+        &[3],
+    ),
+    builtin(
+        "fig15-double-slip-stick",
+        FIG15,
+        "The falling woodpecker (Fig. 15 set): two slips and two sticks per period under both \
+         laws. Sleeve position and speed with the characteristic times.",
+        &[FigureKind::WoodMotion { periods: 2.0 }],
+        &[8],
+    ),
+    builtin(
+        "fig16-no-intermediate-halt",
+        FIG16,
+        "A 0.1 mm larger z0 removes the intermediate halt of the harmonic law: one slip per \
+         period with two speed maxima.",
+        &[FigureKind::WoodMotion { periods: 2.0 }],
+        &[8],
+    ),
+    builtin(
+        "fig17-spring-coordinate",
+        FIG15,
+        "The spring coordinate of the harmonic law against its three linear counterparts \
+         (same extremes, same zeros, same zeros and slopes).",
+        &[FigureKind::WoodSpring],
+        &[3],
+    ),
+    builtin(
+        "fig18-forces",
+        FIG15,
+        "The driving force W_S + F_e against the static capacity 2λμs|F_e| (and the dynamic \
+         friction 2λμd|F_e|): the slip of phase I starts where they cross.",
+        &[FigureKind::WoodForces],
+        &[],
+    ),
+    builtin(
+        "fig19-phase-one",
+        FIG15,
+        "Phase I of the linear law: acceleration, speed and position with t_SL, t0, t_M, t_ST.",
+        &[FigureKind::WoodPhase { phase: 1 }],
+        &[5],
+    ),
+    builtin(
+        "fig20-mu-d-min-one",
+        FIG15,
+        "Phase I for μd below, at and above μd,MIN^(I): at the critical value the sleeve \
+         stops exactly at T/2.",
+        &[FigureKind::WoodMuSweep { phase: 1 }],
+        &[4, 5],
+    ),
+    builtin(
+        "phase-two",
+        FIG15,
+        "Phase II likewise: acceleration, speed and position, and μd below, at and above \
+         μd,MIN^(II).",
+        &[
+            FigureKind::WoodPhase { phase: 2 },
+            FigureKind::WoodMuSweep { phase: 2 },
+        ],
+        &[4],
+    ),
+    builtin(
+        "fig23-positions",
+        FIG15,
+        "Sleeve and woodpecker positions and the sleeve speed (harmonic law): the bird \
+         oscillates about the falling sleeve.",
+        &[FigureKind::WoodPositions],
+        &[7],
+    ),
+    builtin(
+        "fig26-tracked-toy",
+        FIG26,
+        "The tracked toy's parameters (Figs. 26–27): sleeve position and speed under both laws.",
+        &[FigureKind::WoodMotion { periods: 3.0 }],
+        &[3, 8],
+    ),
+    builtin(
+        "woodpecker-regime-map",
+        FIG15,
+        "Regimes in the (μd, z0) plane: the linear orbit (closed form, §3.6) and the harmonic law \
+         (exact integration), with the analytic boundaries μd,MIN and μd,HALT of both phases.",
+        &[FigureKind::WoodRegimeMap],
+        &[4, 5, 6],
+    ),
+    builtin(
+        "lambda1-printed-formulas",
+        LAMBDA1,
+        "The printed formulas (λ = 1, N = |F_e|): with the paper's friction values the sleeve \
+         never sticks.",
+        &[FigureKind::WoodMotion { periods: 2.0 }],
+        &[8],
+    ),
+];
+
+/// The built-in scenes of the default report, in order.
+pub fn builtin_scenes() -> Result<Vec<Scene>> {
+    BUILTINS
+        .iter()
+        .map(|b| {
+            let path = Path::new("scenarios").join(b.file);
+            let scenario = Scenario::parse(b.text, &path)?;
+            Scene::from_scenario(
+                b.id,
+                &scenario,
+                &path,
+                b.caption,
+                b.figures.to_vec(),
+                b.claims.to_vec(),
+            )
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_scenes_parse_and_have_unique_ids() {
+        let scenes = builtin_scenes().unwrap();
+        let mut ids: Vec<_> = scenes.iter().map(|s| s.id.clone()).collect();
+        ids.sort();
+        ids.dedup();
+        assert_eq!(ids.len(), scenes.len());
+        assert!(scenes.iter().all(|s| !s.figures.is_empty()));
+    }
+}

@@ -1,0 +1,470 @@
+//! Figures of the pulled mass (physics.md §1): motion under both laws, the competing forces,
+//! the (μd, μs) domain of Fig. 9, the long run of Fig. 11 and the comparison of Fig. 12.
+
+use rayon::prelude::*;
+
+use super::sampling::{curve, function_curve, sample, SAMPLES};
+use super::{Drawing, Figure, FigureKind};
+use crate::engine::{analyse, integrate, IntegrationRegime, RunOptions};
+use crate::error::Result;
+use crate::formula::pulled_mass::{self as cf, ClosedForm, Regime};
+use crate::model::{pulled_mass, LawKind};
+use crate::params::PulledMassParams;
+use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
+use crate::results::pulled_mass::{evaluate_with_runs, Runs};
+
+/// Palette indices and strokes of the two laws, the same in every figure.
+const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);
+const LINEAR: (usize, Stroke) = (1, Stroke::Dashed);
+/// Cells per side of the domain maps.
+const GRID: usize = 200;
+/// Periods integrated per map cell: enough to see a late stick and a settled orbit.
+const MAP_PERIODS: u32 = 6;
+
+/// The figures of one kind for the pulled mass `p` (other models' kinds give none).
+pub fn figures(scene_id: &str, p: &PulledMassParams, kind: FigureKind) -> Result<Vec<Figure>> {
+    let figure = |name: &str, caption: String, drawing| Figure {
+        id: format!("{scene_id}-{name}"),
+        caption,
+        drawing,
+    };
+    Ok(match kind {
+        FigureKind::PulledMotion { periods } => {
+            let (chart, caption) = motion(p, periods)?;
+            vec![figure("motion", caption, Drawing::Chart(chart))]
+        }
+        FigureKind::PulledForces => {
+            let (chart, caption) = forces(p)?;
+            vec![figure("forces", caption, Drawing::Chart(chart))]
+        }
+        FigureKind::PulledDomain => {
+            let [(lin, lin_caption), (har, har_caption)] = domain(p)?;
+            vec![
+                figure("domain-linear", lin_caption, Drawing::Map(lin)),
+                figure("domain-harmonic", har_caption, Drawing::Map(har)),
+            ]
+        }
+        FigureKind::PulledLongRun => {
+            let (chart, caption) = long_run(p)?;
+            vec![figure("long-run", caption, Drawing::Chart(chart))]
+        }
+        FigureKind::PulledCompare => {
+            let (chart, caption) = compare(p)?;
+            vec![figure("compare", caption, Drawing::Chart(chart))]
+        }
+        _ => Vec::new(),
+    })
+}
+
+/// Runs of both laws with segments, for at least `periods` periods (and 8 for the steady state).
+fn runs(p: &PulledMassParams, periods: f64) -> Result<(ClosedForm, Runs)> {
+    let n = (periods.ceil() as u32 + 2).max(8);
+    let (e, runs) = evaluate_with_runs(p, n, true)?;
+    Ok((e.closed_form, runs))
+}
+
+/// The characteristic times of the closed forms that describe the motion, inside [t0, t1].
+fn markers(c: &ClosedForm, period: f64, t0: f64, t1: f64) -> Vec<Marker> {
+    if c.immediate_slip {
+        return Vec::new();
+    }
+    let mut times = vec![("t_SL", c.t_slip)];
+    if c.tau_max_speed < 1.0 {
+        times.push(("t_M", c.t_max_speed));
+    }
+    match c.regime {
+        Regime::SlipStick => times.push(("t_ST", c.t_stick)),
+        Regime::SlipStickLate => {
+            if let Some(tau) = c.tau_stick_late {
+                times.push(("t_ST,late", tau * period));
+            }
+        }
+        _ => {}
+    }
+    let stuck_periodically = matches!(c.regime, Regime::SlipStick | Regime::SlipStickLate);
+    let repeats = if stuck_periodically {
+        (t1 / period).ceil() as i32
+    } else {
+        1
+    };
+    (0..repeats)
+        .flat_map(|n| {
+            times.iter().map(move |&(label, t)| Marker {
+                x: t + f64::from(n) * period,
+                label: label.to_string(),
+            })
+        })
+        .filter(|m| m.x >= t0 && m.x <= t1)
+        .collect()
+}
+
+fn law_curves(runs: &Runs, t0: f64, t1: f64, col: usize, scale: f64) -> Vec<Curve> {
+    let h = sample(&runs.harmonic, t0, t1, SAMPLES);
+    let l = sample(&runs.linear, t0, t1, SAMPLES);
+    vec![
+        curve("harmonic law", &h, col, scale, HARMONIC.0, HARMONIC.1),
+        curve("linearized law", &l, col, scale, LINEAR.0, LINEAR.1),
+    ]
+}
+
+fn panel(y_label: &str, curves: Vec<Curve>) -> Panel {
+    Panel {
+        y_label: y_label.to_string(),
+        curves,
+        h_lines: Vec::new(),
+    }
+}
+
+fn motion(p: &PulledMassParams, periods: f64) -> Result<(LineChart, String)> {
+    let (c, runs) = runs(p, periods)?;
+    let t1 = periods * p.period();
+    let chart = LineChart {
+        x_label: "t (s)".to_string(),
+        x_range: Some((0.0, t1)),
+        panels: vec![
+            panel("x (mm)", law_curves(&runs, 0.0, t1, 1, 1e3)),
+            panel("v (mm/s)", law_curves(&runs, 0.0, t1, 2, 1e3)),
+            panel("a (m/s²)", law_curves(&runs, 0.0, t1, 3, 1.0)),
+        ],
+        markers: markers(&c, p.period(), 0.0, t1),
+    };
+    let caption = format!(
+        "Position, speed and acceleration of the pulled mass over {periods} periods, harmonic law \
+         (solid) and linearized law (dashed), from rest at t = 0. Marked: the closed-form times \
+         of the linearized law (regime {}).",
+        c.regime.id()
+    );
+    Ok((chart, caption))
+}
+
+fn forces(p: &PulledMassParams) -> Result<(LineChart, String)> {
+    let (c, _) = runs(p, 1.5)?;
+    let period = p.period();
+    let t1 = 1.5 * period;
+    let lin = pulled_mass::force_law(p, LawKind::Linear)?;
+    let har = pulled_mass::force_law(p, LawKind::Harmonic)?;
+    let n = SAMPLES;
+    let curves = vec![
+        function_curve("F", 0.0, t1, 2, |_| p.force, 7, Stroke::Solid),
+        function_curve(
+            "μs N (linearized)",
+            0.0,
+            t1,
+            n,
+            |t| p.mu_s * lin.normal(t),
+            0,
+            Stroke::Dashed,
+        ),
+        function_curve(
+            "μd N (linearized)",
+            0.0,
+            t1,
+            n,
+            |t| p.mu_d * lin.normal(t),
+            1,
+            Stroke::DashDot,
+        ),
+        function_curve(
+            "μs N (harmonic)",
+            0.0,
+            t1,
+            n,
+            |t| p.mu_s * har.normal(t),
+            0,
+            Stroke::Dotted,
+        ),
+    ];
+    let chart = LineChart {
+        x_label: "t (s)".to_string(),
+        x_range: Some((0.0, t1)),
+        panels: vec![panel("force (N)", curves)],
+        markers: markers(&c, period, 0.0, t1),
+    };
+    let caption = format!(
+        "The pull F = {} N against the static capacity μs N(t) and the dynamic friction μd N(t) \
+         of the linearized law (the harmonic μs N dotted). The slip starts where F first exceeds \
+         μs N (t_SL); while slipping the acceleration is (F − μd N)/2m, largest speed where F = \
+         μd N (t_M).",
+        p.force
+    );
+    Ok((chart, caption))
+}
+
+fn long_run(p: &PulledMassParams) -> Result<(LineChart, String)> {
+    let (c, runs) = runs(p, 10.0)?;
+    let period = p.period();
+    let t1 = 10.0 * period;
+    let mut curves = law_curves(&runs, 0.0, t1, 1, 1e3);
+    // The line of slope v̄ through the slip onsets of the linear law: x = v̄ (t − t_SL).
+    let steady = analyse(&runs.linear);
+    let v_bar = match c.regime {
+        Regime::SlipStick => Some(c.v_avg),
+        Regime::SlipStickLate => c.v_avg_late,
+        _ => steady.v_avg,
+    };
+    if let (Some(v), Some(t_sl)) = (v_bar, runs.linear.first_slip) {
+        curves.push(function_curve(
+            "slope v̄ (closed form)",
+            t_sl,
+            t1,
+            2,
+            |t| 1e3 * v * (t - t_sl),
+            2,
+            Stroke::Dotted,
+        ));
+    }
+    let chart = LineChart {
+        x_label: "t (s)".to_string(),
+        x_range: Some((0.0, t1)),
+        panels: vec![panel("x (mm)", curves)],
+        markers: Vec::new(),
+    };
+    let caption = format!(
+        "Position over ten periods, harmonic (solid) and linearized (dashed) law, and the line of \
+         slope v̄ = {} mm/s of the closed forms through the slip onsets of the linearized law.",
+        v_bar.map_or("—".to_string(), |v| format!("{:.4}", 1e3 * v))
+    );
+    Ok((chart, caption))
+}
+
+fn compare(p: &PulledMassParams) -> Result<(LineChart, String)> {
+    let (_, runs) = runs(p, 8.0)?;
+    let period = p.period();
+    // The settled motion: the last two integrated periods.
+    let t1 = f64::from(runs.linear.periods) * period;
+    let t0 = t1 - 2.0 * period;
+    let chart = LineChart {
+        x_label: "t (s)".to_string(),
+        x_range: Some((t0, t1)),
+        panels: vec![
+            panel("v (mm/s)", law_curves(&runs, t0, t1, 2, 1e3)),
+            panel("a (m/s²)", law_curves(&runs, t0, t1, 3, 1.0)),
+        ],
+        markers: Vec::new(),
+    };
+    let caption = "Speed and acceleration in the settled motion (the last two of the integrated \
+                   periods): harmonic law (solid) against the linearized law (dashed)."
+        .to_string();
+    Ok((chart, caption))
+}
+
+/// Category of a (μd, μs) cell for the linearized law (closed form, §1.5).
+fn linear_category(phi: f64, mu_s: f64, mu_d: f64) -> u8 {
+    if mu_d > mu_s {
+        return 0;
+    }
+    match cf::regime(phi, mu_s, mu_d) {
+        Regime::ImmediateContinuousSlip => 1,
+        Regime::ContinuousSlip => 2,
+        Regime::SlipStickLate => 3,
+        Regime::SlipStick => 4,
+    }
+}
+
+/// Category of a (μd, μs) cell for the harmonic law (exact integration).
+fn harmonic_category(p: &PulledMassParams, mu_s: f64, mu_d: f64) -> u8 {
+    if mu_d > mu_s {
+        return 0;
+    }
+    let q = PulledMassParams { mu_s, mu_d, ..*p };
+    let Ok(law) = pulled_mass::force_law(&q, LawKind::Harmonic) else {
+        return 4;
+    };
+    let opts = RunOptions {
+        periods: MAP_PERIODS,
+        record_segments: false,
+    };
+    match integrate(&pulled_mass::body(&q), &law, &opts) {
+        Ok(run) if run.immediate_slip => 1,
+        Ok(run) => match analyse(&run).regime() {
+            IntegrationRegime::ContinuousSlip => 2,
+            IntegrationRegime::SingleSlipStick | IntegrationRegime::DoubleSlipNoHalt => 3,
+            _ => 4,
+        },
+        Err(_) => 4,
+    }
+}
+
+fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
+    let phi = p.phi();
+    let top = (2.2 * phi).max(0.1);
+    let step = top / GRID as f64;
+    let centre = |i: usize| (i as f64 + 0.5) * step;
+    let grid = |cell: &(dyn Fn(f64, f64) -> u8 + Sync)| -> Vec<Vec<u8>> {
+        (0..GRID)
+            .into_par_iter()
+            .map(|row| {
+                (0..GRID)
+                    .map(|col| cell(centre(row), centre(col)))
+                    .collect()
+            })
+            .collect()
+    };
+    let linear_cells = grid(&|mu_s, mu_d| linear_category(phi, mu_s, mu_d));
+    let harmonic_cells = grid(&|mu_s, mu_d| harmonic_category(p, mu_s, mu_d));
+    let curves = domain_curves(phi, top);
+    let map = |cells, categories| CategoryMap {
+        x_label: "μd".to_string(),
+        y_label: "μs".to_string(),
+        x_range: (0.0, top),
+        y_range: (0.0, top),
+        cells,
+        categories,
+        curves: curves.clone(),
+    };
+    let label = |s: &str, i: usize| (s.to_string(), i);
+    let invalid = label("μd > μs (not allowed)", 7);
+    let linear = map(
+        linear_cells,
+        vec![
+            invalid.clone(),
+            label("immediate continuous slip", 3),
+            label("continuous slip", 1),
+            label("late stick (next period)", 4),
+            label("slip-stick within the period (20)", 2),
+        ],
+    );
+    let harmonic = map(
+        harmonic_cells,
+        vec![
+            invalid,
+            label("immediate continuous slip", 3),
+            label("continuous slip", 1),
+            label("sticks once per period", 2),
+            label("other (not periodic)", 6),
+        ],
+    );
+    let about = format!(
+        "Grid of {GRID}×{GRID} cells for φ = F/W = {phi:.4}. Curves: the boundary of (20) \
+         (same-period stick), the boundary φ = φ_c of any stick (§1.4), and the immediate-slip \
+         line μs = φ/2. On the diagonal μs = μd, (22) gives μ_MIN = {:.4}; any stick needs only \
+         μ > φ = {phi:.4}.",
+        cf::mu_min_equal(phi)
+    );
+    Ok([
+        (
+            linear,
+            format!("Regimes of the linearized law from the closed forms (§1.5). {about}"),
+        ),
+        (
+            harmonic,
+            format!(
+                "Regimes of the harmonic law by exact integration ({MAP_PERIODS} periods per \
+                 cell). {about}"
+            ),
+        ),
+    ])
+}
+
+/// The analytic boundaries of Fig. 9 in the (μd, μs) plane.
+fn domain_curves(phi: f64, top: f64) -> Vec<Curve> {
+    let n = 400;
+    // (20): φ < μd ≤ (1+√2)φ/2 and μs = μd φ/(φ − √(φ² + 4μdφ − 4μd²)).
+    let upper = cf::mu_min_equal(phi);
+    let same_period: Vec<(f64, f64)> = (1..=n)
+        .map(|i| phi + (upper - phi) * i as f64 / n as f64)
+        .filter_map(|mu_d| {
+            let root = (phi * phi + 4.0 * mu_d * phi - 4.0 * mu_d * mu_d)
+                .max(0.0)
+                .sqrt();
+            let mu_s = mu_d * phi / (phi - root);
+            (mu_s.is_finite() && mu_s > 0.0 && mu_s <= top).then_some((mu_d, mu_s))
+        })
+        .collect();
+    // φ = φ_c(μs, μd): for each μd, the μs where the late-stick band ends (bisection).
+    let any_stick: Vec<(f64, f64)> = (0..=n)
+        .map(|i| top * i as f64 / n as f64)
+        .filter_map(|mu_d| {
+            let f = |mu_s: f64| cf::phi_continuous(mu_s, mu_d) - phi;
+            if mu_d <= 0.0 || f(mu_d) >= 0.0 || f(top) < 0.0 {
+                return None;
+            }
+            let (mut lo, mut hi) = (mu_d, top);
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if f(mid) < 0.0 {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            Some((mu_d, 0.5 * (lo + hi)))
+        })
+        // The band closes on the diagonal at μs = μd = φ (φ_c = μ there).
+        .chain(std::iter::once((phi, phi)))
+        .collect();
+    vec![
+        Curve {
+            label: "boundary of (20)".to_string(),
+            points: same_period,
+            color: 7,
+            stroke: Stroke::Solid,
+        },
+        Curve {
+            label: "φ = φ_c (any stick)".to_string(),
+            points: any_stick,
+            color: 7,
+            stroke: Stroke::Dashed,
+        },
+        Curve {
+            label: "μs = φ/2 (immediate slip below)".to_string(),
+            points: vec![(0.0, 0.5 * phi), (top, 0.5 * phi)],
+            color: 7,
+            stroke: Stroke::Dotted,
+        },
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_pulled_kind_builds_finite_curves() {
+        let p = PulledMassParams {
+            mu_d: 0.35,
+            force: 0.10,
+            ..PulledMassParams::default()
+        };
+        for kind in [
+            FigureKind::PulledMotion { periods: 2.0 },
+            FigureKind::PulledForces,
+            FigureKind::PulledLongRun,
+            FigureKind::PulledCompare,
+        ] {
+            let figs = figures("t", &p, kind).unwrap();
+            assert_eq!(figs.len(), 1, "{kind:?}");
+            let Drawing::Chart(chart) = &figs[0].drawing else {
+                panic!("{kind:?} is a chart")
+            };
+            for panel in &chart.panels {
+                for c in &panel.curves {
+                    assert!(!c.points.is_empty(), "{kind:?} {}", c.label);
+                    assert!(c.points.iter().all(|(x, y)| x.is_finite() && y.is_finite()));
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn domain_maps_agree_with_the_closed_forms_where_they_are_exact() {
+        let p = PulledMassParams::default();
+        let figs = figures("t", &p, FigureKind::PulledDomain).unwrap();
+        assert_eq!(figs.len(), 2);
+        let Drawing::Map(linear) = &figs[0].drawing else {
+            panic!("map")
+        };
+        assert_eq!(linear.cells.len(), GRID);
+        assert!(linear.cells.iter().all(|r| r.len() == GRID));
+        // Every linear category appears for the Fig. 6 value of φ.
+        for cat in 0..=4u8 {
+            assert!(
+                linear.cells.iter().flatten().any(|&c| c == cat),
+                "category {cat}"
+            );
+        }
+        // The (20) boundary meets the diagonal at μ_MIN of (22).
+        let end = linear.curves[0].points.last().copied().unwrap();
+        assert!((end.0 - end.1).abs() < 1e-9 && (end.0 - cf::mu_min_equal(p.phi())).abs() < 1e-9);
+    }
+}

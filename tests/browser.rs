@@ -1,0 +1,180 @@
+//! The report in a real browser: every HTML page of the default report is opened in headless
+//! Chromium, screenshotted (must not be blank) and printed to PDF, whose text (pdftotext) must
+//! hold the scene's title and a value of its verification table.
+//!
+//! Needs `chromium` and `pdftotext` (Debian: chromium, poppler-utils; `.ci/run` installs them).
+//! Without them the test is skipped locally but fails on CI (CI=true).
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use stickslip::report::context::scene_tables;
+use stickslip::report::{builtin_scenes, render, write_all, Format};
+
+fn find(names: &[&str]) -> Option<PathBuf> {
+    names.iter().find_map(|n| {
+        let out = Command::new("which").arg(n).output().ok()?;
+        out.status
+            .success()
+            .then(|| PathBuf::from(String::from_utf8_lossy(&out.stdout).trim()))
+    })
+}
+
+fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Output {
+    Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--hide-scrollbars",
+            "--no-pdf-header-footer",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .args(args)
+        .output()
+        .expect("chromium runs")
+}
+
+/// Share of pixels that are not (near) white in a PNG screenshot.
+fn ink_share(png_path: &Path) -> f64 {
+    let decoder = png::Decoder::new(std::fs::File::open(png_path).expect("screenshot exists"));
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut buf = vec![0; reader.output_buffer_size()];
+    let info = reader.next_frame(&mut buf).expect("a frame");
+    let channels = info.color_type.samples();
+    let pixels = &buf[..info.buffer_size()];
+    let total = pixels.len() / channels;
+    let ink = pixels
+        .chunks(channels)
+        .filter(|p| p.iter().take(3).any(|&c| c < 200))
+        .count();
+    ink as f64 / total as f64
+}
+
+#[test]
+fn every_page_renders_in_chromium_and_prints_to_pdf() {
+    let (Some(browser), Some(pdftotext)) = (
+        find(&["chromium", "chromium-browser", "google-chrome"]),
+        find(&["pdftotext"]),
+    ) else {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install chromium and poppler-utils"
+        );
+        eprintln!("skipped: chromium or pdftotext not installed");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = builtin_scenes().unwrap();
+    let files = render(&scenes, &[Format::Html]).unwrap();
+    write_all(dir.path(), &files).unwrap();
+    let mut pages: Vec<(String, String, String)> = scenes
+        .iter()
+        .map(|s| {
+            let ctx = scene_tables(s).unwrap();
+            let value = ctx
+                .verification
+                .iter()
+                .find(|r| r.verdict == "pass" && r.closed_form.chars().any(|c| c.is_ascii_digit()))
+                .map(|r| r.closed_form.clone())
+                .unwrap_or_else(|| ctx.params[0].value.clone());
+            (format!("{}.html", s.id), s.title.clone(), value)
+        })
+        .collect();
+    // The index: its title and the first scene's title in its table.
+    pages.push((
+        "index.html".into(),
+        "stickslip".into(),
+        scenes[0].title.clone(),
+    ));
+    // Two pages at a time on this 2-core machine.
+    std::thread::scope(|scope| {
+        for chunk in pages.chunks(pages.len().div_ceil(2)) {
+            let (browser, pdftotext, dir) = (&browser, &pdftotext, dir.path());
+            scope.spawn(move || {
+                for (i, (page, title, value)) in chunk.iter().enumerate() {
+                    let profile = dir.join(format!("profile-{page}-{i}"));
+                    let url = format!("file://{}", dir.join(page).display());
+                    let shot = dir.join(format!("{page}.png"));
+                    let out = chromium(
+                        browser,
+                        &profile,
+                        &[
+                            "--window-size=1200,1600".into(),
+                            format!("--screenshot={}", shot.display()),
+                            url.clone(),
+                        ],
+                    );
+                    assert!(shot.exists(), "{page}: no screenshot: {out:?}");
+                    let ink = ink_share(&shot);
+                    assert!(ink > 0.01, "{page}: blank screenshot (ink {ink})");
+                    let pdf = dir.join(format!("{page}.pdf"));
+                    let out = chromium(
+                        browser,
+                        &profile,
+                        &[format!("--print-to-pdf={}", pdf.display()), url],
+                    );
+                    assert!(pdf.exists(), "{page}: no PDF: {out:?}");
+                    let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
+                    let text = String::from_utf8_lossy(&text.stdout).replace('\n', " ");
+                    let squashed = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+                    let text = squashed(&text);
+                    assert!(
+                        text.contains(&squashed(title)),
+                        "{page}: title {title:?} not in the PDF"
+                    );
+                    assert!(
+                        text.contains(value.as_str()),
+                        "{page}: value {value} not in the PDF"
+                    );
+                }
+            });
+        }
+    });
+}
+
+#[test]
+fn no_page_references_the_network() {
+    let files = render(&builtin_scenes().unwrap(), &[Format::Html, Format::Md]).unwrap();
+    for f in &files {
+        let text = String::from_utf8_lossy(&f.bytes);
+        // XML namespace names are identifiers, not resources: drop them before looking.
+        let without_namespaces = strip_namespaces(&text);
+        for bad in [
+            "http:",
+            "https:",
+            "src=\"//",
+            "href=\"//",
+            "@import",
+            "url(",
+        ] {
+            assert!(
+                !without_namespaces.contains(bad),
+                "{}: references {bad}",
+                f.path.display()
+            );
+        }
+    }
+}
+
+/// The text without `xmlns="…"` and `xmlns:prefix="…"` attributes.
+fn strip_namespaces(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("xmlns") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i..];
+        let end = after
+            .find('"')
+            .and_then(|q| after[q + 1..].find('"').map(|e| q + 1 + e + 1))
+            .unwrap_or(after.len());
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    out
+}
