@@ -7,7 +7,9 @@
 //! cargo bench --bench engine -- --warm-up-time 1 --measurement-time 3
 //! ```
 //!
-//! Targets: closed forms < 1 µs; 20 periods of either law < 20 µs.
+//! Targets: closed forms < 1 µs; 20 periods of either law < 20 µs. The woodpecker (Fig. 15
+//! set): all closed forms of both phases < 2 µs; 20 periods of either law < 30 µs. The whole
+//! default report (rendered in memory) < 2 s.
 
 use std::hint::black_box;
 
@@ -15,8 +17,11 @@ use criterion::{criterion_group, criterion_main, Criterion};
 
 use stickslip::engine::{analyse, integrate, RunOptions};
 use stickslip::formula::pulled_mass as cf;
+use stickslip::formula::woodpecker as wcf;
+use stickslip::model::woodpecker;
 use stickslip::model::{pulled_mass, LawKind};
-use stickslip::params::PulledMassParams;
+use stickslip::params::{PulledMassParams, WoodpeckerParams};
+use stickslip::report::{builtin_scenes, render, Format};
 use stickslip::results;
 
 /// Periods integrated per run (the targets above are stated for 20).
@@ -84,11 +89,47 @@ fn whole_evaluation(c: &mut Criterion) {
     );
 }
 
+fn woodpecker_closed_forms(c: &mut Criterion) {
+    let inputs = results::woodpecker::linear_inputs(&WoodpeckerParams::default());
+    c.bench_function("woodpecker closed forms, both phases and the orbit", |b| {
+        b.iter(|| wcf::evaluate(black_box(&inputs)))
+    });
+}
+
+fn woodpecker_integration(c: &mut Criterion) {
+    let p = WoodpeckerParams::default();
+    let body = woodpecker::body(&p);
+    let opts = RunOptions {
+        periods: PERIODS,
+        record_segments: false,
+    };
+    for (name, kind) in [("linear", LawKind::Linear), ("harmonic", LawKind::Harmonic)] {
+        let law = woodpecker::force_law(&p, kind).expect("Fig. 15 gives a valid force law");
+        c.bench_function(
+            &format!("woodpecker: integrate {PERIODS} periods, {name} law"),
+            |b| b.iter(|| integrate(black_box(&body), black_box(&law), black_box(&opts))),
+        );
+    }
+}
+
+fn default_report(c: &mut Criterion) {
+    let scenes = builtin_scenes().expect("built-in scenes");
+    let mut group = c.benchmark_group("report");
+    group.sample_size(10);
+    group.bench_function("whole default report, html and md, in memory", |b| {
+        b.iter(|| render(black_box(&scenes), &[Format::Html, Format::Md]))
+    });
+    group.finish();
+}
+
 criterion_group!(
     benches,
     closed_forms,
     integration,
     steady_analysis,
-    whole_evaluation
+    whole_evaluation,
+    woodpecker_closed_forms,
+    woodpecker_integration,
+    default_report
 );
 criterion_main!(benches);

@@ -8,7 +8,10 @@
 //!                and one stick per period (no intermediate halt)
 //! ```
 
-use super::{mm_s, regime_words, run_wood, Claim, ClaimModel, Numbers, Verdict};
+use super::{
+    mm_s, or_none, regime_words, run_wood, Claim, ClaimModel, ClaimNumber, Integrated, Numbers,
+    Verdict,
+};
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
 use crate::model::LawKind;
@@ -85,88 +88,130 @@ pub(super) fn fig26() -> WoodpeckerParams {
     }
 }
 
-/// Claim 8: λ = 1 never sticks; λ = l/h reproduces Figs. 15, 16 and 26.
-pub(super) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
-    let printed = run_wood(
-        &WoodpeckerParams {
-            lever: Some(1.0),
-            ..*w
-        },
-        LawKind::Harmonic,
-    )?;
-    let printed_sticks = printed
-        .run
-        .events
-        .iter()
-        .filter(|e| matches!(e.kind, EventKind::Stick { .. }))
-        .count();
-    let geometric = WoodpeckerParams { lever: None, ..*w };
-    let lever = run_wood(&geometric, LawKind::Harmonic)?;
-    let threshold = threshold_above(&geometric);
-    let fig26_v = run_wood(&fig26(), LawKind::Harmonic)?.steady.v_avg;
-    let fig26_diff = fig26_v.map(|v| (v - QUOTED_FIG26) / QUOTED_FIG26);
-    // Stick-slip: a periodic motion that advances and sticks at least once per period.
-    let lever_sticks =
-        lever.steady.sticks_per_period > 0 && lever.steady.v_avg.is_some_and(|v| v > 0.0);
-    let verdict = match (printed_sticks > 0, lever_sticks) {
-        (true, _) => Verdict::Confirmed,
-        (false, true) => Verdict::Qualified,
-        (false, false) => Verdict::Refuted,
-    };
-    let mut n = Numbers::default();
-    let sticks_label = format!("sticks in {DEFAULT_PERIODS} periods, lambda = 1");
-    n.push(&sticks_label, printed_sticks as f64, "")
-        .push("lambda = l/h", geometric.lambda(), "")
-        .push("v_avg harmonic, lambda = l/h", lever.steady.v_avg, "m/s")
-        .push("z0 where the intermediate halt disappears", threshold, "m")
-        .push("Fig. 26 v_avg harmonic", fig26_v, "m/s")
-        .push("Fig. 26 quoted v_avg", QUOTED_FIG26, "m/s")
-        .push("Fig. 26 (computed - quoted)/quoted", fig26_diff, "");
-    let threshold_text = match threshold {
-        Some(z) => format!(
-            "Raising z0 from {:.3} mm (λ = l/h), the intermediate halt disappears at z0 = {:.6} \
-             mm (bisection to 1e-6 mm; the paper’s Fig. 16 shows a motion without the halt).",
-            1e3 * w.z0,
-            1e3 * z
-        ),
-        None => {
-            "With λ = l/h the given set has no intermediate halt that a larger z0 could remove."
-                .to_string()
+const PAPER_SAYS: &str = "Each contact carries N = |F_e| (2F_f,max = 2μs|F_e|); the Fig. 15 \
+     values give a double slip-stick, a small change of z0 removes the intermediate halt (Fig. \
+     16), and the Fig. 26 set moves at 20 mm/s.";
+
+/// What claim 8 computes: both lever ratios on the given set, the threshold, Fig. 26.
+struct Evidence {
+    /// Stick events of the harmonic run with λ = 1, and that run.
+    printed_sticks: usize,
+    printed: Integrated,
+    /// The given set with λ = l/h, and its harmonic run.
+    geometric: WoodpeckerParams,
+    lever: Integrated,
+    threshold: Option<f64>,
+    fig26_v: Option<f64>,
+}
+
+impl Evidence {
+    fn of(w: &WoodpeckerParams) -> Result<Self> {
+        let printed = run_wood(
+            &WoodpeckerParams {
+                lever: Some(1.0),
+                ..*w
+            },
+            LawKind::Harmonic,
+        )?;
+        let printed_sticks = (printed.run.events.iter())
+            .filter(|e| matches!(e.kind, EventKind::Stick { .. }))
+            .count();
+        let geometric = WoodpeckerParams { lever: None, ..*w };
+        Ok(Self {
+            printed_sticks,
+            printed,
+            geometric,
+            lever: run_wood(&geometric, LawKind::Harmonic)?,
+            threshold: threshold_above(&geometric),
+            fig26_v: run_wood(&fig26(), LawKind::Harmonic)?.steady.v_avg,
+        })
+    }
+
+    fn fig26_diff(&self) -> Option<f64> {
+        self.fig26_v.map(|v| (v - QUOTED_FIG26) / QUOTED_FIG26)
+    }
+
+    /// Confirmed if the printed law sticks; qualified if only λ = l/h gives stick-slip (a
+    /// periodic motion that advances and sticks at least once per period); refuted otherwise.
+    fn verdict(&self) -> Verdict {
+        let s = &self.lever.steady;
+        let lever_sticks = s.sticks_per_period > 0 && s.v_avg.is_some_and(|v| v > 0.0);
+        match (self.printed_sticks > 0, lever_sticks) {
+            (true, _) => Verdict::Confirmed,
+            (false, true) => Verdict::Qualified,
+            (false, false) => Verdict::Refuted,
         }
-    };
-    let finding =
-        format!(
-        "With the printed contact force N = |F_e| (λ = 1) the harmonic sleeve of the given set \
-         {} in {DEFAULT_PERIODS} periods ({}); with λ = l/h = {:.3} it shows {}, {}. \
-         {threshold_text} The Fig. 26 set (μd 0.332, k 20.3 N/m, d0 9.5 mm) moves at v̄ = {}, {} \
-         the quoted 20 mm/s.",
-        match printed_sticks {
+    }
+
+    fn numbers(&self) -> Vec<ClaimNumber> {
+        let mut n = Numbers::default();
+        let sticks_label = format!("sticks in {DEFAULT_PERIODS} periods, lambda = 1");
+        n.push(&sticks_label, self.printed_sticks as f64, "")
+            .push("lambda = l/h", self.geometric.lambda(), "")
+            .push(
+                "v_avg harmonic, lambda = l/h",
+                self.lever.steady.v_avg,
+                "m/s",
+            )
+            .push(
+                "z0 where the intermediate halt disappears",
+                self.threshold,
+                "m",
+            )
+            .push("Fig. 26 v_avg harmonic", self.fig26_v, "m/s")
+            .push("Fig. 26 quoted v_avg", QUOTED_FIG26, "m/s")
+            .push("Fig. 26 (computed - quoted)/quoted", self.fig26_diff(), "");
+        n.take()
+    }
+
+    fn finding(&self, z0: f64) -> String {
+        let printed = match self.printed_sticks {
             0 => "never sticks".to_string(),
             k => format!("sticks {k} times"),
-        },
-        regime_words(printed.steady.regime()),
-        geometric.lambda(),
-        regime_words(lever.steady.regime()),
-        lever
-            .steady
-            .v_avg
-            .map_or("no periodic v̄".to_string(), |v| format!("v̄ = {}", mm_s(v))),
-        fig26_v.map_or("n/a".to_string(), mm_s),
-        fig26_diff.map_or("n/a".to_string(), |d| format!("{:+.1} % against", 100.0 * d)),
-    );
+        };
+        let lever_v = (self.lever.steady.v_avg).map_or("no periodic v̄".to_string(), |v| {
+            format!("v̄ = {}", mm_s(v))
+        });
+        let threshold = match self.threshold {
+            Some(z) => format!(
+                "Raising z0 from {:.3} mm (λ = l/h), the intermediate halt disappears at z0 = \
+                 {:.6} mm (bisection to 1e-6 mm; the paper's Fig. 16 shows a motion without it).",
+                1e3 * z0,
+                1e3 * z
+            ),
+            None => "With λ = l/h the given set has no intermediate halt that a larger z0 could \
+                     remove."
+                .to_string(),
+        };
+        format!(
+            "With the printed contact force N = |F_e| (λ = 1) the harmonic sleeve of the given \
+             set {printed} in {DEFAULT_PERIODS} periods ({}); with λ = l/h = {:.3} it shows {}, \
+             {lever_v}. {threshold} The Fig. 26 set (μd 0.332, k 20.3 N/m, d0 9.5 mm) moves at \
+             v̄ = {}, {} the quoted 20 mm/s.",
+            regime_words(self.printed.steady.regime()),
+            self.geometric.lambda(),
+            regime_words(self.lever.steady.regime()),
+            or_none(self.fig26_v, mm_s),
+            (self.fig26_diff()).map_or("n/a".to_string(), |d| format!(
+                "{:+.1} % against",
+                100.0 * d
+            )),
+        )
+    }
+}
+
+/// Claim 8: λ = 1 never sticks; λ = l/h reproduces Figs. 15, 16 and 26.
+pub(super) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
+    let e = Evidence::of(w)?;
     Ok(Claim {
         id: 8,
         model: ClaimModel::Woodpecker,
         title: "The sleeve sticks only with the lever ratio λ = l/h in the contact force"
             .to_string(),
-        paper_says:
-            "Each contact carries N = |F_e| (2F_f,max = 2μs|F_e|); the Fig. 15 values give a \
-                     double slip-stick, a small change of z0 removes the intermediate halt (Fig. \
-                     16), and the Fig. 26 set moves at 20 mm/s."
-                .to_string(),
-        verdict,
-        finding,
-        numbers: n.take(),
+        paper_says: PAPER_SAYS.to_string(),
+        verdict: e.verdict(),
+        finding: e.finding(w.z0),
+        numbers: e.numbers(),
         sample: None,
     })
 }

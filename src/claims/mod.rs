@@ -4,9 +4,9 @@
 //! "sensible values" in general, on a seeded random sample of valid parameter sets.
 //!
 //! ```text
-//! pulled mass + woodpecker params ─┬─ closed forms (formula)      ─┐
-//!                                  ├─ exact integration (engine)  ─┼─→ Claim { verdict, finding, numbers }
-//!            Sample { seed, size } ─┴─ random sets (closed forms)   ─┘
+//! pulled mass + woodpecker params ─┬─ closed forms (formula)     ─┐
+//!                                  ├─ exact integration (engine) ─┼─→ Claim { verdict,
+//!            Sample { seed, size } ─┴─ random sets (closed forms)  ─┘    finding, numbers }
 //! ```
 //!
 //! A verdict judges the paper's statement (`paper_says`) as written: `confirmed` (it holds on the

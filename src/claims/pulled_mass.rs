@@ -9,7 +9,9 @@
 //! ```
 
 use super::sample::{self, PulledExample};
-use super::{mm_s, rel_diff, run_pulled, Claim, ClaimModel, Integrated, Numbers, Sample, Verdict};
+use super::{
+    mm_s, or_none, rel_diff, run_pulled, Claim, ClaimModel, Integrated, Numbers, Sample, Verdict,
+};
 use crate::engine::IntegrationRegime;
 use crate::error::Result;
 use crate::formula::pulled_mass as cf;
@@ -111,26 +113,14 @@ pub(super) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         )
         .push("share of late-stick sets in the sample", result.share, "");
     let finding = format!(
-        "Given set: φ = F/W = {phi:.4}, 1/Θ = {stick_max:.4}, φ_c = {phi_c:.4} (linearized law: {}). \
-         With μs = μd = μ = {mu:.4}, below the (22) minimum {mu_min:.4} but above φ, the exact \
-         integration of the linearized law {}; so (20) only decides whether the stick comes within \
-         the same period. Of {} random sets in the \"non-stick\" area of Fig. 9 (μs in [0.1, 1], \
-         μd/μs in [0.05, 1], φ uniform between 1/Θ and 2μs), {} ({:.1} %) stick early in the next \
-         period{}.",
-        match regime {
-            cf::Regime::SlipStick => "a stick within the same period",
-            cf::Regime::SlipStickLate => "a stick early in the next period",
-            cf::Regime::ContinuousSlip => "continuous slip",
-            cf::Regime::ImmediateContinuousSlip => "continuous slip from t = 0",
-        },
-        match tau_stick {
-            Some(t) if sticks => format!(
-                "shows the mass stopping at t = {t:.6} T, early in the next period (closed form \
-                 τ_ST,late = {})",
-                late_closed.map_or("none".to_string(), |l| format!("{l:.6}"))
-            ),
-            _ => "shows no stick".to_string(),
-        },
+        "Given set: φ = F/W = {phi:.4}, 1/Θ = {stick_max:.4}, φ_c = {phi_c:.4} (linearized law: \
+         {}). With μs = μd = μ = {mu:.4}, below the (22) minimum {mu_min:.4} but above φ, the \
+         exact integration of the linearized law {}; so (20) only decides whether the stick comes \
+         within the same period. Of {} random sets in the \"non-stick\" area of Fig. 9 (μs in \
+         [0.1, 1], μd/μs in [0.05, 1], φ uniform between 1/Θ and 2μs), {} ({:.1} %) stick early \
+         in the next period{}.",
+        regime_words(regime),
+        stick_words(tau_stick.filter(|_| sticks), late_closed),
         result.size,
         result.counterexamples,
         100.0 * result.share,
@@ -153,6 +143,32 @@ pub(super) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         numbers: n.take(),
         sample: Some(result),
     })
+}
+
+/// The closed-form regime of the pulled mass in plain words.
+fn regime_words(r: cf::Regime) -> &'static str {
+    match r {
+        cf::Regime::SlipStick => "a stick within the same period",
+        cf::Regime::SlipStickLate => "a stick early in the next period",
+        cf::Regime::ContinuousSlip => "continuous slip",
+        cf::Regime::ImmediateContinuousSlip => "continuous slip from t = 0",
+    }
+}
+
+/// What the integration with μs = μd = μ shows, beside the late-stick closed form.
+fn stick_words(tau_stick: Option<f64>, late_closed: Option<f64>) -> String {
+    match tau_stick {
+        Some(t) => format!(
+            "shows the mass stopping at t = {t:.6} T, {} (closed form τ_ST,late = {})",
+            if t > 1.0 {
+                "early in the next period"
+            } else {
+                "within the period"
+            },
+            or_none(late_closed, |l| format!("{l:.6}"))
+        ),
+        None => "shows no stick".to_string(),
+    }
 }
 
 /// Integrates the sample's first late-stick set and says where it sticks.

@@ -492,7 +492,7 @@ mod tests {
         let thr = halt_threshold(u_s, h_b, 1.0).unwrap();
         let kind = |u_b: f64| lobe_engine(u_s, u_b - 2.0, u_b, h_a, h_b).and_then(|s| s.halt);
         assert!(!kind(thr * (1.0 + 1e-9)).unwrap().kind.is_merged());
-        assert!(kind(thr * (1.0 - 1e-9)).map_or(true, |h| h.kind.is_merged()));
+        assert!(kind(thr * (1.0 - 1e-9)).is_none_or(|h| h.kind.is_merged()));
     }
 
     fn slip(phase: Phase, halt: HaltKind, t_slip: f64, distance: f64) -> OrbitSlip {

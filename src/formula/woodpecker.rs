@@ -1245,7 +1245,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
                     !above.is_merged(),
                     "{c:?} {phase:?} just above μd,HALT: {above:?}"
                 );
-                assert!(halt(mu * (1.0 - 1e-9)).map_or(true, HaltKind::is_merged));
+                assert!(halt(mu * (1.0 - 1e-9)).is_none_or(HaltKind::is_merged));
             }
         }
     }
@@ -1473,7 +1473,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
                 if u_b >= thr * (1.0 + 1e-9) {
                     prop_assert!(halt.is_some_and(|h| !h.is_merged()), "{:?} {:?}", phase, halt);
                 } else if u_b <= thr * (1.0 - 1e-9) {
-                    prop_assert!(halt.map_or(true, HaltKind::is_merged), "{:?} {:?}", phase, halt);
+                    prop_assert!(halt.is_none_or(HaltKind::is_merged), "{:?} {:?}", phase, halt);
                 }
                 // Stick in the rising flank ⇔ the paper's (51)/(65) condition.
                 let stick = (2.0 * p.lambda * mu_d_min(p.lambda, g.u_s_minus, h_b, g.sigma).unwrap() + g.sigma).max(1.0 / h_b);

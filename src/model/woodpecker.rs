@@ -10,7 +10,7 @@
 use super::LawKind;
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::{Error, Result};
-use crate::formula::woodpecker::counterpart;
+use crate::formula::woodpecker::{self as formula, counterpart};
 use crate::params::WoodpeckerParams;
 
 /// The sleeve: M = m_S, μs, μd.
@@ -105,10 +105,7 @@ pub fn spring_coordinate(p: &WoodpeckerParams, law: LawKind, t: f64) -> Option<f
         LawKind::Harmonic => Some(p.z0 + p.d0 * (p.omega() * t).cos()),
         LawKind::Linear => {
             let (zeta0, delta0) = linear_amplitudes(p)?;
-            let tau = 0.25 * p.period();
-            let s = (t / tau).rem_euclid(4.0);
-            let zeta = if s <= 2.0 { 1.0 - s } else { s - 3.0 };
-            Some(delta0 + zeta0 * zeta)
+            formula::spring_coordinate(t, 0.25 * p.period(), zeta0).map(|zeta| delta0 + zeta)
         }
     }
 }

@@ -44,9 +44,24 @@ const TEMPLATES: &[(&str, &str)] = &[
 const CSS: &str = include_str!("../../templates/style.css");
 const TITLE: &str = "stickslip: the paper's stick-slip models, verified";
 
+/// Tera filter `cell`: text made safe for a Markdown table cell (pipes escaped, one line).
+fn markdown_cell(
+    value: &tera::Value,
+    _: &std::collections::HashMap<String, tera::Value>,
+) -> tera::Result<tera::Value> {
+    let text = match value {
+        tera::Value::String(s) => s.clone(),
+        other => other.to_string(),
+    };
+    Ok(tera::Value::String(
+        text.replace('|', "\\|").replace('\n', " "),
+    ))
+}
+
 fn templates() -> Result<Tera> {
     let mut tera = Tera::default();
     tera.autoescape_on(vec![".html"]);
+    tera.register_filter("cell", markdown_cell);
     tera.add_raw_templates(TEMPLATES.to_vec())
         .map_err(|e| template_error("(all)", &e))?;
     Ok(tera)

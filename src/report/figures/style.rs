@@ -193,7 +193,11 @@ pub fn dash_runs(points: &[(i32, i32)], pattern: &[f64]) -> Vec<Vec<(i32, i32)>>
     if points.len() < 2 {
         return Vec::new();
     }
-    if pattern.is_empty() || pattern.iter().any(|p| !(*p > 0.0)) {
+    if pattern.is_empty()
+        || pattern
+            .iter()
+            .any(|p| p.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater))
+    {
         return vec![points.to_vec()];
     }
     let to_px = |(x, y): (f64, f64)| (x.round() as i32, y.round() as i32);
@@ -336,7 +340,7 @@ pub fn draw_legend(
                 ];
                 root.draw(&Rectangle::new(square, fill_color(fill).filled()))
                     .map_err(draw_err)?;
-                root.draw(&Rectangle::new(square, &curve_color(fill)))
+                root.draw(&Rectangle::new(square, curve_color(fill)))
                     .map_err(draw_err)?;
             }
         }

@@ -25,11 +25,7 @@ use crate::results::woodpecker::{evaluate_with_runs, linear_inputs, orbit_regime
 const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);
 const LINEAR: (usize, Stroke) = (1, Stroke::Dashed);
 /// Further variants (counterparts, μd values, references): colour and stroke.
-const VARIANTS: [(usize, Stroke); 3] = [
-    (2, Stroke::Dotted),
-    (3, Stroke::DashDot),
-    (4, Stroke::Dotted),
-];
+const VARIANTS: [(usize, Stroke); 2] = [(2, Stroke::Dotted), (3, Stroke::DashDot)];
 /// m → mm, m/s → mm/s.
 const MM: f64 = 1e3;
 /// The period of a run shown as the settled motion (earlier periods may be a transient).
@@ -387,7 +383,7 @@ fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
             panel("y_S (mm)", law_curves(1)),
             panel("v (mm/s)", law_curves(2)),
         ],
-        if linear.is_some() {
+        if linear.is_some() && eval.domain_note.is_none() {
             markers(shifted, range)
         } else {
             Vec::new()
@@ -431,25 +427,22 @@ fn spring(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     let mut curves = vec![fn_curve("harmonic z0 + d0 cos ωt", range, HARMONIC, |t| {
         MM * woodpecker::spring_coordinate(p, LawKind::Harmonic, t).unwrap_or(f64::NAN)
     })];
-    let styles = [
-        (
-            Counterpart::Zeros,
-            LINEAR,
-            "zeros: same amplitude and zeros of F_e",
-        ),
-        (
-            Counterpart::Extremes,
-            VARIANTS[0],
-            "extremes: same maximum and minimum",
-        ),
+    let all = [
+        (Counterpart::Zeros, "zeros: same amplitude and zeros of F_e"),
+        (Counterpart::Extremes, "extremes: same maximum and minimum"),
         (
             Counterpart::Tangent,
-            VARIANTS[1],
             "tangent: same zeros and slopes of F_e",
         ),
     ];
+    // The scene's counterpart in the linear law's style, the others as variants.
+    let (own, others): (Vec<_>, Vec<_>) = all.into_iter().partition(|c| c.0 == p.counterpart);
+    let styled = own
+        .into_iter()
+        .zip([LINEAR])
+        .chain(others.into_iter().zip(VARIANTS));
     let mut described = Vec::new();
-    for (which, style, label) in styles {
+    for ((which, label), style) in styled {
         let Some((zeta0, delta0)) = counterpart(p.z0, p.d0, which) else {
             described.push(format!("{} is undefined", counterpart_name(which)));
             continue;
@@ -559,8 +552,8 @@ fn forces(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     let caption = format!(
         "Forces on the sleeve over one period {law_note}: the driving force W_S + F_e (weight \
          W_S = {w_s:.4} N plus spring force), the static friction capacity 2λμs|F_e| and the \
-         dynamic friction 2λμd|F_e| of the two contacts (λ = l/h = {:.4}). The sleeve is held \
-         while W_S + F_e ≤ 2λμs|F_e|; a slip starts where the driving force rises above the \
+         dynamic friction 2λμd|F_e| of the two contacts (lever ratio λ = {:.4}). The sleeve is \
+         held while |W_S + F_e| ≤ 2λμs|F_e|; a slip starts where the driving force rises above the \
          capacity, at t_SL(I) of (41) and t_SL(II) of (58), and decelerates where 2λμd|F_e| \
          exceeds W_S + F_e.",
         p.lambda()
@@ -814,7 +807,7 @@ fn positions(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     });
     let chart = time_chart(range, panels, markers(events, range));
     let caption = "Harmonic law over two periods from rest: positions of the sleeve y_S (solid) \
-                   and of the woodpecker y_W = y_S + z(t) (physics.md §2, up to a constant), both \
+                   and of the woodpecker y_W = y_S + z(t) (eq. (34), up to a constant), both \
                    positive downward, and the speed of the sleeve. The bird swings about the \
                    sleeve, which moves down only while slipping; vertical lines mark the slips \
                    and sticks of the exact integration."
@@ -990,7 +983,7 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
         "Grid of {MAP_CELLS}×{MAP_CELLS} cells over μd from {:.2} to μs = {} and z0 from {:.2} \
          to {:.2} mm (d0 = {:.2} mm, the other parameters of the scene). Curves, from the \
          closed forms of the linear law ({} counterpart) as functions of z0: μd,MIN of phases I \
-         and II, above which the stick comes within the half period ((51), (65)), and the exact \
+         and II, above which (51) and (65) put the stick within the half period, and the exact \
          halt thresholds μd,HALT (§3.6), above which a slip halts before the next slip onset. \
          The diamond marks the scene's own μd = {} and z0 = {:.3} mm. Regions: \"2 slips, 2 \
          sticks\" is the paper's double slip-stick; \"1 slip, 2 maxima\" has lost the \
@@ -1011,8 +1004,8 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
             linear,
             format!(
                 "Regimes of the linear law's periodic orbit from the closed forms (lobe engine, \
-                 §3.6); \"no closed form\" where their domain 0 ≤ δ0 < ζ0, 2λμs > 1 fails (with \
-                 the zeros counterpart δ0 < 0 for z0 < 0). {about}"
+                 §3.6); \"no closed form\" where their domain 0 ≤ δ0 < ζ0, 2λμs > 1 fails (every \
+                 counterpart has δ0 < 0 for z0 < 0). {about}"
             ),
         ),
         (
@@ -1127,6 +1120,38 @@ mod tests {
     }
 
     #[test]
+    fn the_scenes_counterpart_is_drawn_in_the_linear_style() {
+        let p = WoodpeckerParams {
+            counterpart: Counterpart::Extremes,
+            ..WoodpeckerParams::default()
+        };
+        let figs = figures("s", &p, FigureKind::WoodSpring).unwrap();
+        let curves = &chart_of(&figs[0]).panels[0].curves;
+        assert_eq!(curves.len(), 4);
+        let style = |prefix: &str| {
+            let c = curves.iter().find(|c| c.label.starts_with(prefix)).unwrap();
+            (c.color, c.stroke)
+        };
+        assert_eq!(style("harmonic"), HARMONIC);
+        assert_eq!(style("extremes"), LINEAR);
+        assert_ne!(style("zeros"), style("tangent"));
+    }
+
+    #[test]
+    fn mu_sweep_above_mu_s_draws_distinct_admissible_values_and_says_why() {
+        // λ = 1, extremes: μd,MIN(I) = 0.807 > μs = 0.65 (physics.md §5).
+        let p = WoodpeckerParams {
+            lever: Some(1.0),
+            counterpart: Counterpart::Extremes,
+            ..WoodpeckerParams::default()
+        };
+        let figs = figures("s", &p, FigureKind::WoodMuSweep { phase: 1 }).unwrap();
+        let curves = &chart_of(&figs[0]).panels[0].curves;
+        assert_eq!(curves.len(), 2);
+        assert!(figs[0].caption.contains("above μs"), "{}", figs[0].caption);
+    }
+
+    #[test]
     fn wrong_phase_is_an_error_and_pulled_kinds_give_nothing() {
         let p = WoodpeckerParams::default();
         assert!(figures("s", &p, FigureKind::WoodPhase { phase: 3 }).is_err());
@@ -1209,22 +1234,28 @@ mod tests {
     }
 
     #[test]
-    fn timing_of_one_harmonic_map_cell() {
+    fn timing_of_the_two_maps_and_of_one_harmonic_cell() {
         let p = WoodpeckerParams::default();
+        let (x, y) = ((MAP_MU_D_MIN, p.mu_s), (-4.5, 8.91));
+        let start = Instant::now();
+        let _ = map_cells(x, y, &|mu_d, z0_mm| linear_cell(&p, mu_d, z0_mm / MM));
+        let linear = start.elapsed().as_secs_f64();
+        let start = Instant::now();
+        let _ = map_cells(x, y, &|mu_d, z0_mm| {
+            harmonic_cell(&p, mu_d, z0_mm / MM, MAP_PERIODS)
+        });
+        let harmonic = start.elapsed().as_secs_f64();
         let n = 400;
         let start = Instant::now();
-        let mut sum = 0u32;
-        for i in 0..n {
-            sum += u32::from(harmonic_cell(
-                &p,
-                0.2 + 0.0003 * f64::from(i),
-                p.z0,
-                MAP_PERIODS,
-            ));
-        }
+        let cells: Vec<u8> = (0..n)
+            .map(|i| harmonic_cell(&p, 0.2 + 0.0003 * f64::from(i), p.z0, MAP_PERIODS))
+            .collect();
         eprintln!(
-            "one harmonic cell ({MAP_PERIODS} periods): {:.1} µs (checksum {sum})",
-            start.elapsed().as_secs_f64() / f64::from(n) * 1e6
+            "maps on {} threads: linear {linear:.3} s, harmonic {harmonic:.3} s; one harmonic \
+             cell ({MAP_PERIODS} periods) {:.1} µs ({} cells)",
+            rayon::current_num_threads(),
+            start.elapsed().as_secs_f64() / f64::from(n) * 1e6,
+            cells.len()
         );
     }
 }
