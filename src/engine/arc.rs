@@ -34,6 +34,7 @@ pub enum Arc {
         a1: f64,
         omega: f64,
         sin_c: f64,
+        cos_c: f64,
     },
 }
 
@@ -49,15 +50,19 @@ impl Arc {
                 jerk: accel.c1,
                 t_ref,
             },
-            Basis::Cos { omega } => Arc::Trig {
-                t_c,
-                x_c,
-                v_c,
-                a0: accel.c0,
-                a1: accel.c1,
-                omega,
-                sin_c: (omega * t_c).sin(),
-            },
+            Basis::Cos { omega } => {
+                let (sin_c, cos_c) = (omega * t_c).sin_cos();
+                Arc::Trig {
+                    t_c,
+                    x_c,
+                    v_c,
+                    a0: accel.c0,
+                    a1: accel.c1,
+                    omega,
+                    sin_c,
+                    cos_c,
+                }
+            }
         }
     }
 
@@ -130,6 +135,7 @@ impl Arc {
                 a1,
                 omega,
                 sin_c,
+                ..
             } => {
                 let w = t - t_c;
                 // cos ωt_c − cos ωt = 2 sin(ω(t + t_c)/2) sin(ωw/2)
@@ -139,25 +145,48 @@ impl Arc {
         }
     }
 
-    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two).
-    pub fn accel_zeros(&self, lo: f64, hi: f64) -> Vec<f64> {
-        let mut zeros = Vec::with_capacity(2);
+    /// (v, a, da/dt) at t, for root finding: one `sin_cos` on a trigonometric arc (the
+    /// difference sin ωt − sin ωt_c is taken directly here; its absolute error, ~1e-16 of the
+    /// arc's speed scale, is what a root needs).
+    #[inline]
+    pub fn v_a_jerk(&self, t: f64) -> (f64, f64, f64) {
         match *self {
-            Arc::Poly { t_c, a_c, jerk, .. } => {
-                if jerk != 0.0 {
-                    zeros.push(t_c - a_c / jerk);
-                }
+            Arc::Poly {
+                t_c,
+                v_c,
+                a_c,
+                jerk,
+                ..
+            } => {
+                let w = t - t_c;
+                (v_c + w * (a_c + 0.5 * jerk * w), a_c + jerk * w, jerk)
             }
-            Arc::Trig { a0, a1, omega, .. } => {
-                zeros.extend(
-                    cos_level_crossings(a0, a1, omega, lo, hi)
-                        .into_iter()
-                        .map(|c| c.0),
-                );
+            Arc::Trig {
+                t_c,
+                v_c,
+                a0,
+                a1,
+                omega,
+                sin_c,
+                ..
+            } => {
+                let (sin, cos) = (omega * t).sin_cos();
+                let v = v_c + a0 * (t - t_c) + a1 / omega * (sin - sin_c);
+                (v, a0 + a1 * cos, -a1 * omega * sin)
             }
         }
-        zeros.retain(|&t| t > lo && t < hi);
-        zeros
+    }
+
+    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
+    /// allocation, this is on the hot path).
+    pub fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
+        let zeros = match *self {
+            Arc::Poly { t_c, a_c, jerk, .. } => [(jerk != 0.0).then(|| t_c - a_c / jerk), None],
+            Arc::Trig { a0, a1, omega, .. } => {
+                cos_level_crossings(a0, a1, omega, lo, hi).map(|c| c.map(|(t, _)| t))
+            }
+        };
+        zeros.map(|z| z.filter(|&t| t > lo && t < hi))
     }
 
     /// ∫ N_f(t)·|v(t)| dt over [t0, t1] on which v keeps its sign (N·m), with N_f = c0 + c1 b(t)
@@ -175,13 +204,36 @@ impl Arc {
                 let f = |t: f64| normal.at(self.b(t)) * self.v(t);
                 half * (f(mid - node) + f(mid + node))
             }
-            Arc::Trig { a0, a1, omega, .. } => {
-                let antiderivative = |t: f64| {
-                    let (sin, cos) = (omega * t).sin_cos();
-                    sin * self.v(t) / omega + (a0 * cos - 0.5 * a1 * sin * sin) / (omega * omega)
+            Arc::Trig {
+                t_c,
+                x_c,
+                v_c,
+                a0,
+                a1,
+                omega,
+                sin_c,
+                cos_c,
+            } => {
+                // x and the by-parts antiderivative from one sin_cos per end (the start of the
+                // arc has them stored).
+                let ends = |t: f64| {
+                    let (sin, cos) = if t == t_c {
+                        (sin_c, cos_c)
+                    } else {
+                        (omega * t).sin_cos()
+                    };
+                    let w = t - t_c;
+                    let v = v_c + a0 * w + a1 / omega * (sin - sin_c);
+                    let x = x_c
+                        + v_c * w
+                        + 0.5 * a0 * w * w
+                        + a1 / omega * ((cos_c - cos) / omega - w * sin_c);
+                    let by_parts =
+                        sin * v / omega + (a0 * cos - 0.5 * a1 * sin * sin) / (omega * omega);
+                    (x, by_parts)
                 };
-                normal.c0 * (self.x(t1) - self.x(t0))
-                    + normal.c1 * (antiderivative(t1) - antiderivative(t0))
+                let ((x0, p0), (x1, p1)) = (ends(t0), ends(t1));
+                normal.c0 * (x1 - x0) + normal.c1 * (p1 - p0)
             }
         };
         signed.abs()
@@ -199,14 +251,19 @@ impl Arc {
 /// Solutions in [lo, hi) of c0 + c1 cos ωt = 0 with t in [0, 2π/ω], each with the sign of the
 /// derivative there (+1 up-crossing, −1 down-crossing), ascending. A tangency (|c0| = |c1|) is
 /// not a crossing and is not returned.
-pub fn cos_level_crossings(c0: f64, c1: f64, omega: f64, lo: f64, hi: f64) -> Vec<(f64, i8)> {
-    let mut out = Vec::with_capacity(2);
+pub fn cos_level_crossings(
+    c0: f64,
+    c1: f64,
+    omega: f64,
+    lo: f64,
+    hi: f64,
+) -> [Option<(f64, i8)>; 2] {
     if c1 == 0.0 {
-        return out;
+        return [None, None];
     }
     let r = -c0 / c1;
     if !(r > -1.0 && r < 1.0) {
-        return out;
+        return [None, None];
     }
     let theta = r.acos();
     let period = std::f64::consts::TAU / omega;
@@ -214,12 +271,7 @@ pub fn cos_level_crossings(c0: f64, c1: f64, omega: f64, lo: f64, hi: f64) -> Ve
     let first = theta / omega;
     let second = period - first;
     let up_first: i8 = if c1 < 0.0 { 1 } else { -1 };
-    for (t, dir) in [(first, up_first), (second, -up_first)] {
-        if t >= lo && t < hi {
-            out.push((t, dir));
-        }
-    }
-    out
+    [(first, up_first), (second, -up_first)].map(|(t, dir)| (t >= lo && t < hi).then_some((t, dir)))
 }
 
 /// Node of the two-point Gauss–Legendre rule on [−1, 1] (weights 1).
@@ -266,12 +318,14 @@ mod tests {
         let omega = 2.0;
         let period = std::f64::consts::TAU / omega;
         // g = 0.5 − cos ωt: up-crossing at ωt = π/3, down-crossing at 5π/3.
-        let c = cos_level_crossings(0.5, -1.0, omega, 0.0, period);
-        assert_eq!(c.len(), 2);
+        let c = cos_level_crossings(0.5, -1.0, omega, 0.0, period).map(Option::unwrap);
         assert!((c[0].0 - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
         assert_eq!((c[0].1, c[1].1), (1, -1));
         // Tangency is not a crossing.
-        assert!(cos_level_crossings(1.0, 1.0, omega, 0.0, period).is_empty());
+        assert_eq!(
+            cos_level_crossings(1.0, 1.0, omega, 0.0, period),
+            [None, None]
+        );
     }
 
     #[test]

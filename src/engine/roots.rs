@@ -12,9 +12,9 @@ use super::law::{Affine, Basis};
 /// g(t) > 0, or g(t) = 0 while increasing. `snap` (s) is the resolution below which a crossing
 /// at `to` belongs to the next piece and a crossing at `from` happens at `from`.
 pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64) -> Option<f64> {
-    let g_from = g.at(basis.eval(from));
     match basis {
         Basis::Linear { t_ref } => {
+            let g_from = g.at(from - t_ref);
             if g.c1 > 0.0 {
                 let root = t_ref - g.c0 / g.c1;
                 if root <= from + snap {
@@ -30,11 +30,16 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
                 None
             }
         }
+        // g ≤ c0 + |c1| < 0 everywhere: never positive (the usual case for the direction
+        // opposite to the drive), decided without trigonometry.
+        Basis::Cos { .. } if g.c0 + g.c1.abs() < 0.0 => None,
         Basis::Cos { omega } => {
             // At g = 0, look at the slope, and at the curvature where the slope vanishes too
             // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
-            let slope = -g.c1 * omega * (omega * from).sin();
-            let curvature = -g.c1 * omega * omega * (omega * from).cos();
+            let (sin, cos) = (omega * from).sin_cos();
+            let g_from = g.at(cos);
+            let slope = -g.c1 * omega * sin;
+            let curvature = -g.c1 * omega * omega * cos;
             let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
             if g_from > 0.0 || (g_from == 0.0 && rising) {
                 return Some(from);
@@ -42,28 +47,32 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
             // An up-crossing within snap before `from` happens at `from`.
             cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
                 .into_iter()
+                .flatten()
                 .find(|&(_, dir)| dir > 0)
                 .map(|(t, _)| t.max(from))
         }
     }
 }
 
-/// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `df` is its derivative.
-/// Newton steps are accepted while they stay inside the shrinking bracket, bisection otherwise.
-pub fn monotone_zero(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, hi: f64) -> f64 {
+/// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `f` returns (f, f', f'')
+/// and the bracket ends come with their values of f. Halley steps (cubic convergence) are
+/// accepted while they stay inside the shrinking bracket, bisection otherwise.
+pub fn monotone_zero(
+    f: impl Fn(f64) -> (f64, f64, f64),
+    (lo, f_lo): (f64, f64),
+    (hi, f_hi): (f64, f64),
+) -> f64 {
     let (mut lo, mut hi) = (lo, hi);
-    let f_hi = f(hi);
     if f_hi == 0.0 {
         return hi;
     }
-    // Start Newton from the end nearer the root by a secant guess.
-    let f_lo = f(lo);
+    // Start from a secant guess.
     let mut t = lo + (hi - lo) * f_lo / (f_lo - f_hi);
     for _ in 0..200 {
         if !(t > lo && t < hi) {
             t = 0.5 * (lo + hi);
         }
-        let ft = f(t);
+        let (ft, d1, d2) = f(t);
         if ft > 0.0 {
             lo = t;
         } else if ft < 0.0 {
@@ -74,24 +83,25 @@ pub fn monotone_zero(f: impl Fn(f64) -> f64, df: impl Fn(f64) -> f64, lo: f64, h
         if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(lo.abs()) {
             break;
         }
-        let slope = df(t);
-        let newton = if slope != 0.0 {
-            t - ft / slope
+        let denominator = 2.0 * d1 * d1 - ft * d2;
+        let step = if denominator != 0.0 {
+            2.0 * ft * d1 / denominator
         } else {
             f64::NAN
         };
-        if newton > lo && newton < hi {
-            // Quadratic convergence: a step below a few ulps is the last one.
-            if (newton - t).abs() <= 4.0 * f64::EPSILON * t.abs() {
-                return newton;
+        let next = t - step;
+        if next > lo && next < hi {
+            // Cubic convergence: a step below a few ulps is the last one.
+            if step.abs() <= 4.0 * f64::EPSILON * t.abs() {
+                return next;
             }
-            t = newton;
+            t = next;
         } else {
             t = 0.5 * (lo + hi);
         }
     }
-    // The bracket end where f ≤ 0: the state there has v ≤ 0, so the stick is not early.
-    if f(lo).abs() < f(hi).abs() {
+    // Out of iterations (not seen in practice): the bracket end with the smaller residual.
+    if f(lo).0.abs() < f(hi).0.abs() {
         lo
     } else {
         hi
@@ -162,7 +172,8 @@ mod tests {
 
     #[test]
     fn monotone_zero_reaches_machine_precision() {
-        let t = monotone_zero(|t| 2.0 - t.exp(), |t| -t.exp(), 0.0, 2.0);
+        let f = |t: f64| (2.0 - t.exp(), -t.exp(), -t.exp());
+        let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0).0));
         assert!((t - 2f64.ln()).abs() <= 2.0 * f64::EPSILON);
     }
 

@@ -362,10 +362,18 @@ fn slide(
     let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
     // progress instead of sticking where it started.
-    let mut bounds = arc.accel_zeros(from, piece.end);
-    bounds.push(piece.end);
+    let mut bounds = [piece.end; 3];
+    let mut count = 0;
+    for zero in arc.accel_zeros(from, piece.end).into_iter().flatten() {
+        bounds[count] = zero;
+        count += 1;
+    }
+    bounds[count] = piece.end;
+    let bounds = &bounds[..=count];
     let mut p = from;
-    let mut normal_work = 0.0;
+    // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
+    let mut speed_p = Some(speed(from));
+    let mut stick = None;
     for (i, &q) in bounds.iter().enumerate() {
         let sign = (s * arc.a(0.5 * (p + q))).signum() as i8;
         if *accel_sign > 0 && sign < 0 {
@@ -374,32 +382,35 @@ fn slide(
         if sign != 0 {
             *accel_sign = sign;
         }
-        if sign < 0 {
-            let speed_p = speed(p);
-            let speed_q = speed(q);
-            let at_zero_of_a = i + 1 < bounds.len();
-            let stick = if speed_p <= 0.0 {
-                Some(p)
-            } else if speed_q <= 0.0 {
-                Some(monotone_zero(speed, |t| s * arc.a(t), p, q))
-            } else if at_zero_of_a && speed_q <= TOUCH_REL * speed_p {
-                Some(q)
-            } else {
-                None
-            };
-            if let Some(t_stick) = stick {
-                normal_work += arc.integrate_normal_times_speed(piece.normal, p, t_stick);
-                return Slide {
-                    stick: Some(t_stick),
-                    normal_work,
-                };
-            }
+        if sign >= 0 {
+            (p, speed_p) = (q, None);
+            continue;
         }
-        normal_work += arc.integrate_normal_times_speed(piece.normal, p, q);
-        p = q;
+        let at_p = speed_p.unwrap_or_else(|| speed(p));
+        let at_q = speed(q);
+        let at_zero_of_a = i + 1 < bounds.len();
+        stick = if at_p <= 0.0 {
+            Some(p)
+        } else if at_q <= 0.0 {
+            let f = |t: f64| {
+                let (v, a, jerk) = arc.v_a_jerk(t);
+                (s * v, s * a, s * jerk)
+            };
+            Some(monotone_zero(f, (p, at_p), (q, at_q)))
+        } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
+            Some(q)
+        } else {
+            None
+        };
+        if stick.is_some() {
+            break;
+        }
+        (p, speed_p) = (q, Some(at_q));
     }
+    // v keeps its sign over the whole slide, so the friction work is one integral.
+    let end = stick.unwrap_or(piece.end);
     Slide {
-        stick: None,
-        normal_work,
+        stick,
+        normal_work: arc.integrate_normal_times_speed(piece.normal, from, end),
     }
 }
