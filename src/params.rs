@@ -116,7 +116,9 @@ pub struct WoodpeckerParams {
     pub g: f64,
     /// Lever ratio λ (N = λ|F_e| at each contact); `None` = l/h.
     pub lever: Option<f64>,
-    /// Definition of ω.
+    /// Definition of ω (TOML key `omega`; written as `omega_mode` in JSON output, where
+    /// `omega` is the value in rad/s).
+    #[serde(rename(serialize = "omega_mode", deserialize = "omega"))]
     pub omega: OmegaMode,
     /// Linear counterpart of the harmonic spring coordinate (§3.1).
     pub counterpart: Counterpart,
