@@ -151,16 +151,7 @@ impl Arc {
     #[inline]
     pub fn v_a_jerk(&self, t: f64) -> (f64, f64, f64) {
         match *self {
-            Arc::Poly {
-                t_c,
-                v_c,
-                a_c,
-                jerk,
-                ..
-            } => {
-                let w = t - t_c;
-                (v_c + w * (a_c + 0.5 * jerk * w), a_c + jerk * w, jerk)
-            }
+            Arc::Poly { jerk, .. } => (self.v(t), self.a(t), jerk),
             Arc::Trig {
                 t_c,
                 v_c,

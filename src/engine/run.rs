@@ -240,6 +240,16 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 period_start + t
             }
         };
+        let mut record = |t0: f64, t1: f64, motion: Motion| {
+            if opts.record_segments && t1 > t0 {
+                segments.push(Segment {
+                    t0: absolute(t0),
+                    t1: absolute(t1),
+                    period_start,
+                    motion,
+                });
+            }
+        };
         x_at_period_start.push(x);
         v_at_period_start.push(v);
         let mut normal_work = 0.0;
@@ -257,14 +267,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 if dir == 0 {
                     let onset = slip_onset(body, piece, t, snap);
                     let t_end = onset.map_or(piece.end, |(t_slip, _)| t_slip);
-                    if opts.record_segments && t_end > t {
-                        segments.push(Segment {
-                            t0: absolute(t),
-                            t1: absolute(t_end),
-                            period_start,
-                            motion: Motion::Rest { x },
-                        });
-                    }
+                    record(t, t_end, Motion::Rest { x });
                     let Some((t_slip, s)) = onset else { break };
                     rec.push(n, t_slip, EventKind::Slip { dir: s }, x, 0.0);
                     dir = s;
@@ -285,14 +288,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 });
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
-                if opts.record_segments && t_end > t {
-                    segments.push(Segment {
-                        t0: absolute(t),
-                        t1: absolute(t_end),
-                        period_start,
-                        motion: Motion::Slide { arc },
-                    });
-                }
+                record(t, t_end, Motion::Slide { arc });
                 x = arc.x(t_end);
                 match slide.stick {
                     // A slip from rest that sticks where it started is shorter than the event
