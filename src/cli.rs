@@ -40,6 +40,27 @@ pub enum Command {
         #[command(subcommand)]
         model: EvalModel,
     },
+    /// Benchmark every time-stepping method against the exact engine: work-precision sweeps,
+    /// where each method fails, and optionally SciPy side by side (written to --out).
+    Bench(BenchArgs),
+}
+
+/// Options of `stickslip bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// Output folder (index.html, bench.md, figures/, results.json, results.csv).
+    #[arg(long, default_value = "reports/bench")]
+    pub out: PathBuf,
+    /// Reduced sweep: three settings per method, one timed run (for tests).
+    #[arg(long)]
+    pub quick: bool,
+    /// Run a peer on the same problems and compare times at equal error.
+    #[arg(long, value_enum)]
+    pub peer: Option<crate::bench::PeerChoice>,
+    /// Timed runs per setting, after one warm-up (1 to 1000).
+    #[arg(long, default_value_t = crate::bench::DEFAULT_REPEATS,
+          value_parser = clap::value_parser!(u32).range(1..=1000))]
+    pub repeats: u32,
 }
 
 /// Options of `stickslip report`.

@@ -15,6 +15,7 @@
 //! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
 //! force law.
 
+pub mod bench;
 pub mod claims;
 pub mod cli;
 pub mod engine;
@@ -25,3 +26,4 @@ pub mod output;
 pub mod params;
 pub mod report;
 pub mod results;
+pub mod solver;

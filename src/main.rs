@@ -11,7 +11,7 @@ use anyhow::{Context, Result};
 use clap::Parser;
 
 use stickslip::cli::{
-    Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, WoodpeckerArgs,
+    BenchArgs, Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, WoodpeckerArgs,
 };
 use stickslip::error::Error;
 use stickslip::params::{
@@ -55,7 +55,31 @@ fn run(cli: Cli) -> Result<()> {
             samples,
             model,
         } => claims(seed, samples, &model),
+        Command::Bench(args) => bench(&args),
     }
+}
+
+/// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
+fn bench(args: &BenchArgs) -> Result<()> {
+    let started = std::time::Instant::now();
+    let config = stickslip::bench::Config {
+        quick: args.quick,
+        repeats: args.repeats,
+        peer: args.peer,
+    };
+    let results = stickslip::bench::run(&config)?;
+    let files = stickslip::bench::render(&results)?;
+    let written = report::write_all(&args.out, &files)?;
+    eprintln!(
+        "bench: elapsed {:.1} s (measurements {:.1} s)",
+        started.elapsed().as_secs_f64(),
+        results.elapsed_s
+    );
+    print_stdout(&format!(
+        "wrote {} files to {}\n",
+        written.len(),
+        args.out.display()
+    ))
 }
 
 fn report(args: &ReportArgs) -> Result<()> {

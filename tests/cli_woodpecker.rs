@@ -115,9 +115,17 @@ fn fig15_json_has_the_keys_of_section_7_and_the_worked_numbers() {
     assert_eq!(v["params"]["lambda"].as_f64().unwrap(), 0.016 / 0.007);
     assert_eq!(v["params"]["omega_mode"], "bird");
     // No key twice in the raw text (serde_json would silently keep the last one).
-    let raw = stickslip().args(["eval", "woodpecker", "--json"]).output().unwrap().stdout;
+    let raw = stickslip()
+        .args(["eval", "woodpecker", "--json"])
+        .output()
+        .unwrap()
+        .stdout;
     let raw = String::from_utf8(raw).unwrap();
-    assert_eq!(raw.matches("\"omega\":").count(), 1, "params.omega appears once");
+    assert_eq!(
+        raw.matches("\"omega\":").count(),
+        1,
+        "params.omega appears once"
+    );
 }
 
 #[test]

@@ -82,6 +82,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
     let strip = TOP_MARGIN + n_rows * MARKER_ROW;
     let n = panels.len() as u32;
     let height = strip + n * PANEL_HEIGHT + X_LABEL_AREA;
+    // Every plotting area is PANEL_HEIGHT − 2·PANEL_GAP tall; the bottom one also gets the x labels.
 
     let mut svg = String::new();
     {
@@ -106,7 +107,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
                 .margin_top(PANEL_GAP)
                 .margin_bottom(PANEL_GAP)
                 .margin_right(RIGHT_MARGIN)
-                .x_label_area_size(if last { X_LABEL_AREA - PANEL_GAP } else { 0 })
+                .x_label_area_size(if last { X_LABEL_AREA } else { 0 })
                 .y_label_area_size(Y_LABEL_AREA)
                 .build_cartesian_2d(x.0..x.1, y0..y1)
                 .map_err(draw_err)?;
@@ -129,7 +130,9 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
             mesh.draw().map_err(draw_err)?;
 
             let to_px = |p: &Point| chart.backend_coord(p);
-            let frame = (to_px(&(x.0, y1)), to_px(&(x.1, y0)));
+            // plotters draws the left and bottom axis one pixel outside the data corners.
+            let (tl, br) = (to_px(&(x.0, y1)), to_px(&(x.1, y0)));
+            let frame = ((tl.0 - 1, tl.1), (br.0, br.1 + 1));
             let mut lines: Vec<Vec<Px>> = Vec::new();
             for (y, label) in &panel.spec.h_lines {
                 if !y.is_finite() {
@@ -139,11 +142,17 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
                 let line = [left, to_px(&(x.1, *y))];
                 draw_stroked(&root, &line, REFERENCE_COLOR, REFERENCE_WIDTH, &[])?;
                 if !label.is_empty() {
+                    // Right end, just above the line: curves usually start at the left edge.
                     let style = font(LEGEND_FONT_PX)
                         .color(&REFERENCE_COLOR)
-                        .pos(Pos::new(HPos::Left, VPos::Bottom));
-                    root.draw(&Text::new(label.clone(), (left.0 + 6, left.1 - 2), style))
+                        .pos(Pos::new(HPos::Right, VPos::Bottom));
+                    let at = (line[1].0 - 6, line[1].1 - 2);
+                    root.draw(&Text::new(label.clone(), at, style))
                         .map_err(draw_err)?;
+                    let w = text_width(label, LEGEND_FONT_PX).ceil() as i32;
+                    let h = LEGEND_FONT_PX as i32;
+                    // The label's box counts as lines for the legend placement.
+                    lines.push(vec![(at.0 - w, at.1 - h / 2), (at.0, at.1 - h / 2)]);
                 }
                 lines.push(line.to_vec());
             }

@@ -108,7 +108,9 @@ pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
             }
         }
 
-        let frame = [to_px(&(x.0, y.1)), to_px(&(x.1, y.0))];
+        // plotters draws the left and bottom axis one pixel outside the data corners.
+        let (tl, br) = (to_px(&(x.0, y.1)), to_px(&(x.1, y.0)));
+        let frame = [(tl.0 - 1, tl.1), (br.0, br.1 + 1)];
         let border = ShapeStyle::from(&AXIS_COLOR).stroke_width(FRAME_WIDTH);
         root.draw(&Rectangle::new(frame, border))
             .map_err(draw_err)?;

@@ -20,7 +20,7 @@ pub const PANEL_HEIGHT: u32 = 260;
 /// Height of the plotting area of a category map.
 pub const MAP_PLOT_HEIGHT: u32 = 520;
 /// Room left of a plotting area for tick labels and the rotated y label.
-pub const Y_LABEL_AREA: u32 = 88;
+pub const Y_LABEL_AREA: u32 = 80;
 /// Room below the bottom plotting area for tick labels and the x label.
 pub const X_LABEL_AREA: u32 = 58;
 /// Margin right of a chart's plotting area.
@@ -86,6 +86,8 @@ const LEGEND_SAMPLE: i32 = 40;
 const LEGEND_GAP: i32 = 8;
 const LEGEND_ROW: i32 = 21;
 const LEGEND_SWATCH: i32 = 15;
+/// Extra space between the filled squares and the line samples of one legend.
+const LEGEND_GROUP_GAP: i32 = 6;
 
 const fn towards_white(c: RGBColor) -> RGBColor {
     const fn mix(v: u8) -> u8 {
@@ -280,6 +282,25 @@ pub enum LegendKey {
     },
 }
 
+/// Vertical centre of each legend row, from the top of the box, and the box height.
+fn legend_rows(entries: &[LegendEntry]) -> (Vec<i32>, i32) {
+    let mut y = LEGEND_PAD - 2;
+    let mut centres = Vec::with_capacity(entries.len());
+    let mut previous: Option<&LegendKey> = None;
+    for entry in entries {
+        let switches = previous.is_some_and(|p| {
+            std::mem::discriminant(p) != std::mem::discriminant(&entry.key)
+        });
+        if switches {
+            y += LEGEND_GROUP_GAP;
+        }
+        centres.push(y + LEGEND_ROW / 2);
+        y += LEGEND_ROW;
+        previous = Some(&entry.key);
+    }
+    (centres, y + LEGEND_PAD - 2)
+}
+
 /// Width and height (px) of the framed legend box for `entries`.
 pub fn legend_size(entries: &[LegendEntry]) -> (i32, i32) {
     let text = entries
@@ -287,11 +308,8 @@ pub fn legend_size(entries: &[LegendEntry]) -> (i32, i32) {
         .map(|e| text_width(&e.label, LEGEND_FONT_PX).ceil() as i32)
         .max()
         .unwrap_or(0);
-    let rows = entries.len() as i32;
-    (
-        2 * LEGEND_PAD + LEGEND_SAMPLE + LEGEND_GAP + text,
-        2 * LEGEND_PAD - 4 + rows * LEGEND_ROW,
-    )
+    let (_, height) = legend_rows(entries);
+    (2 * LEGEND_PAD + LEGEND_SAMPLE + LEGEND_GAP + text, height)
 }
 
 /// Draws the framed legend with its upper-left corner at `at` (backend coordinates).
@@ -314,8 +332,9 @@ pub fn draw_legend(
     ))
     .map_err(draw_err)?;
     let text_style = font(LEGEND_FONT_PX).pos(Pos::new(HPos::Left, VPos::Center));
-    for (i, entry) in entries.iter().enumerate() {
-        let cy = y + LEGEND_PAD - 2 + i as i32 * LEGEND_ROW + LEGEND_ROW / 2;
+    let (centres, _) = legend_rows(entries);
+    for (entry, centre) in entries.iter().zip(centres) {
+        let cy = y + centre;
         let x0 = x + LEGEND_PAD;
         match entry.key {
             LegendKey::Line {

@@ -1,0 +1,234 @@
+//! The context of the benchmark pages: machine, protocol, tables and drawn figures, all as
+//! formatted strings for the templates.
+
+use serde::Serialize;
+
+use super::charts;
+use super::cost_tables;
+use super::failures::reversal_slope;
+use super::tables::{self, Table};
+use super::BenchResults;
+use crate::error::{Error, Result};
+use crate::report::figures::chart::line_chart;
+use crate::report::figures::spec::LineChart;
+
+const CSS: &str = include_str!("../../templates/style.css");
+
+#[derive(Serialize)]
+struct Kv {
+    name: String,
+    value: String,
+}
+
+/// A drawn figure: its SVG, caption and file name under the output folder.
+#[derive(Serialize)]
+pub struct FigureCtx {
+    pub id: String,
+    pub caption: String,
+    pub svg: String,
+    pub file: String,
+}
+
+/// Everything the templates show.
+#[derive(Serialize)]
+pub struct Ctx {
+    title: String,
+    css: &'static str,
+    version: String,
+    elapsed: String,
+    quick: bool,
+    protocol: Vec<String>,
+    machine: Vec<Kv>,
+    problems: Table,
+    costs: Vec<Table>,
+    headline: Vec<String>,
+    pub wp_figures: Vec<FigureCtx>,
+    pub order_figures: Vec<FigureCtx>,
+    orders: Table,
+    failure_summary: Table,
+    failures: Table,
+    pub failure_figures: Vec<FigureCtx>,
+    regime: Table,
+    creep: Table,
+    peer_status: String,
+    peer_message: String,
+    peer_targets: Table,
+    peer_ratios: Table,
+}
+
+fn figure(id: &str, caption: String, spec: &LineChart) -> Result<FigureCtx> {
+    let svg = line_chart(spec).map_err(|e| Error::Figure {
+        id: id.to_string(),
+        reason: e.to_string(),
+    })?;
+    Ok(FigureCtx {
+        id: id.to_string(),
+        caption,
+        svg,
+        file: format!("figures/{id}.svg"),
+    })
+}
+
+pub fn context(r: &BenchResults) -> Result<Ctx> {
+    let names: Vec<String> = r.methods.iter().map(|m| m.name.clone()).collect();
+    let m = &r.machine;
+    let machine = vec![
+        (
+            "stickslip",
+            format!("{} ({} build)", m.crate_version, m.profile),
+        ),
+        ("CPU", format!("{} × {}", m.nproc, m.cpu)),
+        ("OS", format!("{} {}", m.os, m.arch)),
+        (
+            "Python",
+            m.python.clone().unwrap_or_else(|| "not found".into()),
+        ),
+        ("NumPy", m.numpy.clone().unwrap_or_else(|| "—".into())),
+        (
+            "SciPy",
+            m.scipy.clone().unwrap_or_else(|| "not importable".into()),
+        ),
+        (
+            "timing",
+            format!("best of {} run(s) after a warm-up, sequential", r.repeats),
+        ),
+    ]
+    .into_iter()
+    .map(|(n, v)| Kv {
+        name: n.to_string(),
+        value: v,
+    })
+    .collect();
+
+    let problems = tables::problems(r);
+
+    let (costs, headline) = cost_tables::cost_table(r);
+
+    let mut wp_figures = Vec::new();
+    let mut order_figures = Vec::new();
+    for p in &r.problems {
+        let wp = charts::work_precision(&p.id, &names, &r.sweep, &r.peer.points, false);
+        wp_figures.push(figure(
+            &format!("wp-{}", p.id),
+            format!(
+                "{}: error against time (log10 both; best of {} runs), one curve per method{}. The exact engine \
+                 is the reference (its error is 0, drawn as a marker at its time). Errors below 1e-16 are drawn at 1e-16.",
+                p.title,
+                r.repeats,
+                if r.peer.points.iter().any(|q| q.problem == p.id) { ", SciPy in black" } else { "" }
+            ),
+            &wp,
+        )?);
+        let work = charts::work_precision(&p.id, &names, &r.sweep, &[], true);
+        wp_figures.push(figure(
+            &format!("work-{}", p.id),
+            format!(
+                "{}: error against work (rhs evaluations, machine-independent), log10 both.",
+                p.title
+            ),
+            &work,
+        )?);
+        let order = charts::order_chart(&p.id, &names, &r.sweep, &r.failures.studies.orders);
+        order_figures.push(figure(
+            &format!("order-{}", p.id),
+            format!(
+                "{}: error against step size for the fixed-step methods; the legend gives the least-squares \
+                 slope of log10 error against log10 h over the finest steps above the round-off floor.",
+                p.title
+            ),
+            &order,
+        )?);
+    }
+
+    let orders = tables::orders(r);
+
+    let (failure_summary, failures) = tables::failure_tables(r);
+    let failure_figures = failure_figures(r)?;
+    let regime = tables::regime(r);
+    let creep = tables::creep(r);
+
+    let (peer_targets, peer_ratios) = cost_tables::peer_tables(r);
+    Ok(Ctx {
+        title: "stickslip bench: speed against accuracy, and where methods fail".into(),
+        css: CSS,
+        version: r.machine.crate_version.clone(),
+        elapsed: format!("{:.1} s", r.elapsed_s),
+        quick: r.quick,
+        protocol: protocol(r),
+        machine,
+        problems,
+        costs,
+        headline,
+        wp_figures,
+        order_figures,
+        orders,
+        failure_summary,
+        failures,
+        failure_figures,
+        regime,
+        creep,
+        peer_status: r.peer.status.clone(),
+        peer_message: r.peer.message.clone(),
+        peer_targets,
+        peer_ratios,
+    })
+}
+
+fn protocol(r: &BenchResults) -> Vec<String> {
+    let g = &r.grid;
+    vec![
+        format!(
+            "Problems: pulled mass set B (μs 0.4, μd 0.35, F 0.10 N) and woodpecker Fig. 15, both force laws, \
+             {} periods each, starting stuck at rest; the exact event-driven engine on the same law is the reference.",
+            r.periods
+        ),
+        format!(
+            "Adaptive methods: tolerance (rtol = atol) {}; fixed-step methods: {} steps per period (h = T/n).",
+            g.tolerances.iter().map(|t| format!("{t:.0e}")).collect::<Vec<_>>().join(", "),
+            g.steps_per_period.iter().map(|n| n.to_string()).collect::<Vec<_>>().join(", ")
+        ),
+        "Errors: max |t − t_exact| over slip/stick events matched in order (if the counts differ, the common prefix; \
+         the mismatch is recorded), |x(t_end) − x_exact| and |v̄ − v̄_exact| with v̄ the mean speed of the last period."
+            .into(),
+        format!(
+            "Time: minimum of {} timed run(s) after an untimed warm-up, one run if a run exceeds 1 s; every point is \
+             timed alone on one thread. Work: rhs evaluations counted by the method itself.",
+            r.repeats
+        ),
+    ]
+}
+
+fn failure_figures(r: &BenchResults) -> Result<Vec<FigureCtx>> {
+    let s = &r.failures.studies;
+    let ids: Vec<String> = r.problems.iter().map(|p| p.id.clone()).collect();
+    let slopes: Vec<(String, Option<f64>)> = ids
+        .iter()
+        .map(|id| (id.clone(), reversal_slope(&s.reversals, id, "euler_sign")))
+        .collect();
+    Ok(vec![
+        figure(
+            "fail-reversals",
+            "euler_sign: spurious velocity reversals per period against the step h, per problem (log10 both; the \
+             slope is in the legend, −1 means ∝ 1/h). The exact solutions of these problems have none."
+                .into(),
+            &charts::reversals_chart(&s.reversals, &ids, &slopes),
+        )?,
+        figure(
+            "fail-creep",
+            "Regularized friction μd tanh(v/ε): distance moved in the middle 80 % of the first exact stick phase \
+             (top) and rhs evaluations per period (bottom) against ε, tolerance 1e-8. Methods with a stick \
+             state move 0 there."
+                .into(),
+            &charts::creep_chart(&s.creep_epsilon),
+        )?,
+        figure(
+            "fail-missed",
+            "Exact slip/stick events with no event of the same kind within 2 % of T, against tolerance: dopri5 \
+             (switching functions checked inside each step on the dense output) and dopri5_endpoints (step ends \
+             only), on set B, the woodpecker just below the Fig. 16 threshold (a brief halt) and the pulled mass \
+             just below φ_c (a nearly tangential stick)."
+                .into(),
+            &charts::missed_chart(&s.missed),
+        )?,
+    ])
+}

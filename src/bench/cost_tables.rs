@@ -1,0 +1,148 @@
+//! The cost tables: time and work of every method at equal error (and the headline
+//! sentences), and SciPy side by side with the issue's targets.
+
+use super::analysis::{CostRow, Metric};
+use super::sweep::MethodKind;
+use super::tables::{e2, row, table, Table};
+use super::BenchResults;
+use crate::output::format::sig;
+
+/// The error level of the headline cost tables.
+pub const HEADLINE_LEVEL: f64 = 1e-8;
+
+/// The cost tables at [`HEADLINE_LEVEL`] (event-time error, x_end error: rows are methods,
+/// columns problems) and the headline sentences.
+pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
+    let at = |problem: &str, method: &str, metric: Metric| -> Option<&CostRow> {
+        r.costs.iter().find(|c| {
+            c.problem == problem
+                && c.method == method
+                && c.metric == metric
+                && c.level == HEADLINE_LEVEL
+        })
+    };
+    let mut header = vec!["method".to_string()];
+    header.extend(r.problems.iter().map(|p| p.title.clone()));
+    let mut tables = Vec::new();
+    for metric in [Metric::EventTime, Metric::XEnd] {
+        let rows = r
+            .methods
+            .iter()
+            .map(|m| {
+                let mut cells = vec![m.name.clone()];
+                let mut reached = false;
+                for p in &r.problems {
+                    let exact = at(&p.id, "exact", metric).and_then(|c| c.time_s);
+                    let c = at(&p.id, &m.name, metric);
+                    cells.push(match c.and_then(|c| c.time_s.map(|t| (t, c))) {
+                        Some((t, c)) => {
+                            reached = true;
+                            format!(
+                                "{}{} s · {} rhs · {}× exact",
+                                if c.overshoot { "≤ " } else { "" },
+                                e2(Some(t)),
+                                c.rhs_evals.map_or("—".into(), |w| format!("{w:.0}")),
+                                exact.map_or("—".into(), |e| sig(Some(t / e), 3))
+                            )
+                        }
+                        None => "not reached".into(),
+                    });
+                }
+                row(cells, if reached { "" } else { "na" })
+            })
+            .collect();
+        tables.push(Table {
+            header: header.clone(),
+            rows,
+        });
+    }
+    let mut headline = Vec::new();
+    for p in &r.problems {
+        let exact = at(&p.id, "exact", Metric::EventTime).and_then(|c| c.time_s);
+        let best = r
+            .methods
+            .iter()
+            .filter(|m| m.kind != MethodKind::Reference)
+            .filter_map(|m| Some((at(&p.id, &m.name, Metric::EventTime)?.time_s?, &m.name)))
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        headline.push(match (exact, best) {
+            (Some(e), Some((t, name))) => format!(
+                "{}: exact {} s; the fastest other method at event-time error \
+                 {HEADLINE_LEVEL:.0e} s is {name}, {} s ({}× the exact time).",
+                p.title,
+                e2(Some(e)),
+                e2(Some(t)),
+                sig(Some(t / e), 3)
+            ),
+            (Some(e), None) => format!(
+                "{}: exact {} s; no other method reached event-time error {HEADLINE_LEVEL:.0e} s.",
+                p.title,
+                e2(Some(e))
+            ),
+            _ => format!("{}: the exact engine failed.", p.title),
+        });
+    }
+    (tables, headline)
+}
+
+pub fn peer_tables(r: &BenchResults) -> (Table, Table) {
+    let targets = table(
+        &["target", "problem", "measured", "met"],
+        r.peer
+            .targets
+            .iter()
+            .map(|t| {
+                let (met, class) = match t.met {
+                    Some(true) => ("yes", "pass"),
+                    Some(false) => ("no", "fail"),
+                    None => ("—", "na"),
+                };
+                row(
+                    vec![
+                        t.target.clone(),
+                        t.problem.clone(),
+                        t.measured.clone(),
+                        met.into(),
+                    ],
+                    class,
+                )
+            })
+            .collect(),
+    );
+    let ratios = table(
+        &[
+            "problem",
+            "metric",
+            "error",
+            "method",
+            "time (s)",
+            "RK45 (s)",
+            "DOP853 (s)",
+            "Radau (s)",
+            "ours / best SciPy",
+            "ours / RK45",
+        ],
+        r.peer
+            .ratios
+            .iter()
+            .filter(|x| x.time_s.is_some())
+            .map(|x| {
+                let mut cells = vec![
+                    x.problem.clone(),
+                    x.metric.id().to_string(),
+                    format!("{:.0e}", x.level),
+                    x.method.clone(),
+                    e2(x.time_s),
+                ];
+                cells.extend(x.scipy_time_s.iter().map(|t| e2(*t)));
+                cells.push(match (&x.ratio_best, &x.best_scipy) {
+                    (Some(v), Some(b)) => format!("{} ({b})", e2(Some(*v))),
+                    _ => "—".into(),
+                });
+                cells.push(e2(x.ratio_rk45));
+                row(cells, "")
+            })
+            .collect(),
+    );
+    (targets, ratios)
+}

@@ -1,0 +1,55 @@
+//! The machine and the versions a benchmark ran on: timings mean nothing without them.
+//! rustc's version is not available at run time, so the crate version and the build profile
+//! stand in for it; Python and SciPy versions come from the peer probe.
+
+use serde::Serialize;
+
+/// Where the benchmark ran.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Machine {
+    /// stickslip's version (Cargo.toml).
+    pub crate_version: String,
+    /// "release" or "debug" (debug timings are not comparable).
+    pub profile: String,
+    /// Logical CPUs available to the process.
+    pub nproc: usize,
+    /// `model name` of /proc/cpuinfo, or "unknown".
+    pub cpu: String,
+    pub os: String,
+    pub arch: String,
+    /// Python, NumPy and SciPy versions if a probe found them.
+    pub python: Option<String>,
+    pub numpy: Option<String>,
+    pub scipy: Option<String>,
+}
+
+impl Machine {
+    /// Describes this machine (no Python versions yet).
+    pub fn detect() -> Self {
+        Self {
+            crate_version: env!("CARGO_PKG_VERSION").to_string(),
+            profile: if cfg!(debug_assertions) {
+                "debug"
+            } else {
+                "release"
+            }
+            .to_string(),
+            nproc: std::thread::available_parallelism().map_or(1, |n| n.get()),
+            cpu: cpu_model().unwrap_or_else(|| "unknown".to_string()),
+            os: std::env::consts::OS.to_string(),
+            arch: std::env::consts::ARCH.to_string(),
+            python: None,
+            numpy: None,
+            scipy: None,
+        }
+    }
+}
+
+/// The first `model name` line of /proc/cpuinfo.
+fn cpu_model() -> Option<String> {
+    let text = std::fs::read_to_string("/proc/cpuinfo").ok()?;
+    text.lines()
+        .find(|l| l.starts_with("model name"))
+        .and_then(|l| l.split_once(':'))
+        .map(|(_, v)| v.trim().to_string())
+}

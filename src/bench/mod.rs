@@ -1,0 +1,228 @@
+//! `stickslip bench`: speed against accuracy of every method of [`crate::solver`], measured
+//! against the exact engine, and where each method fails.
+//!
+//! ```text
+//! problems (pulled mass set B, woodpecker Fig. 15; both laws; 20 periods) → exact references
+//!   → timed sweep (sequential: nothing else runs while a method is timed)
+//!   → SciPy peer (optional, sequential)
+//!   → failure studies (untimed, in parallel) → orders, costs at equal error, failures table
+//!   → results (serde) → report (charts, tera pages, JSON, CSV) → writer
+//! ```
+//!
+//! The sweep reads only each method's [`crate::solver::Solution`]: events, final state and
+//! statistics. A method that returns an error is a measured failure, never a crash.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use crate::error::Result;
+use crate::solver::dopri5::Dopri5EndpointsOnly;
+use crate::solver::{methods, Method};
+
+pub mod analysis;
+pub mod charts;
+pub mod context;
+pub mod cost_tables;
+pub mod failure_table;
+pub mod failures;
+pub mod machine;
+pub mod peer;
+pub mod problems;
+pub mod render;
+pub mod studies;
+pub mod sweep;
+pub mod tables;
+
+pub use peer::PeerChoice;
+pub use render::render;
+
+use analysis::{cost_rows, CostRow};
+use failure_table::{failure_table, FailureRow, ENDPOINTS};
+use machine::Machine;
+use peer::PeerReport;
+use problems::{BenchProblem, ModelParams, Reference, PERIODS};
+pub use studies::Studies;
+use sweep::{measure, method_kind, Grid, MethodKind, SweepPoint};
+
+/// Default number of timed runs per setting (the protocol asks for at least 5).
+pub const DEFAULT_REPEATS: u32 = 5;
+
+/// What to run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Config {
+    /// Reduced sweep (three settings per method, one timed run).
+    pub quick: bool,
+    /// Timed runs per setting (ignored with `quick`).
+    pub repeats: u32,
+    pub peer: Option<PeerChoice>,
+}
+
+/// A method of the benchmark.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MethodInfo {
+    pub name: String,
+    pub kind: MethodKind,
+    /// Listed by `solver::methods()` (the endpoint-only dopri5 variant is constructed here).
+    pub in_registry: bool,
+}
+
+/// A problem of the sweep with its exact reference.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ProblemInfo {
+    pub id: String,
+    pub model: &'static str,
+    pub law: &'static str,
+    pub title: String,
+    pub params: ModelParams,
+    pub period_s: f64,
+    pub periods: u32,
+    pub t_end_s: f64,
+    pub exact: Reference,
+}
+
+/// The failures: the table and the studies behind it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Failures {
+    pub table: Vec<FailureRow>,
+    #[serde(flatten)]
+    pub studies: Studies,
+}
+
+/// Everything `stickslip bench` measured (results.json).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BenchResults {
+    pub quick: bool,
+    pub repeats: u32,
+    pub periods: u32,
+    pub machine: Machine,
+    pub grid: Grid,
+    pub methods: Vec<MethodInfo>,
+    pub problems: Vec<ProblemInfo>,
+    pub sweep: Vec<SweepPoint>,
+    pub costs: Vec<CostRow>,
+    pub failures: Failures,
+    pub peer: PeerReport,
+    /// Wall time of the measurements (s), rendering excluded.
+    pub elapsed_s: f64,
+}
+
+/// The methods of the benchmark: the registry, plus the endpoint-only dopri5 variant when the
+/// registry does not list it.
+pub fn bench_methods() -> Vec<(Box<dyn Method>, bool)> {
+    let mut out: Vec<(Box<dyn Method>, bool)> = methods().into_iter().map(|m| (m, true)).collect();
+    if !out.iter().any(|(m, _)| m.name() == ENDPOINTS) {
+        out.push((Box::new(Dopri5EndpointsOnly), false));
+    }
+    out
+}
+
+/// Runs the benchmark. Progress goes to stderr.
+pub fn run(config: &Config) -> Result<BenchResults> {
+    let started = Instant::now();
+    let grid = if config.quick {
+        Grid::quick()
+    } else {
+        Grid::full()
+    };
+    let repeats = if config.quick {
+        1
+    } else {
+        config.repeats.max(1)
+    };
+    let mut machine = Machine::detect();
+    let registry = bench_methods();
+    let all: Vec<&dyn Method> = registry.iter().map(|(m, _)| m.as_ref()).collect();
+    let problems = problems::sweep_problems()?;
+    let references = problems
+        .iter()
+        .map(problems::reference)
+        .collect::<Result<Vec<_>>>()?;
+
+    // The timed sweep: one thread, one point after another.
+    let mut sweep = Vec::new();
+    for (bp, reference) in problems.iter().zip(&references) {
+        for m in &all {
+            let t0 = Instant::now();
+            for setting in grid.settings(method_kind(m.name()), bp.period()) {
+                sweep.push(measure(*m, bp, reference, setting, repeats));
+            }
+            eprintln!(
+                "bench: {:<16} {:<28} {:6.2} s",
+                m.name(),
+                bp.id,
+                t0.elapsed().as_secs_f64()
+            );
+        }
+    }
+
+    let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+    let mut peer = match config.peer {
+        Some(PeerChoice::Scipy) => {
+            let t0 = Instant::now();
+            let peered: Vec<_> = if config.quick {
+                pairs[..1].to_vec()
+            } else {
+                pairs.clone()
+            };
+            let report = peer::run(&mut machine, &peered, &grid.tolerances, repeats);
+            eprintln!(
+                "bench: SciPy peer {:.2} s: {}",
+                t0.elapsed().as_secs_f64(),
+                report.message
+            );
+            report
+        }
+        None => {
+            // Versions are recorded even without the comparison; a failed probe is stated.
+            let _ = peer::probe(&mut machine);
+            PeerReport::not_requested(&machine)
+        }
+    };
+
+    let t0 = Instant::now();
+    let ids: Vec<String> = problems.iter().map(|p| p.id.clone()).collect();
+    let names: Vec<String> = all.iter().map(|m| m.name().to_string()).collect();
+    let studies = studies::run(&all, &pairs, &grid, &sweep, config.quick)?;
+    eprintln!("bench: failure studies {:.2} s", t0.elapsed().as_secs_f64());
+    let costs = cost_rows(&sweep, &ids, &names);
+    peer::compare(&mut peer, &sweep, &ids, &names);
+    let failures = Failures {
+        table: failure_table(&names, &sweep, &studies),
+        studies,
+    };
+    Ok(BenchResults {
+        quick: config.quick,
+        repeats,
+        periods: PERIODS,
+        machine,
+        grid,
+        methods: registry
+            .iter()
+            .map(|(m, in_registry)| MethodInfo {
+                name: m.name().to_string(),
+                kind: method_kind(m.name()),
+                in_registry: *in_registry,
+            })
+            .collect(),
+        problems: pairs
+            .iter()
+            .map(|(bp, r)| ProblemInfo {
+                id: bp.id.clone(),
+                model: bp.model,
+                law: bp.law_id(),
+                title: bp.title.clone(),
+                params: bp.params,
+                period_s: bp.period(),
+                periods: PERIODS,
+                t_end_s: bp.problem.t_end,
+                exact: (*r).clone(),
+            })
+            .collect(),
+        sweep,
+        costs,
+        failures,
+        peer,
+        elapsed_s: started.elapsed().as_secs_f64(),
+    })
+}

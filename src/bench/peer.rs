@@ -1,0 +1,394 @@
+//! The SciPy peer: `bench/scipy_peer.py` runs `solve_ivp` (RK45, DOP853, Radau) with an
+//! event-restart loop on the same problems and tolerances; this module probes for Python with
+//! SciPy, feeds the script the problems and the exact events on stdin, reads its JSON, and
+//! compares times at equal error on the work-precision curves.
+//!
+//! ```text
+//! ratio = our time / SciPy time, both read off their curves at the same error level
+//!         (log-log interpolation on the Pareto front, see analysis::cost_at)
+//! ```
+//! Absent Python or SciPy is a plain statement in the report, never an error.
+
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Stdio};
+
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+
+use super::analysis::{cost_at, time_curve, Metric};
+use super::machine::Machine;
+use super::problems::{BenchProblem, Reference, PERIODS};
+use super::sweep::{SweepPoint, LONG_RUN};
+
+/// The script, relative to the working directory or to the crate.
+pub const SCRIPT: &str = "bench/scipy_peer.py";
+/// SciPy's methods, in the order of the tables.
+pub const SCIPY_METHODS: [&str; 3] = ["RK45", "DOP853", "Radau"];
+/// Error levels of the ratio table.
+pub const RATIO_LEVELS: [f64; 3] = [1e-6, 1e-8, 1e-10];
+
+/// Which peer to run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PeerChoice {
+    /// SciPy's solve_ivp through bench/scipy_peer.py.
+    Scipy,
+}
+
+/// One SciPy run as the script reports it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PeerPoint {
+    pub problem: String,
+    pub method: String,
+    pub tol: f64,
+    pub status: String,
+    pub error: Option<String>,
+    pub time_s: Option<f64>,
+    pub runs: u32,
+    pub nfev: Option<u64>,
+    pub n_events: Option<usize>,
+    pub n_events_exact: usize,
+    pub err_event_s: Option<f64>,
+    pub x_end_m: Option<f64>,
+    pub err_x_m: Option<f64>,
+}
+
+#[derive(Deserialize)]
+struct ScriptOutput {
+    python: String,
+    numpy: String,
+    scipy: String,
+    points: Vec<PeerPoint>,
+}
+
+/// Our time against SciPy's at one error level.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct RatioRow {
+    pub problem: String,
+    pub metric: Metric,
+    pub level: f64,
+    pub method: String,
+    pub time_s: Option<f64>,
+    /// SciPy times in the order of [`SCIPY_METHODS`] (s).
+    pub scipy_time_s: Vec<Option<f64>>,
+    /// our time / best SciPy time, and our time / RK45 time.
+    pub ratio_best: Option<f64>,
+    pub best_scipy: Option<String>,
+    pub ratio_rk45: Option<f64>,
+}
+
+/// A target of the issue, measured.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct TargetRow {
+    pub target: String,
+    pub problem: String,
+    pub measured: String,
+    pub speedup: Option<f64>,
+    pub met: Option<bool>,
+}
+
+/// Everything about the peer for the report.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PeerReport {
+    pub requested: bool,
+    /// "not requested", "absent", "error" or "ok".
+    pub status: String,
+    /// A plain sentence saying what happened.
+    pub message: String,
+    pub points: Vec<PeerPoint>,
+    pub ratios: Vec<RatioRow>,
+    pub targets: Vec<TargetRow>,
+}
+
+impl PeerReport {
+    fn without(requested: bool, status: &str, message: String) -> Self {
+        Self {
+            requested,
+            status: status.to_string(),
+            message,
+            points: Vec::new(),
+            ratios: Vec::new(),
+            targets: Vec::new(),
+        }
+    }
+
+    /// The report when `--peer` was not given.
+    pub fn not_requested(machine: &Machine) -> Self {
+        let found = match (&machine.python, &machine.scipy) {
+            (Some(p), Some(s)) => format!("Python {p} with SciPy {s} is present"),
+            (Some(p), None) => format!("Python {p} is present, SciPy does not import"),
+            _ => "python3 was not found".to_string(),
+        };
+        Self::without(
+            false,
+            "not requested",
+            format!("SciPy comparison not run (use --peer scipy); {found}."),
+        )
+    }
+}
+
+/// The script's path: under the working directory, else under the crate's source folder.
+fn script_path() -> Option<PathBuf> {
+    [
+        PathBuf::from(SCRIPT),
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(SCRIPT),
+    ]
+    .into_iter()
+    .find(|p| p.is_file())
+}
+
+/// Records Python, NumPy and SciPy versions in `machine`; Ok(()) when SciPy imports, else the
+/// reason it cannot run.
+pub fn probe(machine: &mut Machine) -> Result<(), String> {
+    let out = Command::new("python3")
+        .args(["-c", "import sys; print(sys.version.split()[0])"])
+        .output()
+        .map_err(|e| format!("python3 was not found ({e})"))?;
+    if !out.status.success() {
+        return Err("python3 does not run".to_string());
+    }
+    machine.python = Some(String::from_utf8_lossy(&out.stdout).trim().to_string());
+    let out = Command::new("python3")
+        .args([
+            "-c",
+            "import numpy, scipy; print(numpy.__version__, scipy.__version__)",
+        ])
+        .output()
+        .map_err(|e| e.to_string())?;
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    let mut parts = text.split_whitespace();
+    match (out.status.success(), parts.next(), parts.next()) {
+        (true, Some(n), Some(s)) => {
+            machine.numpy = Some(n.to_string());
+            machine.scipy = Some(s.to_string());
+            Ok(())
+        }
+        _ => {
+            let err = String::from_utf8_lossy(&out.stderr);
+            let last = err.lines().last().unwrap_or("import failed").to_string();
+            Err(format!(
+                "python3 {} is present but numpy/scipy do not import ({last})",
+                machine.python.as_deref().unwrap_or("?")
+            ))
+        }
+    }
+}
+
+/// The script's input: problems with their parameters and exact events, tolerances, repeats.
+fn input(problems: &[(&BenchProblem, &Reference)], tolerances: &[f64], repeats: u32) -> String {
+    let problems: Vec<serde_json::Value> = problems
+        .iter()
+        .map(|(bp, r)| {
+            json!({
+                "id": bp.id,
+                "model": bp.model,
+                "law": bp.law_id(),
+                "params": bp.params,
+                "periods": PERIODS,
+                "exact": { "events": r.events, "x_end_m": r.x_end_m },
+            })
+        })
+        .collect();
+    json!({
+        "repeats": repeats,
+        "long_run_s": LONG_RUN.as_secs_f64(),
+        "tolerances": tolerances,
+        "methods": SCIPY_METHODS,
+        "problems": problems,
+    })
+    .to_string()
+}
+
+/// Runs the script (sequentially: nothing else runs while it times).
+pub fn run(
+    machine: &mut Machine,
+    problems: &[(&BenchProblem, &Reference)],
+    tolerances: &[f64],
+    repeats: u32,
+) -> PeerReport {
+    if let Err(reason) = probe(machine) {
+        return PeerReport::without(
+            true,
+            "absent",
+            format!("SciPy comparison not available: {reason}."),
+        );
+    }
+    let Some(script) = script_path() else {
+        return PeerReport::without(
+            true,
+            "absent",
+            format!("SciPy comparison not available: {SCRIPT} not found."),
+        );
+    };
+    match execute(&script, &input(problems, tolerances, repeats)) {
+        Ok(out) => {
+            machine.python = Some(out.python);
+            machine.numpy = Some(out.numpy);
+            machine.scipy = Some(out.scipy);
+            let failed = out.points.iter().filter(|p| p.status != "ok").count();
+            let mut report = PeerReport::without(
+                true,
+                "ok",
+                format!(
+                    "SciPy {} (Python {}): {} runs of solve_ivp, {failed} failed.",
+                    machine.scipy.as_deref().unwrap_or("?"),
+                    machine.python.as_deref().unwrap_or("?"),
+                    out.points.len()
+                ),
+            );
+            report.points = out.points;
+            report
+        }
+        Err(reason) => {
+            PeerReport::without(true, "error", format!("SciPy comparison failed: {reason}."))
+        }
+    }
+}
+
+fn execute(script: &PathBuf, input: &str) -> Result<ScriptOutput, String> {
+    let mut child = Command::new("python3")
+        .arg(script)
+        .arg("-")
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| format!("cannot start python3 {}: {e}", script.display()))?;
+    if let Some(mut stdin) = child.stdin.take() {
+        stdin
+            .write_all(input.as_bytes())
+            .map_err(|e| format!("cannot feed the script: {e}"))?;
+    }
+    let out = child
+        .wait_with_output()
+        .map_err(|e| format!("python3 did not finish: {e}"))?;
+    if !out.status.success() {
+        let err = String::from_utf8_lossy(&out.stderr);
+        return Err(format!(
+            "{} exited with {}: {}",
+            script.display(),
+            out.status,
+            err.lines().last().unwrap_or("")
+        ));
+    }
+    serde_json::from_slice(&out.stdout).map_err(|e| format!("unreadable output: {e}"))
+}
+
+/// The (time, error) curve of a SciPy method on a problem.
+fn scipy_curve(points: &[PeerPoint], problem: &str, method: &str, m: Metric) -> Vec<(f64, f64)> {
+    points
+        .iter()
+        .filter(|p| p.problem == problem && p.method == method)
+        .filter_map(|p| {
+            let e = match m {
+                Metric::EventTime => p.err_event_s,
+                _ => p.err_x_m,
+            };
+            Some((p.time_s?, e?))
+        })
+        .collect()
+}
+
+/// Fills the ratio table and the issue's targets from the sweep and the peer points.
+pub fn compare(
+    report: &mut PeerReport,
+    sweep: &[SweepPoint],
+    problems: &[String],
+    methods: &[String],
+) {
+    let peered: Vec<&String> = problems
+        .iter()
+        .filter(|id| report.points.iter().any(|p| &p.problem == *id))
+        .collect();
+    for problem in &peered {
+        for metric in [Metric::EventTime, Metric::XEnd] {
+            for &level in &RATIO_LEVELS {
+                let scipy: Vec<Option<f64>> = SCIPY_METHODS
+                    .iter()
+                    .map(|m| {
+                        cost_at(&scipy_curve(&report.points, problem, m, metric), level)
+                            .map(|c| c.cost)
+                    })
+                    .collect();
+                let best = SCIPY_METHODS
+                    .iter()
+                    .zip(&scipy)
+                    .filter_map(|(m, t)| Some((*m, (*t)?)))
+                    .min_by(|a, b| a.1.total_cmp(&b.1));
+                for method in methods {
+                    let ours =
+                        cost_at(&time_curve(sweep, problem, method, metric), level).map(|c| c.cost);
+                    report.ratios.push(RatioRow {
+                        problem: (*problem).clone(),
+                        metric,
+                        level,
+                        method: method.clone(),
+                        time_s: ours,
+                        scipy_time_s: scipy.clone(),
+                        ratio_best: ours.zip(best).map(|(o, b)| o / b.1),
+                        best_scipy: best.map(|b| b.0.to_string()),
+                        ratio_rk45: ours.zip(scipy[0]).map(|(o, r)| o / r),
+                    });
+                }
+            }
+        }
+    }
+    report.targets = targets(&report.ratios, &peered);
+}
+
+/// The issue's targets: exact ≥ 1000× faster than SciPy's best at 1e-10 on the pulled mass,
+/// dopri5 ≥ 50× faster than RK45 at equal error (the worst level counts).
+fn targets(ratios: &[RatioRow], problems: &[&String]) -> Vec<TargetRow> {
+    let mut out = Vec::new();
+    for problem in problems.iter().filter(|p| p.starts_with("pulled_mass")) {
+        let find = |method: &str, level: f64| {
+            ratios.iter().find(|r| {
+                &r.problem == *problem
+                    && r.method == method
+                    && r.metric == Metric::EventTime
+                    && r.level == level
+            })
+        };
+        let exact = find("exact", 1e-10).and_then(|r| r.ratio_best);
+        out.push(TargetRow {
+            target: "exact ≥ 1000× faster than SciPy's best at 1e-10 (event-time error)".into(),
+            problem: (*problem).clone(),
+            measured: exact.map_or("SciPy did not reach 1e-10".into(), |r| {
+                format!(
+                    "{:.0}× ({})",
+                    1.0 / r,
+                    find("exact", 1e-10)
+                        .and_then(|r| r.best_scipy.clone())
+                        .unwrap_or_default()
+                )
+            }),
+            speedup: exact.map(|r| 1.0 / r),
+            met: exact.map(|r| 1.0 / r >= 1000.0),
+        });
+        let speedups: Vec<(f64, f64)> = RATIO_LEVELS
+            .iter()
+            .filter_map(|&l| Some((l, 1.0 / find("dopri5", l)?.ratio_rk45?)))
+            .collect();
+        let worst = speedups.iter().copied().min_by(|a, b| a.1.total_cmp(&b.1));
+        out.push(TargetRow {
+            target: "dopri5 ≥ 50× faster than SciPy RK45 at equal error (event-time, worst level)"
+                .into(),
+            problem: (*problem).clone(),
+            measured: match worst {
+                Some((l, s)) => format!(
+                    "{:.0}× at {l:.0e} (levels: {})",
+                    s,
+                    speedups
+                        .iter()
+                        .map(|(l, s)| format!("{l:.0e}: {s:.0}×"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+                None => "no common error level".into(),
+            },
+            speedup: worst.map(|w| w.1),
+            met: worst.map(|w| w.1 >= 50.0),
+        });
+    }
+    out
+}

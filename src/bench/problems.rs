@@ -1,0 +1,248 @@
+//! The benchmark problems and their exact references: the pulled mass of worked set B
+//! (physics.md §5) and the woodpecker of Fig. 15, each under both force laws, over
+//! [`PERIODS`] periods; and the boundary cases of the regime-classification study.
+//!
+//! ```text
+//! pulled mass set B:   μs 0.4, μd 0.35, m 0.06 kg, k 45 N/m, F 0.10 N   (one slip-stick per period)
+//! woodpecker Fig. 15:  the paper's default set, λ = l/h, counterpart `zeros` (two per period)
+//! ```
+//! The reference of every comparison is the exact engine on the same force law.
+
+use serde::Serialize;
+
+use crate::engine::{Body, ForceLaw};
+use crate::error::Result;
+use crate::formula::pulled_mass::phi_continuous;
+use crate::model::{pulled_mass, woodpecker, LawKind};
+use crate::params::{PulledMassParams, WoodpeckerParams};
+use crate::solver::exact::Exact;
+use crate::solver::{Method, MethodEvent, Problem, Setting};
+
+/// Periods integrated by every method on every problem.
+pub const PERIODS: u32 = 20;
+/// The intermediate halt of the harmonic woodpecker disappears above this z0 (m): the Fig. 16
+/// threshold found by bisection (physics.md §6, claim 8).
+pub const HALT_THRESHOLD_Z0: f64 = 7.0746e-3;
+/// Offset of the two woodpecker boundary cases from the threshold (m).
+pub const HALT_OFFSET_Z0: f64 = 1e-5;
+/// Relative offset of the two pulled-mass boundary cases from φ_c.
+pub const PHI_C_OFFSET: f64 = 1e-3;
+
+/// The model parameters of a problem, as the SciPy peer reads them.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum ModelParams {
+    PulledMass(PulledMassParams),
+    Woodpecker(WoodpeckerParams),
+}
+
+/// One problem of the benchmark: a force law on a body over [`PERIODS`] periods.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BenchProblem {
+    /// Identifier, e.g. "pulled_mass_b_linear".
+    pub id: String,
+    /// "pulled-mass" or "woodpecker".
+    pub model: &'static str,
+    pub law: LawKind,
+    /// Human-readable title for tables and charts.
+    pub title: String,
+    pub params: ModelParams,
+    pub problem: Problem,
+}
+
+impl BenchProblem {
+    /// Period T (s).
+    pub fn period(&self) -> f64 {
+        self.problem.law.period
+    }
+
+    /// "linear" or "harmonic".
+    pub fn law_id(&self) -> &'static str {
+        law_id(self.law)
+    }
+
+    /// The same problem ending one period earlier (for the mean speed of the last period).
+    pub fn one_period_shorter(&self) -> Problem {
+        Problem {
+            t_end: self.problem.t_end - self.period(),
+            ..self.problem.clone()
+        }
+    }
+}
+
+/// "linear" or "harmonic".
+pub fn law_id(law: LawKind) -> &'static str {
+    match law {
+        LawKind::Linear => "linear",
+        LawKind::Harmonic => "harmonic",
+    }
+}
+
+/// Worked set B of physics.md §5.
+pub fn set_b() -> PulledMassParams {
+    PulledMassParams {
+        mu_s: 0.4,
+        mu_d: 0.35,
+        force: 0.10,
+        ..PulledMassParams::default()
+    }
+}
+
+fn problem(body: Body, law: ForceLaw) -> Problem {
+    let t_end = f64::from(PERIODS) * law.period;
+    Problem { body, law, t_end }
+}
+
+/// A pulled-mass problem under the given law.
+pub fn pulled(id: &str, title: &str, p: PulledMassParams, law: LawKind) -> Result<BenchProblem> {
+    p.validate()?;
+    Ok(BenchProblem {
+        id: format!("{id}_{}", law_id(law)),
+        model: "pulled-mass",
+        law,
+        title: format!("{title}, {} law", law_id(law)),
+        params: ModelParams::PulledMass(p),
+        problem: problem(pulled_mass::body(&p), pulled_mass::force_law(&p, law)?),
+    })
+}
+
+/// A woodpecker problem under the given law.
+pub fn wood(id: &str, title: &str, p: WoodpeckerParams, law: LawKind) -> Result<BenchProblem> {
+    p.validate()?;
+    Ok(BenchProblem {
+        id: format!("{id}_{}", law_id(law)),
+        model: "woodpecker",
+        law,
+        title: format!("{title}, {} law", law_id(law)),
+        params: ModelParams::Woodpecker(p),
+        problem: problem(woodpecker::body(&p), woodpecker::force_law(&p, law)?),
+    })
+}
+
+/// The four problems of the work-precision sweep.
+pub fn sweep_problems() -> Result<Vec<BenchProblem>> {
+    let laws = [LawKind::Linear, LawKind::Harmonic];
+    let mut out = Vec::with_capacity(4);
+    for law in laws {
+        out.push(pulled("pulled_mass_b", "Pulled mass, set B", set_b(), law)?);
+    }
+    for law in laws {
+        let p = WoodpeckerParams::default();
+        out.push(wood("woodpecker_fig15", "Woodpecker, Fig. 15", p, law)?);
+    }
+    Ok(out)
+}
+
+/// The boundary cases of the regime-classification study: the pulled mass (set B friction,
+/// linear law) just below and just above φ_c, where the speed touches zero tangentially, and the
+/// harmonic woodpecker just below and just above the Fig. 16 threshold of the intermediate halt.
+pub fn boundary_problems() -> Result<Vec<BenchProblem>> {
+    let b = set_b();
+    let phi_c = phi_continuous(b.mu_s, b.mu_d);
+    let mut out = Vec::with_capacity(4);
+    for (tag, sign) in [("below", -1.0), ("above", 1.0)] {
+        let phi = phi_c * (1.0 + sign * PHI_C_OFFSET);
+        let p = PulledMassParams {
+            force: phi * b.weight(),
+            ..b
+        };
+        let title = format!("Pulled mass, φ = φ_c (1 {} 10⁻³)", sign_char(sign));
+        out.push(pulled(
+            &format!("pulled_mass_phi_c_{tag}"),
+            &title,
+            p,
+            LawKind::Linear,
+        )?);
+    }
+    for (tag, sign) in [("below", -1.0), ("above", 1.0)] {
+        let z0 = HALT_THRESHOLD_Z0 + sign * HALT_OFFSET_Z0;
+        let p = WoodpeckerParams {
+            z0,
+            ..WoodpeckerParams::default()
+        };
+        let title = format!("Woodpecker, z0 = {:.4} mm", z0 * 1e3);
+        out.push(wood(
+            &format!("woodpecker_halt_{tag}"),
+            &title,
+            p,
+            LawKind::Harmonic,
+        )?);
+    }
+    Ok(out)
+}
+
+fn sign_char(sign: f64) -> char {
+    if sign < 0.0 {
+        '−'
+    } else {
+        '+'
+    }
+}
+
+/// What the exact engine gives on a problem: the reference of every error.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Reference {
+    /// Slip and stick events over the whole run.
+    pub events: Vec<MethodEvent>,
+    /// Position (m) and velocity (m/s) at t_end.
+    pub x_end_m: f64,
+    pub v_end_m_s: f64,
+    /// Mean speed over the last period (m/s).
+    pub vbar_m_s: f64,
+}
+
+/// Slip and stick events only: reversals are counted apart (see [`super::sweep`]).
+pub fn transitions(events: &[MethodEvent]) -> Vec<MethodEvent> {
+    events
+        .iter()
+        .filter(|e| e.kind == "slip" || e.kind == "stick")
+        .copied()
+        .collect()
+}
+
+/// Runs the exact engine on `bp` (and one period shorter, for the mean speed).
+pub fn reference(bp: &BenchProblem) -> Result<Reference> {
+    let setting = Setting::Tolerance(REFERENCE_TOLERANCE);
+    let full = Exact.solve(&bp.problem, setting)?;
+    let shorter = Exact.solve(&bp.one_period_shorter(), setting)?;
+    Ok(Reference {
+        events: transitions(&full.events),
+        x_end_m: full.x_end,
+        v_end_m_s: full.v_end,
+        vbar_m_s: (full.x_end - shorter.x_end) / bp.period(),
+    })
+}
+
+/// The setting handed to the exact engine (which ignores it).
+pub const REFERENCE_TOLERANCE: f64 = 1e-15;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn set_b_references_have_one_slip_and_one_stick_per_period() {
+        let problems = sweep_problems().unwrap();
+        assert_eq!(problems.len(), 4);
+        for bp in &problems[..2] {
+            let r = reference(bp).unwrap();
+            assert_eq!(r.events.len(), 2 * PERIODS as usize, "{}", bp.id);
+            assert!(r.vbar_m_s > 0.0);
+        }
+        // Set B, linear law: v̄ = 5.396971 mm/s (physics.md §5).
+        let r = reference(&problems[0]).unwrap();
+        assert!((r.vbar_m_s - 5.396971e-3).abs() < 1e-8, "{}", r.vbar_m_s);
+    }
+
+    #[test]
+    fn boundary_cases_straddle_their_thresholds() {
+        let cases = boundary_problems().unwrap();
+        let last_period = |bp: &BenchProblem| {
+            let r = reference(bp).unwrap();
+            let t0 = bp.problem.t_end - bp.period();
+            r.events.iter().filter(|e| e.t >= t0).count()
+        };
+        let counts: Vec<usize> = cases.iter().map(last_period).collect();
+        assert_eq!(counts, [2, 0, 4, 2], "{:?}", counts);
+    }
+}

@@ -1,0 +1,341 @@
+//! The work-precision sweep (the DiffEqDevTools protocol): for each method and problem, each
+//! accuracy setting is run once untimed (its result gives the errors), then timed sequentially
+//! as the minimum of N runs; the work is the method's own count of rhs evaluations.
+//!
+//! ```text
+//! adaptive     tolerance 1e-3, 1e-4, …, 1e-12
+//! fixed-step   steps per period n = 10^(1 + k/2), k = 0…8  (10 … 10^5), h = T/n
+//! errors       max |t_i − t_i,exact| over events matched in order (slip/stick only),
+//!              |x(t_end) − x_exact|,  |v̄ − v̄_exact| with v̄ = (x(t_end) − x(t_end − T))/T
+//! time         warm-up, then min of N runs (one run when a run exceeds 1 s)
+//! ```
+//! `std::time::Instant` is used here only: this is the tool's benchmark command, and timings
+//! never enter the tests.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use serde::{Deserialize, Serialize};
+
+use super::problems::{transitions, BenchProblem, Reference};
+use crate::solver::{Method, MethodEvent, Problem, Setting, Solution};
+
+/// A run longer than this is timed once (the protocol's "fewer if one run exceeds 1 s").
+pub const LONG_RUN: Duration = Duration::from_secs(1);
+
+/// How a method is driven: by a tolerance, a step, or not at all (the exact reference).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MethodKind {
+    Reference,
+    Adaptive,
+    FixedStep,
+}
+
+impl MethodKind {
+    /// Words for tables.
+    pub fn label(self) -> &'static str {
+        match self {
+            MethodKind::Reference => "reference",
+            MethodKind::Adaptive => "adaptive",
+            MethodKind::FixedStep => "fixed step",
+        }
+    }
+}
+
+/// The kind of a method of the registry, by name: the fixed-step methods of the issue, the
+/// exact reference, and adaptive for everything else (dopri5, its endpoint-only variant and
+/// the tanh methods).
+pub fn method_kind(name: &str) -> MethodKind {
+    match name {
+        "exact" => MethodKind::Reference,
+        "rk4" | "moreau" | "euler_sign" => MethodKind::FixedStep,
+        _ => MethodKind::Adaptive,
+    }
+}
+
+/// The accuracy settings of a sweep.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Grid {
+    /// Tolerances of the adaptive methods.
+    pub tolerances: Vec<f64>,
+    /// Steps per period of the fixed-step methods.
+    pub steps_per_period: Vec<u32>,
+}
+
+impl Grid {
+    /// The default sweep: tolerances 1e-3 … 1e-12 by decades, 10 … 10^5 steps per period by
+    /// half decades.
+    pub fn full() -> Self {
+        Self {
+            tolerances: (3..=12).map(|k| 10f64.powi(-k)).collect(),
+            steps_per_period: (0..=8)
+                .map(|k| 10f64.powf(1.0 + 0.5 * f64::from(k)).round() as u32)
+                .collect(),
+        }
+    }
+
+    /// The reduced sweep of `--quick`: three settings per method.
+    pub fn quick() -> Self {
+        Self {
+            tolerances: vec![1e-3, 1e-6, 1e-9],
+            steps_per_period: vec![100, 1_000, 10_000],
+        }
+    }
+
+    /// The settings of a method of the given kind on a problem of period `period` (s).
+    pub fn settings(&self, kind: MethodKind, period: f64) -> Vec<Setting> {
+        match kind {
+            MethodKind::Reference => vec![Setting::Tolerance(super::problems::REFERENCE_TOLERANCE)],
+            MethodKind::Adaptive => self
+                .tolerances
+                .iter()
+                .map(|&t| Setting::Tolerance(t))
+                .collect(),
+            MethodKind::FixedStep => self
+                .steps_per_period
+                .iter()
+                .map(|&n| Setting::Step(period / f64::from(n)))
+                .collect(),
+        }
+    }
+}
+
+/// One point of the sweep: a method on a problem at one setting (SI units; `None` where a
+/// quantity does not exist, e.g. every error of a method that returned an error).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SweepPoint {
+    pub problem: String,
+    pub method: String,
+    /// "tolerance", "step" or "none" (the exact engine ignores its setting).
+    pub setting_kind: String,
+    pub tolerance: Option<f64>,
+    pub h_s: Option<f64>,
+    pub steps_per_period: Option<f64>,
+    /// "ok", or "error" with the method's message in `error`.
+    pub status: String,
+    pub error: Option<String>,
+    /// Minimum wall time over `runs` timed runs (s).
+    pub time_s: Option<f64>,
+    pub runs: u32,
+    pub rhs_evals: Option<u64>,
+    pub steps: Option<u64>,
+    pub accepted: Option<u64>,
+    pub rejected: Option<u64>,
+    /// Slip and stick events found, exact count, and how many were compared in order.
+    pub n_events: Option<usize>,
+    pub n_events_exact: usize,
+    pub n_matched: Option<usize>,
+    /// Matched pairs whose kinds (slip/stick) differ.
+    pub kind_mismatches: Option<usize>,
+    /// Velocity reversals reported (none exist in the exact solutions of these problems).
+    pub reversals: Option<usize>,
+    pub err_event_s: Option<f64>,
+    pub err_x_m: Option<f64>,
+    pub err_vbar_m_s: Option<f64>,
+    pub x_end_m: Option<f64>,
+    pub v_end_m_s: Option<f64>,
+}
+
+impl SweepPoint {
+    /// True when the method returned a solution.
+    pub fn ok(&self) -> bool {
+        self.status == "ok"
+    }
+
+    /// Events found differ in number from the exact ones.
+    pub fn count_mismatch(&self) -> bool {
+        self.n_events.is_some_and(|n| n != self.n_events_exact)
+    }
+}
+
+/// Events compared in order: the i-th slip/stick of the method against the i-th exact one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventMatch {
+    pub n_method: usize,
+    pub n_exact: usize,
+    /// Length of the compared prefix, min(n_method, n_exact).
+    pub matched: usize,
+    /// Largest |t − t_exact| over the prefix (s); `None` for an empty prefix.
+    pub max_err: Option<f64>,
+    pub kind_mismatches: usize,
+}
+
+/// Compares two event lists in order (if the counts differ, the matched prefix is used and the
+/// mismatch is visible in the counts).
+pub fn match_events(got: &[MethodEvent], exact: &[MethodEvent]) -> EventMatch {
+    let matched = got.len().min(exact.len());
+    let pairs = got.iter().zip(exact);
+    let max_err = pairs
+        .clone()
+        .map(|(a, b)| (a.t - b.t).abs())
+        .fold(None, |m: Option<f64>, e| Some(m.map_or(e, |m| m.max(e))));
+    EventMatch {
+        n_method: got.len(),
+        n_exact: exact.len(),
+        matched,
+        max_err,
+        kind_mismatches: pairs.filter(|(a, b)| a.kind != b.kind).count(),
+    }
+}
+
+/// Describes a setting as (kind, tolerance, h, steps per period).
+fn describe(
+    kind: MethodKind,
+    setting: Setting,
+    period: f64,
+) -> (&'static str, Option<f64>, Option<f64>, Option<f64>) {
+    match (kind, setting) {
+        (MethodKind::Reference, _) => ("none", None, None, None),
+        (_, Setting::Tolerance(t)) => ("tolerance", Some(t), None, None),
+        (_, Setting::Step(h)) => ("step", None, Some(h), Some(period / h)),
+    }
+}
+
+/// Best of `repeats` timed runs after the untimed one that took `first`; a run longer than
+/// [`LONG_RUN`] ends the series. Returns (best time in s, timed runs).
+fn time_runs(
+    method: &dyn Method,
+    problem: &Problem,
+    setting: Setting,
+    first: Duration,
+    repeats: u32,
+) -> (f64, u32) {
+    let n = if first > LONG_RUN { 1 } else { repeats.max(1) };
+    let mut best = Duration::MAX;
+    let mut runs = 0;
+    for _ in 0..n {
+        let start = Instant::now();
+        let out = method.solve(black_box(problem), black_box(setting));
+        let took = start.elapsed();
+        black_box(out).ok();
+        best = best.min(took);
+        runs += 1;
+        if took > LONG_RUN {
+            break;
+        }
+    }
+    (best.as_secs_f64(), runs)
+}
+
+/// Runs one point of the sweep. A method's error is recorded in the point, never propagated.
+pub fn measure(
+    method: &dyn Method,
+    bp: &BenchProblem,
+    reference: &Reference,
+    setting: Setting,
+    repeats: u32,
+) -> SweepPoint {
+    let kind = method_kind(method.name());
+    let (setting_kind, tolerance, h_s, steps_per_period) = describe(kind, setting, bp.period());
+    let mut point = SweepPoint {
+        problem: bp.id.clone(),
+        method: method.name().to_string(),
+        setting_kind: setting_kind.to_string(),
+        tolerance,
+        h_s,
+        steps_per_period,
+        status: "error".to_string(),
+        error: None,
+        time_s: None,
+        runs: 0,
+        rhs_evals: None,
+        steps: None,
+        accepted: None,
+        rejected: None,
+        n_events: None,
+        n_events_exact: reference.events.len(),
+        n_matched: None,
+        kind_mismatches: None,
+        reversals: None,
+        err_event_s: None,
+        err_x_m: None,
+        err_vbar_m_s: None,
+        x_end_m: None,
+        v_end_m_s: None,
+    };
+    let start = Instant::now();
+    let first = method.solve(&bp.problem, setting);
+    let took = start.elapsed();
+    let sol = match first {
+        Ok(sol) => sol,
+        Err(e) => {
+            point.error = Some(e.to_string());
+            return point;
+        }
+    };
+    let (time, runs) = time_runs(method, &bp.problem, setting, took, repeats);
+    let shorter = method.solve(&bp.one_period_shorter(), setting).ok();
+    fill(&mut point, &sol, shorter.as_ref(), reference, bp.period());
+    point.time_s = Some(time);
+    point.runs = runs;
+    point
+}
+
+/// Fills the errors and the work of a successful point.
+fn fill(
+    point: &mut SweepPoint,
+    sol: &Solution,
+    shorter: Option<&Solution>,
+    reference: &Reference,
+    period: f64,
+) {
+    let m = match_events(&transitions(&sol.events), &reference.events);
+    point.status = "ok".to_string();
+    point.rhs_evals = Some(sol.stats.rhs_evals);
+    point.steps = Some(sol.stats.steps);
+    point.accepted = Some(sol.stats.accepted);
+    point.rejected = Some(sol.stats.rejected);
+    point.n_events = Some(m.n_method);
+    point.n_matched = Some(m.matched);
+    point.kind_mismatches = Some(m.kind_mismatches);
+    point.reversals = Some(reversals(sol));
+    point.err_event_s = m.max_err;
+    point.err_x_m = finite((sol.x_end - reference.x_end_m).abs());
+    point.err_vbar_m_s =
+        shorter.and_then(|s| finite(((sol.x_end - s.x_end) / period - reference.vbar_m_s).abs()));
+    point.x_end_m = finite(sol.x_end);
+    point.v_end_m_s = finite(sol.v_end);
+}
+
+/// Velocity reversals a method reports (events of kind "reversal").
+pub fn reversals(sol: &Solution) -> usize {
+    sol.events.iter().filter(|e| e.kind == "reversal").count()
+}
+
+/// `Some(x)` for a finite x (serde_json would write NaN as null anyway; this makes it explicit).
+pub fn finite(x: f64) -> Option<f64> {
+    x.is_finite().then_some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ev(t: f64, kind: &'static str) -> MethodEvent {
+        MethodEvent { t, kind }
+    }
+
+    #[test]
+    fn events_are_matched_in_order_on_the_common_prefix() {
+        let exact = [ev(1.0, "slip"), ev(2.0, "stick"), ev(3.0, "slip")];
+        let got = [ev(1.1, "slip"), ev(1.95, "slip")];
+        let m = match_events(&got, &exact);
+        assert_eq!((m.n_method, m.n_exact, m.matched), (2, 3, 2));
+        assert!((m.max_err.unwrap() - 0.1).abs() < 1e-12);
+        assert_eq!(m.kind_mismatches, 1);
+        assert_eq!(match_events(&[], &exact).max_err, None);
+    }
+
+    #[test]
+    fn the_full_grid_has_ten_tolerances_and_nine_step_counts() {
+        let g = Grid::full();
+        assert_eq!(g.tolerances.len(), 10);
+        assert_eq!(
+            g.steps_per_period,
+            [10, 32, 100, 316, 1000, 3162, 10000, 31623, 100000]
+        );
+        let s = g.settings(MethodKind::FixedStep, 2.0);
+        assert_eq!(s[0], Setting::Step(0.2));
+    }
+}

@@ -1,0 +1,261 @@
+//! The report's tables as rows of formatted strings (templates hold no logic): problems,
+//! fitted orders, the failures (summary and detail), regime classification and creep.
+
+use serde::Serialize;
+
+use super::BenchResults;
+use crate::output::format::sig;
+
+/// One table row: formatted cells and a CSS class ("pass", "fail", "na" or "").
+#[derive(Serialize)]
+pub struct Row {
+    pub cells: Vec<String>,
+    pub class: String,
+}
+
+/// A table: header and rows.
+#[derive(Serialize)]
+pub struct Table {
+    pub header: Vec<String>,
+    pub rows: Vec<Row>,
+}
+
+pub fn s3(x: Option<f64>) -> String {
+    sig(x, 3)
+}
+
+pub fn e2(x: Option<f64>) -> String {
+    match x {
+        Some(0.0) => "0".to_string(),
+        Some(v) => format!("{v:.1e}"),
+        None => "—".to_string(),
+    }
+}
+
+pub fn row(cells: Vec<String>, class: &str) -> Row {
+    Row {
+        cells,
+        class: class.to_string(),
+    }
+}
+
+pub fn table(header: &[&str], rows: Vec<Row>) -> Table {
+    Table {
+        header: header.iter().map(|h| h.to_string()).collect(),
+        rows,
+    }
+}
+
+/// The problems with their exact references.
+pub fn problems(r: &BenchResults) -> Table {
+    let exact_time = |id: &str| {
+        r.sweep
+            .iter()
+            .find(|p| p.problem == id && p.method == "exact")
+            .and_then(|p| p.time_s)
+    };
+    table(
+        &[
+            "problem",
+            "T (s)",
+            "periods",
+            "exact events",
+            "x_end (m)",
+            "v̄ last period (m/s)",
+            "exact time (s)",
+        ],
+        r.problems
+            .iter()
+            .map(|p| {
+                row(
+                    vec![
+                        p.title.clone(),
+                        sig(Some(p.period_s), 6),
+                        p.periods.to_string(),
+                        p.exact.events.len().to_string(),
+                        sig(Some(p.exact.x_end_m), 7),
+                        sig(Some(p.exact.vbar_m_s), 7),
+                        e2(exact_time(&p.id)),
+                    ],
+                    "",
+                )
+            })
+            .collect(),
+    )
+}
+
+/// The fitted orders of the fixed-step methods.
+pub fn orders(r: &BenchResults) -> Table {
+    table(
+        &[
+            "problem",
+            "method",
+            "metric",
+            "fitted order",
+            "h range (s)",
+            "points",
+        ],
+        r.failures
+            .studies
+            .orders
+            .iter()
+            .map(|o| {
+                row(
+                    vec![
+                        o.problem.clone(),
+                        o.method.clone(),
+                        o.metric.id().to_string(),
+                        sig(o.order, 3),
+                        format!("{} … {}", e2(o.h_min_s), e2(o.h_max_s)),
+                        o.points.to_string(),
+                    ],
+                    "",
+                )
+            })
+            .collect(),
+    )
+}
+
+pub fn failure_tables(r: &BenchResults) -> (Table, Table) {
+    let rows = &r.failures.table;
+    let mut methods: Vec<&str> = Vec::new();
+    for f in rows {
+        if !methods.contains(&f.method.as_str()) {
+            methods.push(&f.method);
+        }
+    }
+    let summary = methods
+        .iter()
+        .map(|m| {
+            let mine: Vec<_> = rows.iter().filter(|f| f.method == *m).collect();
+            let failed: Vec<&str> = mine
+                .iter()
+                .filter(|f| f.verdict == "fails")
+                .map(|f| f.failure.as_str())
+                .collect();
+            let unavailable = mine.iter().all(|f| f.verdict == "not available");
+            let kind = r
+                .methods
+                .iter()
+                .find(|x| x.name == *m)
+                .map_or("—".to_string(), |x| {
+                    format!(
+                        "{}{}",
+                        x.kind.label(),
+                        if x.in_registry {
+                            ""
+                        } else {
+                            " (not in solver::methods(); constructed)"
+                        }
+                    )
+                });
+            let (text, class) = if unavailable {
+                ("not available".to_string(), "na")
+            } else if failed.is_empty() {
+                ("none measured".to_string(), "pass")
+            } else {
+                (failed.join("; "), "fail")
+            };
+            row(vec![m.to_string(), kind, text], class)
+        })
+        .collect();
+    let detail = rows
+        .iter()
+        .map(|f| {
+            let class = match f.verdict.as_str() {
+                "fails" => "fail",
+                "ok" => "pass",
+                _ => "na",
+            };
+            row(
+                vec![
+                    f.method.clone(),
+                    f.failure.clone(),
+                    f.measured.clone(),
+                    f.verdict.clone(),
+                ],
+                class,
+            )
+        })
+        .collect();
+    (
+        table(&["method", "kind", "failures"], summary),
+        table(&["method", "failure", "measured", "verdict"], detail),
+    )
+}
+
+/// The regime classification near the boundaries.
+pub fn regime(r: &BenchResults) -> Table {
+    table(
+        &[
+            "case",
+            "method",
+            "setting",
+            "slips/sticks in last period",
+            "exact",
+            "verdict",
+        ],
+        r.failures
+            .studies
+            .regime
+            .iter()
+            .map(|p| {
+                let got = match (p.slips, p.sticks, &p.error) {
+                    (Some(a), Some(b), _) => format!("{a}/{b}"),
+                    (_, _, Some(e)) => format!("error: {e}"),
+                    _ => "—".into(),
+                };
+                row(
+                    vec![
+                        p.case.clone(),
+                        p.method.clone(),
+                        p.setting.clone(),
+                        got,
+                        format!("{}/{}", p.exact_slips, p.exact_sticks),
+                        if p.wrong { "wrong" } else { "right" }.into(),
+                    ],
+                    if p.wrong { "fail" } else { "pass" },
+                )
+            })
+            .collect(),
+    )
+}
+
+/// Creep of every method, then of the tanh methods over ε.
+pub fn creep(r: &BenchResults) -> Table {
+    table(
+        &[
+            "problem",
+            "method",
+            "ε (m/s)",
+            "stick phase (s)",
+            "creep (m)",
+            "rhs evals/period",
+        ],
+        r.failures
+            .studies
+            .creep
+            .iter()
+            .chain(&r.failures.studies.creep_epsilon)
+            .map(|c| {
+                row(
+                    vec![
+                        c.problem.clone(),
+                        c.method.clone(),
+                        c.epsilon_m_s.map_or("—".into(), |e| format!("{e:.0e}")),
+                        format!(
+                            "{} … {}",
+                            sig(Some(c.t_stick_s), 5),
+                            sig(Some(c.t_slip_s), 5)
+                        ),
+                        c.error
+                            .clone()
+                            .map_or_else(|| e2(c.creep_m), |e| format!("error: {e}")),
+                        s3(c.rhs_per_period),
+                    ],
+                    "",
+                )
+            })
+            .collect(),
+    )
+}

@@ -1,0 +1,153 @@
+//! Explicit Euler with sign(v) friction: the spreadsheet method the paper mentions, kept as the
+//! failure baseline. Owns [`EulerSign`].
+//!
+//! ```text
+//! v_{k+1} = v_k + h (D(t_k) − μd N_f(t_k) sign(v_k)) / M,     sign(0) = 0
+//! x_{k+1} = x_k + h v_k
+//! ```
+//!
+//! There is no stick state and μs is never used: the law knows only the dynamic friction, and at
+//! v = 0 exactly (only at t = 0 in practice) sign(0) = 0 lets the whole drive act, so the body
+//! leaves rest at the first step whatever |D| / N_f is. Where the exact body is stuck, v
+//! chatters around 0 with amplitude ~h |a|: each step that overshoots 0 is a spurious velocity
+//! reversal, about one per step, so their number per period grows like 1/h while the exact
+//! engine has none; a true stick is never found.
+//!
+//! Events: "slip" when v first leaves 0, then "reversal" at the end of every step where the
+//! sign of v differs from its last non-zero sign; all of them are counted in `Stats::events`.
+
+use super::moreau::step_count;
+use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
+use crate::error::{Error, Result};
+
+/// Explicit Euler with μd N_f sign(v) friction, fixed step `Setting::Step(h)`.
+pub struct EulerSign;
+
+impl Method for EulerSign {
+    fn name(&self) -> &'static str {
+        "euler_sign"
+    }
+
+    fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
+        let Setting::Step(h) = setting else {
+            return Err(Error::InvalidParam {
+                name: "setting",
+                value: format!("{setting:?}"),
+                rule: "euler_sign is a fixed-step method: give Setting::Step(h) with h > 0".into(),
+            });
+        };
+        let n = step_count(h, problem.t_end)?;
+        let body = &problem.body;
+        let mut stats = Stats::default();
+        let mut events = Vec::new();
+        let (mut x, mut v) = (0.0_f64, 0.0_f64);
+        // Last non-zero sign of v (0 before the body first moves).
+        let mut last_sign = 0.0_f64;
+        for k in 0..n {
+            let t0 = k as f64 * h;
+            let t1 = if k + 1 == n {
+                problem.t_end
+            } else {
+                (k + 1) as f64 * h
+            };
+            let hk = t1 - t0;
+            let (d, n_f) = problem.forces(t0);
+            stats.rhs_evals += 1;
+            let sign = if v == 0.0 { 0.0 } else { v.signum() };
+            let v_new = v + hk * (d - body.mu_d * n_f * sign) / body.mass;
+            x += hk * v;
+            v = v_new;
+            if !(x.is_finite() && v.is_finite()) {
+                return Err(Error::Stalled {
+                    t: t1,
+                    reason: "euler_sign: the state became non-finite",
+                });
+            }
+            if v != 0.0 {
+                let s = v.signum();
+                if last_sign == 0.0 {
+                    events.push(MethodEvent {
+                        t: t1,
+                        kind: "slip",
+                    });
+                } else if s != last_sign {
+                    events.push(MethodEvent {
+                        t: t1,
+                        kind: "reversal",
+                    });
+                }
+                last_sign = s;
+            }
+        }
+        stats.steps = n;
+        stats.accepted = n;
+        stats.events = events.len() as u64;
+        Ok(Solution {
+            events,
+            x_end: x,
+            v_end: v,
+            stats,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::LawKind;
+    use crate::solver::exact::Exact;
+    use crate::solver::moreau::tests::{fitted_slope, set_b};
+
+    #[test]
+    fn spurious_reversals_per_period_grow_like_one_over_h_while_exact_has_none() {
+        for law in [LawKind::Linear, LawKind::Harmonic] {
+            let periods = 4.0;
+            let problem = set_b(law, periods);
+            let period = problem.law.period;
+            let exact = Exact.solve(&problem, Setting::Step(1.0)).unwrap();
+            assert_eq!(exact.events.len(), 8, "{law:?}: 4 slips and 4 sticks");
+            assert!(exact.events.iter().all(|e| e.kind != "reversal"));
+            assert_eq!(
+                exact.stats.events, 8,
+                "{law:?}: the exact engine has 0 reversals"
+            );
+            let mut points = Vec::new();
+            for n in [400.0, 800.0, 1600.0, 3200.0, 6400.0] {
+                let h = period / n;
+                let s = EulerSign.solve(&problem, Setting::Step(h)).unwrap();
+                let reversals = s.events.iter().filter(|e| e.kind == "reversal").count();
+                assert_eq!(s.stats.events, s.events.len() as u64);
+                assert_eq!(s.stats.rhs_evals, s.stats.steps);
+                let per_period = reversals as f64 / periods;
+                println!(
+                    "euler_sign {law:?}: h = T/{n}: {per_period} spurious reversals per period \
+                     ({:.3} per step), x_end = {:.6e} m (exact {:.6e} m)",
+                    per_period / n,
+                    s.x_end,
+                    exact.x_end
+                );
+                assert!(per_period > 0.0);
+                // (h, reversals): the slope against log h is minus the one against log 1/h.
+                points.push((h, per_period));
+            }
+            let slope = -fitted_slope(&points);
+            println!("euler_sign {law:?}: slope of log(reversals) vs log(1/h) = {slope:.3}");
+            assert!(slope > 0.7 && slope < 1.3, "{law:?}: slope {slope}");
+        }
+    }
+
+    #[test]
+    fn leaves_rest_at_the_first_step_and_refuses_bad_steps() {
+        let problem = set_b(LawKind::Linear, 1.0);
+        let h = problem.law.period / 100.0;
+        let s = EulerSign.solve(&problem, Setting::Step(h)).unwrap();
+        assert_eq!(s.stats.steps, 100);
+        assert_eq!(s.events[0], MethodEvent { t: h, kind: "slip" });
+        assert!(EulerSign.solve(&problem, Setting::Step(-1.0)).is_err());
+        assert!(EulerSign.solve(&problem, Setting::Tolerance(1e-6)).is_err());
+        assert!(matches!(
+            EulerSign.solve(&problem, Setting::Step(1e-12)),
+            Err(Error::Stalled { .. })
+        ));
+    }
+}

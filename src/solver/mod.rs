@@ -1,0 +1,125 @@
+//! Time-stepping methods for the dry-friction system, compared against the exact engine
+//! ([`crate::engine`]) in `stickslip bench`: the methods people use for stick-slip, each in one
+//! file behind the [`Method`] trait, each counting its work in [`Stats`].
+//!
+//! ```text
+//! exact       event-driven closed-form arcs (the reference)
+//! dopri5      Dormand–Prince 5(4), step control, dense output, events on the interpolant
+//! rk4         fixed-step RK4, switching functions checked each step, events by bisection
+//! moreau      Moreau–Jean θ-method, set-valued Coulomb law solved exactly per step
+//! tanh        regularized friction μd tanh(v/ε), adaptive (dopri5) or implicit (TR-BDF2)
+//! euler_sign  explicit Euler with sign(v) friction (the spreadsheet method)
+//! ```
+//!
+//! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
+//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`.
+
+use serde::Serialize;
+
+use crate::engine::{Body, ForceLaw};
+use crate::error::Result;
+
+pub mod dopri5;
+pub mod euler_sign;
+pub mod exact;
+pub mod moreau;
+pub mod rk4;
+pub mod tanh;
+
+/// Default regularization width ε of the tanh methods (m/s).
+pub const TANH_EPSILON: f64 = 1e-4;
+
+/// Every method of the comparison, the exact reference first.
+pub fn methods() -> Vec<Box<dyn Method>> {
+    vec![
+        Box::new(exact::Exact),
+        Box::new(dopri5::Dopri5),
+        Box::new(rk4::Rk4),
+        Box::new(moreau::Moreau),
+        Box::new(tanh::TanhAdaptive {
+            epsilon: TANH_EPSILON,
+        }),
+        Box::new(tanh::TanhImplicit {
+            epsilon: TANH_EPSILON,
+        }),
+        Box::new(euler_sign::EulerSign),
+    ]
+}
+
+/// Work counters every method fills (the work-precision chart reads only these and the result).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Stats {
+    /// Evaluations of the right-hand side a(t, v) (for `exact`: closed-form piece evaluations).
+    pub rhs_evals: u64,
+    /// Steps attempted, accepted and rejected (fixed-step methods: accepted = steps).
+    pub steps: u64,
+    pub accepted: u64,
+    pub rejected: u64,
+    /// Slip/stick events located (or, for methods without a stick state, velocity sign changes).
+    pub events: u64,
+}
+
+/// A slip or stick event found by a method (absolute time, s).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct MethodEvent {
+    pub t: f64,
+    /// "slip", "stick" or "reversal" (a velocity sign change without a stick).
+    pub kind: &'static str,
+}
+
+/// What a method returns: its events, the final state and its work.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Solution {
+    pub events: Vec<MethodEvent>,
+    /// Position (m) and velocity (m/s) at `t_end`.
+    pub x_end: f64,
+    pub v_end: f64,
+    pub stats: Stats,
+}
+
+/// The dry-friction initial-value problem shared by all methods.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Problem {
+    pub body: Body,
+    pub law: ForceLaw,
+    /// Final time (s).
+    pub t_end: f64,
+}
+
+impl Problem {
+    /// D(t) and N_f(t) (N) at absolute time t.
+    pub fn forces(&self, t: f64) -> (f64, f64) {
+        (self.law.drive(t), self.law.normal(t))
+    }
+
+    /// Acceleration while slipping in direction `s` (m/s²): (D − s μd N_f)/M.
+    pub fn slip_acceleration(&self, t: f64, s: f64) -> f64 {
+        let (d, n) = self.forces(t);
+        (d - s * self.body.mu_d * n) / self.body.mass
+    }
+
+    /// Static switching function for direction `s`: s·D − μs N_f (N); the body leaves rest in
+    /// direction s when it becomes positive.
+    pub fn static_margin(&self, t: f64, s: f64) -> f64 {
+        let (d, n) = self.forces(t);
+        s * d - self.body.mu_s * n
+    }
+}
+
+/// The accuracy knob of a method: a tolerance (adaptive) or a step size (fixed-step).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Setting {
+    /// Relative = absolute tolerance of an adaptive method.
+    Tolerance(f64),
+    /// Step size h (s) of a fixed-step method.
+    Step(f64),
+}
+
+/// A time-stepping method.
+pub trait Method: Sync {
+    /// Short identifier, e.g. "dopri5".
+    fn name(&self) -> &'static str;
+    /// Solves `problem` with the given accuracy setting.
+    fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution>;
+}

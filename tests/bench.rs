@@ -1,0 +1,208 @@
+//! `stickslip bench --quick` as a user runs it: the command exits 0 and writes a report whose
+//! JSON parses with the documented keys and whose CSV has its header; the failures table names
+//! every method of the registry; euler_sign's spurious reversals grow as the step shrinks; a
+//! sweep point survives a JSON round trip. The quick run is made once and shared; no test reads
+//! a timing.
+
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+use stickslip::bench::render::CSV_HEADER;
+use stickslip::bench::sweep::SweepPoint;
+use stickslip::solver::methods;
+
+/// Top-level keys of results.json.
+const TOP_KEYS: [&str; 12] = [
+    "quick",
+    "repeats",
+    "periods",
+    "machine",
+    "grid",
+    "methods",
+    "problems",
+    "sweep",
+    "costs",
+    "failures",
+    "peer",
+    "elapsed_s",
+];
+/// Keys of `failures`: the table and the studies behind it.
+const FAILURE_KEYS: [&str; 7] = [
+    "table",
+    "reversals",
+    "creep",
+    "creep_epsilon",
+    "missed",
+    "regime",
+    "orders",
+];
+/// Keys of `machine`.
+const MACHINE_KEYS: [&str; 6] = ["crate_version", "profile", "nproc", "cpu", "os", "arch"];
+
+struct QuickRun {
+    /// Kept so that the folder lives as long as the tests.
+    _dir: tempfile::TempDir,
+    out: PathBuf,
+    json: Value,
+}
+
+/// Runs `stickslip bench --quick` once for all tests.
+fn quick() -> &'static QuickRun {
+    static RUN: OnceLock<QuickRun> = OnceLock::new();
+    RUN.get_or_init(|| {
+        let dir = tempfile::tempdir().expect("temporary folder");
+        let out = dir.path().join("bench");
+        Command::cargo_bin("stickslip")
+            .expect("binary")
+            .args(["bench", "--quick", "--out"])
+            .arg(&out)
+            .assert()
+            .success();
+        let text = std::fs::read_to_string(out.join("results.json")).expect("results.json");
+        let json = serde_json::from_str(&text).expect("results.json parses");
+        QuickRun {
+            _dir: dir,
+            out,
+            json,
+        }
+    })
+}
+
+fn array<'a>(v: &'a Value, key: &str) -> &'a Vec<Value> {
+    v[key]
+        .as_array()
+        .unwrap_or_else(|| panic!("{key} is an array"))
+}
+
+#[test]
+fn quick_bench_writes_json_with_every_key_csv_with_units_and_the_pages() {
+    let run = quick();
+    for key in TOP_KEYS {
+        assert!(run.json.get(key).is_some(), "results.json lacks {key}");
+    }
+    for key in FAILURE_KEYS {
+        assert!(
+            run.json["failures"].get(key).is_some(),
+            "failures lacks {key}"
+        );
+    }
+    for key in MACHINE_KEYS {
+        assert!(
+            run.json["machine"].get(key).is_some(),
+            "machine lacks {key}"
+        );
+    }
+    assert_eq!(run.json["quick"], Value::Bool(true));
+    assert_eq!(array(&run.json, "problems").len(), 4);
+
+    let csv = std::fs::read_to_string(run.out.join("results.csv")).expect("results.csv");
+    let mut lines = csv.lines();
+    let header = lines.next().expect("a header");
+    assert_eq!(header, CSV_HEADER);
+    assert!(header.contains("time_s") && header.contains("err_x_m"));
+    assert_eq!(lines.count(), array(&run.json, "sweep").len());
+
+    for page in ["index.html", "bench.md"] {
+        let text = std::fs::read_to_string(run.out.join(page)).expect(page);
+        assert!(text.contains("Where methods fail"), "{page}");
+    }
+    let svgs = std::fs::read_dir(run.out.join("figures"))
+        .expect("figures/")
+        .filter(|e| {
+            e.as_ref()
+                .is_ok_and(|e| e.path().extension() == Some("svg".as_ref()))
+        })
+        .count();
+    assert_eq!(
+        svgs,
+        4 * 3 + 3,
+        "work-precision, work and order per problem, 3 failures"
+    );
+}
+
+#[test]
+fn failures_table_names_every_registered_method_and_the_endpoint_variant() {
+    let run = quick();
+    let table = array(&run.json["failures"], "table");
+    let named = |m: &str| table.iter().any(|r| r["method"] == m);
+    for m in methods() {
+        assert!(
+            named(m.name()),
+            "{} missing from the failures table",
+            m.name()
+        );
+    }
+    assert!(named("dopri5_endpoints"));
+    for r in table {
+        let verdict = r["verdict"].as_str().expect("verdict");
+        assert!(
+            ["fails", "ok", "not available"].contains(&verdict),
+            "{verdict}"
+        );
+    }
+}
+
+#[test]
+fn euler_sign_reversals_grow_as_the_step_shrinks_and_exact_has_none() {
+    let run = quick();
+    let points = array(&run.json["failures"], "reversals");
+    for problem in array(&run.json, "problems") {
+        let id = &problem["id"];
+        let mut series: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| &p["problem"] == id && p["method"] == "euler_sign")
+            .map(|p| {
+                (
+                    p["h_s"].as_f64().expect("h"),
+                    p["reversals_per_period"].as_f64().expect("count"),
+                )
+            })
+            .collect();
+        series.sort_by(|a, b| b.0.total_cmp(&a.0));
+        assert!(series.len() >= 3, "{id}: {series:?}");
+        assert!(
+            series.windows(2).all(|w| w[1].1 > w[0].1),
+            "{id}: reversals must grow as h shrinks: {series:?}"
+        );
+    }
+    for p in array(&run.json, "sweep") {
+        if p["method"] == "exact" {
+            assert_eq!(p["reversals"], 0, "{p}");
+            assert_eq!(p["err_x_m"], 0.0, "{p}");
+        }
+    }
+}
+
+#[test]
+fn a_sweep_point_round_trips_through_json() {
+    let run = quick();
+    let original = array(&run.json, "sweep")
+        .iter()
+        .find(|p| p["method"] == "dopri5" && p["status"] == "ok")
+        .expect("a dopri5 point");
+    let point: SweepPoint = serde_json::from_value(original.clone()).expect("deserializes");
+    assert_eq!(point.method, "dopri5");
+    assert_eq!(&serde_json::to_value(&point).expect("serializes"), original);
+}
+
+#[test]
+fn without_peer_the_report_says_scipy_was_not_run() {
+    let run = quick();
+    assert_eq!(run.json["peer"]["status"], "not requested");
+    let message = run.json["peer"]["message"].as_str().expect("message");
+    assert!(message.contains("not run"), "{message}");
+    let page = std::fs::read_to_string(Path::new(&run.out).join("bench.md")).expect("bench.md");
+    assert!(page.contains(message), "the page states it");
+}
+
+#[test]
+fn zero_repeats_is_refused_as_bad_input() {
+    Command::cargo_bin("stickslip")
+        .expect("binary")
+        .args(["bench", "--repeats", "0"])
+        .assert()
+        .code(2);
+}
