@@ -193,7 +193,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
             root.draw(&Rectangle::new([frame.0, frame.1], border))
                 .map_err(draw_err)?;
             let entries = legend_entries(panel.spec);
-            if let Some(at) = legend_corner(&entries, *frame, lines) {
+            if let Some((at, _)) = legend_corner(&entries, *frame, lines) {
                 draw_legend(&root, at, &entries)?;
             }
         }
@@ -224,8 +224,50 @@ impl<'a> PreparedPanel<'a> {
             .map(|p| p.1)
             .chain(spec.h_lines.iter().map(|h| h.0).filter(|y| y.is_finite()));
         let y = padded_range("y", ys, Y_MARGIN)?;
+        let y = with_legend_room(spec, &runs, (clip.lo.0, clip.hi.0), y);
         Ok(Self { spec, runs, y })
     }
+}
+
+/// Raises the top of the y range when the legend would hide data in every corner, so that
+/// the data leave a band free for it along the top of the panel.
+///
+/// The pixel box is the one the layout will give (same constants); off by at most a pixel.
+fn with_legend_room(
+    spec: &Panel,
+    runs: &[Vec<Vec<Point>>],
+    x: (f64, f64),
+    y: (f64, f64),
+) -> (f64, f64) {
+    let entries = legend_entries(spec);
+    if entries.is_empty() {
+        return y;
+    }
+    let w = f64::from(FIGURE_WIDTH - Y_LABEL_AREA - RIGHT_MARGIN);
+    let h = f64::from(PANEL_HEIGHT - 2 * PANEL_GAP);
+    let to_px = |p: &Point| {
+        (
+            ((p.0 - x.0) / (x.1 - x.0) * w).round() as i32,
+            ((y.1 - p.1) / (y.1 - y.0) * h).round() as i32,
+        )
+    };
+    let mut lines: Vec<Vec<Px>> = runs.iter().flatten().map(|r| to_pixels(r, to_px)).collect();
+    lines.extend(
+        spec.h_lines
+            .iter()
+            .filter(|l| l.0.is_finite())
+            .map(|l| vec![to_px(&(x.0, l.0)), to_px(&(x.1, l.0))]),
+    );
+    let frame = ((0, 0), (w as i32, h as i32));
+    let hidden = legend_corner(&entries, frame, &lines).map_or(0, |(_, hidden)| hidden);
+    // Legend height, its inset from the frame, and the 3 px the corner test adds around it.
+    let band = f64::from(legend_size(&entries).1 + LEGEND_INSET + 4);
+    if hidden == 0 || band >= 0.6 * h {
+        return y;
+    }
+    // Keep the data (and the lower margin) in the lower h − band pixels.
+    let top = y.0 + (y.1 - y.0) * h / (h - band);
+    (y.0, top)
 }
 
 /// The x range: given, or spanned by the finite points of all curves.
@@ -379,6 +421,9 @@ pub(super) fn thin(runs: Vec<Vec<Point>>, max: usize) -> Vec<Vec<Point>> {
             out.push(run[0]);
             for b in 0..buckets {
                 let chunk = &inner[b * inner.len() / buckets..(b + 1) * inner.len() / buckets];
+                if chunk.is_empty() {
+                    continue;
+                }
                 let (mut lo, mut hi) = (0, 0);
                 for (i, p) in chunk.iter().enumerate() {
                     if p.1 < chunk[lo].1 {
@@ -387,9 +432,6 @@ pub(super) fn thin(runs: Vec<Vec<Point>>, max: usize) -> Vec<Vec<Point>> {
                     if p.1 > chunk[hi].1 {
                         hi = i;
                     }
-                }
-                if chunk.is_empty() {
-                    continue;
                 }
                 out.push(chunk[lo.min(hi)]);
                 if lo != hi {
@@ -432,8 +474,13 @@ fn legend_entries(panel: &Panel) -> Vec<LegendEntry> {
 }
 
 /// Upper-left corner of the legend: the inner corner of the frame that hides the fewest line
-/// segments (ties: upper right, upper left, lower right, lower left). `None` if no legend.
-fn legend_corner(entries: &[LegendEntry], frame: (Px, Px), lines: &[Vec<Px>]) -> Option<Px> {
+/// segments (ties: upper right, upper left, lower right, lower left), and how many it hides.
+/// `None` if there is no legend.
+fn legend_corner(
+    entries: &[LegendEntry],
+    frame: (Px, Px),
+    lines: &[Vec<Px>],
+) -> Option<(Px, usize)> {
     if entries.is_empty() {
         return None;
     }
@@ -459,8 +506,9 @@ fn legend_corner(entries: &[LegendEntry], frame: (Px, Px), lines: &[Vec<Px>]) ->
     candidates
         .iter()
         .enumerate()
-        .min_by_key(|(i, c)| (hidden(c), *i))
-        .map(|(_, c)| *c)
+        .map(|(i, c)| (hidden(c), i, *c))
+        .min()
+        .map(|(n, _, c)| (c, n))
 }
 
 /// Row (0 = nearest the plot) of each label, given centre and width: a label moves up while it

@@ -288,9 +288,8 @@ fn legend_rows(entries: &[LegendEntry]) -> (Vec<i32>, i32) {
     let mut centres = Vec::with_capacity(entries.len());
     let mut previous: Option<&LegendKey> = None;
     for entry in entries {
-        let switches = previous.is_some_and(|p| {
-            std::mem::discriminant(p) != std::mem::discriminant(&entry.key)
-        });
+        let switches = previous
+            .is_some_and(|p| std::mem::discriminant(p) != std::mem::discriminant(&entry.key));
         if switches {
             y += LEGEND_GROUP_GAP;
         }
