@@ -206,3 +206,30 @@ fn zero_repeats_is_refused_as_bad_input() {
         .assert()
         .code(2);
 }
+
+#[test]
+fn near_the_regime_boundaries_exact_is_always_right_and_sign_euler_is_not() {
+    let regime = array(&quick().json["failures"], "regime");
+    let wrong = |method: &str| -> (usize, usize) {
+        let runs: Vec<&Value> = regime.iter().filter(|r| r["method"] == method).collect();
+        let wrong = runs.iter().filter(|r| r["wrong"] == true).count();
+        (wrong, runs.len())
+    };
+    let (exact_wrong, exact_runs) = wrong("exact");
+    assert!(
+        exact_runs >= 4 && exact_wrong == 0,
+        "exact: {exact_wrong}/{exact_runs}"
+    );
+    // The sign(v) Euler method cannot hold a stick: it misreads regimes near the boundaries.
+    let (euler_wrong, euler_runs) = wrong("euler_sign");
+    assert!(
+        euler_runs > 0 && euler_wrong > 0,
+        "euler_sign: {euler_wrong}/{euler_runs}"
+    );
+    // Located events (dopri5 with interior checks) read the regime right at every setting.
+    let (dopri_wrong, dopri_runs) = wrong("dopri5");
+    assert!(
+        dopri_runs > 0 && dopri_wrong == 0,
+        "dopri5: {dopri_wrong}/{dopri_runs}"
+    );
+}
