@@ -1,5 +1,5 @@
 //! Where methods fail, measured: each study runs methods on chosen problems (untimed, so the
-//! studies may run in parallel) and records numbers, never verdicts; [`super::failure_table`] turns
+//! studies may run in parallel) and records numbers, never verdicts; [`super::failure_table`](mod@super::failure_table) turns
 //! them into the failures table.
 //!
 //! ```text

@@ -12,7 +12,7 @@ pub fn big_d(mu_s: f64, mu_d: f64) -> f64 {
     mu_s * mu_s + 2.0 * mu_s * mu_d - mu_d * mu_d
 }
 
-/// Θ ≡ (μs + √D)/(2μsμd), §1.3 [P] (18).
+/// Θ ≡ (μs + √D)/(2μsμd), §1.3 \[P\] (18).
 pub fn theta(mu_s: f64, mu_d: f64) -> f64 {
     (mu_s + big_d(mu_s, mu_d).sqrt()) / (2.0 * mu_s * mu_d)
 }
@@ -41,7 +41,7 @@ pub fn tau_max_speed(phi: f64, mu_d: f64) -> f64 {
     0.5 * (1.0 + phi / (2.0 * mu_d))
 }
 
-/// The other zero of a, on the falling-N half: τ'_M = ½ (1 − φ/(2μd)) = 1 − τ_M   [D]
+/// The other zero of a, on the falling-N half: τ'_M = ½ (1 − φ/(2μd)) = 1 − τ_M   \[D\]
 pub fn tau_accel_zero_falling(phi: f64, mu_d: f64) -> f64 {
     1.0 - tau_max_speed(phi, mu_d)
 }
@@ -120,17 +120,17 @@ pub fn gamma(mu_s: f64, mu_d: f64) -> f64 {
         / (96.0 * mu_s.powi(3) * mu_d * mu_d)
 }
 
-/// Mean speed over a period (m/s): v̄ = g T φ³ Γ             [P] (27)
+/// Mean speed over a period (m/s): v̄ = g T φ³ Γ             \[P\] (27)
 pub fn v_avg(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f64) -> f64 {
     g * period * phi.powi(3) * gamma(mu_s, mu_d)
 }
 
-/// Advance per period (m): x_T = v̄ T = g T² φ³ Γ             [P] (30)
+/// Advance per period (m): x_T = v̄ T = g T² φ³ Γ             \[P\] (30)
 pub fn advance_per_period(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f64) -> f64 {
     v_avg(g, period, phi, mu_s, mu_d) * period
 }
 
-/// Dissipated power (W): P = F v̄ = (g T/W³) Γ F⁴             [P] (29)
+/// Dissipated power (W): P = F v̄ = (g T/W³) Γ F⁴             \[P\] (29)
 pub fn power(force: f64, v_avg: f64) -> f64 {
     force * v_avg
 }

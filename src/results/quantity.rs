@@ -12,7 +12,7 @@ pub struct Quantity {
     pub unit: &'static str,
     /// Paper's equation number, or the physics.md section of a derived result.
     pub equation: &'static str,
-    /// [P], [P*], [G] or [D] (physics.md tags).
+    /// \[P\], \[P*\], \[G\] or \[D\] (physics.md tags).
     pub tag: &'static str,
     /// The formula in LaTeX.
     pub latex: &'static str,

@@ -57,7 +57,7 @@ pub struct CategoryMap {
     /// Cell-centre ranges: column i is at x0 + (i + ½)(x1 − x0)/nx, likewise for rows.
     pub x_range: (f64, f64),
     pub y_range: (f64, f64),
-    /// cells[row][col], row 0 at the bottom (smallest y); values index `categories`.
+    /// `cells[row][col]`, row 0 at the bottom (smallest y); values index `categories`.
     pub cells: Vec<Vec<u8>>,
     /// Legend entries of the categories: (label, palette index of the fill).
     pub categories: Vec<(String, usize)>,
