@@ -43,6 +43,51 @@ pub enum Command {
     /// Benchmark every time-stepping method against the exact engine: work-precision sweeps,
     /// where each method fails, and optionally SciPy side by side (written to --out).
     Bench(BenchArgs),
+    /// Vary one parameter on a uniform grid and integrate both laws at each point: v̄, slips
+    /// and sticks per period and the regime (sweep.csv, sweep.svg in --out).
+    Sweep {
+        #[command(subcommand)]
+        model: SweepModel,
+    },
+}
+
+/// The grid of `stickslip sweep`.
+#[derive(Debug, Args)]
+pub struct SweepArgs {
+    /// Parameter to vary: a numeric parameter of the model (e.g. z0, mu_d, k).
+    #[arg(long, value_name = "NAME")]
+    pub param: String,
+    /// First grid value (SI units, as the model flag).
+    #[arg(long, allow_hyphen_values = true, value_name = "A")]
+    pub from: f64,
+    /// Last grid value (SI units, as the model flag).
+    #[arg(long, allow_hyphen_values = true, value_name = "B")]
+    pub to: f64,
+    /// Grid points, both ends included (2 to 100000).
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u32).range(2..=100_000))]
+    pub steps: u32,
+    /// Output folder (sweep.csv, sweep.svg).
+    #[arg(long, default_value = "sweep")]
+    pub out: PathBuf,
+}
+
+#[derive(Debug, Subcommand)]
+pub enum SweepModel {
+    /// Sweep a parameter of the pulled mass.
+    PulledMass {
+        #[command(flatten)]
+        sweep: SweepArgs,
+        #[command(flatten)]
+        model: PulledMassArgs,
+    },
+    /// Sweep a parameter of the woodpecker.
+    Woodpecker {
+        #[command(flatten)]
+        sweep: SweepArgs,
+        #[command(flatten)]
+        model: WoodpeckerArgs,
+    },
 }
 
 /// Options of `stickslip bench`.
@@ -97,6 +142,10 @@ pub struct CommonArgs {
     /// Print the JSON object of physics.md §7 instead of tables.
     #[arg(long)]
     pub json: bool,
+    /// Also write the time series and event lists of both laws as CSV files to this folder
+    /// (`eval` only).
+    #[arg(long, value_name = "DIR")]
+    pub csv: Option<PathBuf>,
 }
 
 /// Parameters of the pulled mass [defaults: the paper's Fig. 6 set].

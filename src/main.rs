@@ -11,7 +11,8 @@ use anyhow::{Context, Result};
 use clap::Parser;
 
 use stickslip::cli::{
-    BenchArgs, Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, WoodpeckerArgs,
+    BenchArgs, Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, SweepArgs,
+    SweepModel, WoodpeckerArgs,
 };
 use stickslip::error::Error;
 use stickslip::params::{
@@ -56,6 +57,7 @@ fn run(cli: Cli) -> Result<()> {
             model,
         } => claims(seed, samples, &model),
         Command::Bench(args) => bench(&args),
+        Command::Sweep { model } => sweep(&model),
     }
 }
 
@@ -103,6 +105,11 @@ fn report(args: &ReportArgs) -> Result<()> {
 }
 
 fn claims(seed: u64, samples: usize, model: &EvalModel) -> Result<()> {
+    let common = match model {
+        EvalModel::PulledMass(args) => &args.common,
+        EvalModel::Woodpecker(args) => &args.common,
+    };
+    reject_flag("claims", "--csv", common.csv.is_some())?;
     let (pulled, wood, json) = match model {
         EvalModel::PulledMass(args) => (
             pulled_params(args)?.0,
@@ -183,7 +190,15 @@ fn pulled_params(args: &PulledMassArgs) -> Result<(PulledMassParams, u32)> {
 
 fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     let (p, periods) = pulled_params(args)?;
-    let evaluation = results::pulled_mass::evaluate(&p, periods)?;
+    let evaluation = match &args.common.csv {
+        None => results::pulled_mass::evaluate(&p, periods)?,
+        Some(dir) => {
+            let (evaluation, runs) = results::pulled_mass::evaluate_with_runs(&p, periods, true)?;
+            // Written before anything is printed: a bad target leaves no output at all.
+            report::write_all(dir, &stickslip::export::pulled_mass_files(&runs))?;
+            evaluation
+        }
+    };
     print_stdout(&if args.common.json {
         serde_json::to_string_pretty(&evaluation)? + "\n"
     } else {
@@ -215,12 +230,66 @@ fn woodpecker_params(args: &WoodpeckerArgs) -> Result<(WoodpeckerParams, u32)> {
 
 fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
     let (p, periods) = woodpecker_params(args)?;
-    let evaluation = results::woodpecker::evaluate(&p, periods)?;
+    let evaluation = match &args.common.csv {
+        None => results::woodpecker::evaluate(&p, periods)?,
+        Some(dir) => {
+            let (evaluation, runs) = results::woodpecker::evaluate_with_runs(&p, periods, true)?;
+            report::write_all(dir, &stickslip::export::woodpecker_files(&p, &runs))?;
+            evaluation
+        }
+    };
     print_stdout(&if args.common.json {
         serde_json::to_string_pretty(&evaluation)? + "\n"
     } else {
         output::text::woodpecker(&evaluation)
     })
+}
+
+/// `stickslip sweep`: the grid around the base parameters of flags and scenario; files are
+/// written only once every point has been computed.
+fn sweep(model: &SweepModel) -> Result<()> {
+    let (grid, common, base, periods) = match model {
+        SweepModel::PulledMass { sweep, model } => {
+            let (p, periods) = pulled_params(model)?;
+            let base = stickslip::sweep::Base::PulledMass(p);
+            (sweep, &model.common, base, periods)
+        }
+        SweepModel::Woodpecker { sweep, model } => {
+            let (p, periods) = woodpecker_params(model)?;
+            let base = stickslip::sweep::Base::Woodpecker(p);
+            (sweep, &model.common, base, periods)
+        }
+    };
+    reject_flag("sweep", "--json", common.json)?;
+    reject_flag("sweep", "--csv", common.csv.is_some())?;
+    let SweepArgs {
+        param,
+        from,
+        to,
+        steps,
+        out,
+    } = grid;
+    let spec = stickslip::sweep::GridSpec {
+        param: param.clone(),
+        from: *from,
+        to: *to,
+        steps: *steps,
+        periods,
+    };
+    stickslip::sweep::validate(&base, &spec)?;
+    let progress = stickslip::sweep::progress_bar(spec.steps);
+    let result = stickslip::sweep::run(&base, &spec, &progress)?;
+    let files = stickslip::sweep::render(&result)?;
+    report::write_all(out, &files)?;
+    print_stdout(&stickslip::sweep::summary_line(&result, out))
+}
+
+/// A flag that the subcommand does not use is refused rather than silently ignored.
+fn reject_flag(command: &str, flag: &str, given: bool) -> Result<()> {
+    if given {
+        anyhow::bail!("{flag} does not apply to `stickslip {command}`");
+    }
+    Ok(())
 }
 
 fn ensure_model(s: &Scenario, want: ModelName, path: &Path) -> Result<()> {

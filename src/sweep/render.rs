@@ -1,0 +1,209 @@
+//! Rendering of a finished sweep: `sweep.csv` (units in the header), `sweep.svg` (v̄ and slips
+//! per period of both laws against the parameter) and the one-line summary. Pure: strings in,
+//! [`OutFile`]s out; the caller writes them.
+
+use std::fmt::Write as _;
+use std::path::Path;
+
+use super::{LawPoint, Point, Sweep};
+use crate::error::{Error, Result};
+use crate::export::num;
+use crate::report::figures::chart::line_chart;
+use crate::report::figures::spec::{Curve, LineChart, Panel, Stroke};
+use crate::report::OutFile;
+
+/// Regime written for a point whose parameter set is invalid.
+pub const INVALID: &str = "invalid";
+/// Regime written for a law that does not exist at a point (woodpecker linear law, |z0| > d0).
+pub const UNDEFINED: &str = "undefined";
+/// Regime changes listed by name in the summary line; more are counted.
+const LISTED_CHANGES: usize = 3;
+
+/// sweep.csv and sweep.svg.
+pub fn render(s: &Sweep) -> Result<Vec<OutFile>> {
+    Ok(vec![
+        OutFile {
+            path: "sweep.csv".into(),
+            bytes: csv(s).into_bytes(),
+        },
+        OutFile {
+            path: "sweep.svg".into(),
+            bytes: svg(s)?.into_bytes(),
+        },
+    ])
+}
+
+/// The parameter column's header: the name with its unit suffix (`z0_m`, `mu_d`).
+fn param_column(s: &Sweep) -> String {
+    if s.param.unit.is_empty() {
+        s.param.name.to_string()
+    } else {
+        format!("{}_{}", s.param.name, s.param.unit)
+    }
+}
+
+fn csv(s: &Sweep) -> String {
+    let mut text = param_column(s);
+    for law in ["harmonic", "linear"] {
+        let _ = write!(
+            text,
+            ",v_avg_{law}_m_s,slips_{law},sticks_{law},regime_{law}"
+        );
+    }
+    text.push_str(",regime_closed_form\n");
+    for p in &s.points {
+        text.push_str(&num(p.value));
+        for law in [&p.harmonic, &p.linear] {
+            let cells = match law {
+                Some(l) => format!(
+                    "{},{},{},{}",
+                    l.v_avg.map(num).unwrap_or_default(),
+                    l.slips,
+                    l.sticks,
+                    l.regime
+                ),
+                None => format!(",,,{}", missing_regime(p)),
+            };
+            let _ = write!(text, ",{cells}");
+        }
+        let _ = writeln!(text, ",{}", p.closed_form.unwrap_or(INVALID));
+    }
+    text
+}
+
+fn missing_regime(p: &Point) -> &'static str {
+    if p.invalid.is_some() {
+        INVALID
+    } else {
+        UNDEFINED
+    }
+}
+
+fn svg(s: &Sweep) -> Result<String> {
+    let x = |p: &Point| p.value * s.param.axis_scale;
+    let curve = |label: &str,
+                 color: usize,
+                 stroke: Stroke,
+                 law: fn(&Point) -> Option<&LawPoint>,
+                 y: fn(&LawPoint) -> Option<f64>| Curve {
+        label: label.to_string(),
+        // Invalid points and missing values are NaN: the renderer breaks the curve there.
+        points: s
+            .points
+            .iter()
+            .map(|p| (x(p), law(p).and_then(y).unwrap_or(f64::NAN)))
+            .collect(),
+        color,
+        stroke,
+    };
+    let harmonic: fn(&Point) -> Option<&LawPoint> = |p| p.harmonic.as_ref();
+    let linear: fn(&Point) -> Option<&LawPoint> = |p| p.linear.as_ref();
+    let v_mm: fn(&LawPoint) -> Option<f64> = |l| l.v_avg.map(|v| v * 1e3);
+    let slips: fn(&LawPoint) -> Option<f64> = |l| Some(f64::from(l.slips));
+    let (a, b) = (
+        s.spec.from * s.param.axis_scale,
+        s.spec.to * s.param.axis_scale,
+    );
+    let spec = LineChart {
+        x_label: s.param.axis_label.to_string(),
+        x_range: Some((a.min(b), a.max(b))),
+        panels: vec![
+            Panel {
+                y_label: "v̄ (mm/s)".to_string(),
+                curves: vec![
+                    curve("harmonic", 0, Stroke::Solid, harmonic, v_mm),
+                    curve("linear", 1, Stroke::Dashed, linear, v_mm),
+                ],
+                h_lines: Vec::new(),
+            },
+            Panel {
+                y_label: "slips per period".to_string(),
+                curves: vec![
+                    curve("harmonic", 0, Stroke::Solid, harmonic, slips),
+                    curve("linear", 1, Stroke::Dashed, linear, slips),
+                ],
+                h_lines: Vec::new(),
+            },
+        ],
+        markers: Vec::new(),
+    };
+    line_chart(&spec).map_err(|e| Error::Figure {
+        id: "sweep".to_string(),
+        reason: e.to_string(),
+    })
+}
+
+/// Distinct values in order of first appearance, with their counts.
+fn tally<'a>(items: impl Iterator<Item = &'a str>) -> Vec<(&'a str, usize)> {
+    let mut out: Vec<(&str, usize)> = Vec::new();
+    for item in items {
+        match out.iter_mut().find(|(name, _)| *name == item) {
+            Some((_, n)) => *n += 1,
+            None => out.push((item, 1)),
+        }
+    }
+    out
+}
+
+fn regime_of(law: Option<&LawPoint>, p: &Point) -> &'static str {
+    law.map_or_else(|| missing_regime(p), |l| l.regime)
+}
+
+/// One line: points, regimes seen per law, where the harmonic regime changes, files written.
+pub fn summary_line(s: &Sweep, out: &Path) -> String {
+    let unit = if s.param.unit_text.is_empty() {
+        String::new()
+    } else {
+        format!(" {}", s.param.unit_text)
+    };
+    let seen = |regimes: Vec<(&str, usize)>| {
+        regimes
+            .iter()
+            .map(|(r, n)| format!("{r} ({n})"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let harmonic: Vec<&str> = s
+        .points
+        .iter()
+        .map(|p| regime_of(p.harmonic.as_ref(), p))
+        .collect();
+    let linear = tally(s.points.iter().map(|p| regime_of(p.linear.as_ref(), p)));
+    let changes: Vec<String> = harmonic
+        .windows(2)
+        .zip(s.points.windows(2))
+        .filter(|(r, _)| r[0] != r[1])
+        .map(|(r, p)| {
+            format!(
+                "{} -> {} between {} = {} and {}{unit}",
+                r[0],
+                r[1],
+                s.param.name,
+                num(p[0].value),
+                num(p[1].value)
+            )
+        })
+        .collect();
+    let change_text = match changes.len() {
+        0 => "none".to_string(),
+        n if n <= LISTED_CHANGES => changes.join("; "),
+        n => format!(
+            "{}; and {} more",
+            changes[..LISTED_CHANGES].join("; "),
+            n - LISTED_CHANGES
+        ),
+    };
+    format!(
+        "sweep {} {}: {} points from {} to {}{unit}; harmonic regimes: {}; linear regimes: {}; \
+         harmonic regime changes: {}; wrote {}\n",
+        s.model,
+        s.param.name,
+        s.points.len(),
+        num(s.spec.from),
+        num(s.spec.to),
+        seen(tally(harmonic.iter().copied())),
+        seen(linear),
+        change_text,
+        out.display()
+    )
+}
