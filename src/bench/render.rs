@@ -10,6 +10,7 @@ use super::context::context;
 use super::sweep::SweepPoint;
 use super::BenchResults;
 use crate::error::{Error, Result};
+use crate::report::render::template_error;
 use crate::report::writer::OutFile;
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -24,19 +25,6 @@ const TEMPLATES: &[(&str, &str)] = &[
 pub const CSV_HEADER: &str = "problem,method,setting_kind,tolerance,h_s,steps_per_period,status,\
 time_s,runs,rhs_evals,steps,accepted,rejected,n_events,n_events_exact,n_matched,kind_mismatches,\
 reversals,err_event_s,err_x_m,err_vbar_m_s,x_end_m,v_end_m_s,error";
-
-fn template_error(name: &str, e: &tera::Error) -> Error {
-    let mut reason = e.to_string();
-    let mut source = std::error::Error::source(e);
-    while let Some(s) = source {
-        reason = format!("{reason}: {s}");
-        source = s.source();
-    }
-    Error::Template {
-        name: name.to_string(),
-        reason,
-    }
-}
 
 /// Tera filter `cell`: text made safe for a Markdown table cell.
 fn markdown_cell(

@@ -67,7 +67,8 @@ fn templates() -> Result<Tera> {
     Ok(tera)
 }
 
-fn template_error(name: &str, e: &tera::Error) -> Error {
+/// A template error with tera's whole cause chain on one line.
+pub(crate) fn template_error(name: &str, e: &tera::Error) -> Error {
     // tera keeps the cause in the source chain.
     let mut reason = e.to_string();
     let mut source = std::error::Error::source(e);

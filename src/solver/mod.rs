@@ -123,3 +123,20 @@ pub trait Method: Sync {
     /// Solves `problem` with the given accuracy setting.
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution>;
 }
+
+/// Helpers shared by the methods' tests.
+#[cfg(test)]
+pub(crate) mod test_support {
+    use super::Solution;
+
+    /// Largest event-time error (s), after checking that the event kinds agree.
+    pub fn event_error(got: &Solution, want: &Solution) -> f64 {
+        let kinds = |s: &Solution| s.events.iter().map(|e| e.kind).collect::<Vec<_>>();
+        assert_eq!(kinds(got), kinds(want));
+        got.events
+            .iter()
+            .zip(&want.events)
+            .map(|(a, b)| (a.t - b.t).abs())
+            .fold(0.0, f64::max)
+    }
+}

@@ -240,6 +240,7 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
 #[cfg(test)]
 mod tests {
     use super::super::exact::Exact;
+    use super::super::test_support::event_error;
     use super::*;
     use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
     use crate::model::{pulled_mass, woodpecker, LawKind};
@@ -264,17 +265,6 @@ mod tests {
 
     fn exact(problem: &Problem) -> Solution {
         Exact.solve(problem, Setting::Step(1.0)).unwrap()
-    }
-
-    /// Largest event-time error (s), after checking that the event kinds agree.
-    fn event_error(got: &Solution, want: &Solution) -> f64 {
-        let kinds = |s: &Solution| s.events.iter().map(|e| e.kind).collect::<Vec<_>>();
-        assert_eq!(kinds(got), kinds(want));
-        got.events
-            .iter()
-            .zip(&want.events)
-            .map(|(a, b)| (a.t - b.t).abs())
-            .fold(0.0, f64::max)
     }
 
     /// Least-squares slope of log y against log x.
