@@ -10,7 +10,7 @@ use super::context::context;
 use super::sweep::SweepPoint;
 use super::BenchResults;
 use crate::error::{Error, Result};
-use crate::report::render::template_error;
+use crate::report::render::{markdown_cell, template_error};
 use crate::report::writer::OutFile;
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -25,20 +25,6 @@ const TEMPLATES: &[(&str, &str)] = &[
 pub const CSV_HEADER: &str = "problem,method,setting_kind,tolerance,h_s,steps_per_period,status,\
 time_s,runs,rhs_evals,steps,accepted,rejected,n_events,n_events_exact,n_matched,kind_mismatches,\
 reversals,err_event_s,err_x_m,err_vbar_m_s,x_end_m,v_end_m_s,error";
-
-/// Tera filter `cell`: text made safe for a Markdown table cell.
-fn markdown_cell(
-    value: &tera::Value,
-    _: &std::collections::HashMap<String, tera::Value>,
-) -> tera::Result<tera::Value> {
-    let text = match value {
-        tera::Value::String(s) => s.clone(),
-        other => other.to_string(),
-    };
-    Ok(tera::Value::String(
-        text.replace('|', "\\|").replace('\n', " "),
-    ))
-}
 
 /// Renders the benchmark's files.
 pub fn render(r: &BenchResults) -> Result<Vec<OutFile>> {

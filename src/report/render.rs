@@ -45,7 +45,7 @@ const CSS: &str = include_str!("../../templates/style.css");
 const TITLE: &str = "stickslip: the paper's stick-slip models, verified";
 
 /// Tera filter `cell`: text made safe for a Markdown table cell (pipes escaped, one line).
-fn markdown_cell(
+pub(crate) fn markdown_cell(
     value: &tera::Value,
     _: &std::collections::HashMap<String, tera::Value>,
 ) -> tera::Result<tera::Value> {

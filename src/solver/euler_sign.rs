@@ -29,13 +29,7 @@ impl Method for EulerSign {
     }
 
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
-        let Setting::Step(h) = setting else {
-            return Err(Error::InvalidParam {
-                name: "setting",
-                value: format!("{setting:?}"),
-                rule: "euler_sign is a fixed-step method: give Setting::Step(h) with h > 0".into(),
-            });
-        };
+        let h = setting.fixed_step(self.name())?;
         let n = step_count(h, problem.t_end)?;
         let body = &problem.body;
         let mut stats = Stats::default();

@@ -116,6 +116,23 @@ pub enum Setting {
     Step(f64),
 }
 
+impl Setting {
+    /// The step size h (s) of a fixed-step method named `method`; any other setting, or an h
+    /// that is not finite and positive, is refused naming the setting.
+    pub fn fixed_step(self, method: &str) -> Result<f64> {
+        match self {
+            Setting::Step(h) if h.is_finite() && h > 0.0 => Ok(h),
+            _ => Err(crate::error::Error::InvalidParam {
+                name: "setting",
+                value: format!("{self:?}"),
+                rule: format!(
+                    "{method} is a fixed-step method: give Setting::Step(h) with finite h > 0 (s)"
+                ),
+            }),
+        }
+    }
+}
+
 /// A time-stepping method.
 pub trait Method: Sync {
     /// Short identifier, e.g. "dopri5".

@@ -44,13 +44,7 @@ impl Method for Moreau {
     }
 
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
-        let Setting::Step(h) = setting else {
-            return Err(Error::InvalidParam {
-                name: "setting",
-                value: format!("{setting:?}"),
-                rule: "moreau is a fixed-step method: give Setting::Step(h) with h > 0".into(),
-            });
-        };
+        let h = setting.fixed_step(self.name())?;
         solve_theta(problem, h, THETA)
     }
 }

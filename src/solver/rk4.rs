@@ -40,15 +40,7 @@ impl Method for Rk4 {
     }
 
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
-        match setting {
-            Setting::Step(h) if h.is_finite() && h > 0.0 => solve_step(problem, h),
-            _ => Err(Error::InvalidParam {
-                name: "setting",
-                value: format!("{setting:?}"),
-                rule: "rk4 is a fixed-step method: give Setting::Step(h) with finite h > 0 (s)"
-                    .into(),
-            }),
-        }
+        solve_step(problem, setting.fixed_step(self.name())?)
     }
 }
 
