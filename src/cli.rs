@@ -5,6 +5,8 @@ use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
 
+use crate::fit::data::{Columns, Unit};
+use crate::fit::FitParam;
 use crate::formula::woodpecker::Counterpart;
 use crate::params::OmegaMode;
 use crate::report::Format;
@@ -49,6 +51,35 @@ pub enum Command {
         #[command(subcommand)]
         model: SweepModel,
     },
+    /// Fit the harmonic woodpecker to the tracked positions of a real toy (Figs. 26–27): μd,
+    /// z0, d0 (optionally μs, k) by Levenberg–Marquardt, with standard errors, residuals and
+    /// the overlay figure (fit.json, fit.csv, fit.svg in --out).
+    Fit(FitArgs),
+}
+
+/// Options of `stickslip fit`; the woodpecker flags and `--scenario` give the fixed values and
+/// the starting values of the free ones.
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    /// Tracked positions: a CSV file with a header row, a time column (s) and a position
+    /// column (m or mm); `,` or `;` separated, `#` comments and title lines allowed.
+    #[arg(value_name = "FILE")]
+    pub file: PathBuf,
+    /// Time and position columns, each a header name or a 1-based number [default: the first
+    /// column, and the column named y, else the second].
+    #[arg(long, value_name = "T,Y")]
+    pub columns: Option<Columns>,
+    /// Unit of the position column [default: the unit the file declares, else m].
+    #[arg(long, value_enum)]
+    pub units: Option<Unit>,
+    /// Parameters to fit, comma-separated; the others keep their given values.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = FitParam::DEFAULT)]
+    pub free: Vec<FitParam>,
+    /// Output folder (fit.json, fit.csv, fit.svg).
+    #[arg(long, default_value = "fit")]
+    pub out: PathBuf,
+    #[command(flatten)]
+    pub model: WoodpeckerArgs,
 }
 
 /// The grid of `stickslip sweep`.

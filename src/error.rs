@@ -1,4 +1,5 @@
-//! Error types of the library: invalid parameters, engine failures, scenario files.
+//! Error types of the library: invalid parameters, engine failures, scenario files, tracked
+//! data and fits.
 
 use thiserror::Error;
 
@@ -31,6 +32,29 @@ pub enum Error {
     /// A scenario file that cannot be read or parsed.
     #[error("scenario {path}: {reason}")]
     Scenario { path: String, reason: String },
+    /// A tracked-positions file (`stickslip fit`) that cannot be read or is malformed; `line`
+    /// is the line of the file (1-based) and `column` the header name of the cell, when the
+    /// problem has a place.
+    #[error("tracked data {path}: {}{reason}", place(*.line, .column.as_deref()))]
+    TrackedData {
+        path: String,
+        line: Option<u64>,
+        column: Option<String>,
+        reason: String,
+    },
+    /// A fit that ended without converging (results are still reported, flagged).
+    #[error("the fit did not converge: {reason}")]
+    NotConverged { reason: String },
+}
+
+/// "line 17, column y: ", "line 17: " or nothing.
+fn place(line: Option<u64>, column: Option<&str>) -> String {
+    match (line, column) {
+        (Some(l), Some(c)) => format!("line {l}, column {c}: "),
+        (Some(l), None) => format!("line {l}: "),
+        (None, Some(c)) => format!("column {c}: "),
+        (None, None) => String::new(),
+    }
 }
 
 /// Result alias of the library.

@@ -21,6 +21,7 @@ pub mod cli;
 pub mod engine;
 pub mod error;
 pub mod export;
+pub mod fit;
 pub mod formula;
 pub mod model;
 pub mod output;

@@ -1,7 +1,8 @@
 //! `stickslip`: thin entry point. Parses the command line, runs it, prints the error chain.
 //!
 //! Exit codes: 0 success; 2 bad input (usage, parameter out of range, unreadable or malformed
-//! scenario, unwritable output); 1 an internal failure of the engine.
+//! scenario or tracked data, unwritable output); 1 an internal failure of the engine, or a fit
+//! that did not converge (its results are written, flagged).
 
 use std::io::Write;
 use std::path::Path;
@@ -11,7 +12,7 @@ use anyhow::{Context, Result};
 use clap::Parser;
 
 use stickslip::cli::{
-    BenchArgs, Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, SweepArgs,
+    BenchArgs, Cli, Command, CommonArgs, EvalModel, FitArgs, PulledMassArgs, ReportArgs, SweepArgs,
     SweepModel, WoodpeckerArgs,
 };
 use stickslip::error::Error;
@@ -38,7 +39,10 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
-            let internal = matches!(e.downcast_ref::<Error>(), Some(Error::Stalled { .. }));
+            let internal = matches!(
+                e.downcast_ref::<Error>(),
+                Some(Error::Stalled { .. } | Error::NotConverged { .. })
+            );
             ExitCode::from(if internal { 1 } else { 2 })
         }
     }
@@ -58,7 +62,40 @@ fn run(cli: Cli) -> Result<()> {
         } => claims(seed, samples, &model),
         Command::Bench(args) => bench(&args),
         Command::Sweep { model } => sweep(&model),
+        Command::Fit(args) => fit(&args),
     }
+}
+
+/// `stickslip fit`: read, fit, write the files, print; a fit that did not converge is still
+/// written and printed (flagged), then reported as an error (exit 1).
+fn fit(args: &FitArgs) -> Result<()> {
+    let common = &args.model.common;
+    reject_flag("fit", "--periods", common.periods.is_some())?;
+    reject_flag("fit", "--csv", common.csv.is_some())?;
+    let (base, _) = woodpecker_params(&args.model)?;
+    let opts = stickslip::fit::data::ReadOptions {
+        columns: args.columns.clone(),
+        unit: args.units,
+    };
+    let data = stickslip::fit::data::read(&args.file, &opts)?;
+    let fit = stickslip::fit::fit(&data, &base, &args.free)?;
+    report::write_all(&args.out, &stickslip::fit::render(&fit)?)?;
+    print_stdout(&if common.json {
+        stickslip::fit::json(&fit)?
+    } else {
+        stickslip::fit::text(&fit, &args.out)
+    })?;
+    if !fit.converged {
+        return Err(Error::NotConverged {
+            reason: format!(
+                "{} (results in {} are flagged \"converged\": false)",
+                fit.termination,
+                args.out.display()
+            ),
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
