@@ -125,11 +125,10 @@ fn strong_correlations(fit: &Fit) -> Vec<(&'static str, &'static str, f64)> {
 
 /// Lengths are shown in mm in the table (the paper's unit), other values in SI.
 fn shown(e: &Estimate) -> (String, f64) {
-    let label = e.name.replace('_', " ");
     match e.unit {
-        "m" => (format!("{label} (mm)"), 1e3),
-        "" => (label, 1.0),
-        unit => (format!("{label} ({unit})"), 1.0),
+        "m" => (format!("{} (mm)", e.name), 1e3),
+        "" => (e.name.to_string(), 1.0),
+        unit => (format!("{} ({unit})", e.name), 1.0),
     }
 }
 
@@ -155,7 +154,7 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     );
     let _ = writeln!(
         o,
-        "fit:      {}{}, {} iterations, {} evaluations, best of {} starts",
+        "fit:      {}{}, {} iterations, {} evaluations; starts tried: {}",
         if fit.converged { "" } else { "NOT CONVERGED: " },
         fit.termination,
         fit.iterations,
@@ -196,11 +195,17 @@ pub fn text(fit: &Fit, out: &Path) -> String {
             if e.nuisance { "  (nuisance)" } else { "" }
         );
     }
-    for (a, b, r) in strong_correlations(fit) {
+    let strong = strong_correlations(fit);
+    if !strong.is_empty() {
+        let pairs: Vec<String> = strong
+            .iter()
+            .map(|(a, b, r)| format!("{a} and {b} at r = {r:.4}"))
+            .collect();
         let _ = writeln!(
             o,
-            "warning: {a} and {b} are correlated at r = {r:.4}: the data hardly separate them \
-             (fix one of them)"
+            "warning: correlated beyond {STRONG_CORRELATION}: {}; the data hardly separate \
+             them: fix some of them (fewer --free)",
+            pairs.join(", ")
         );
     }
     let p = &fit.params;
