@@ -232,6 +232,47 @@ fn mu_s_and_k_are_recovered_too_with_d0_fixed() {
     );
 }
 
+/// k sets the period: over 100 tracked periods (500 frames at 30 fps) a start 10 % off in k is
+/// 5 periods out of step, yet the fit finds k from the data's own period. With k fixed at the
+/// wrong value the fit says why it fails.
+#[test]
+fn k_far_off_is_found_from_the_period_of_the_data() {
+    let tmp = tempfile::tempdir().unwrap();
+    let truth = WoodpeckerParams {
+        mu_d: 0.34,
+        ..fig26()
+    };
+    let slow = Synthetic {
+        frame_rate: 30.0,
+        ..synthetic(truth, 6)
+    };
+    let file = write(
+        tmp.path(),
+        "slow.csv",
+        &slow.generate().unwrap().csv(Unit::Mm, "30 fps"),
+    );
+    for k in ["18.3", "22.3"] {
+        let args = ["--scenario", FIG26, "--k", k, "--free", "mu_d,z0,d0,k"].map(String::from);
+        let json = fit_json(&file, &tmp.path().join(k), &args);
+        assert_eq!(json["converged"], true, "{json}");
+        let (name, fitted, se) = estimates(&json)[3].clone();
+        assert_eq!(name, "k");
+        assert!((fitted - truth.k).abs() < 2.0 * se, "k = {fitted} ± {se}");
+    }
+    let output = stickslip()
+        .arg("fit")
+        .arg(&file)
+        .args(["--scenario", FIG26, "--k", "21", "--out"])
+        .arg(tmp.path().join("fixed"))
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    assert!(
+        stdout.contains("warning: the data repeat every 0.1650 s, the model every 0.1622 s"),
+        "{stdout}"
+    );
+}
+
 /// With μs, μd, z0 and d0 all free the position data hardly separate them: the fit says so.
 #[test]
 fn all_five_free_is_reported_as_poorly_determined() {

@@ -140,9 +140,8 @@ impl Tracked {
 /// Reads and checks a tracked-positions file.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Tracked> {
     let bytes = std::fs::read(path).map_err(|e| data_error(path, None, e.to_string()))?;
-    let text = String::from_utf8(bytes)
-        .map_err(|_| data_error(path, None, "not UTF-8 text".to_string()))?;
-    parse(&text, path, opts)
+    // Lossy: a Latin-1 "°" or "µ" in a header must not stop a file whose numbers are fine.
+    parse(&String::from_utf8_lossy(&bytes), path, opts)
 }
 
 /// Parses the text of a tracked-positions file; `path` only names the file in errors.

@@ -27,8 +27,8 @@
 //!   relative step of 1e-6 are therefore accurate (the engine resolves events to ~1e-15); the
 //!   derivatives in t_shift (the sleeve speed) and y_off (1) are exact.
 //! * The phase makes the problem non-convex, and so does k (it sets the period): LM starts from
-//!   the [`STARTS`] best local minima of a scan of phases (and of k when it is free), and the
-//!   lowest residual wins.
+//!   the [`STARTS`] best local minima of a scan of phases (at the given k and, when k is free,
+//!   at the k of the data's own period), runs a few steps from each, and carries the best on.
 
 pub mod data;
 mod render;
@@ -54,10 +54,14 @@ pub const TRANSIENT_PERIODS: u32 = 3;
 pub const PHASE_SCAN: usize = 24;
 /// Fits started, from the best local minima of the phase scan.
 pub const STARTS: usize = 3;
-/// Half range of the k scan (relative), its finest step (of ln k) and most points per side.
-const K_SCAN_RANGE: f64 = 0.2;
-const K_SCAN_MIN_STEP: f64 = 0.005;
-const K_SCAN_HALF_POINTS: f64 = 20.0;
+/// The data's period is looked for within this fraction of the model's.
+const PERIOD_SEARCH: f64 = 0.25;
+/// Frequencies per 1/span (the periodogram's resolution) in that search.
+const PERIOD_OVERSAMPLING: f64 = 8.0;
+/// LM gives up after PATIENCE·(p + 1) residual evaluations; each start first runs for
+/// RACE_PATIENCE·(p + 1), and only the best goes on.
+const PATIENCE: usize = 30;
+const RACE_PATIENCE: usize = 5;
 /// Step of the central differences: in the internal coordinates, and relative in the physical.
 const FD_STEP: f64 = 1e-6;
 /// Samples of the model curve drawn in the figure.
@@ -307,6 +311,8 @@ pub struct Fit {
     /// Period T (s) of the fitted model and the phase t_shift/T of the first tracked time.
     pub period: f64,
     pub phase: f64,
+    /// The period the data repeat with (s), from their periodogram ([`data_period`]).
+    pub data_period: f64,
     /// Regime and mean speed v̄ (m/s) of the fitted model's harmonic law.
     pub regime: &'static str,
     pub v_avg: Option<f64>,
@@ -436,6 +442,34 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
     }
 }
 
+/// Runs LM from `x0` for at most `patience`·(p + 1) residual evaluations.
+fn minimize(setup: &Setup, x0: DVector<f64>, patience: usize) -> Attempt {
+    let lm = LevenbergMarquardt::new()
+        .with_ftol(1e-10)
+        .with_xtol(1e-10)
+        .with_gtol(1e-10)
+        .with_stepbound(1.0)
+        .with_patience(patience);
+    let mut problem = Problem {
+        setup,
+        x: x0.clone(),
+        current: None,
+        jacobians: Cell::new(0),
+    };
+    problem.set_params(&x0);
+    let (problem, report) = lm.minimize(problem);
+    Attempt {
+        rss: problem
+            .current
+            .as_ref()
+            .map_or(f64::INFINITY, |e| e.r.norm_squared()),
+        iterations: problem.jacobians.get(),
+        evaluations: report.number_of_evaluations,
+        termination: report.termination,
+        x: problem.x,
+    }
+}
+
 /// One LM run from one start.
 struct Attempt {
     x: DVector<f64>,
@@ -492,42 +526,31 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
     let n = setup.y.len();
     let k = free.len();
 
-    let starts = starts(&setup, base)?;
-    let lm = LevenbergMarquardt::new()
-        .with_ftol(1e-10)
-        .with_xtol(1e-10)
-        .with_gtol(1e-10)
-        .with_stepbound(1.0);
-    let mut best: Option<Attempt> = None;
+    let data_period = data_period(&data.t, &setup.y, base.period());
+    let starts = starts(&setup, base, data_period)?;
+    // A short race from every start, then the leader on to convergence.
+    let mut leader: Option<Attempt> = None;
     for start in &starts {
         let mut x0: Vec<f64> = free.iter().map(|f| f.internal(&start.p, &free)).collect();
         x0.extend([start.shift, start.y_off]);
-        let x0 = DVector::from_vec(x0);
-        let mut problem = Problem {
-            setup: &setup,
-            x: x0.clone(),
-            current: None,
-            jacobians: Cell::new(0),
-        };
-        problem.set_params(&x0);
-        let (problem, report) = lm.minimize(problem);
-        let attempt = Attempt {
-            rss: problem
-                .current
-                .as_ref()
-                .map_or(f64::INFINITY, |e| e.r.norm_squared()),
-            iterations: problem.jacobians.get(),
-            evaluations: report.number_of_evaluations,
-            termination: report.termination,
-            x: problem.x,
-        };
-        if best.as_ref().is_none_or(|b| attempt.beats(b)) {
-            best = Some(attempt);
+        let attempt = minimize(&setup, DVector::from_vec(x0), RACE_PATIENCE);
+        if leader.as_ref().is_none_or(|b| attempt.beats(b)) {
+            leader = Some(attempt);
         }
     }
-    let best = best.ok_or_else(|| Error::NotConverged {
+    let leader = leader.ok_or_else(|| Error::NotConverged {
         reason: "the phase scan found no starting point".to_string(),
     })?;
+    let best = if leader.termination.was_successful() {
+        leader
+    } else {
+        let more = minimize(&setup, leader.x.clone(), PATIENCE);
+        Attempt {
+            iterations: leader.iterations + more.iterations,
+            evaluations: leader.evaluations + more.evaluations,
+            ..more
+        }
+    };
     let (internal, shift, y_off) = (&best.x.as_slice()[..k], best.x[k], best.x[k + 1]);
     let fitted = setup.params(internal);
     let period = fitted.period();
@@ -612,6 +635,7 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
         params: fitted,
         period,
         phase: shift / period,
+        data_period,
         regime: steady.0,
         v_avg: steady.1,
         series,
@@ -628,21 +652,15 @@ struct Start {
 }
 
 /// The starts of LM: the [`STARTS`] best local minima in phase of a scan of [`PHASE_SCAN`]
-/// phases at the given parameters, y_off solved for at each. When k is free the scan also runs
-/// over k (it sets the period, and a period off by δT/T drifts by N δT/T periods over N tracked
-/// periods): ±[`K_SCAN_RANGE`] in steps that keep the drift below 1/8 period.
-fn starts(setup: &Setup, base: &WoodpeckerParams) -> Result<Vec<Start>> {
+/// phases, y_off solved for at each. When k is free the scan runs at two values of k, the
+/// given one and the one whose period is the data's ([`data_period`]): k sets the period, and
+/// a period off by δT/T drifts by N δT/T periods over N tracked periods, far outside LM's reach
+/// when N is large.
+fn starts(setup: &Setup, base: &WoodpeckerParams, data_period: f64) -> Result<Vec<Start>> {
     let mut ks = vec![base.k];
     if setup.free.contains(&FitParam::K) {
-        let tracked_periods = setup.dt[setup.dt.len() - 1] / base.period();
-        // k ∝ ω², so δk/k = 2 δT/T.
-        let step = (0.25 / tracked_periods).max(K_SCAN_MIN_STEP);
-        let half = ((1.0 + K_SCAN_RANGE).ln() / step)
-            .ceil()
-            .min(K_SCAN_HALF_POINTS) as i32;
-        ks = (-half..=half)
-            .map(|j| base.k * (f64::from(j) * step).exp())
-            .collect();
+        // ω ∝ √k in every ω mode.
+        ks.push(base.k * (base.period() / data_period).powi(2));
     }
     let mut minima = Vec::new();
     for k in ks {
@@ -675,6 +693,50 @@ fn starts(setup: &Setup, base: &WoodpeckerParams) -> Result<Vec<Start>> {
     minima.sort_by(|a, b| a.rss.total_cmp(&b.rss));
     minima.truncate(STARTS);
     Ok(minima)
+}
+
+/// The period of the tracked motion: the highest peak of the periodogram of the positions
+/// (less their straight-line trend) within ±[`PERIOD_SEARCH`] of the model's period `around`,
+/// refined by a parabola through the peak and its neighbours. The sleeve's stick-slip pattern
+/// repeats every T, so the peak is at 1/T (the harmonics 2/T, 1/(2T)… lie outside the search).
+pub fn data_period(t: &[f64], y: &[f64], around: f64) -> f64 {
+    let n = t.len() as f64;
+    let (tm, ym) = (t.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let sxx: f64 = t.iter().map(|t| (t - tm).powi(2)).sum();
+    let sxy: f64 = t.iter().zip(y).map(|(t, y)| (t - tm) * (y - ym)).sum();
+    let slope = sxy / sxx;
+    let detrended: Vec<f64> = t
+        .iter()
+        .zip(y)
+        .map(|(t, y)| y - ym - slope * (t - tm))
+        .collect();
+    let power = |f: f64| {
+        let w = std::f64::consts::TAU * f;
+        let (c, s) = t.iter().zip(&detrended).fold((0.0, 0.0), |(c, s), (t, r)| {
+            let (sin, cos) = (w * (t - tm)).sin_cos();
+            (c + r * cos, s + r * sin)
+        });
+        c * c + s * s
+    };
+    let f0 = 1.0 / around;
+    let df = 1.0 / (PERIOD_OVERSAMPLING * (t[t.len() - 1] - t[0]));
+    let half = (PERIOD_SEARCH * f0 / df).ceil() as i64;
+    let freq = |j: i64| f0 + j as f64 * df;
+    let (best, _) = (-half..=half)
+        .map(|j| (j, power(freq(j))))
+        .fold((0, f64::NEG_INFINITY), |a, b| if b.1 > a.1 { b } else { a });
+    let (p0, p1, p2) = (
+        power(freq(best - 1)),
+        power(freq(best)),
+        power(freq(best + 1)),
+    );
+    let curvature = p0 - 2.0 * p1 + p2;
+    let offset = if curvature < 0.0 {
+        (0.5 * (p0 - p2) / curvature).clamp(-0.5, 0.5)
+    } else {
+        0.0
+    };
+    1.0 / (freq(best) + offset * df)
 }
 
 /// s² (JᵀJ)⁻¹, computed with the columns of J scaled to unit length (the parameters differ by
@@ -854,6 +916,24 @@ mod tests {
         let scale = fd.amax();
         assert!((jac.column(1) - fd).amax() < 1e-5 * scale);
         assert!(jac.column(2).iter().all(|&c| c == 1.0));
+    }
+
+    #[test]
+    fn the_period_of_the_data_is_the_periodogram_peak() {
+        // A falling staircase-like signal: trend, fundamental and a strong second harmonic.
+        let period = 0.17;
+        let t: Vec<f64> = (0..400).map(|i| 0.3 + f64::from(i) / 60.0).collect();
+        let y: Vec<f64> = t
+            .iter()
+            .map(|t| {
+                let w = std::f64::consts::TAU * t / period;
+                0.2 - 0.02 * t + 1e-3 * w.sin() + 8e-4 * (2.0 * w).cos()
+            })
+            .collect();
+        for around in [0.15, 0.165, 0.19] {
+            let found = data_period(&t, &y, around);
+            assert!((found / period - 1.0).abs() < 2e-4, "{around}: {found}");
+        }
     }
 
     #[test]

@@ -103,6 +103,9 @@ fn svg(fit: &Fit) -> Result<String> {
     })
 }
 
+/// A model period that drifts more than this many periods from the data's over the tracked
+/// span is warned about.
+const MAX_DRIFT: f64 = 0.25;
 /// Correlations beyond this (in absolute value) between physical parameters are warned about.
 const STRONG_CORRELATION: f64 = 0.99;
 
@@ -193,6 +196,20 @@ pub fn text(fit: &Fit, out: &Path) -> String {
             rel,
             sig(Some(e.start * scale), 6),
             if e.nuisance { "  (nuisance)" } else { "" }
+        );
+    }
+    // Over N tracked periods a period off by δT/T puts the model N δT/T periods out of step.
+    let tracked_periods = (s.t[s.t.len() - 1] - s.t[0]) / fit.period;
+    let drift = (fit.period / fit.data_period - 1.0).abs() * tracked_periods;
+    if drift > MAX_DRIFT {
+        let _ = writeln!(
+            o,
+            "warning: the data repeat every {} s, the model every {} s: {} periods out of step \
+             over the {} tracked; give the toy's k (or m_bird), or fit k (--free ...,k)",
+            sig(Some(fit.data_period), 4),
+            sig(Some(fit.period), 4),
+            sig(Some(drift), 2),
+            sig(Some(tracked_periods), 3)
         );
     }
     let strong = strong_correlations(fit);
