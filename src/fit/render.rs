@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 use std::path::Path;
 
-use super::{Estimate, Fit};
+use super::{Axis, Estimate, Fit};
 use crate::error::{Error, Result};
 use crate::export::num;
 use crate::output::format::sig;
@@ -151,8 +151,8 @@ pub fn text(fit: &Fit, out: &Path) -> String {
         d.position_column,
         d.unit.symbol(),
         match fit.axis {
-            super::Axis::Down => "down (grows as the toy falls)",
-            super::Axis::Up => "up (the toy falls to smaller y)",
+            Axis::Down => "down (grows as the toy falls)",
+            Axis::Up => "up (the toy falls to smaller y)",
         }
     );
     let _ = writeln!(
