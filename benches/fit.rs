@@ -1,7 +1,8 @@
 //! Timing of `stickslip fit` on 500 tracked points (synthetic: the model with σ = 0.2 mm
 //! noise, 240 fps, the truth of `scenarios/tracked-toy-example.csv`), from the Figs. 26–27
-//! scenario values: the default fit (μd, z0, d0), a fit with k free (which adds the k scan),
-//! and one model evaluation (the exact integration behind one residual vector).
+//! scenario values: the default fit (μd, z0, d0), a fit with k free too (started from the
+//! data's own period), and one model evaluation (the exact integration behind one residual
+//! vector).
 //!
 //! ```text
 //! cargo bench --bench fit
@@ -56,7 +57,7 @@ fn fits(c: &mut Criterion) {
         b.iter(|| fit(black_box(&data), black_box(&start), &FitParam::DEFAULT))
     });
     let with_k = [FitParam::MuD, FitParam::Z0, FitParam::D0, FitParam::K];
-    group.bench_function("mu_d, z0, d0, k (k scan)", |b| {
+    group.bench_function("mu_d, z0, d0, k", |b| {
         b.iter(|| fit(black_box(&data), black_box(&start), &with_k))
     });
     let dt: Vec<f64> = data.t.iter().map(|t| t - data.t[0]).collect();

@@ -9,9 +9,9 @@
 //! 0.000,0.012,0.1043         data: from the first row with a number
 //! ```
 //!
-//! The separator is `,`, `;` or tab, whichever most lines hold (ties in that order reversed:
-//! `;` first, so that `0,5;1,2` reads as two decimal-comma numbers). Decimal commas are
-//! accepted when the separator is not `,`. Quoting follows RFC 4180 (the `csv` crate).
+//! The separator is `,`, `;` or tab, whichever most lines hold (a tie goes to `;`, then tab, so
+//! that `0,5;1,2` reads as two decimal-comma numbers). Decimal commas are accepted when the
+//! separator is not `,`. Quoting follows RFC 4180 (the `csv` crate).
 //! Every problem is one line naming the line of the file: no header, a missing column, an
 //! empty or non-numeric cell, time not strictly increasing, fewer than [`MIN_ROWS`] rows.
 
