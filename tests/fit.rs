@@ -12,7 +12,7 @@ use assert_cmd::Command;
 use serde_json::Value;
 
 use stickslip::fit::data::{parse, ReadOptions, Unit};
-use stickslip::fit::synthetic::{Synthetic, SyntheticTrack};
+use stickslip::fit::synthetic::Synthetic;
 use stickslip::fit::{self, FitParam};
 use stickslip::params::{Scenario, WoodpeckerParams};
 
@@ -311,7 +311,7 @@ fn units_and_column_choices_give_the_same_fit() {
         mu_d: 0.335,
         ..fig26()
     };
-    let track: SyntheticTrack = synthetic(truth, 5).generate().unwrap();
+    let track = synthetic(truth, 5).generate().unwrap();
     let scenario = ["--scenario".to_string(), FIG26.to_string()];
     let reference = fit_json(
         &write(tmp.path(), "mm.csv", &track.csv(Unit::Mm, "mm")),

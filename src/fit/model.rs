@@ -146,12 +146,7 @@ mod tests {
 
     #[test]
     fn the_tracked_window_is_periodic_past_the_transient() {
-        let p = WoodpeckerParams {
-            mu_d: 0.332,
-            k: 20.3,
-            d0: 0.0095,
-            ..WoodpeckerParams::default()
-        };
+        let p = crate::fit::tests::fig26();
         let period = p.period();
         let dt: Vec<f64> = (0..200).map(|i| f64::from(i) * period / 50.0).collect();
         let tr = track(&p, 0.3 * period, &dt).unwrap();

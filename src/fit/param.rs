@@ -156,12 +156,7 @@ mod tests {
 
     #[test]
     fn every_internal_point_is_a_valid_parameter_set() {
-        let base = WoodpeckerParams {
-            mu_d: 0.332,
-            k: 20.3,
-            d0: 0.0095,
-            ..WoodpeckerParams::default()
-        };
+        let base = crate::fit::tests::fig26();
         let all = [
             FitParam::MuD,
             FitParam::Z0,

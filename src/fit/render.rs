@@ -143,7 +143,7 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     let _ = writeln!(o, "stickslip fit {}", d.file);
     let _ = writeln!(
         o,
-        "data:     {} points, t = {} to {} s; columns {} and {} ({}); y axis {}",
+        "data:     {} points, t = {} to {} s; time column {}, position column {} in {}; y axis {}",
         fit.n,
         sig(s.t.first().copied(), 4),
         sig(s.t.last().copied(), 4),

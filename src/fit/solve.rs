@@ -388,12 +388,7 @@ mod tests {
 
     #[test]
     fn the_exact_shift_column_agrees_with_differences() {
-        let p = WoodpeckerParams {
-            mu_d: 0.332,
-            k: 20.3,
-            d0: 0.0095,
-            ..WoodpeckerParams::default()
-        };
+        let p = crate::fit::tests::fig26();
         let setup = Setup {
             base: p,
             free: &[FitParam::MuD],
