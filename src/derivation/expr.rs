@@ -36,8 +36,15 @@ pub enum Expr {
         tex: &'static str,
         value: f64,
     },
-    /// A quantity: its symbol in the formula, its value (SI) in the substitution.
+    /// A computed quantity: its symbol in the formula, its value (SI) to [`DIGITS`]
+    /// significant figures in the substitution.
     Var {
+        tex: &'static str,
+        value: f64,
+    },
+    /// A given parameter: its symbol in the formula, its value as typed (SI, at most [`DIGITS`]
+    /// significant figures, no trailing zeros) in the substitution.
+    Given {
         tex: &'static str,
         value: f64,
     },
@@ -53,9 +60,14 @@ pub enum Expr {
     Max(Box<Expr>, Box<Expr>),
 }
 
-/// A quantity leaf: symbol `tex`, value in SI units.
+/// A computed quantity leaf: symbol `tex`, value in SI units.
 pub fn var(tex: &'static str, value: f64) -> Expr {
     Expr::Var { tex, value }
+}
+
+/// A given parameter leaf: symbol `tex`, value in SI units as typed.
+pub fn given(tex: &'static str, value: f64) -> Expr {
+    Expr::Given { tex, value }
 }
 
 /// An exact integer leaf.
@@ -155,7 +167,9 @@ impl Expr {
     pub fn eval(&self) -> f64 {
         match self {
             Expr::Int(n) => *n as f64,
-            Expr::Const { value, .. } | Expr::Var { value, .. } => *value,
+            Expr::Const { value, .. } | Expr::Var { value, .. } | Expr::Given { value, .. } => {
+                *value
+            }
             Expr::Add(a, b) => a.eval() + b.eval(),
             Expr::Sub(a, b) => a.eval() - b.eval(),
             Expr::Mul(a, b) => a.eval() * b.eval(),
@@ -185,8 +199,11 @@ impl Expr {
             Expr::Int(n) if *n < 0 => (n.to_string(), prec::NEGATIVE),
             Expr::Int(n) => (n.to_string(), prec::ATOM),
             Expr::Const { tex, .. } => ((*tex).to_string(), prec::ATOM),
-            Expr::Var { tex, .. } if mode == Mode::Symbols => ((*tex).to_string(), prec::ATOM),
-            Expr::Var { value, .. } => number(*value),
+            Expr::Var { tex, .. } | Expr::Given { tex, .. } if mode == Mode::Symbols => {
+                ((*tex).to_string(), prec::ATOM)
+            }
+            Expr::Var { value, .. } => number(*value, false),
+            Expr::Given { value, .. } => number(*value, true),
             Expr::Add(a, b) => (
                 format!(
                     "{} + {}",
@@ -265,9 +282,9 @@ fn paren(tex: &str) -> String {
     format!(r"\left({tex}\right)")
 }
 
-/// A number in LaTeX to [`DIGITS`] significant figures, without trailing zeros, and its binding
-/// strength; "undefined" for a non-finite value.
-fn number(x: f64) -> (String, u8) {
+/// A number in LaTeX to [`DIGITS`] significant figures (trailing zeros dropped when `as_typed`)
+/// and its binding strength; "undefined" for a non-finite value.
+fn number(x: f64, as_typed: bool) -> (String, u8) {
     if !x.is_finite() {
         return (r"\text{undefined}".to_string(), prec::ATOM);
     }
@@ -276,7 +293,7 @@ fn number(x: f64) -> (String, u8) {
         Some((m, e)) => (m, Some(e)),
         None => (text.as_str(), None),
     };
-    let mantissa = if mantissa.contains('.') {
+    let mantissa = if as_typed && mantissa.contains('.') {
         mantissa.trim_end_matches('0').trim_end_matches('.')
     } else {
         mantissa
@@ -295,9 +312,9 @@ fn number(x: f64) -> (String, u8) {
     (tex, p)
 }
 
-/// `x` in LaTeX to [`DIGITS`] significant figures (trailing zeros dropped).
+/// `x` in LaTeX to [`DIGITS`] significant figures.
 pub fn number_tex(x: f64) -> String {
-    number(x).0
+    number(x, false).0
 }
 
 #[cfg(test)]
@@ -314,7 +331,7 @@ mod tests {
 
     #[test]
     fn parentheses_where_numbers_need_them() {
-        let u = var(r"u_d^{(-)}", -0.36);
+        let u = given(r"u_d^{(-)}", -0.36);
         assert_eq!(
             (int(2) * u.clone()).numbers(),
             r"2 \times \left(-0.36\right)"
@@ -337,8 +354,9 @@ mod tests {
             r"\left(\frac{a}{b}\right)^{2}"
         );
         assert_eq!((int(2) * int(3)).symbols(), r"2 \times 3");
-        assert_eq!(var("k", 45.0).numbers(), "45");
-        assert_eq!(var("g", 9.81).numbers(), "9.81");
+        assert_eq!(given("k", 45.0).numbers(), "45");
+        assert_eq!(given("g", 9.81).numbers(), "9.81");
+        assert_eq!(var("T", 0.154_98).numbers(), "0.1550");
         assert_eq!(var("y", f64::NAN).numbers(), r"\text{undefined}");
     }
 

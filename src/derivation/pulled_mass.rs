@@ -2,7 +2,7 @@
 //! closed form of the linearized law in the order of a derivation. Values come from
 //! [`crate::formula::pulled_mass`]; which forms apply, from [`crate::results::pulled_mass`].
 
-use super::expr::{half, int, pi, pow, pow_ratio, sqrt, var, Expr};
+use super::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
 use super::{Step, Steps};
 use crate::formula::pulled_mass as cf;
 use crate::params::PulledMassParams;
@@ -28,12 +28,12 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
     let notes = applicability(&c);
     let mut s = Steps::new(PULLED_MASS, PARAMS, &notes);
     let (m, g, k, f) = (
-        var("m", p.mass),
-        var("g", p.g),
-        var("k", p.k),
-        var("F", p.force),
+        given("m", p.mass),
+        given("g", p.g),
+        given("k", p.k),
+        given("F", p.force),
     );
-    let (mu_s, mu_d) = (var(r"\mu_s", p.mu_s), var(r"\mu_d", p.mu_d));
+    let (mu_s, mu_d) = (given(r"\mu_s", p.mu_s), given(r"\mu_d", p.mu_d));
     let d = || big_d(&mu_s, &mu_d);
 
     let w = s.push("W", "W", m.clone() * g.clone(), Some(p.weight()));

@@ -263,7 +263,7 @@ fn fig15_phases_read_with_the_papers_symbols() {
         r"d_0 \frac{2}{\pi} \arcsin\left(\frac{z_0}{d_0}\right)"
     );
     assert_eq!(step("lambda").substituted, r"\frac{0.016}{0.007}");
-    assert_eq!(step("T").substituted, r"\frac{2 \pi}{37.8}");
+    assert_eq!(step("T").substituted, r"\frac{2 \pi}{37.80}");
 }
 
 #[test]

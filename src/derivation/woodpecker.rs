@@ -3,7 +3,7 @@
 //! by the swap u^(−) ↔ u^(+), η ↔ η'), and the whole period. Values come from
 //! [`crate::formula::woodpecker`]; which forms apply, from [`crate::results::woodpecker`].
 
-use super::expr::{arcsin, int, max, pi, pow, sqrt, var, Expr};
+use super::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
 use super::{Step, Steps};
 use crate::formula::woodpecker::{self as cf, Counterpart, Groups, PhaseClosedForm};
 use crate::params::{OmegaMode, WoodpeckerParams};
@@ -116,10 +116,10 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
     let note = domain_note(p, &c);
     let notes = applicability(&c, note.as_deref());
     let mut s = Steps::new(WOODPECKER, PARAMS, &notes);
-    let (g, k) = (var("g", p.g), var("k", p.k));
-    let (m_s, m_w) = (var("m_S", p.m_sleeve), var("m_W", p.m_bird));
-    let (z0, d0) = (var("z_0", p.z0), var("d_0", p.d0));
-    let (mu_s, mu_d) = (var(r"\mu_s", p.mu_s), var(r"\mu_d", p.mu_d));
+    let (g, k) = (given("g", p.g), given("k", p.k));
+    let (m_s, m_w) = (given("m_S", p.m_sleeve), given("m_W", p.m_bird));
+    let (z0, d0) = (given("z_0", p.z0), given("d_0", p.d0));
+    let (mu_s, mu_d) = (given(r"\mu_s", p.mu_s), given(r"\mu_d", p.mu_d));
 
     let w_s = s.push(
         "W_S",
@@ -138,10 +138,10 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
         None => s.push(
             "lambda",
             r"\lambda",
-            var("l", p.l) / var("h", p.h),
+            given("l", p.l) / given("h", p.h),
             Some(p.lambda()),
         ),
-        Some(given) => var(r"\lambda", given),
+        Some(lever) => given(r"\lambda", lever),
     };
     let tau = s.push("tau_quarter", r"\tau", t / int(4), c.tau_quarter);
     let two_over_pi = || int(2) / pi();
