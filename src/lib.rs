@@ -30,3 +30,4 @@ pub mod report;
 pub mod results;
 pub mod solver;
 pub mod sweep;
+pub mod worksheet;

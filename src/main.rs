@@ -12,7 +12,7 @@ use clap::Parser;
 
 use stickslip::cli::{
     BenchArgs, Cli, Command, CommonArgs, EvalModel, PulledMassArgs, ReportArgs, SweepArgs,
-    SweepModel, WoodpeckerArgs,
+    SweepModel, WoodpeckerArgs, WorksheetArgs,
 };
 use stickslip::error::Error;
 use stickslip::params::{
@@ -24,9 +24,7 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
-            // One line: clap's first line names the flag and the problem.
-            let text = e.render().to_string();
-            eprintln!("{}", text.lines().next().unwrap_or("error: invalid usage"));
+            eprintln!("{}", one_line(&e.render().to_string()));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -44,6 +42,22 @@ fn main() -> ExitCode {
     }
 }
 
+/// clap's message on one line: the problem, the flags it names and the possible values, without
+/// the usage and help hints that follow a blank line.
+fn one_line(clap_message: &str) -> String {
+    let line = clap_message
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ");
+    if line.is_empty() {
+        "error: invalid usage".to_string()
+    } else {
+        line
+    }
+}
+
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Eval { model } => match model {
@@ -58,7 +72,30 @@ fn run(cli: Cli) -> Result<()> {
         } => claims(seed, samples, &model),
         Command::Bench(args) => bench(&args),
         Command::Sweep { model } => sweep(&model),
+        Command::Worksheet(args) => worksheet(&args),
     }
+}
+
+/// `stickslip worksheet`: every sheet and the key are rendered before anything is written.
+fn worksheet(args: &WorksheetArgs) -> Result<()> {
+    let request = stickslip::worksheet::Request {
+        model: args.model,
+        students: args.students,
+        seed: args.seed,
+        regime: args.regime.clone(),
+        questions: args.questions.clone(),
+    };
+    let sheets = stickslip::worksheet::generate(&request)?;
+    let files = stickslip::worksheet::render(&sheets, &args.format)?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} students ({}, regime {}) to {}\n",
+        written.len(),
+        sheets.students.len(),
+        args.model.id(),
+        sheets.regime,
+        args.out.display()
+    ))
 }
 
 /// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
