@@ -181,8 +181,6 @@ fn measured(
     step: &str,
     check: &str,
 ) -> Option<Answer> {
-    let step = applying(steps, step)?;
-    let value = step.value?;
     let check = evaluated
         .checks
         .iter()
@@ -190,6 +188,13 @@ fn measured(
     let CheckValue::Number(numeric) = check.numeric else {
         return None;
     };
+    confirmed(question, applying(steps, step)?, numeric)
+}
+
+/// The answer of a closed form `step` and the integration's `numeric` value of it, when they
+/// agree within [`TOLERANCE`].
+fn confirmed(question: &'static Question, step: &Step, numeric: f64) -> Option<Answer> {
+    let value = step.value?;
     let rel = rel_error(value, numeric);
     (rel <= TOLERANCE).then(|| Answer {
         question,
@@ -260,25 +265,10 @@ fn threshold(
     p: &WoodpeckerParams,
     step: &str,
 ) -> Result<Option<Answer>> {
-    let Some(step) = applying(steps, step) else {
+    let Some((step, value)) = applying(steps, step).and_then(|s| Some((s, s.value?))) else {
         return Ok(None);
     };
-    let Some(value) = step.value else {
-        return Ok(None);
-    };
-    let Some(numeric) = mu_d_sticking_at_half_period(p, value)? else {
-        return Ok(None);
-    };
-    let rel = rel_error(value, numeric);
-    Ok((rel <= TOLERANCE).then(|| Answer {
-        question,
-        value: Value::Number(value),
-        step: Some(step.clone()),
-        numeric: Value::Number(numeric),
-        rel_error: Some(rel),
-        tolerance: None,
-        comparisons: Vec::new(),
-    }))
+    Ok(mu_d_sticking_at_half_period(p, value)?.and_then(|n| confirmed(question, step, n)))
 }
 
 /// Whether the first slip from rest of the linearized sleeve with dynamic coefficient `mu_d`
