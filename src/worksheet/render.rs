@@ -120,7 +120,6 @@ struct ParamCtx {
 #[derive(Clone, Debug, Serialize)]
 struct QuestionCtx {
     number: usize,
-    key: &'static str,
     prompt: &'static str,
     /// The answer line: `symbol =` (empty for the regime).
     symbol: Option<Math>,
@@ -157,7 +156,6 @@ struct AnswerCtx {
     rel_error: String,
     /// Reading tolerance (figure question), empty otherwise.
     tolerance: String,
-    equation: &'static str,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -192,7 +190,6 @@ fn questions_ctx(model: ModelName, questions: &[&Question]) -> Vec<QuestionCtx> 
         .enumerate()
         .map(|(i, q)| QuestionCtx {
             number: i + 1,
-            key: q.key,
             prompt: q.prompt,
             symbol: (!q.symbol.is_empty()).then(|| math(q.symbol)),
             unit: q.unit,
@@ -265,7 +262,6 @@ fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
         tolerance: a
             .tolerance
             .map_or(String::new(), |t| with_unit(sig(Some(t), 2), q.unit)),
-        equation: a.step.as_ref().map_or("", |s| s.equation),
     }
 }
 
