@@ -5,29 +5,19 @@
 
 use serde::Serialize;
 
+use super::figure::v_figure;
 use super::question::{Kind, Question};
 use super::sample::Case;
+use super::threshold::mu_d_sticking_at_half_period;
 use crate::derivation::{self, Step};
-use crate::engine::{integrate, EventKind, Run, RunOptions};
-use crate::error::{Error, Result};
-use crate::model::{woodpecker as wp_model, LawKind};
+use crate::engine::Run;
+use crate::error::Result;
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
-use crate::report::figures::chart::line_chart;
-use crate::report::figures::spec::{LineChart, Panel, Stroke};
-use crate::report::scene::sampling::{curve, sample};
 use crate::results::{pulled_mass, woodpecker, Check, CheckValue, TOLERANCE};
 
-/// Points of the v(t) figure over its two periods (event times are added).
-const FIGURE_SAMPLES: usize = 2000;
-/// Periods shown in the figure.
-const FIGURE_PERIODS: f64 = 2.0;
-/// Fine grid lines of the figure: about this many over the plotted speed range.
-const FINE_LINES: f64 = 20.0;
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
 /// (not so when the speed grows far beyond the first maximum, as in continuous slip).
 const READABLE: f64 = 0.05;
-/// Relative bracket around μd,MIN for the search on the integration.
-const BRACKET: f64 = 1e-3;
 
 /// A value of an answer: a number (SI) or a name (the regime).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -269,114 +259,4 @@ fn threshold(
         return Ok(None);
     };
     Ok(mu_d_sticking_at_half_period(p, value)?.and_then(|n| confirmed(question, step, n)))
-}
-
-/// Whether the first slip from rest of the linearized sleeve with dynamic coefficient `mu_d`
-/// sticks by T/2; `None` when the slip starts at t = 0 or the set is invalid.
-pub fn sticks_by_half_period(p: &WoodpeckerParams, mu_d: f64) -> Result<Option<bool>> {
-    let q = WoodpeckerParams { mu_d, ..*p };
-    if q.validate().is_err() {
-        return Ok(None);
-    }
-    let opts = RunOptions {
-        periods: 1,
-        record_segments: false,
-    };
-    let run = integrate(
-        &wp_model::body(&q),
-        &wp_model::force_law(&q, LawKind::Linear)?,
-        &opts,
-    )?;
-    if run.immediate_slip {
-        return Ok(None);
-    }
-    let stick = run
-        .events
-        .iter()
-        .find(|e| matches!(e.kind, EventKind::Stick { .. }));
-    Ok(Some(stick.is_some_and(|e| e.t <= 0.5 * run.period)))
-}
-
-/// The μd near `guess` at which the phase-I slip from rest sticks exactly at T/2, by bisection
-/// on the exact integration; `None` when no bracket of ±[`BRACKET`] around `guess` (within
-/// 0 < μd ≤ μs) changes the outcome.
-fn mu_d_sticking_at_half_period(p: &WoodpeckerParams, guess: f64) -> Result<Option<f64>> {
-    let (mut lo, mut hi) = (
-        guess * (1.0 - BRACKET),
-        (guess * (1.0 + BRACKET)).min(p.mu_s),
-    );
-    if sticks_by_half_period(p, lo)? != Some(false) || sticks_by_half_period(p, hi)? != Some(true) {
-        return Ok(None);
-    }
-    loop {
-        let mid = 0.5 * (lo + hi);
-        if mid <= lo || mid >= hi {
-            return Ok(Some(mid));
-        }
-        match sticks_by_half_period(p, mid)? {
-            Some(true) => hi = mid,
-            Some(false) => lo = mid,
-            None => return Ok(None),
-        }
-    }
-}
-
-/// A round spacing (1, 2 or 5 × 10ⁿ) that cuts `range` into about [`FINE_LINES`] parts.
-fn fine_spacing(range: f64) -> f64 {
-    let raw = range / FINE_LINES;
-    let decade = 10f64.powf(raw.log10().floor());
-    let step = [1.0, 2.0, 5.0, 10.0]
-        .into_iter()
-        .find(|m| m * decade >= raw)
-        .unwrap_or(10.0);
-    step * decade
-}
-
-/// v(t) of the linearized law over two periods from rest, on graph paper: a fine horizontal
-/// grid whose spacing (m/s) is returned; the reading tolerance is half of it.
-fn v_figure(run: &Run) -> Result<(String, f64)> {
-    let t1 = FIGURE_PERIODS * run.period;
-    let samples = sample(run, 0.0, t1, FIGURE_SAMPLES);
-    let top = samples.iter().fold(0.0_f64, |top, s| top.max(s[2]));
-    let figure_error = |reason: String| Error::Figure {
-        id: "worksheet v(t)".to_string(),
-        reason,
-    };
-    if !(top.is_finite() && top > 0.0) {
-        return Err(figure_error(format!(
-            "no motion to plot (largest speed {top} m/s)"
-        )));
-    }
-    let spacing = fine_spacing(top);
-    let lines = (1..)
-        .map(|k| f64::from(k) * spacing)
-        .take_while(|&y| y <= top)
-        .map(|y| (y, String::new()))
-        .collect();
-    let chart = LineChart {
-        x_label: "t (s)".to_string(),
-        x_range: Some((0.0, t1)),
-        panels: vec![Panel {
-            y_label: "v (m/s)".to_string(),
-            // No legend: the only curve is the student's.
-            curves: vec![curve("", &samples, 2, 1.0, 0, Stroke::Solid)],
-            h_lines: lines,
-        }],
-        markers: Vec::new(),
-    };
-    let svg = line_chart(&chart).map_err(|e| figure_error(e.to_string()))?;
-    Ok((svg, spacing))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fine_grid_spacing_is_round_and_about_a_twentieth() {
-        for (range, spacing) in [(0.113, 0.01), (0.031, 0.002), (1.0, 0.05), (0.23, 0.02)] {
-            let got = fine_spacing(range);
-            assert!((got - spacing).abs() < 1e-12 * spacing, "{range}: {got}");
-        }
-    }
 }

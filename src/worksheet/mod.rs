@@ -12,9 +12,12 @@
 //! the same whatever the number of threads.
 
 pub mod answer;
+pub mod figure;
+pub mod json;
 pub mod question;
 pub mod render;
 pub mod sample;
+pub mod threshold;
 
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};

@@ -1,6 +1,7 @@
 //! Rendering the worksheets: template contexts of already formatted strings and MathML, the
 //! tera pages (worksheets and answer key, HTML and Markdown), the v(t) figures as files for
-//! Markdown, and answer-key.json. Pure: everything in memory; the caller writes the files.
+//! Markdown, and answer-key.json ([`super::json`]). Pure: everything in memory; the caller
+//! writes the files.
 
 use std::path::PathBuf;
 
@@ -8,6 +9,7 @@ use serde::Serialize;
 use tera::Tera;
 
 use super::answer::{Answer, Comparison, Value};
+use super::json::key_json;
 use super::question::{self, Kind, Question};
 use super::sample::Case;
 use super::{Student, Worksheets};
@@ -276,108 +278,6 @@ fn key_ctx(s: &Student) -> KeyCtx {
             .map(|(i, a)| answer_ctx(i, a))
             .collect(),
     }
-}
-
-// ---------------------------------------------------------------------------------------------
-// answer-key.json
-
-#[derive(Serialize)]
-struct KeyJson<'a> {
-    model: &'static str,
-    seed: u64,
-    regime: &'static str,
-    questions: Vec<&'static str>,
-    students: Vec<StudentJson<'a>>,
-}
-
-#[derive(Serialize)]
-struct StudentJson<'a> {
-    student: u32,
-    /// Regime of the closed forms (§1.5, §3.6).
-    regime: &'static str,
-    /// The scenario keys of the `[params]` table (SI).
-    params: serde_json::Value,
-    answers: Vec<AnswerJson<'a>>,
-}
-
-#[derive(Serialize)]
-struct AnswerJson<'a> {
-    key: &'static str,
-    /// Closed-form value (SI) or regime id.
-    value: &'a Value,
-    unit: &'static str,
-    /// The exact integration's value (SI) or integrated regime.
-    numeric: &'a Value,
-    rel_error: Option<f64>,
-    /// Reading tolerance of the figure question (SI).
-    tolerance: Option<f64>,
-    equation: Option<&'static str>,
-    formula: Option<&'a str>,
-    substituted: Option<&'a str>,
-    /// The values the regime inequalities compare.
-    comparisons: &'a [Comparison],
-}
-
-/// The parameters as a scenario's `[params]` table (the woodpecker's ω mode under `omega`).
-fn params_json(case: &Case) -> Result<serde_json::Value> {
-    let mut value = match case {
-        Case::PulledMass(p) => serde_json::to_value(p),
-        Case::Woodpecker(p) => serde_json::to_value(p),
-    }
-    .map_err(json_error)?;
-    if let Some(map) = value.as_object_mut() {
-        if let Some(mode) = map.remove("omega_mode") {
-            map.insert("omega".to_string(), mode);
-        }
-    }
-    Ok(value)
-}
-
-fn json_error(e: serde_json::Error) -> crate::error::Error {
-    crate::error::Error::Template {
-        name: "answer-key.json".to_string(),
-        reason: e.to_string(),
-    }
-}
-
-fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
-    let students = w
-        .students
-        .iter()
-        .map(|s| {
-            Ok(StudentJson {
-                student: s.number,
-                regime: s.case.regime(),
-                params: params_json(&s.case)?,
-                answers: s
-                    .answers
-                    .iter()
-                    .map(|a| AnswerJson {
-                        key: a.question.key,
-                        value: &a.value,
-                        unit: a.question.unit,
-                        numeric: &a.numeric,
-                        rel_error: a.rel_error,
-                        tolerance: a.tolerance,
-                        equation: a.step.as_ref().map(|s| s.equation),
-                        formula: a.step.as_ref().map(|s| s.formula.as_str()),
-                        substituted: a.step.as_ref().map(|s| s.substituted.as_str()),
-                        comparisons: &a.comparisons,
-                    })
-                    .collect(),
-            })
-        })
-        .collect::<Result<Vec<_>>>()?;
-    let json = KeyJson {
-        model: w.model.id(),
-        seed: w.seed,
-        regime: w.regime,
-        questions: w.questions.iter().map(|q| q.key).collect(),
-        students,
-    };
-    let mut bytes = serde_json::to_vec_pretty(&json).map_err(json_error)?;
-    bytes.push(b'\n');
-    Ok(bytes)
 }
 
 // ---------------------------------------------------------------------------------------------
