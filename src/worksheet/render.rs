@@ -52,9 +52,10 @@ fn intro(model: ModelName) -> &'static str {
     match model {
         ModelName::PulledMass => {
             "A block of mass m lies on a table and is pulled by a constant horizontal force F. \
-             An equal mass hangs below it on a spring of constant k and presses it down with the \
-             normal force N(t), maximal at t = 0. Use the linearized (triangle-wave) law of the \
-             paper, N = 2W(1 − 2t/T) for the first half period. At t = 0 the block is at rest."
+             An equal mass hangs below it on a spring of constant k, moves with it (inertial \
+             mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the linearized \
+             (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half period, \
+             W = mg. At t = 0 the block is at rest."
         }
         ModelName::Woodpecker => {
             "The sleeve of the woodpecker toy (mass m_S) slides down the pole while the bird \

@@ -56,7 +56,6 @@ fn pulled_mass(regime: &str, rng: &mut StdRng) -> PulledMassParams {
     let (lo, hi) = match regime {
         "slip_stick_late" => (stick, cont),
         "continuous_slip" => (cont, 2.0 * mu_s),
-        "immediate_continuous_slip" => (2.0 * mu_s, 3.0 * mu_s),
         _ => (0.3 * stick, stick),
     };
     let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);
