@@ -8,7 +8,7 @@ use clap::{Args, Parser, Subcommand};
 use crate::fit::data::{Columns, Unit};
 use crate::fit::FitParam;
 use crate::formula::woodpecker::Counterpart;
-use crate::params::OmegaMode;
+use crate::params::{ModelName, OmegaMode};
 use crate::report::Format;
 
 /// Stick-slip models of a physics paper: closed forms checked against exact integration.
@@ -55,6 +55,10 @@ pub enum Command {
     /// z0, d0 (optionally μs, k) by Levenberg–Marquardt, with standard errors, residuals and
     /// the overlay figure (fit.json, fit.csv, fit.svg in --out).
     Fit(FitArgs),
+    /// Exercise sheets, one per student with its own parameter set in the requested regime, and
+    /// the answer key: every answer worked out from the closed forms and confirmed by the exact
+    /// integration (worksheets.*, answer-key.*, answer-key.json in --out).
+    Worksheet(WorksheetArgs),
 }
 
 /// Options of `stickslip fit`; the woodpecker flags and `--scenario` give the fixed values and
@@ -80,6 +84,34 @@ pub struct FitArgs {
     pub out: PathBuf,
     #[command(flatten)]
     pub model: WoodpeckerArgs,
+}
+
+/// Options of `stickslip worksheet`.
+#[derive(Debug, Args)]
+pub struct WorksheetArgs {
+    /// Model of the exercises.
+    #[arg(long, value_enum)]
+    pub model: ModelName,
+    /// Students, one sheet each (1 to 500).
+    #[arg(long, default_value_t = 30,
+          value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::worksheet::MAX_STUDENTS)))]
+    pub students: u32,
+    /// Seed of the parameter draw: the same seed gives the same sheets.
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Regime of every student's case [default: slip_stick for the pulled mass,
+    /// double_slip_stick for the woodpecker].
+    #[arg(long, value_name = "REGIME")]
+    pub regime: Option<String>,
+    /// Questions, comma-separated keys [default: every question that the regime allows].
+    #[arg(long, value_delimiter = ',', value_name = "KEYS")]
+    pub questions: Option<Vec<String>>,
+    /// Output folder.
+    #[arg(long, default_value = "worksheets")]
+    pub out: PathBuf,
+    /// Formats, comma-separated (answer-key.json is always written).
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
+    pub format: Vec<Format>,
 }
 
 /// The grid of `stickslip sweep`.

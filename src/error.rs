@@ -29,6 +29,19 @@ pub enum Error {
     /// An output file or folder that cannot be written.
     #[error("cannot write {path}: {reason}")]
     Output { path: String, reason: String },
+    /// A choice outside the valid values of a command-line option.
+    #[error("invalid value '{value}' for {flag}: {valid}")]
+    InvalidChoice {
+        flag: &'static str,
+        value: String,
+        valid: String,
+    },
+    /// No drawn parameter set was in the requested regime with every question answerable.
+    #[error(
+        "no parameter set in regime {regime} answers every question after {attempts} draws: \
+         ask fewer questions (--questions) or another --regime"
+    )]
+    Unreachable { regime: String, attempts: u32 },
     /// A scenario file that cannot be read or parsed.
     #[error("scenario {path}: {reason}")]
     Scenario { path: String, reason: String },

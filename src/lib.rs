@@ -18,6 +18,7 @@
 pub mod bench;
 pub mod claims;
 pub mod cli;
+pub mod derivation;
 pub mod engine;
 pub mod error;
 pub mod export;
@@ -30,3 +31,4 @@ pub mod report;
 pub mod results;
 pub mod solver;
 pub mod sweep;
+pub mod worksheet;

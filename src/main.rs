@@ -13,7 +13,7 @@ use clap::Parser;
 
 use stickslip::cli::{
     BenchArgs, Cli, Command, CommonArgs, EvalModel, FitArgs, PulledMassArgs, ReportArgs, SweepArgs,
-    SweepModel, WoodpeckerArgs,
+    SweepModel, WoodpeckerArgs, WorksheetArgs,
 };
 use stickslip::error::Error;
 use stickslip::params::{
@@ -25,9 +25,7 @@ fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
-            // One line: clap's first line names the flag and the problem.
-            let text = e.render().to_string();
-            eprintln!("{}", text.lines().next().unwrap_or("error: invalid usage"));
+            eprintln!("{}", one_line(&e.render().to_string()));
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -48,6 +46,22 @@ fn main() -> ExitCode {
     }
 }
 
+/// clap's message on one line: the problem, the flags it names and the possible values, without
+/// the usage and help hints that follow a blank line.
+fn one_line(clap_message: &str) -> String {
+    let line = clap_message
+        .lines()
+        .take_while(|l| !l.trim().is_empty())
+        .map(str::trim)
+        .collect::<Vec<_>>()
+        .join(" ");
+    if line.is_empty() {
+        "error: invalid usage".to_string()
+    } else {
+        line
+    }
+}
+
 fn run(cli: Cli) -> Result<()> {
     match cli.command {
         Command::Eval { model } => match model {
@@ -63,6 +77,7 @@ fn run(cli: Cli) -> Result<()> {
         Command::Bench(args) => bench(&args),
         Command::Sweep { model } => sweep(&model),
         Command::Fit(args) => fit(&args),
+        Command::Worksheet(args) => worksheet(&args),
     }
 }
 
@@ -96,6 +111,28 @@ fn fit(args: &FitArgs) -> Result<()> {
         .into());
     }
     Ok(())
+}
+
+/// `stickslip worksheet`: every sheet and the key are rendered before anything is written.
+fn worksheet(args: &WorksheetArgs) -> Result<()> {
+    let request = stickslip::worksheet::Request {
+        model: args.model,
+        students: args.students,
+        seed: args.seed,
+        regime: args.regime.clone(),
+        questions: args.questions.clone(),
+    };
+    let sheets = stickslip::worksheet::generate(&request)?;
+    let files = stickslip::worksheet::render(&sheets, &args.format)?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} students ({}, regime {}) to {}\n",
+        written.len(),
+        sheets.students.len(),
+        args.model.id(),
+        sheets.regime,
+        args.out.display()
+    ))
 }
 
 /// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.

@@ -255,10 +255,12 @@ pub fn positive(name: &'static str, value: f64) -> Result<()> {
 }
 
 /// Which model a scenario describes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "kebab-case")]
 pub enum ModelName {
+    /// The pulled mass (paper Sec. 2).
     PulledMass,
+    /// The falling woodpecker (paper Sec. 3).
     Woodpecker,
 }
 

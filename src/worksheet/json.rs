@@ -1,0 +1,111 @@
+//! answer-key.json: the key for scripts, per student the parameters as a scenario's `[params]`
+//! table (so that they load back into the parameter structs), the regime and every answer in SI
+//! units beside the exact integration's value.
+
+use serde::Serialize;
+
+use super::answer::{Comparison, Value};
+use super::sample::Case;
+use super::Worksheets;
+use crate::error::{Error, Result};
+
+#[derive(Serialize)]
+struct KeyJson<'a> {
+    model: &'static str,
+    seed: u64,
+    regime: &'static str,
+    questions: Vec<&'static str>,
+    students: Vec<StudentJson<'a>>,
+}
+
+#[derive(Serialize)]
+struct StudentJson<'a> {
+    student: u32,
+    /// Regime of the closed forms (§1.5, §3.6).
+    regime: &'static str,
+    /// The scenario keys of the `[params]` table (SI).
+    params: serde_json::Value,
+    answers: Vec<AnswerJson<'a>>,
+}
+
+#[derive(Serialize)]
+struct AnswerJson<'a> {
+    key: &'static str,
+    /// Closed-form value (SI) or regime id.
+    value: &'a Value,
+    unit: &'static str,
+    /// The exact integration's value (SI) or integrated regime.
+    numeric: &'a Value,
+    rel_error: Option<f64>,
+    /// Reading tolerance of the figure question (SI).
+    tolerance: Option<f64>,
+    equation: Option<&'static str>,
+    formula: Option<&'a str>,
+    substituted: Option<&'a str>,
+    /// The values the regime inequalities compare.
+    comparisons: &'a [Comparison],
+}
+
+/// The parameters as a scenario's `[params]` table (the woodpecker's ω mode under `omega`).
+fn params_json(case: &Case) -> Result<serde_json::Value> {
+    let mut value = match case {
+        Case::PulledMass(p) => serde_json::to_value(p),
+        Case::Woodpecker(p) => serde_json::to_value(p),
+    }
+    .map_err(json_error)?;
+    if let Some(map) = value.as_object_mut() {
+        if let Some(mode) = map.remove("omega_mode") {
+            map.insert("omega".to_string(), mode);
+        }
+    }
+    Ok(value)
+}
+
+fn json_error(e: serde_json::Error) -> Error {
+    Error::Template {
+        name: "answer-key.json".to_string(),
+        reason: e.to_string(),
+    }
+}
+
+/// answer-key.json: per student the parameters (a scenario's `[params]` table), the regime,
+/// and each answer with its value, unit, the integration's value and the worked step.
+pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
+    let students = w
+        .students
+        .iter()
+        .map(|s| {
+            Ok(StudentJson {
+                student: s.number,
+                regime: s.case.regime(),
+                params: params_json(&s.case)?,
+                answers: s
+                    .answers
+                    .iter()
+                    .map(|a| AnswerJson {
+                        key: a.question.key,
+                        value: &a.value,
+                        unit: a.question.unit,
+                        numeric: &a.numeric,
+                        rel_error: a.rel_error,
+                        tolerance: a.tolerance,
+                        equation: a.step.as_ref().map(|s| s.equation),
+                        formula: a.step.as_ref().map(|s| s.formula.as_str()),
+                        substituted: a.step.as_ref().map(|s| s.substituted.as_str()),
+                        comparisons: &a.comparisons,
+                    })
+                    .collect(),
+            })
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let json = KeyJson {
+        model: w.model.id(),
+        seed: w.seed,
+        regime: w.regime,
+        questions: w.questions.iter().map(|q| q.key).collect(),
+        students,
+    };
+    let mut bytes = serde_json::to_vec_pretty(&json).map_err(json_error)?;
+    bytes.push(b'\n');
+    Ok(bytes)
+}

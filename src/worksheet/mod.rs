@@ -1,0 +1,277 @@
+//! `stickslip worksheet`: one exercise sheet per student, each with its own parameter set in
+//! the regime the teacher asks for, and an answer key that works every answer out from the
+//! closed forms and confirms it with the exact integration of the linearized law.
+//!
+//! ```text
+//! request (model, regime, questions, seed) → per student: draw (seeded) → round to 3 s.f.
+//!     → regime of the rounded set? closed forms apply? → answers confirmed by the integration?
+//!     (else draw again, at most MAX_ATTEMPTS times) → render (sheets, key, JSON)
+//! ```
+//!
+//! Every student has a generator of its own, seeded from the request's seed, so the sheets are
+//! the same whatever the number of threads.
+
+pub mod answer;
+pub mod figure;
+pub mod json;
+pub mod question;
+pub mod render;
+pub mod sample;
+pub mod threshold;
+
+use rand::rngs::StdRng;
+use rand::{Rng, SeedableRng};
+use rayon::prelude::*;
+
+pub use answer::{Answer, Comparison, Value};
+pub use question::{Kind, Question};
+pub use render::render;
+pub use sample::Case;
+
+use crate::error::{Error, Result};
+use crate::params::ModelName;
+
+/// Draws per student before giving up on the requested regime and questions.
+pub const MAX_ATTEMPTS: u32 = 20_000;
+/// Largest number of students (one sheet each).
+pub const MAX_STUDENTS: u32 = 500;
+
+/// What the teacher asks for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Request {
+    pub model: ModelName,
+    pub students: u32,
+    pub seed: u64,
+    /// A regime id of [`question::regimes`]; `None`: the model's standard regime.
+    pub regime: Option<String>,
+    /// Question keys of [`question::catalogue`]; `None`: every question that can be answered
+    /// in the regime.
+    pub questions: Option<Vec<String>>,
+}
+
+/// One student's sheet and key.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Student {
+    /// 1-based.
+    pub number: u32,
+    pub case: Case,
+    pub answers: Vec<Answer>,
+    /// SVG of v(t), when a question reads it.
+    pub figure: Option<String>,
+}
+
+/// The whole set: the request resolved, and every student.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Worksheets {
+    pub model: ModelName,
+    pub seed: u64,
+    pub regime: &'static str,
+    pub questions: Vec<&'static Question>,
+    pub students: Vec<Student>,
+}
+
+/// The regime and the questions of `req`, checked against the model's catalogue.
+pub fn resolve(req: &Request) -> Result<(&'static str, Vec<&'static Question>)> {
+    let regimes = question::regimes(req.model);
+    let regime = match &req.regime {
+        None => regimes[0],
+        Some(r) => {
+            regimes
+                .iter()
+                .copied()
+                .find(|id| id == r)
+                .ok_or_else(|| Error::InvalidChoice {
+                    flag: "--regime",
+                    value: r.clone(),
+                    valid: format!(
+                        "valid values for {} are {}",
+                        req.model.id(),
+                        regimes.join(", ")
+                    ),
+                })?
+        }
+    };
+    let catalogue = question::catalogue(req.model);
+    let in_regime: Vec<&'static Question> = catalogue
+        .iter()
+        .filter(|q| q.regimes.contains(&regime))
+        .collect();
+    let Some(keys) = &req.questions else {
+        return Ok((regime, in_regime));
+    };
+    for key in keys {
+        let valid = if catalogue.iter().any(|q| q.key == key) {
+            if in_regime.iter().any(|q| q.key == key) {
+                continue;
+            }
+            format!(
+                "in regime {regime} the valid values are {}",
+                names(&in_regime)
+            )
+        } else {
+            let all: Vec<&Question> = catalogue.iter().collect();
+            format!("valid values for {} are {}", req.model.id(), names(&all))
+        };
+        return Err(Error::InvalidChoice {
+            flag: "--questions",
+            value: key.clone(),
+            valid,
+        });
+    }
+    // Sheet order, each question once.
+    Ok((
+        regime,
+        in_regime
+            .into_iter()
+            .filter(|q| keys.iter().any(|k| k == q.key))
+            .collect(),
+    ))
+}
+
+fn names(questions: &[&Question]) -> String {
+    questions
+        .iter()
+        .map(|q| q.key)
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Draws, checks and answers every student's case.
+pub fn generate(req: &Request) -> Result<Worksheets> {
+    if !(1..=MAX_STUDENTS).contains(&req.students) {
+        return Err(crate::params::invalid(
+            "students",
+            req.students,
+            format!("1 <= students <= {MAX_STUDENTS}"),
+        ));
+    }
+    let (regime, questions) = resolve(req)?;
+    let mut master = StdRng::seed_from_u64(req.seed);
+    let seeds: Vec<(u32, u64)> = (1..=req.students).map(|n| (n, master.gen())).collect();
+    let students = seeds
+        .par_iter()
+        .map(|&(number, seed)| student(req.model, regime, &questions, number, seed, MAX_ATTEMPTS))
+        .collect::<Result<Vec<_>>>()?;
+    Ok(Worksheets {
+        model: req.model,
+        seed: req.seed,
+        regime,
+        questions,
+        students,
+    })
+}
+
+/// One student's case in `regime` whose every answer is confirmed, from at most `attempts`
+/// draws of the generator seeded with `seed`.
+pub fn student(
+    model: ModelName,
+    regime: &'static str,
+    questions: &[&'static Question],
+    number: u32,
+    seed: u64,
+    attempts: u32,
+) -> Result<Student> {
+    let mut rng = StdRng::seed_from_u64(seed);
+    for _ in 0..attempts {
+        let case = sample::draw(model, regime, &mut rng);
+        if case.regime() != regime {
+            continue;
+        }
+        let steps = answer::steps(&case);
+        if !answer::closed_forms_apply(&steps, questions) {
+            continue;
+        }
+        if let Some(a) = answer::answer(&case, &steps, questions)? {
+            return Ok(Student {
+                number,
+                case,
+                answers: a.answers,
+                figure: a.figure,
+            });
+        }
+    }
+    Err(Error::Unreachable {
+        regime: regime.to_string(),
+        attempts,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn request(model: ModelName, regime: Option<&str>, questions: Option<&[&str]>) -> Request {
+        Request {
+            model,
+            students: 1,
+            seed: 1,
+            regime: regime.map(str::to_string),
+            questions: questions.map(|q| q.iter().map(|k| k.to_string()).collect()),
+        }
+    }
+
+    fn keys(questions: &[&Question]) -> Vec<&'static str> {
+        questions.iter().map(|q| q.key).collect()
+    }
+
+    #[test]
+    fn defaults_are_the_standard_regime_and_every_question_it_allows() {
+        let (regime, qs) = resolve(&request(ModelName::PulledMass, None, None)).unwrap();
+        assert_eq!(regime, "slip_stick");
+        assert_eq!(qs.len(), question::PULLED_MASS.len());
+        let (regime, qs) = resolve(&request(ModelName::Woodpecker, None, None)).unwrap();
+        assert_eq!(regime, "double_slip_stick");
+        assert_eq!(qs.len(), question::WOODPECKER.len());
+        let late = request(ModelName::PulledMass, Some("slip_stick_late"), None);
+        let (_, qs) = resolve(&late).unwrap();
+        assert_eq!(keys(&qs), ["t_slip", "v_max", "regime", "read_v_max"]);
+    }
+
+    #[test]
+    fn choices_outside_the_catalogue_name_the_flag_and_the_valid_values() {
+        let err = resolve(&request(ModelName::Woodpecker, Some("no_slip"), None)).unwrap_err();
+        let msg = err.to_string();
+        assert!(
+            msg.contains("--regime") && msg.contains("single_slip_stick"),
+            "{msg}"
+        );
+        let late = request(
+            ModelName::PulledMass,
+            Some("slip_stick_late"),
+            Some(&["power"]),
+        );
+        let msg = resolve(&late).unwrap_err().to_string();
+        assert!(
+            msg.contains("--questions") && msg.contains("'power'"),
+            "{msg}"
+        );
+        assert!(msg.contains("in regime slip_stick_late"), "{msg}");
+        let mut zero = request(ModelName::PulledMass, None, None);
+        zero.students = 0;
+        assert!(generate(&zero)
+            .unwrap_err()
+            .to_string()
+            .contains("students"));
+    }
+
+    #[test]
+    fn a_regime_out_of_reach_of_the_draws_is_an_error_not_a_loop() {
+        let req = request(
+            ModelName::Woodpecker,
+            Some("single_slip_stick"),
+            Some(&["t_slip_1"]),
+        );
+        let (regime, qs) = resolve(&req).unwrap();
+        // About one draw in a thousand is single slip-stick with a phase-I slip from rest.
+        let err = student(ModelName::Woodpecker, regime, &qs, 1, 5, 3).unwrap_err();
+        assert_eq!(
+            err,
+            Error::Unreachable {
+                regime: "single_slip_stick".to_string(),
+                attempts: 3
+            }
+        );
+        assert!(err.to_string().contains("--regime"));
+        assert!(student(ModelName::Woodpecker, regime, &qs, 1, 5, MAX_ATTEMPTS).is_ok());
+    }
+}

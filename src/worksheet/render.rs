@@ -1,0 +1,371 @@
+//! Rendering the worksheets: template contexts of already formatted strings and MathML, the
+//! tera pages (worksheets and answer key, HTML and Markdown), the v(t) figures as files for
+//! Markdown, and answer-key.json ([`super::json`]). Pure: everything in memory; the caller
+//! writes the files.
+
+use std::path::PathBuf;
+
+use serde::Serialize;
+use tera::Tera;
+
+use super::answer::{Answer, Comparison, Value};
+use super::json::key_json;
+use super::question::{self, Kind, Question};
+use super::sample::Case;
+use super::{Student, Worksheets};
+use crate::error::Result;
+use crate::output::format::{rel, sig};
+use crate::params::ModelName;
+use crate::report::math::mathml;
+use crate::report::render::{markdown_cell, template_error};
+use crate::report::{Format, OutFile};
+
+const TEMPLATES: &[(&str, &str)] = &[
+    (
+        "worksheets.html",
+        include_str!("../../templates/worksheets.html.tera"),
+    ),
+    (
+        "answer-key.html",
+        include_str!("../../templates/answer-key.html.tera"),
+    ),
+    (
+        "worksheets.md",
+        include_str!("../../templates/worksheets.md.tera"),
+    ),
+    (
+        "answer-key.md",
+        include_str!("../../templates/answer-key.md.tera"),
+    ),
+];
+/// The report's stylesheet and the worksheet's additions (answer boxes, one student per page).
+const CSS: [&str; 2] = [
+    include_str!("../../templates/style.css"),
+    include_str!("../../templates/worksheet.css"),
+];
+/// Significant figures of the answers, and of the integration beside them in the key.
+const ANSWER_DIGITS: usize = 4;
+const NUMERIC_DIGITS: usize = 10;
+
+/// What the student is told about the model (the parameters follow in a table).
+fn intro(model: ModelName) -> &'static str {
+    match model {
+        ModelName::PulledMass => {
+            "A block of mass m lies on a table and is pulled by a constant horizontal force F. \
+             An equal mass hangs below it on a spring of constant k, moves with it (inertial \
+             mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the linearized \
+             (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half period, \
+             W = mg. At t = 0 the block is at rest."
+        }
+        ModelName::Woodpecker => {
+            "The sleeve of the woodpecker toy (mass m_S) slides down the pole while the bird \
+             (mass m_W) oscillates on the spring of constant k. Use the linearized (triangle-wave) \
+             law of the paper with the lever ratio λ = l/h, ω = √(k/m_W) and the counterpart \
+             ζ0 = d0, δ0 = d0 (2/π) arcsin(z0/d0). At t = 0 the sleeve is at rest."
+        }
+    }
+}
+
+fn title(model: ModelName) -> &'static str {
+    match model {
+        ModelName::PulledMass => "the pulled mass",
+        ModelName::Woodpecker => "the falling woodpecker",
+    }
+}
+
+/// (LaTeX symbol, value as typed, unit) of a case's parameters, in the order of the sheet.
+fn parameters(case: &Case) -> Vec<(&'static str, f64, &'static str)> {
+    match case {
+        Case::PulledMass(p) => vec![
+            (r"\mu_s", p.mu_s, ""),
+            (r"\mu_d", p.mu_d, ""),
+            ("m", p.mass, "kg"),
+            ("k", p.k, "N/m"),
+            ("F", p.force, "N"),
+            ("g", p.g, "m/s²"),
+        ],
+        Case::Woodpecker(p) => vec![
+            (r"\mu_s", p.mu_s, ""),
+            (r"\mu_d", p.mu_d, ""),
+            ("k", p.k, "N/m"),
+            ("m_S", p.m_sleeve, "kg"),
+            ("m_W", p.m_bird, "kg"),
+            ("l", p.l, "m"),
+            ("h", p.h, "m"),
+            ("z_0", p.z0, "m"),
+            ("d_0", p.d0, "m"),
+            ("g", p.g, "m/s²"),
+        ],
+    }
+}
+
+/// A formula for both formats: MathML for HTML, LaTeX for Markdown.
+#[derive(Clone, Debug, Serialize)]
+struct Math {
+    mathml: String,
+    tex: String,
+}
+
+fn math(tex: &str) -> Math {
+    Math {
+        mathml: mathml(tex),
+        tex: tex.to_string(),
+    }
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct ParamCtx {
+    symbol: Math,
+    value: String,
+    unit: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct QuestionCtx {
+    number: usize,
+    prompt: &'static str,
+    /// The answer line: `symbol =` (empty for the regime).
+    symbol: Option<Math>,
+    unit: &'static str,
+    /// The rules of the regimes (regime question only).
+    rules: Vec<RuleCtx>,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct RuleCtx {
+    regime: &'static str,
+    condition: Math,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct SheetCtx {
+    number: u32,
+    params: Vec<ParamCtx>,
+    /// Inline SVG for HTML, file path for Markdown; empty without a figure.
+    figure_svg: String,
+    figure_file: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct AnswerCtx {
+    number: usize,
+    prompt: &'static str,
+    /// `symbol = formula = numbers = result` (closed forms), or the values compared (regime).
+    worked: Option<Math>,
+    /// The answer to 4 significant figures with its unit, or the regime.
+    result: String,
+    /// The exact integration's value (10 significant figures) or regime.
+    numeric: String,
+    rel_error: String,
+    /// Reading tolerance (figure question), empty otherwise.
+    tolerance: String,
+}
+
+#[derive(Clone, Debug, Serialize)]
+struct KeyCtx {
+    number: u32,
+    params: Vec<ParamCtx>,
+    answers: Vec<AnswerCtx>,
+}
+
+fn with_unit(value: String, unit: &str) -> String {
+    if unit.is_empty() {
+        value
+    } else {
+        format!("{value} {unit}")
+    }
+}
+
+fn params_ctx(case: &Case) -> Vec<ParamCtx> {
+    parameters(case)
+        .into_iter()
+        .map(|(symbol, value, unit)| ParamCtx {
+            symbol: math(symbol),
+            value: value.to_string(),
+            unit: unit.to_string(),
+        })
+        .collect()
+}
+
+fn questions_ctx(model: ModelName, questions: &[&Question]) -> Vec<QuestionCtx> {
+    questions
+        .iter()
+        .enumerate()
+        .map(|(i, q)| QuestionCtx {
+            number: i + 1,
+            prompt: q.prompt,
+            symbol: (!q.symbol.is_empty()).then(|| math(q.symbol)),
+            unit: q.unit,
+            rules: match q.kind {
+                Kind::Regime => question::regime_rules(model)
+                    .iter()
+                    .map(|&(regime, condition)| RuleCtx {
+                        regime,
+                        condition: math(condition),
+                    })
+                    .collect(),
+                _ => Vec::new(),
+            },
+        })
+        .collect()
+}
+
+fn figure_file(number: u32) -> String {
+    format!("figures/student-{number:03}.svg")
+}
+
+fn sheet_ctx(s: &Student) -> SheetCtx {
+    SheetCtx {
+        number: s.number,
+        params: params_ctx(&s.case),
+        figure_svg: s.figure.clone().unwrap_or_default(),
+        figure_file: s
+            .figure
+            .as_ref()
+            .map(|_| figure_file(s.number))
+            .unwrap_or_default(),
+    }
+}
+
+fn number(v: &Value, digits: usize, unit: &str) -> String {
+    match v {
+        Value::Number(x) => with_unit(sig(Some(*x), digits), unit),
+        Value::Text(t) => t.clone(),
+    }
+}
+
+/// The values a regime inequality compares, in LaTeX.
+fn comparisons_tex(c: &[Comparison]) -> String {
+    c.iter()
+        .map(|c| {
+            format!(
+                "{} = {}",
+                c.symbol,
+                crate::derivation::expr::number_tex(c.value)
+            )
+        })
+        .collect::<Vec<_>>()
+        .join(r",\quad ")
+}
+
+fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
+    let q = a.question;
+    let worked = match (&a.step, q.kind) {
+        (_, Kind::Regime) => Some(math(&comparisons_tex(&a.comparisons))),
+        (Some(step), _) => Some(math(&step.worked_tex())),
+        (None, _) => None,
+    };
+    AnswerCtx {
+        number: i + 1,
+        prompt: q.prompt,
+        worked,
+        result: number(&a.value, ANSWER_DIGITS, q.unit),
+        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit),
+        rel_error: a.rel_error.map_or(String::new(), |e| rel(Some(e))),
+        tolerance: a
+            .tolerance
+            .map_or(String::new(), |t| with_unit(sig(Some(t), 2), q.unit)),
+    }
+}
+
+fn key_ctx(s: &Student) -> KeyCtx {
+    KeyCtx {
+        number: s.number,
+        params: params_ctx(&s.case),
+        answers: s
+            .answers
+            .iter()
+            .enumerate()
+            .map(|(i, a)| answer_ctx(i, a))
+            .collect(),
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Pages
+
+fn templates() -> Result<Tera> {
+    let mut tera = Tera::default();
+    tera.autoescape_on(vec![".html"]);
+    tera.register_filter("cell", markdown_cell);
+    tera.add_raw_templates(TEMPLATES.to_vec())
+        .map_err(|e| template_error("(worksheet)", &e))?;
+    Ok(tera)
+}
+
+/// The worksheet files in `formats` (HTML: worksheets.html, answer-key.html; Markdown:
+/// worksheets.md, answer-key.md, figures/*.svg) and answer-key.json.
+pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
+    let tera = templates()?;
+    let mut ctx = tera::Context::new();
+    ctx.insert("title", title(w.model));
+    ctx.insert("intro", intro(w.model));
+    ctx.insert("regime", w.regime);
+    ctx.insert("seed", &w.seed);
+    ctx.insert("count", &w.students.len());
+    ctx.insert("css", &CSS.concat());
+    ctx.insert("version", env!("CARGO_PKG_VERSION"));
+    ctx.insert("questions", &questions_ctx(w.model, &w.questions));
+    let sheets: Vec<SheetCtx> = w.students.iter().map(sheet_ctx).collect();
+    ctx.insert("sheets", &sheets);
+    let keys: Vec<KeyCtx> = w.students.iter().map(key_ctx).collect();
+    ctx.insert("keys", &keys);
+    let page = |name: &str| -> Result<OutFile> {
+        let text = tera
+            .render(name, &ctx)
+            .map_err(|e| template_error(name, &e))?;
+        Ok(OutFile {
+            path: PathBuf::from(name),
+            bytes: text.into_bytes(),
+        })
+    };
+    let mut files = Vec::new();
+    for format in formats {
+        let ext = match format {
+            Format::Html => "html",
+            Format::Md => "md",
+        };
+        files.push(page(&format!("worksheets.{ext}"))?);
+        files.push(page(&format!("answer-key.{ext}"))?);
+        if *format == Format::Md {
+            files.extend(w.students.iter().filter_map(|s| {
+                s.figure.as_ref().map(|svg| OutFile {
+                    path: PathBuf::from(figure_file(s.number)),
+                    bytes: svg.clone().into_bytes(),
+                })
+            }));
+        }
+    }
+    files.push(OutFile {
+        path: PathBuf::from("answer-key.json"),
+        bytes: key_json(w)?,
+    });
+    Ok(files)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::derivation::unit_tex;
+
+    #[test]
+    fn every_rule_and_question_symbol_renders_to_mathml() {
+        for model in [ModelName::PulledMass, ModelName::Woodpecker] {
+            let texts = question::regime_rules(model)
+                .iter()
+                .map(|r| r.1)
+                .chain(question::catalogue(model).iter().map(|q| q.symbol))
+                .filter(|t| !t.is_empty());
+            for tex in texts {
+                let m = mathml(tex);
+                assert!(
+                    m.starts_with("<math") && !m.contains("merror"),
+                    "{tex}: {m}"
+                );
+                // pulldown-latex escapes the entity of `\ ` twice: no such spaces.
+                assert!(!m.contains("&amp;"), "{tex}: {m}");
+            }
+        }
+        assert_eq!(unit_tex("m/s²").as_deref(), Some(r"\mathrm{m/s^{2}}"));
+    }
+}

@@ -1,0 +1,514 @@
+//! `stickslip worksheet` as a teacher runs it: every answer of answer-key.json checked against
+//! the engine from the parameters alone (closed forms, exact integration, regime, the μd,MIN
+//! threshold), three significant figures, reproducible sheets, one student per page, a subset
+//! of questions, every bad request refused (exit 2, one line, nothing written), and a snapshot
+//! of a small Markdown worksheet.
+
+use std::collections::BTreeMap;
+use std::fs;
+use std::path::Path;
+
+use assert_cmd::Command;
+use serde_json::Value;
+use stickslip::engine::{integrate, EventKind, RunOptions};
+use stickslip::model::{woodpecker as wp_model, LawKind};
+use stickslip::params::{PulledMassParams, WoodpeckerParams};
+use stickslip::results::{pulled_mass, woodpecker, CheckValue, Summary};
+
+/// Closed forms and integration agree to this (physics.md §4).
+const REL: f64 = 1e-9;
+
+fn stickslip() -> Command {
+    Command::cargo_bin("stickslip").unwrap()
+}
+
+/// Runs `stickslip worksheet ARGS --out DIR` and expects success.
+fn worksheet(dir: &Path, args: &[&str]) {
+    stickslip()
+        .arg("worksheet")
+        .args(args)
+        .arg("--out")
+        .arg(dir)
+        .assert()
+        .success();
+}
+
+fn read_json(dir: &Path) -> Value {
+    serde_json::from_slice(&fs::read(dir.join("answer-key.json")).unwrap()).unwrap()
+}
+
+/// Every file under `dir` (relative path → bytes).
+fn tree(dir: &Path) -> BTreeMap<String, Vec<u8>> {
+    let mut out = BTreeMap::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else {
+                let name = path.strip_prefix(dir).unwrap().display().to_string();
+                out.insert(name, fs::read(&path).unwrap());
+            }
+        }
+    }
+    out
+}
+
+fn close(a: f64, b: f64, what: &str) {
+    let scale = a.abs().max(b.abs());
+    assert!(
+        (a - b).abs() <= REL * scale,
+        "{what}: {a} vs {b} (rel {:e})",
+        (a - b).abs() / scale
+    );
+}
+
+/// The measured value of the check of `quantity` in `checks` (the engine's own verdict passes).
+fn measured(checks: &[stickslip::results::Check], quantity: &str) -> f64 {
+    let c = checks
+        .iter()
+        .find(|c| c.quantity == quantity)
+        .unwrap_or_else(|| panic!("no check of {quantity}"));
+    assert!(c.pass, "{c:?}");
+    match c.numeric {
+        CheckValue::Number(x) => x,
+        CheckValue::Text(ref t) => panic!("{quantity}: {t}"),
+    }
+}
+
+/// The closed_form key and the check that confirm a question.
+fn closed_form_key(question: &str) -> &str {
+    question.strip_prefix("read_").unwrap_or(question)
+}
+
+/// Whether the first slip from rest of the linearized sleeve sticks by T/2 (the meaning of
+/// μd,MIN^(I), eq. 51), integrated here with the engine directly.
+fn sticks_by_half_period(p: &WoodpeckerParams) -> bool {
+    let law = wp_model::force_law(p, LawKind::Linear).unwrap();
+    let opts = RunOptions {
+        periods: 1,
+        record_segments: false,
+    };
+    let run = integrate(&wp_model::body(p), &law, &opts).unwrap();
+    assert!(!run.immediate_slip);
+    run.events
+        .iter()
+        .find(|e| matches!(e.kind, EventKind::Stick { .. }))
+        .is_some_and(|e| e.t <= 0.5 * run.period)
+}
+
+/// Checks one answer against the §7 evaluation of the student's parameters.
+fn check_answer(
+    answer: &Value,
+    closed_form: &Value,
+    checks: &[stickslip::results::Check],
+    linear: &Summary,
+    regime: &str,
+) {
+    let key = answer["key"].as_str().unwrap();
+    if key == "regime" {
+        assert_eq!(answer["value"], closed_form["regime"], "closed-form regime");
+        assert_eq!(answer["value"].as_str().unwrap(), regime);
+        let integrated = linear.regime.id();
+        assert_eq!(answer["numeric"].as_str().unwrap(), integrated);
+        // The pulled mass's regimes of §1.5 are integrated under the names of §7.
+        let expected = match regime {
+            "slip_stick" | "slip_stick_late" => "single_slip_stick",
+            "continuous_slip" | "continuous_or_multiperiod" => "continuous_slip",
+            same => same,
+        };
+        assert_eq!(integrated, expected, "integrated regime");
+        assert!(!answer["comparisons"].as_array().unwrap().is_empty());
+        return;
+    }
+    let value = answer["value"].as_f64().unwrap();
+    let numeric = answer["numeric"].as_f64().unwrap();
+    let cf_key = closed_form_key(key);
+    close(value, closed_form[cf_key].as_f64().unwrap(), key);
+    close(value, numeric, key);
+    assert!(answer["rel_error"].as_f64().unwrap() <= REL);
+    if cf_key != "mu_d_min_1" {
+        close(numeric, measured(checks, cf_key), key);
+    }
+    assert!(!answer["formula"].as_str().unwrap().is_empty());
+    assert!(!answer["substituted"].as_str().unwrap().is_empty());
+    match answer["tolerance"].as_f64() {
+        Some(t) => {
+            assert!(key.starts_with("read_"), "{key}");
+            assert!(
+                t > 0.0 && t <= 0.05 * value,
+                "{key}: tolerance {t} for {value}"
+            );
+        }
+        None => assert!(!key.starts_with("read_"), "{key} has a reading tolerance"),
+    }
+}
+
+#[test]
+fn every_pulled_mass_answer_is_the_engines() {
+    let tmp = tempfile::tempdir().unwrap();
+    worksheet(
+        tmp.path(),
+        &["--model", "pulled-mass", "--students", "8", "--seed", "7"],
+    );
+    let key = read_json(tmp.path());
+    assert_eq!(key["model"], "pulled-mass");
+    assert_eq!(key["regime"], "slip_stick");
+    let questions = key["questions"].as_array().unwrap();
+    assert_eq!(questions.len(), 7, "{questions:?}");
+    let students = key["students"].as_array().unwrap();
+    assert_eq!(students.len(), 8);
+    for s in students {
+        let p: PulledMassParams = serde_json::from_value(s["params"].clone()).unwrap();
+        let e = pulled_mass::evaluate(&p, 8).unwrap();
+        let closed_form = serde_json::to_value(&e.closed_form).unwrap();
+        assert_eq!(s["regime"], "slip_stick");
+        let answers = s["answers"].as_array().unwrap();
+        assert_eq!(answers.len(), questions.len());
+        for (a, q) in answers.iter().zip(questions) {
+            assert_eq!(&a["key"], q);
+            check_answer(a, &closed_form, &e.checks, &e.linear, "slip_stick");
+        }
+    }
+}
+
+#[test]
+fn every_woodpecker_answer_is_the_engines_and_mu_d_min_is_the_threshold() {
+    let tmp = tempfile::tempdir().unwrap();
+    worksheet(
+        tmp.path(),
+        &["--model", "woodpecker", "--students", "6", "--seed", "11"],
+    );
+    let key = read_json(tmp.path());
+    assert_eq!(key["regime"], "double_slip_stick");
+    for s in key["students"].as_array().unwrap() {
+        let p: WoodpeckerParams = serde_json::from_value(s["params"].clone()).unwrap();
+        let e = woodpecker::evaluate(&p, 8).unwrap();
+        let closed_form = serde_json::to_value(&e.closed_form).unwrap();
+        let linear = e.linear.as_ref().unwrap();
+        let answers = s["answers"].as_array().unwrap();
+        assert_eq!(answers.len(), 7);
+        for a in answers {
+            check_answer(a, &closed_form, &e.checks, linear, "double_slip_stick");
+        }
+        // (51): a little more friction than μd,MIN sticks by T/2, a little less does not.
+        let mu_min = answers.iter().find(|a| a["key"] == "mu_d_min_1").unwrap()["value"]
+            .as_f64()
+            .unwrap();
+        let with = |mu_d: f64| WoodpeckerParams { mu_d, ..p };
+        assert!(sticks_by_half_period(&with(mu_min * (1.0 + 1e-7))));
+        assert!(!sticks_by_half_period(&with(mu_min * (1.0 - 1e-7))));
+    }
+}
+
+#[test]
+fn other_regimes_are_drawn_and_confirmed() {
+    for (model, regime) in [
+        ("pulled-mass", "slip_stick_late"),
+        ("pulled-mass", "continuous_slip"),
+        ("woodpecker", "double_slip_no_halt"),
+        ("woodpecker", "continuous_or_multiperiod"),
+        ("woodpecker", "single_slip_stick"),
+    ] {
+        let tmp = tempfile::tempdir().unwrap();
+        worksheet(
+            tmp.path(),
+            &["--model", model, "--students", "3", "--regime", regime],
+        );
+        let key = read_json(tmp.path());
+        for s in key["students"].as_array().unwrap() {
+            assert_eq!(s["regime"], regime);
+            let (closed_form, checks, linear) = match model {
+                "pulled-mass" => {
+                    let p: PulledMassParams = serde_json::from_value(s["params"].clone()).unwrap();
+                    let e = pulled_mass::evaluate(&p, 8).unwrap();
+                    (
+                        serde_json::to_value(&e.closed_form).unwrap(),
+                        e.checks,
+                        e.linear,
+                    )
+                }
+                _ => {
+                    let p: WoodpeckerParams = serde_json::from_value(s["params"].clone()).unwrap();
+                    let e = woodpecker::evaluate(&p, 8).unwrap();
+                    let linear = e.linear.clone().unwrap();
+                    (
+                        serde_json::to_value(&e.closed_form).unwrap(),
+                        e.checks,
+                        linear,
+                    )
+                }
+            };
+            for a in s["answers"].as_array().unwrap() {
+                check_answer(a, &closed_form, &checks, &linear, regime);
+            }
+        }
+    }
+}
+
+/// Significant figures of a decimal as written by serde_json (shortest round trip).
+fn significant_figures(x: f64) -> usize {
+    let sci = format!("{:e}", x.abs());
+    let mantissa = sci.split('e').next().unwrap();
+    mantissa.chars().filter(char::is_ascii_digit).count()
+}
+
+#[test]
+fn parameters_have_three_significant_figures() {
+    assert_eq!(significant_figures(0.437), 3);
+    assert_eq!(significant_figures(0.00705), 3);
+    assert_eq!(significant_figures(0.4371), 4);
+    for model in ["pulled-mass", "woodpecker"] {
+        let tmp = tempfile::tempdir().unwrap();
+        worksheet(tmp.path(), &["--model", model, "--students", "20"]);
+        for s in read_json(tmp.path())["students"].as_array().unwrap() {
+            for (name, v) in s["params"].as_object().unwrap() {
+                if let Some(x) = v.as_f64() {
+                    assert!(significant_figures(x) <= 3, "{model} {name} = {x}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_same_seed_gives_the_same_bytes_and_another_seed_other_sets() {
+    let (a, b, c) = (
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+        tempfile::tempdir().unwrap(),
+    );
+    let args = ["--model", "woodpecker", "--students", "4", "--seed", "7"];
+    worksheet(a.path(), &args);
+    worksheet(b.path(), &args);
+    let (ta, tb) = (tree(a.path()), tree(b.path()));
+    assert_eq!(ta.len(), 9, "{:?}", ta.keys());
+    assert!(ta == tb, "same arguments, different bytes");
+    worksheet(
+        c.path(),
+        &["--model", "woodpecker", "--students", "4", "--seed", "8"],
+    );
+    let params = |dir: &Path| -> Vec<Value> {
+        read_json(dir)["students"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|s| s["params"].clone())
+            .collect()
+    };
+    let (pa, pc) = (params(a.path()), params(c.path()));
+    assert!(
+        pa.iter().all(|p| !pc.contains(p)),
+        "seed 8 repeats a set of seed 7"
+    );
+    // Every student of a set has a set of its own.
+    for (i, p) in pa.iter().enumerate() {
+        assert!(!pa[i + 1..].contains(p));
+    }
+}
+
+#[test]
+fn html_pages_put_one_student_per_page_and_are_self_contained() {
+    let tmp = tempfile::tempdir().unwrap();
+    worksheet(
+        tmp.path(),
+        &["--model", "pulled-mass", "--students", "5", "--seed", "3"],
+    );
+    for name in ["worksheets.html", "answer-key.html"] {
+        let html = fs::read_to_string(tmp.path().join(name)).unwrap();
+        assert_eq!(
+            html.matches("<section class=\"sheet\"").count(),
+            5,
+            "{name}"
+        );
+        assert_eq!(html.matches("</section>").count(), 5, "{name}");
+        assert!(
+            html.contains("section.sheet + section.sheet { break-before: page;"),
+            "{name}: page breaks"
+        );
+        assert!(html.contains("@page { size: A4;"), "{name}");
+        assert!(!html.contains("<script"), "{name}");
+        assert!(
+            !html.contains("src=\"http") && !html.contains("href=\"http"),
+            "{name}"
+        );
+        assert!(!html.contains("<link"), "{name}: the CSS is inline");
+        assert!(html.contains("<math") && !html.contains("merror"), "{name}");
+    }
+    let sheets = fs::read_to_string(tmp.path().join("worksheets.html")).unwrap();
+    assert_eq!(
+        sheets.matches("<svg").count(),
+        5,
+        "one inline figure per student"
+    );
+    assert_eq!(sheets.matches("class=\"answer-box\"").count(), 5 * 7);
+    // The figure question does not give its answer away: no value of the key on the sheet.
+    let key = read_json(tmp.path());
+    for s in key["students"].as_array().unwrap() {
+        let v = s["answers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|a| a["key"] == "read_v_max")
+            .unwrap()["value"]
+            .as_f64()
+            .unwrap();
+        assert!(!sheets.contains(&format!("{v:.4}")), "{v}");
+    }
+    let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
+    assert_eq!(md.matches("\n---\n").count(), 5);
+    for n in 1..=5 {
+        let figure = format!("figures/student-{n:03}.svg");
+        assert!(md.contains(&format!("]({figure})")), "{figure}");
+        assert!(fs::read_to_string(tmp.path().join(&figure))
+            .unwrap()
+            .starts_with("<svg"));
+    }
+}
+
+#[test]
+fn a_subset_of_questions_is_asked_in_sheet_order() {
+    let tmp = tempfile::tempdir().unwrap();
+    worksheet(
+        tmp.path(),
+        &[
+            "--model",
+            "pulled-mass",
+            "--students",
+            "2",
+            "--questions",
+            "regime,t_slip,regime",
+            "--format",
+            "md",
+        ],
+    );
+    let key = read_json(tmp.path());
+    assert_eq!(key["questions"], serde_json::json!(["t_slip", "regime"]));
+    for s in key["students"].as_array().unwrap() {
+        let keys: Vec<_> = s["answers"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|a| &a["key"])
+            .collect();
+        assert_eq!(keys, ["t_slip", "regime"]);
+    }
+    let files: Vec<_> = tree(tmp.path()).into_keys().collect();
+    assert_eq!(
+        files,
+        ["answer-key.json", "answer-key.md", "worksheets.md"],
+        "md only, and no figure without the figure question"
+    );
+    let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
+    assert_eq!(md.matches("\n1. ").count(), 2);
+    assert_eq!(md.matches("\n2. ").count(), 2);
+    assert!(!md.contains("\n3. "));
+}
+
+#[test]
+fn bad_requests_exit_2_with_one_line_and_write_nothing() {
+    let cases: [(&[&str], &[&str]); 8] = [
+        (
+            &["--model", "pulled-mass", "--students", "0"],
+            &["--students", "1..=500"],
+        ),
+        (
+            &["--model", "pulled-mass", "--students", "501"],
+            &["--students"],
+        ),
+        (
+            &["--model", "lever", "--students", "2"],
+            &["--model", "pulled-mass"],
+        ),
+        (&["--students", "2"], &["--model"]),
+        (
+            &["--model", "pulled-mass", "--regime", "stuck"],
+            &["--regime", "slip_stick, slip_stick_late, continuous_slip"],
+        ),
+        (
+            &["--model", "woodpecker", "--regime", "no_slip"],
+            &["--regime", "double_slip_stick"],
+        ),
+        (
+            &["--model", "pulled-mass", "--questions", "t_slip,speed"],
+            &["--questions", "'speed'", "t_slip, t_stick, v_max"],
+        ),
+        (
+            &[
+                "--model",
+                "pulled-mass",
+                "--regime",
+                "continuous_slip",
+                "--questions",
+                "t_stick",
+            ],
+            &["--questions", "in regime continuous_slip", "t_slip"],
+        ),
+    ];
+    for (args, expected) in cases {
+        let tmp = tempfile::tempdir().unwrap();
+        let out = tmp.path().join("out");
+        let result = stickslip()
+            .arg("worksheet")
+            .args(args)
+            .arg("--out")
+            .arg(&out)
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
+        let stderr = String::from_utf8(result.stderr).unwrap();
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        for part in expected {
+            assert!(stderr.contains(part), "{args:?}: {stderr}");
+        }
+        assert!(result.stdout.is_empty(), "{args:?}");
+        assert!(!out.exists(), "{args:?}: something was written");
+    }
+}
+
+#[test]
+fn an_unwritable_folder_exits_2_and_leaves_the_blocker() {
+    let tmp = tempfile::tempdir().unwrap();
+    let blocker = tmp.path().join("file");
+    fs::write(&blocker, b"x").unwrap();
+    let result = stickslip()
+        .args([
+            "worksheet",
+            "--model",
+            "pulled-mass",
+            "--students",
+            "1",
+            "--out",
+        ])
+        .arg(&blocker)
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let stderr = String::from_utf8(result.stderr).unwrap();
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("error: cannot write"), "{stderr}");
+    assert_eq!(fs::read(&blocker).unwrap(), b"x");
+}
+
+#[test]
+fn a_small_markdown_worksheet_matches_its_snapshot() {
+    let tmp = tempfile::tempdir().unwrap();
+    worksheet(
+        tmp.path(),
+        &[
+            "--model",
+            "pulled-mass",
+            "--students",
+            "2",
+            "--seed",
+            "7",
+            "--format",
+            "md",
+        ],
+    );
+    let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
+    insta::assert_snapshot!("worksheets_md_pulled_mass_2", md);
+}
