@@ -22,6 +22,7 @@ pub mod engine;
 pub mod error;
 pub mod export;
 pub mod formula;
+pub mod handout;
 pub mod model;
 pub mod output;
 pub mod params;

@@ -5,6 +5,8 @@
 //! Needs `chromium` and `pdftotext` (Debian: chromium, poppler-utils; `.ci/run` installs them).
 //! Without them the test is skipped locally but fails on CI (CI=true).
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -142,39 +144,11 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
 fn no_page_references_the_network() {
     let files = render(&builtin_scenes().unwrap(), &[Format::Html, Format::Md]).unwrap();
     for f in &files {
-        let text = String::from_utf8_lossy(&f.bytes);
-        // XML namespace names are identifiers, not resources: drop them before looking.
-        let without_namespaces = strip_namespaces(&text);
-        for bad in [
-            "http:",
-            "https:",
-            "src=\"//",
-            "href=\"//",
-            "@import",
-            "url(",
-        ] {
-            assert!(
-                !without_namespaces.contains(bad),
-                "{}: references {bad}",
-                f.path.display()
-            );
-        }
+        let found = common::network_references(&String::from_utf8_lossy(&f.bytes));
+        assert!(
+            found.is_empty(),
+            "{}: references {found:?}",
+            f.path.display()
+        );
     }
-}
-
-/// The text without `xmlns="…"` and `xmlns:prefix="…"` attributes.
-fn strip_namespaces(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(i) = rest.find("xmlns") {
-        out.push_str(&rest[..i]);
-        let after = &rest[i..];
-        let end = after
-            .find('"')
-            .and_then(|q| after[q + 1..].find('"').map(|e| q + 1 + e + 1))
-            .unwrap_or(after.len());
-        rest = &after[end..];
-    }
-    out.push_str(rest);
-    out
 }
