@@ -18,14 +18,11 @@ use crate::claims::{self, Sample};
 use crate::error::{Error, Result};
 use crate::report::context::SceneCtx;
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
-use crate::report::scene::{FigureKind, Setup};
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
 
+mod figures;
 pub mod pdf;
 mod physics;
-
-/// At most this many figures fit on page 2 beside the verification table and the claims.
-const MAX_FIGURES: usize = 3;
 
 const TEMPLATES: &[(&str, &str)] = &[
     (
@@ -67,9 +64,11 @@ pub struct StepCtx {
 /// Everything the handout shows besides the report's scene context.
 #[derive(Clone, Debug, Serialize)]
 pub struct Handout {
-    /// The report's context of the scene: parameters, regimes, figures (at most
-    /// [`MAX_FIGURES`]), the checked rows of the verification table, claims.
+    /// The report's context of the scene: parameters, regimes, the figures of the handout (in
+    /// number order), the checked rows of the verification table, claims.
     pub scene: SceneCtx,
+    /// The same figures as laid out on page 2: two columns.
+    pub figure_columns: [Vec<figures::Numbered>; 2],
     /// The regime of the closed forms (linearized law) and the inequality that decides it.
     pub regime: String,
     pub regime_why: String,
@@ -115,39 +114,26 @@ fn first_sentence(text: &str) -> &str {
         .unwrap_or(text)
 }
 
-/// The figure kinds of the handout: the scene's own first, then the motion and the forces of
-/// its model (the two figures every step of the chain refers to) unless it has them already.
-fn figure_kinds(scene: &Scene) -> Vec<FigureKind> {
-    let standard = match scene.setup {
-        Setup::PulledMass(_) => [
-            FigureKind::PulledMotion { periods: 2.0 },
-            FigureKind::PulledForces,
-        ],
-        Setup::Woodpecker(_) => [
-            FigureKind::WoodMotion { periods: 2.0 },
-            FigureKind::WoodForces,
-        ],
-    };
-    let mut kinds = scene.figures.clone();
-    for kind in standard {
-        let same = std::mem::discriminant(&kind);
-        if !kinds.iter().any(|k| std::mem::discriminant(k) == same) {
-            kinds.push(kind);
-        }
-    }
-    kinds
-}
-
 /// The handout of `scene`: context, figures and claims.
 pub fn build(scene: &Scene) -> Result<Handout> {
     let (pulled, wood) = claim_params(scene);
     let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
     let with_figures = Scene {
-        figures: figure_kinds(scene),
+        figures: figures::kinds(scene),
         ..scene.clone()
     };
     let mut ctx = scene_context(&with_figures, &claims)?;
-    ctx.figures.truncate(MAX_FIGURES);
+    for f in &mut ctx.figures {
+        f.caption = first_sentence(&f.caption).to_string();
+    }
+    let figure_columns = figures::columns(std::mem::take(&mut ctx.figures));
+    let mut placed: Vec<&figures::Numbered> = figure_columns.iter().flatten().collect();
+    placed.sort_by_key(|n| n.number);
+    ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
+    // The finding of each claim states its numbers; the list of them stays in the report.
+    for c in &mut ctx.claims {
+        c.numbers.clear();
+    }
     let checked = ctx.verification.len();
     ctx.verification
         .retain(|r| r.class == "pass" || r.class == "fail");
@@ -167,6 +153,7 @@ pub fn build(scene: &Scene) -> Result<Handout> {
         .collect();
     Ok(Handout {
         scene: ctx,
+        figure_columns,
         regime,
         regime_why,
         motion,
