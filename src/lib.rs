@@ -18,6 +18,7 @@
 pub mod bench;
 pub mod claims;
 pub mod cli;
+pub mod derivation;
 pub mod engine;
 pub mod error;
 pub mod export;

@@ -136,7 +136,7 @@ pub fn evaluate_with_runs(
 }
 
 /// Why the closed forms do not apply at all (outside their domain), if so.
-fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<String> {
+pub fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<String> {
     if woodpecker::linear_amplitudes(p).is_none() {
         return Some(format!(
             "the {:?} counterpart is undefined for |z0| > d0 (z0 = {} m, d0 = {} m): F_e never \
@@ -185,7 +185,7 @@ const PHASE_KEYS: [[&str; 8]; 2] = [
 ];
 
 /// For each paper formula of the phases and of the whole period: does it describe the motion?
-fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
+pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
     let mut out = Vec::new();
     let mut push = |quantity: &'static str, reason: Option<String>| {
         out.push(Applicability::new(quantity, reason));

@@ -1,0 +1,173 @@
+//! Worked substitutions: for each closed form of a model, the formula in symbols, the same
+//! formula with the numbers (SI) put in, and the result, in the order a derivation reads.
+//!
+//! ```text
+//! params → formula::… (the values)  ─┐
+//!        → expression trees (expr)  ─┴→ Step { formula, substituted, value, reason }
+//! ```
+//!
+//! Each step's `value` is the value of the pure function in [`crate::formula`], never derived
+//! again here; the expression tree only shows how that value comes about, and the tests assert
+//! that evaluating the tree gives the same number. A step whose formula does not describe the
+//! motion for the parameters (its regime, physics.md §1.5 and §3.6) has `value: None` and the
+//! reason, taken from the applicability logic of [`crate::results`].
+
+pub mod expr;
+mod pulled_mass;
+mod woodpecker;
+
+pub use expr::Expr;
+
+use crate::results::quantity::{find, Quantity};
+use crate::results::Applicability;
+pub use pulled_mass::pulled_mass;
+pub use woodpecker::woodpecker;
+
+/// One worked step: a closed form, the numbers put in, the result.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Step {
+    /// The §7 `closed_form` key, e.g. "t_slip" (for W, ω, T, λ: the §7 `params` key).
+    pub key: &'static str,
+    /// LaTeX symbol, e.g. "t_{SL}".
+    pub symbol: &'static str,
+    /// The paper's equation number(s), as in [`crate::results::quantity`].
+    pub equation: &'static str,
+    /// LaTeX: the closed form in symbols (the right-hand side: `symbol = formula`).
+    pub formula: String,
+    /// LaTeX: the same with numbers (SI) substituted.
+    pub substituted: String,
+    /// SI result; `None` when the form does not apply for these params.
+    pub value: Option<f64>,
+    /// SI unit, "" when dimensionless.
+    pub unit: &'static str,
+    /// Why it does not apply (`None` when it does).
+    pub reason: Option<String>,
+    /// The expression tree behind `formula` and `substituted`; evaluating it gives the value
+    /// of the formula function (also where the form does not apply but is defined).
+    pub expr: Expr,
+}
+
+/// Why a step has no value when the formula function itself returns none.
+pub const UNDEFINED: &str =
+    "the expression is undefined for these parameters (a zero denominator or a negative root)";
+
+impl Step {
+    /// A step of `key` with formula `expr`, the formula function's `value` (`None` when the
+    /// expression is undefined) and why the form does not describe the motion, if so.
+    fn new(
+        key: &'static str,
+        symbol: &'static str,
+        equation: &'static str,
+        unit: &'static str,
+        expr: Expr,
+        value: Option<f64>,
+        not_applicable: Option<String>,
+    ) -> Self {
+        let reason = match value {
+            None => Some(not_applicable.unwrap_or_else(|| UNDEFINED.to_string())),
+            Some(_) => not_applicable,
+        };
+        Step {
+            key,
+            symbol,
+            equation,
+            formula: expr.symbols(),
+            substituted: expr.numbers(),
+            value: value.filter(|_| reason.is_none()),
+            unit,
+            reason,
+            expr,
+        }
+    }
+
+    /// The result in LaTeX, to 4 significant figures with its unit, e.g. `0.09035\,\mathrm{s}`;
+    /// `None` when the form does not apply.
+    pub fn result_tex(&self) -> Option<String> {
+        let value = expr::number_tex(self.value?);
+        Some(match unit_tex(self.unit) {
+            Some(unit) => format!(r"{value}\,{unit}"),
+            None => value,
+        })
+    }
+
+    /// The whole worked line in LaTeX: `symbol = formula = substituted = result`, or without the
+    /// result when the form does not apply.
+    pub fn worked_tex(&self) -> String {
+        let mut line = format!("{} = {} = {}", self.symbol, self.formula, self.substituted);
+        if let Some(result) = self.result_tex() {
+            line.push_str(" = ");
+            line.push_str(&result);
+        }
+        line
+    }
+}
+
+/// Collects the steps of one model in order; each step's symbol and value become a quantity
+/// leaf for the steps after it.
+struct Steps<'a> {
+    table: &'static [Quantity],
+    /// (key, equation, unit) of the §7 `params` keys with a step (W, ω, T, …).
+    params: &'static [(&'static str, &'static str, &'static str)],
+    applicability: &'a [Applicability],
+    /// Why no closed form of a key applies when the results' list does not name it (e.g. the
+    /// woodpecker outside the closed-form domain); `None`: such keys apply.
+    fallback: Option<&'a str>,
+    steps: Vec<Step>,
+}
+
+impl<'a> Steps<'a> {
+    fn new(
+        table: &'static [Quantity],
+        params: &'static [(&'static str, &'static str, &'static str)],
+        applicability: &'a [Applicability],
+    ) -> Self {
+        Steps {
+            table,
+            params,
+            applicability,
+            fallback: None,
+            steps: Vec::new(),
+        }
+    }
+
+    /// Adds the step `symbol = expr` of `key` whose formula function gives `value`, and returns
+    /// the quantity leaf of its symbol for later steps (NaN when undefined).
+    fn push(
+        &mut self,
+        key: &'static str,
+        symbol: &'static str,
+        expr: Expr,
+        value: Option<f64>,
+    ) -> Expr {
+        let (equation, unit) = match find(self.table, key) {
+            Some(q) => (q.equation, q.unit),
+            None => self
+                .params
+                .iter()
+                .find(|m| m.0 == key)
+                .map_or(("", ""), |m| (m.1, m.2)),
+        };
+        let not_applicable = match self.applicability.iter().find(|a| a.quantity == key) {
+            Some(a) => (!a.applies).then(|| a.reason.clone()),
+            None => self.fallback.map(str::to_string),
+        };
+        self.steps.push(Step::new(
+            key,
+            symbol,
+            equation,
+            unit,
+            expr,
+            value,
+            not_applicable,
+        ));
+        expr::var(symbol, value.unwrap_or(f64::NAN))
+    }
+}
+
+/// An SI unit in LaTeX (`m/s²` → `\mathrm{m/s^{2}}`); `None` for a dimensionless quantity.
+pub fn unit_tex(unit: &str) -> Option<String> {
+    (!unit.is_empty()).then(|| format!(r"\mathrm{{{}}}", unit.replace('²', "^{2}")))
+}
+
+#[cfg(test)]
+mod tests;

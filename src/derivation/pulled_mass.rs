@@ -1,0 +1,144 @@
+//! Worked substitutions of the pulled mass (physics.md §1.1, §1.3–1.4): W, ω, T, φ, then every
+//! closed form of the linearized law in the order of a derivation. Values come from
+//! [`crate::formula::pulled_mass`]; which forms apply, from [`crate::results::pulled_mass`].
+
+use super::expr::{half, int, pi, pow, pow_ratio, sqrt, var, Expr};
+use super::{Step, Steps};
+use crate::formula::pulled_mass as cf;
+use crate::params::PulledMassParams;
+use crate::results::pulled_mass::applicability;
+use crate::results::quantity::PULLED_MASS;
+
+/// Equation and unit of the §7 `params` keys with a step.
+const PARAMS: &[(&str, &str, &str)] = &[
+    ("W", "(6)", "N"),
+    ("omega", "(6)", "rad/s"),
+    ("T", "(7)", "s"),
+];
+
+/// D ≡ μs² + 2μsμd − μd² (§1.3), written out wherever it appears.
+fn big_d(mu_s: &Expr, mu_d: &Expr) -> Expr {
+    pow(mu_s.clone(), 2) + int(2) * mu_s.clone() * mu_d.clone() - pow(mu_d.clone(), 2)
+}
+
+/// Every closed form of the pulled mass with `p`'s numbers, in the order a derivation reads.
+pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
+    let (period, phi_value) = (p.period(), p.phi());
+    let c = cf::evaluate(p.g, period, p.force, phi_value, p.mu_s, p.mu_d);
+    let notes = applicability(&c);
+    let mut s = Steps::new(PULLED_MASS, PARAMS, &notes);
+    let (m, g, k, f) = (
+        var("m", p.mass),
+        var("g", p.g),
+        var("k", p.k),
+        var("F", p.force),
+    );
+    let (mu_s, mu_d) = (var(r"\mu_s", p.mu_s), var(r"\mu_d", p.mu_d));
+    let d = || big_d(&mu_s, &mu_d);
+
+    let w = s.push("W", "W", m.clone() * g.clone(), Some(p.weight()));
+    let omega = s.push("omega", r"\omega", sqrt(k / m), Some(p.omega()));
+    let t = s.push("T", "T", int(2) * pi() / omega, Some(period));
+    let phi = s.push("phi", r"\varphi", f.clone() / w, Some(c.phi));
+    let tau_sl = s.push(
+        "tau_slip",
+        r"\tau_{SL}",
+        half() * (int(1) - phi.clone() / (int(2) * mu_s.clone())),
+        Some(c.tau_slip),
+    );
+    s.push("t_slip", r"t_{SL}", t.clone() * tau_sl, Some(c.t_slip));
+    s.push(
+        "a_slip",
+        r"a_{SL}",
+        g.clone() * phi.clone() / int(2) * (int(1) - mu_d.clone() / mu_s.clone()),
+        Some(c.a_slip),
+    );
+    let tau_m = s.push(
+        "tau_max_speed",
+        r"\tau_M",
+        half() * (int(1) + phi.clone() / (int(2) * mu_d.clone())),
+        Some(c.tau_max_speed),
+    );
+    s.push(
+        "t_max_speed",
+        r"t_M",
+        t.clone() * tau_m.clone(),
+        Some(c.t_max_speed),
+    );
+    let v_m = s.push(
+        "v_max",
+        r"v_M",
+        g.clone() * t.clone() * pow(phi.clone(), 2) * d()
+            / (int(16) * pow(mu_s.clone(), 2) * mu_d.clone()),
+        Some(c.v_max),
+    );
+    let theta = s.push(
+        "theta",
+        r"\Theta",
+        (mu_s.clone() + sqrt(d())) / (int(2) * mu_s.clone() * mu_d.clone()),
+        Some(c.theta),
+    );
+    let tau_st = s.push(
+        "tau_stick",
+        r"\tau_{ST}",
+        half() * (int(1) + phi.clone() * theta.clone()),
+        Some(c.tau_stick),
+    );
+    s.push("t_stick", r"t_{ST}", t.clone() * tau_st, Some(c.t_stick));
+    s.push(
+        "slip_duration",
+        r"t_{ST} - t_{SL}",
+        t.clone() * phi.clone() / int(2)
+            * ((mu_s.clone() + mu_d.clone() + sqrt(d())) / (int(2) * mu_s.clone() * mu_d.clone())),
+        Some(c.slip_duration),
+    );
+    s.push(
+        "phi_stick_max",
+        r"1/\Theta",
+        int(1) / theta,
+        Some(c.phi_stick_max),
+    );
+    s.push(
+        "phi_continuous",
+        r"\varphi_c",
+        int(4) * mu_s.clone() * mu_d.clone() / (int(2) * mu_s.clone() + sqrt(int(2) * d())),
+        Some(c.phi_continuous),
+    );
+    s.push(
+        "mu_min_equal",
+        r"\mu_{MIN}",
+        (int(1) + sqrt(int(2))) * phi.clone() / int(2),
+        Some(c.mu_min_equal),
+    );
+    let gamma = s.push(
+        "gamma",
+        r"\Gamma",
+        (pow_ratio(d(), 3, 2)
+            + pow(mu_s.clone(), 3)
+            + int(3) * pow(mu_s.clone(), 2) * mu_d.clone()
+            - pow(mu_d.clone(), 3))
+            / (int(96) * pow(mu_s.clone(), 3) * pow(mu_d.clone(), 2)),
+        Some(c.gamma),
+    );
+    let v_avg = s.push(
+        "v_avg",
+        r"\bar v",
+        g.clone() * t.clone() * pow(phi.clone(), 3) * gamma.clone(),
+        Some(c.v_avg),
+    );
+    s.push(
+        "advance_per_period",
+        r"x_T",
+        g.clone() * pow(t.clone(), 2) * pow(phi.clone(), 3) * gamma,
+        Some(c.advance_per_period),
+    );
+    s.push("power", "P", f * v_avg, Some(c.power));
+    // 1 + τ'_M − √(2τ'_M² − v_M/(gTμd)) with τ'_M = 1 − τ_M, the other zero of a (§1.4).
+    s.push(
+        "tau_stick_late",
+        r"\tau_{ST,late}",
+        int(2) - tau_m.clone() - sqrt(int(2) * pow(int(1) - tau_m, 2) - v_m / (g * t * mu_d)),
+        c.tau_stick_late,
+    );
+    s.steps
+}

@@ -1,0 +1,283 @@
+//! The worked substitutions are the closed forms: on random valid parameter sets of every
+//! regime, each expression tree evaluates to the formula function's value and to the
+//! `closed_form` (or `params`) value of the §7 evaluation, a step has a value exactly when its
+//! form applies, and every LaTeX string renders to MathML.
+
+use proptest::prelude::*;
+use serde_json::Value;
+
+use super::*;
+use crate::formula::pulled_mass as pm;
+use crate::formula::woodpecker::Counterpart;
+use crate::params::{OmegaMode, PulledMassParams, WoodpeckerParams};
+use crate::report::math::mathml;
+use crate::results::{pulled_mass as pm_results, woodpecker as wp_results};
+
+/// Evaluating a tree repeats the formula's arithmetic in another order: a few ulps apart.
+const REL: f64 = 1e-12;
+
+/// The §7 value of a step's key: `closed_form` first, then `params`.
+fn section7_value(json: &Value, key: &str) -> Option<Value> {
+    json["closed_form"]
+        .get(key)
+        .or_else(|| json["params"].get(key))
+        .cloned()
+}
+
+fn close(a: f64, b: f64) -> bool {
+    a == b || (a - b).abs() <= REL * a.abs().max(b.abs())
+}
+
+/// Every step against the §7 object `json` and the applicability list of the evaluation.
+fn check_steps(steps: &[Step], json: &Value, applies: impl Fn(&str) -> bool) {
+    assert!(!steps.is_empty());
+    for step in steps {
+        let Some(expected) = section7_value(json, step.key) else {
+            panic!("{}: not a §7 key", step.key);
+        };
+        let evaluated = step.expr.eval();
+        match expected.as_f64() {
+            Some(x) => {
+                assert!(
+                    close(evaluated, x),
+                    "{}: tree {evaluated} vs §7 {x}",
+                    step.key
+                );
+                if applies(step.key) {
+                    assert_eq!(step.value, Some(x), "{}: value is the formula's", step.key);
+                    assert!(step.reason.is_none(), "{}", step.key);
+                } else {
+                    assert_eq!(step.value, None, "{}", step.key);
+                    assert!(step.reason.as_deref().is_some_and(|r| !r.is_empty()));
+                }
+            }
+            None => {
+                assert!(expected.is_null(), "{}: {expected}", step.key);
+                assert_eq!(step.value, None, "{}: undefined has no value", step.key);
+                assert!(step.reason.is_some(), "{}", step.key);
+            }
+        }
+    }
+}
+
+fn renders(tex: &str) {
+    let m = mathml(tex);
+    assert!(
+        m.starts_with("<math") && !m.contains("merror"),
+        "{tex}\n{m}"
+    );
+}
+
+/// φ inside the interval of regime `which` (§1.5), as the property test of the results.
+fn phi_in_regime(which: u8, frac: f64, mu_s: f64, mu_d: f64) -> f64 {
+    let (stick, cont) = (
+        pm::phi_stick_max(mu_s, mu_d),
+        pm::phi_continuous(mu_s, mu_d),
+    );
+    let (lo, hi) = match which {
+        0 => (0.0, stick),
+        1 => (stick, cont),
+        2 => (cont, 2.0 * mu_s),
+        _ => (2.0 * mu_s, 4.0 * mu_s),
+    };
+    lo + (0.001 + 0.998 * frac) * (hi - lo)
+}
+
+fn pulled_params() -> impl Strategy<Value = PulledMassParams> {
+    (
+        0u8..4,
+        0.0..1.0f64,
+        0.05..1.2f64,
+        0.02..=1.0f64,
+        0.005..2.0f64,
+        0.5..2000.0f64,
+        1.0..25.0f64,
+    )
+        .prop_map(|(which, frac, mu_s, ratio, mass, k, g)| {
+            let mu_d = mu_s * ratio;
+            let phi = phi_in_regime(which, frac, mu_s, mu_d);
+            PulledMassParams {
+                mu_s,
+                mu_d,
+                mass,
+                k,
+                force: phi * mass * g,
+                g,
+            }
+        })
+}
+
+fn woodpecker_params() -> impl Strategy<Value = WoodpeckerParams> {
+    (
+        (0.2..1.0f64, 0.05..=1.0f64, 2.0..60.0f64, 0.001..0.03f64),
+        (0.003..0.05f64, 0.002..0.02f64, -0.2..1.1f64),
+        (0.8..5.0f64, 0u8..4, 0usize..3, 0usize..3),
+    )
+        .prop_map(
+            |((mu_s, ratio, k, m_sleeve), (m_bird, d0, z0_ratio), (lever, lev, om, cp))| {
+                WoodpeckerParams {
+                    mu_s,
+                    mu_d: mu_s * ratio,
+                    k,
+                    m_sleeve,
+                    m_bird,
+                    l: 0.016,
+                    h: 0.007,
+                    z0: d0 * z0_ratio,
+                    d0,
+                    g: 9.81,
+                    // One case in four takes λ = l/h (a step of its own).
+                    lever: (lev > 0).then_some(lever),
+                    omega: [OmegaMode::Bird, OmegaMode::Reduced, OmegaMode::Total][om],
+                    counterpart: [
+                        Counterpart::Extremes,
+                        Counterpart::Zeros,
+                        Counterpart::Tangent,
+                    ][cp],
+                }
+            },
+        )
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(600))]
+
+    #[test]
+    fn pulled_mass_trees_are_the_closed_forms(p in pulled_params()) {
+        let e = pm_results::evaluate(&p, 4).unwrap();
+        let json = serde_json::to_value(&e).unwrap();
+        let applies = |key: &str| e.applicability.iter().all(|a| a.quantity != key || a.applies);
+        check_steps(&pulled_mass(&p), &json, applies);
+    }
+
+    #[test]
+    fn woodpecker_trees_are_the_closed_forms(p in woodpecker_params()) {
+        let e = wp_results::evaluate(&p, 4).unwrap();
+        let json = serde_json::to_value(&e).unwrap();
+        let phase_key = |key: &str| {
+            key.ends_with("_1") || key.ends_with("_2")
+        };
+        let applies = |key: &str| match e.applicability.iter().find(|a| a.quantity == key) {
+            Some(a) => a.applies,
+            None => e.domain_note.is_none() || !phase_key(key),
+        };
+        let steps = woodpecker(&p);
+        check_steps(&steps, &json, applies);
+        prop_assert_eq!(steps.iter().any(|s| s.key == "lambda"), p.lever.is_none());
+    }
+
+    #[test]
+    fn every_string_renders_to_mathml(p in pulled_params(), w in woodpecker_params()) {
+        for step in pulled_mass(&p).iter().chain(&woodpecker(&w)) {
+            renders(step.symbol);
+            renders(&step.formula);
+            renders(&step.substituted);
+            renders(&step.worked_tex());
+        }
+    }
+}
+
+#[test]
+fn set_b_reads_as_a_worked_example() {
+    let p = PulledMassParams {
+        mu_s: 0.4,
+        mu_d: 0.35,
+        force: 0.10,
+        ..PulledMassParams::default()
+    };
+    let steps = pulled_mass(&p);
+    let keys: Vec<_> = steps.iter().map(|s| s.key).collect();
+    for key in [
+        "W",
+        "omega",
+        "T",
+        "phi",
+        "t_slip",
+        "a_slip",
+        "t_max_speed",
+        "v_max",
+    ] {
+        assert!(keys.contains(&key), "{key}");
+    }
+    let t_slip = steps.iter().find(|s| s.key == "t_slip").unwrap();
+    assert_eq!(t_slip.formula, r"T \tau_{SL}");
+    assert_eq!(t_slip.substituted, r"0.2294 \times 0.3938");
+    assert!((t_slip.value.unwrap() - 0.090_352_965_35).abs() < 1e-11);
+    assert_eq!(
+        t_slip.worked_tex(),
+        r"t_{SL} = T \tau_{SL} = 0.2294 \times 0.3938 = 0.09035\,\mathrm{s}"
+    );
+    let v_max = steps.iter().find(|s| s.key == "v_max").unwrap();
+    assert_eq!(
+        v_max.formula,
+        r"\frac{g T \varphi^{2} \left(\mu_s^{2} + 2 \mu_s \mu_d - \mu_d^{2}\right)}{16 \mu_s^{2} \mu_d}"
+    );
+    assert_eq!(
+        v_max.substituted,
+        r"\frac{9.81 \times 0.2294 \times 0.1699^{2} \times \left(0.4^{2} + 2 \times 0.4 \times 0.35 - 0.35^{2}\right)}{16 \times 0.4^{2} \times 0.35}"
+    );
+    // Set B is slip-stick: the late-stick form does not apply, with the reason.
+    let late = steps.iter().find(|s| s.key == "tau_stick_late").unwrap();
+    assert_eq!(late.value, None);
+    assert!(late
+        .reason
+        .as_deref()
+        .unwrap()
+        .contains("within the period"));
+}
+
+#[test]
+fn set_c_marks_the_same_period_stick_as_not_applying() {
+    let p = PulledMassParams {
+        mu_s: 0.4,
+        mu_d: 0.35,
+        force: 0.18,
+        ..PulledMassParams::default()
+    };
+    let steps = pulled_mass(&p);
+    let t_stick = steps.iter().find(|s| s.key == "t_stick").unwrap();
+    assert_eq!(t_stick.value, None);
+    assert!(t_stick.reason.as_deref().unwrap().contains("(20) fails"));
+    assert!(t_stick.result_tex().is_none());
+    assert!(!t_stick.worked_tex().ends_with(r"\,\mathrm{s}"));
+    let late = steps.iter().find(|s| s.key == "tau_stick_late").unwrap();
+    assert!((late.value.unwrap() - 1.028_831_853).abs() < 1e-8);
+}
+
+#[test]
+fn fig15_phases_read_with_the_papers_symbols() {
+    let steps = woodpecker(&WoodpeckerParams::default());
+    let step = |key: &str| steps.iter().find(|s| s.key == key).unwrap();
+    assert!((step("t_slip_1").value.unwrap() - 0.058_242_816_14).abs() < 1e-11);
+    assert!((step("mu_d_min_1").value.unwrap() - 0.236_080_561_4).abs() < 1e-10);
+    assert!((step("mu_d_halt_2").value.unwrap() - 0.298_683_430_3).abs() < 1e-10);
+    assert!((step("v_avg").value.unwrap() - 0.049_658_438_62).abs() < 1e-11);
+    assert_eq!(step("t_slip_1").formula, r"t_0^{(I)} - \Delta^{(I)}");
+    assert_eq!(
+        step("mu_d_min_2").formula,
+        r"\frac{1}{2 \lambda} \frac{{u_s^{(+)}}^{2} \eta' \left(\eta' + 2\right) + 2 u_s^{(+)} - 1}{{u_s^{(+)}}^{2} {\eta'}^{2} + 1}"
+    );
+    assert_eq!(step("zeta0").formula, "d_0");
+    assert_eq!(
+        step("delta0").formula,
+        r"d_0 \frac{2}{\pi} \arcsin\left(\frac{z_0}{d_0}\right)"
+    );
+    assert_eq!(step("lambda").substituted, r"\frac{0.016}{0.007}");
+    assert_eq!(step("T").substituted, r"\frac{2 \pi}{37.8}");
+}
+
+#[test]
+fn outside_the_domain_every_phase_step_says_why() {
+    // |z0| > d0: the zeros counterpart is undefined, so are ζ0, δ0 and everything after.
+    let p = WoodpeckerParams {
+        z0: 0.02,
+        ..WoodpeckerParams::default()
+    };
+    let steps = woodpecker(&p);
+    let t_slip = steps.iter().find(|s| s.key == "t_slip_1").unwrap();
+    assert_eq!(t_slip.value, None);
+    assert!(t_slip.reason.as_deref().unwrap().contains("counterpart"));
+    assert!(t_slip.substituted.contains(r"\text{undefined}"));
+    let omega = steps.iter().find(|s| s.key == "omega").unwrap();
+    assert!(omega.value.is_some());
+}

@@ -1,0 +1,367 @@
+//! Worked substitutions of the linearized woodpecker (physics.md §2, §3.1–3.6): W_S, ω, T, λ,
+//! the linear amplitudes, the dimensionless groups, phases I and II (one function for both,
+//! by the swap u^(−) ↔ u^(+), η ↔ η'), and the whole period. Values come from
+//! [`crate::formula::woodpecker`]; which forms apply, from [`crate::results::woodpecker`].
+
+use super::expr::{arcsin, int, max, pi, pow, sqrt, var, Expr};
+use super::{Step, Steps};
+use crate::formula::woodpecker::{self as cf, Counterpart, Groups, PhaseClosedForm};
+use crate::params::{OmegaMode, WoodpeckerParams};
+use crate::results::quantity::WOODPECKER;
+use crate::results::woodpecker::{applicability, domain_note, linear_inputs};
+
+/// Equation and unit of the §7 `params` keys with a step.
+const PARAMS: &[(&str, &str, &str)] = &[
+    ("W_S", "§2", "N"),
+    ("omega", "§2", "rad/s"),
+    ("T", "§2", "s"),
+    ("lambda", "§2", ""),
+];
+
+/// Keys and LaTeX symbols of one phase, in the order of its steps.
+struct PhaseNames {
+    keys: [&'static str; 12],
+    symbols: [&'static str; 12],
+    /// The ±1 of u_B = 2λμd ± 1: +1 in phase I, −1 in phase II.
+    sigma: i64,
+}
+
+const PHASE_I: PhaseNames = PhaseNames {
+    keys: [
+        "t0_1",
+        "delta_1",
+        "t_slip_1",
+        "a_slip_1",
+        "t_max_speed_1",
+        "v_max_1",
+        "s_1",
+        "t_stick_1",
+        "mu_d_min_1",
+        "mu_d_halt_1",
+        "gamma_1",
+        "distance_1",
+    ],
+    symbols: [
+        r"t_0^{(I)}",
+        r"\Delta^{(I)}",
+        r"t_{SL}^{(I)}",
+        r"a_{SL}^{(I)}",
+        r"t_M^{(I)}",
+        r"v_M^{(I)}",
+        r"S^{(I)}",
+        r"t_{ST}^{(I)}",
+        r"\mu_{d,MIN}^{(I)}",
+        r"\mu_{d,HALT}^{(I)}",
+        r"\Gamma^{(I)}",
+        r"y^{(I)}",
+    ],
+    sigma: 1,
+};
+
+const PHASE_II: PhaseNames = PhaseNames {
+    keys: [
+        "t0_2",
+        "delta_2",
+        "t_slip_2",
+        "a_slip_2",
+        "t_max_speed_2",
+        "v_max_2",
+        "s_2",
+        "t_stick_2",
+        "mu_d_min_2",
+        "mu_d_halt_2",
+        "gamma_2",
+        "distance_2",
+    ],
+    symbols: [
+        r"t_0^{(II)}",
+        r"\Delta^{(II)}",
+        r"t_{SL}^{(II)}",
+        r"a_{SL}^{(II)}",
+        r"t_M^{(II)}",
+        r"v_M^{(II)}",
+        r"S^{(II)}",
+        r"t_{ST}^{(II)}",
+        r"\mu_{d,MIN}^{(II)}",
+        r"\mu_{d,HALT}^{(II)}",
+        r"\Gamma^{(II)}",
+        r"y^{(II)}",
+    ],
+    sigma: -1,
+};
+
+/// The quantities every phase formula is written in (leaves of earlier steps).
+struct Common {
+    g: Expr,
+    tau: Expr,
+    w_s: Expr,
+    k: Expr,
+    zeta0: Expr,
+    lambda: Expr,
+}
+
+/// The factors seen by the slip of a phase (formula::woodpecker module doc): U, u_A, u_B and
+/// the height h_B of the lobe after the zero of F_e.
+struct Factors {
+    u: Expr,
+    u_a: Expr,
+    u_b: Expr,
+    h_b: Expr,
+}
+
+/// Every closed form of the woodpecker with `p`'s numbers, in the order a derivation reads.
+pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
+    let lw = linear_inputs(p);
+    let c = cf::evaluate(&lw);
+    let note = domain_note(p, &c);
+    let notes = applicability(&c, note.as_deref());
+    let mut s = Steps::new(WOODPECKER, PARAMS, &notes);
+    let (g, k) = (var("g", p.g), var("k", p.k));
+    let (m_s, m_w) = (var("m_S", p.m_sleeve), var("m_W", p.m_bird));
+    let (z0, d0) = (var("z_0", p.z0), var("d_0", p.d0));
+    let (mu_s, mu_d) = (var(r"\mu_s", p.mu_s), var(r"\mu_d", p.mu_d));
+
+    let w_s = s.push(
+        "W_S",
+        "W_S",
+        m_s.clone() * g.clone(),
+        Some(p.sleeve_weight()),
+    );
+    let omega_expr = match p.omega {
+        OmegaMode::Bird => sqrt(k.clone() / m_w),
+        OmegaMode::Reduced => sqrt(k.clone() * (m_s.clone() + m_w.clone()) / (m_s * m_w)),
+        OmegaMode::Total => sqrt(k.clone() / (m_s + m_w)),
+    };
+    let omega = s.push("omega", r"\omega", omega_expr, Some(p.omega()));
+    let t = s.push("T", "T", int(2) * pi() / omega, Some(p.period()));
+    let lambda = match p.lever {
+        None => s.push(
+            "lambda",
+            r"\lambda",
+            var("l", p.l) / var("h", p.h),
+            Some(p.lambda()),
+        ),
+        Some(given) => var(r"\lambda", given),
+    };
+    let tau = s.push("tau_quarter", r"\tau", t / int(4), c.tau_quarter);
+    let two_over_pi = || int(2) / pi();
+    let zeta0_expr = match p.counterpart {
+        Counterpart::Extremes | Counterpart::Zeros => d0.clone(),
+        Counterpart::Tangent => pi() / int(2) * sqrt(pow(d0.clone(), 2) - pow(z0.clone(), 2)),
+    };
+    let zeta0 = s.push("zeta0", r"\zeta_0", zeta0_expr, c.zeta0);
+    let delta0_expr = match p.counterpart {
+        Counterpart::Extremes => z0,
+        Counterpart::Zeros => d0.clone() * two_over_pi() * arcsin(z0 / d0),
+        Counterpart::Tangent => zeta0.clone() * two_over_pi() * arcsin(z0 / d0),
+    };
+    let delta0 = s.push("delta0", r"\delta_0", delta0_expr, c.delta0);
+    let two_lambda = |mu: &Expr| int(2) * lambda.clone() * mu.clone();
+    let u_s_minus = s.push(
+        "u_s_minus",
+        r"u_s^{(-)}",
+        two_lambda(&mu_s) - int(1),
+        c.u_s_minus,
+    );
+    let u_s_plus = s.push(
+        "u_s_plus",
+        r"u_s^{(+)}",
+        two_lambda(&mu_s) + int(1),
+        c.u_s_plus,
+    );
+    let u_d_minus = s.push(
+        "u_d_minus",
+        r"u_d^{(-)}",
+        two_lambda(&mu_d) - int(1),
+        c.u_d_minus,
+    );
+    let u_d_plus = s.push(
+        "u_d_plus",
+        r"u_d^{(+)}",
+        two_lambda(&mu_d) + int(1),
+        c.u_d_plus,
+    );
+    let eta = s.push(
+        "eta",
+        r"\eta",
+        k.clone() * (zeta0.clone() - delta0.clone()) / w_s.clone(),
+        c.eta,
+    );
+    let eta_prime = s.push(
+        "eta_prime",
+        r"\eta'",
+        k.clone() * (zeta0.clone() + delta0.clone()) / w_s.clone(),
+        c.eta_prime,
+    );
+
+    // Outside the closed-form domain no formula of the phases describes the motion.
+    s.fallback = note.as_deref();
+    let common = Common {
+        g,
+        tau: tau.clone(),
+        w_s: w_s.clone(),
+        k,
+        zeta0,
+        lambda,
+    };
+    let ratio = || delta0.clone() / common.zeta0.clone();
+    let groups = Groups::new(&lw);
+    let gamma_1 = phase(
+        &mut s,
+        &PHASE_I,
+        &common,
+        &Factors {
+            u: u_s_minus,
+            u_a: u_d_minus.clone(),
+            u_b: u_d_plus.clone(),
+            h_b: eta,
+        },
+        tau.clone() * (int(1) + ratio()),
+        &cf::phase_closed_form(&lw, &groups, c.t0_1),
+    );
+    let gamma_2 = phase(
+        &mut s,
+        &PHASE_II,
+        &common,
+        &Factors {
+            u: u_s_plus,
+            u_a: u_d_plus,
+            u_b: u_d_minus,
+            h_b: eta_prime,
+        },
+        tau * (int(3) - ratio()),
+        &cf::phase_closed_form(&lw, &groups.swapped(), c.t0_2),
+    );
+
+    let Common {
+        g,
+        tau,
+        w_s,
+        k,
+        zeta0,
+        ..
+    } = common;
+    let gamma = s.push("gamma", r"\Gamma", gamma_1 + gamma_2, c.gamma);
+    let lengths = || pow(zeta0.clone(), 2) * pow(k.clone(), 2);
+    s.push(
+        "distance_per_period",
+        r"y_S(T)",
+        g.clone() * pow(tau.clone(), 2) * pow(w_s.clone(), 2) * gamma.clone()
+            / (int(6) * lengths()),
+        c.distance_per_period,
+    );
+    let v_avg = s.push(
+        "v_avg",
+        r"\bar v",
+        g * tau * pow(w_s.clone(), 2) * gamma / (int(24) * lengths()),
+        c.v_avg,
+    );
+    s.push("power_weight", r"P_W", w_s * v_avg, c.power_weight);
+    s.steps
+}
+
+/// The steps of one phase (§3.3, or §3.4 by the swap); returns the leaf of its Γ.
+fn phase(
+    s: &mut Steps,
+    names: &PhaseNames,
+    c: &Common,
+    f: &Factors,
+    t0_expr: Expr,
+    v: &PhaseClosedForm,
+) -> Expr {
+    let [k_t0, k_delta, k_sl, k_a, k_tm, k_vm, k_s, k_st, k_min, k_halt, k_gamma, k_y] = names.keys;
+    let [s_t0, s_delta, s_sl, s_a, s_tm, s_vm, s_s, s_st, s_min, s_halt, s_gamma, s_y] =
+        names.symbols;
+    let (u, u_a, u_b, h) = (&f.u, &f.u_a, &f.u_b, &f.h_b);
+    let t0 = s.push(k_t0, s_t0, t0_expr, v.t0);
+    let delta = s.push(
+        k_delta,
+        s_delta,
+        c.tau.clone() * c.w_s.clone() / (c.k.clone() * c.zeta0.clone() * u.clone()),
+        v.delta,
+    );
+    s.push(k_sl, s_sl, t0.clone() - delta.clone(), v.t_slip);
+    s.push(
+        k_a,
+        s_a,
+        c.g.clone() * ((u.clone() - u_a.clone()) / u.clone()),
+        v.a_slip,
+    );
+    s.push(
+        k_tm,
+        s_tm,
+        t0.clone() + delta.clone() * u.clone() / u_b.clone(),
+        v.t_max_speed,
+    );
+    s.push(
+        k_vm,
+        s_vm,
+        c.g.clone() * delta.clone() / int(2)
+            * ((u_b.clone() * (int(2) * u.clone() - u_a.clone()) + pow(u.clone(), 2))
+                / (u.clone() * u_b.clone())),
+        v.v_max,
+    );
+    let s_factor = s.push(
+        k_s,
+        s_s,
+        (u.clone()
+            + sqrt(
+                pow(u.clone(), 2) + int(2) * u.clone() * u_b.clone() - u_a.clone() * u_b.clone(),
+            ))
+            / u_b.clone(),
+        v.s,
+    );
+    s.push(k_st, s_st, t0 + delta * s_factor.clone(), v.t_stick);
+    let sigma = |e: Expr| match names.sigma {
+        1 => e + int(1),
+        _ => e - int(1),
+    };
+    // (51) and (65) as printed: U²η(2 − η) + 2U + 1 and U²η'(η' + 2) + 2U − 1.
+    let lobe = match names.sigma {
+        1 => int(2) - h.clone(),
+        _ => h.clone() + int(2),
+    };
+    let numerator = sigma(pow(u.clone(), 2) * h.clone() * lobe + int(2) * u.clone());
+    let two_lambda = || int(2) * c.lambda.clone();
+    s.push(
+        k_min,
+        s_min,
+        int(1) / two_lambda() * (numerator / (pow(u.clone(), 2) * pow(h.clone(), 2) + int(1))),
+        v.mu_d_min,
+    );
+    // §3.6: x₊ = [B + √(B² − A U²)]/A with A = 1 + 2h²U², B = U ± 1 + 2hU²; when the root is
+    // imaginary the threshold is 1/h alone.
+    let a = int(1) + int(2) * pow(h.clone(), 2) * pow(u.clone(), 2);
+    let b = sigma(u.clone()) + int(2) * h.clone() * pow(u.clone(), 2);
+    let x_plus = (b.clone() + sqrt(pow(b, 2) - a.clone() * pow(u.clone(), 2))) / a;
+    let floor = int(1) / h.clone();
+    let threshold = if x_plus.eval().is_finite() {
+        max(x_plus, floor)
+    } else {
+        floor
+    };
+    let threshold = match names.sigma {
+        1 => threshold - int(1),
+        _ => threshold + int(1),
+    };
+    s.push(k_halt, s_halt, threshold / two_lambda(), v.mu_d_halt);
+    let s1 = || s_factor.clone() + int(1);
+    let gamma = s.push(
+        k_gamma,
+        s_gamma,
+        (int(3) * u.clone() * pow(s1(), 2)
+            - u_b.clone() * pow(s_factor.clone(), 3)
+            - int(3) * u_a.clone() * s_factor.clone()
+            - int(2) * u_a.clone())
+            / pow(u.clone(), 3),
+        v.gamma,
+    );
+    s.push(
+        k_y,
+        s_y,
+        c.g.clone() * pow(c.tau.clone(), 2) * pow(c.w_s.clone(), 2) * gamma.clone()
+            / (int(6) * pow(c.zeta0.clone(), 2) * pow(c.k.clone(), 2)),
+        v.distance,
+    );
+    gamma
+}
