@@ -8,6 +8,7 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use stickslip::handout::{self, Handout};
+use stickslip::report::scene::Setup;
 use stickslip::report::{builtin_scenes, Format, OutFile, Scene};
 use stickslip::results::{pulled_mass, woodpecker, Check, CheckValue};
 
@@ -19,18 +20,47 @@ fn text<'a>(files: &'a [OutFile], name: &str) -> &'a str {
     std::str::from_utf8(&f.bytes).unwrap()
 }
 
-/// The closed forms (§7 keys) and the checks of the scene, straight from the engine.
+/// The §7 object of the scene's evaluation and its checks, straight from the engine.
 fn engine(scene: &Scene) -> (serde_json::Value, Vec<Check>) {
     match &scene.setup {
-        stickslip::report::scene::Setup::PulledMass(p) => {
+        Setup::PulledMass(p) => {
             let e = pulled_mass::evaluate(p, scene.periods).unwrap();
-            (serde_json::to_value(e.closed_form).unwrap(), e.checks)
+            (serde_json::to_value(&e).unwrap(), e.checks)
         }
-        stickslip::report::scene::Setup::Woodpecker(p) => {
+        Setup::Woodpecker(p) => {
             let e = woodpecker::evaluate(p, scene.periods).unwrap();
-            (serde_json::to_value(e.closed_form).unwrap(), e.checks)
+            (serde_json::to_value(&e).unwrap(), e.checks)
         }
     }
+}
+
+/// The value of a §7 key: `closed_form` first, then `params`.
+fn section7(json: &serde_json::Value, key: &str) -> f64 {
+    json["closed_form"]
+        .get(key)
+        .or_else(|| json["params"].get(key))
+        .and_then(serde_json::Value::as_f64)
+        .unwrap_or_else(|| panic!("{key}: no §7 number"))
+}
+
+/// The result of a worked line "… = 5.397 \times 10^{-4}\,\mathrm{W}" as a number.
+fn result_of(tex: &str) -> f64 {
+    let last = tex.rsplit("= ").next().unwrap();
+    let number = last.split(r"\,").next().unwrap().trim();
+    match number.split_once(r" \times 10^{") {
+        Some((mantissa, exponent)) => {
+            let exponent: i32 = exponent.trim_end_matches('}').parse().unwrap();
+            mantissa.parse::<f64>().unwrap() * 10f64.powi(exponent)
+        }
+        None => number
+            .parse()
+            .unwrap_or_else(|_| panic!("not a number: {last}")),
+    }
+}
+
+/// `a` and `b` agree to 4 significant figures.
+fn same_to_4_figures(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 5e-4 * b.abs()
 }
 
 #[test]
@@ -59,8 +89,35 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
             assert!(md.contains(&format!("]({})", f.file)), "{id}: {}", f.file);
             assert!(files.iter().any(|g| g.path == Path::new(&f.file)), "{id}");
         }
+        // The chain: every substituted result is the engine's value to 4 significant figures,
+        // and shows in both formats.
+        let (json, checks) = engine(&scene);
+        assert!(
+            handout.steps.len() >= 5,
+            "{id}: {} steps",
+            handout.steps.len()
+        );
+        for step in &handout.steps {
+            assert!(
+                md.contains(&format!("${}$", step.tex)),
+                "{id}: {}",
+                step.key
+            );
+            for piece in &step.pieces {
+                assert!(html.contains(piece.as_str()), "{id}: {}", step.key);
+            }
+            if step.reason.is_empty() {
+                let (shown, engine) = (result_of(&step.tex), section7(&json, &step.key));
+                assert!(
+                    same_to_4_figures(shown, engine),
+                    "{id}: {} = {shown}, engine {engine}",
+                    step.key
+                );
+            } else {
+                assert!(md.contains(&step.reason), "{id}: {}", step.key);
+            }
+        }
         // Every check of the engine is a row of the verification table, in both formats.
-        let (_, checks) = engine(&scene);
         assert_eq!(handout.scene.verification.len(), checks.len(), "{id}");
         for c in &checks {
             if let CheckValue::Number(x) = c.numeric {

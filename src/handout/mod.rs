@@ -15,12 +15,16 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use crate::claims::{self, Sample};
+use crate::derivation;
 use crate::error::{Error, Result};
 use crate::report::context::SceneCtx;
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
+use crate::report::scene::Setup;
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
+use crate::results::quantity::{find, PULLED_MASS, WOODPECKER};
+use physics::Note;
 
-mod figures;
+mod layout;
 pub mod pdf;
 mod physics;
 
@@ -44,21 +48,26 @@ pub struct MotionLine {
     pub note: String,
 }
 
-/// One step of the chain: formula = numbers substituted = result, and why.
+/// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
 pub struct StepCtx {
-    pub symbol: String,
+    /// The §7 key of the quantity ("t_slip").
+    pub key: String,
     /// "(13)", "§1.4" …
     pub equation: String,
-    /// "formula = substituted" as MathML (HTML) and LaTeX (Markdown).
-    pub mathml: String,
+    /// MathML of "symbol = formula", "= substituted" and "= result" (no result where the form
+    /// does not apply), so that a long line wraps between them.
+    pub pieces: Vec<String>,
+    /// The whole line in LaTeX (Markdown).
     pub tex: String,
-    /// The value with its unit, or why there is none.
-    pub result: String,
-    /// A sentence of physics.
+    /// Why the form does not describe this motion (shown instead of the result), or empty.
+    pub reason: String,
+    /// A label (definition) or a sentence of physics.
     pub note: String,
-    /// CSS class: "value" or "reason".
+    /// CSS class: "label" or "numbers" (half a row), "sentence" (a whole row).
     pub class: String,
+    /// A heading before the step, or empty.
+    pub heading: String,
 }
 
 /// Everything the handout shows besides the report's scene context.
@@ -68,7 +77,9 @@ pub struct Handout {
     /// number order), the checked rows of the verification table, claims.
     pub scene: SceneCtx,
     /// The same figures as laid out on page 2: two columns.
-    pub figure_columns: [Vec<figures::Numbered>; 2],
+    pub figure_columns: [Vec<layout::Numbered>; 2],
+    /// Claims of the scene that did not fit on page 2, one line each.
+    pub claims_brief: Vec<String>,
     /// The regime of the closed forms (linearized law) and the inequality that decides it.
     pub regime: String,
     pub regime_why: String,
@@ -119,17 +130,13 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     let (pulled, wood) = claim_params(scene);
     let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
     let with_figures = Scene {
-        figures: figures::kinds(scene),
+        figures: layout::kinds(scene),
         ..scene.clone()
     };
     let mut ctx = scene_context(&with_figures, &claims)?;
     for f in &mut ctx.figures {
         f.caption = first_sentence(&f.caption).to_string();
     }
-    let figure_columns = figures::columns(std::mem::take(&mut ctx.figures));
-    let mut placed: Vec<&figures::Numbered> = figure_columns.iter().flatten().collect();
-    placed.sort_by_key(|n| n.number);
-    ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
     // The finding of each claim states its numbers; the list of them stays in the report.
     for c in &mut ctx.claims {
         c.numbers.clear();
@@ -138,11 +145,21 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     ctx.verification
         .retain(|r| r.class == "pass" || r.class == "fail");
     let unchecked = checked - ctx.verification.len();
+    let page = layout::page_two(
+        std::mem::take(&mut ctx.figures),
+        ctx.verification.len(),
+        std::mem::take(&mut ctx.claims),
+    );
+    let mut placed: Vec<&layout::Numbered> = page.columns.iter().flatten().collect();
+    placed.sort_by_key(|n| n.number);
+    ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
+    ctx.claims = page.claims;
     let (regime, regime_why) = ctx
         .regimes
         .first()
         .map(|r| (r.regime.clone(), r.why.clone()))
         .unwrap_or_default();
+    let (steps, omitted) = chain(&scene.setup);
     let motion = physics::equation_of_motion(&scene.setup)
         .iter()
         .map(|(tex, note)| MotionLine {
@@ -153,14 +170,78 @@ pub fn build(scene: &Scene) -> Result<Handout> {
         .collect();
     Ok(Handout {
         scene: ctx,
-        figure_columns,
+        figure_columns: page.columns,
+        claims_brief: page.brief,
         regime,
         regime_why,
         motion,
-        steps: Vec::new(),
-        omitted: Vec::new(),
+        steps,
+        omitted,
         unchecked,
     })
+}
+
+/// The chain of formulas of `setup`'s model: the steps of [`crate::derivation`] the handout
+/// explains ([`physics::note`]), in order. A step that does not describe this motion shows its
+/// reason in place of the result the first time that reason comes up; later steps with the
+/// same reason, and definitions that do not apply, are left out and named in one line per
+/// reason ("t_ST, v̄: why").
+fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
+    let (steps, table) = match setup {
+        Setup::PulledMass(p) => (derivation::pulled_mass(p), PULLED_MASS),
+        Setup::Woodpecker(p) => (derivation::woodpecker(p), WOODPECKER),
+    };
+    let mut shown = Vec::new();
+    let mut in_place: Vec<&str> = Vec::new();
+    let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();
+    // The heading of a step left out goes to the next step shown.
+    let mut heading = None;
+    for step in &steps {
+        let Some((note, step_heading)) = physics::note(setup, step.key) else {
+            continue;
+        };
+        heading = step_heading.or(heading);
+        let (class, text) = match note {
+            Note::Label(text) => ("label", text),
+            Note::Sentence(text) => ("sentence", text),
+            Note::Numbers => ("numbers", ""),
+        };
+        if let Some(reason) = step.reason.as_deref() {
+            if !matches!(note, Note::Sentence(_)) || in_place.contains(&reason) {
+                let symbol = find(table, step.key).map_or(step.key, |q| q.symbol);
+                match left_out.iter_mut().find(|(r, _)| *r == reason) {
+                    Some((_, symbols)) => symbols.push(symbol),
+                    None => left_out.push((reason, vec![symbol])),
+                }
+                continue;
+            }
+            in_place.push(reason);
+        }
+        // "symbol = formula", "= substituted", "= result": a long line wraps between pieces.
+        let mut pieces = match note {
+            Note::Numbers => vec![format!("{} = {}", step.symbol, step.substituted)],
+            _ => vec![
+                format!("{} = {}", step.symbol, step.formula),
+                format!("= {}", step.substituted),
+            ],
+        };
+        pieces.extend(step.result_tex().map(|r| format!("= {r}")));
+        shown.push(StepCtx {
+            key: step.key.to_string(),
+            equation: step.equation.to_string(),
+            pieces: pieces.iter().map(|p| math::mathml(p)).collect(),
+            tex: pieces.join(" "),
+            reason: step.reason.clone().unwrap_or_default(),
+            note: text.to_string(),
+            class: class.to_string(),
+            heading: heading.take().unwrap_or_default().to_string(),
+        });
+    }
+    let omitted = left_out
+        .into_iter()
+        .map(|(reason, symbols)| format!("{}: {reason}", symbols.join(", ")))
+        .collect();
+    (shown, omitted)
 }
 
 /// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) and, with
