@@ -38,7 +38,10 @@ pub enum Error {
     )]
     UnknownScene { id: String },
     /// `--pdf` without a headless Chromium to print with.
-    #[error("--pdf needs headless Chromium: install the `chromium` package or set STICKSLIP_CHROMIUM{detail}")]
+    #[error(
+        "--pdf needs headless Chromium: install the `chromium` package or set \
+         STICKSLIP_CHROMIUM{detail}"
+    )]
     NoChromium {
         /// Empty, or why the browser named by STICKSLIP_CHROMIUM cannot be used.
         detail: String,

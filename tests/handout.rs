@@ -234,6 +234,22 @@ fn bad_handout_input_is_refused_without_writing() {
 }
 
 #[test]
+fn a_failing_browser_is_an_internal_error_and_leaves_no_pdf() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let assert = stickslip()
+        .args(["handout", "fig05-immediate-slip", "--pdf", "--out"])
+        .arg(&out)
+        .env("STICKSLIP_CHROMIUM", "/bin/false")
+        .assert()
+        .code(1);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("to PDF with /bin/false failed"), "{stderr}");
+    assert!(!out.exists(), "nothing may be written");
+}
+
+#[test]
 fn an_unwritable_output_folder_is_refused() {
     let dir = tempfile::tempdir().unwrap();
     let blocker = dir.path().join("a-file");

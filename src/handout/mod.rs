@@ -74,7 +74,9 @@ pub struct StepCtx {
 #[derive(Clone, Debug, Serialize)]
 pub struct Handout {
     /// The report's context of the scene: parameters, regimes, the figures of the handout (in
-    /// number order), the checked rows of the verification table, claims.
+    /// number order), the checked rows of the verification table, claims. The templates see
+    /// it as `scene`, as the report's partials expect.
+    #[serde(skip)]
     pub scene: SceneCtx,
     /// The same figures as laid out on page 2: two columns.
     pub figure_columns: [Vec<layout::Numbered>; 2],
