@@ -235,11 +235,8 @@ fn first_plain_result(scene: &Scene) -> String {
         .steps
         .iter()
         .filter(|s| s.reason.is_empty())
-        .filter_map(|s| {
-            let last = s.tex.rsplit("= ").next()?;
-            let number = last.split(r"\,").next()?.trim();
-            number.parse::<f64>().ok().map(|_| number.to_string())
-        })
-        .next()
+        .map(|s| common::result_tex(&s.tex))
+        .find(|number| number.parse::<f64>().is_ok())
+        .map(str::to_string)
         .expect("a plain decimal result")
 }

@@ -43,10 +43,9 @@ fn section7(json: &serde_json::Value, key: &str) -> f64 {
         .unwrap_or_else(|| panic!("{key}: no §7 number"))
 }
 
-/// The result of a worked line "… = 5.397 \times 10^{-4}\,\mathrm{W}" as a number.
+/// The result of a worked line as a number.
 fn result_of(tex: &str) -> f64 {
-    let last = tex.rsplit("= ").next().unwrap();
-    let number = last.split(r"\,").next().unwrap().trim();
+    let number = common::result_tex(tex);
     match number.split_once(r" \times 10^{") {
         Some((mantissa, exponent)) => {
             let exponent: i32 = exponent.trim_end_matches('}').parse().unwrap();
@@ -54,7 +53,7 @@ fn result_of(tex: &str) -> f64 {
         }
         None => number
             .parse()
-            .unwrap_or_else(|_| panic!("not a number: {last}")),
+            .unwrap_or_else(|_| panic!("not a number: {tex}")),
     }
 }
 

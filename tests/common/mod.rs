@@ -1,5 +1,12 @@
 //! Helpers shared by the integration tests.
 
+/// The result of a worked line "… = 5.397 \times 10^{-4}\,\mathrm{W}" as LaTeX, without
+/// its unit: "5.397 \times 10^{-4}".
+pub fn result_tex(worked: &str) -> &str {
+    let last = worked.rsplit("= ").next().unwrap_or_default();
+    last.split(r"\,").next().unwrap_or_default().trim()
+}
+
 /// The network references in a page (`http:`, `//host`, `@import`, `url(`), XML namespace
 /// names aside: those are identifiers, not resources. Empty for a self-contained page.
 pub fn network_references(text: &str) -> Vec<&'static str> {
