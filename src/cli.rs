@@ -45,6 +45,10 @@ pub enum Command {
     /// Benchmark every time-stepping method against the exact engine: work-precision sweeps,
     /// where each method fails, and optionally SciPy side by side (written to --out).
     Bench(BenchArgs),
+    /// A two-page lecture handout for one scene: the chain of formulas from the equation of
+    /// motion to the result with the numbers substituted, figures, the verification table and
+    /// the paper's claims (HTML for A4 print, Markdown; --pdf through headless Chromium).
+    Handout(HandoutArgs),
     /// Vary one parameter on a uniform grid and integrate both laws at each point: v̄, slips
     /// and sticks per period and the regime (sweep.csv, sweep.svg in --out).
     Sweep {
@@ -180,6 +184,27 @@ pub struct ReportArgs {
     /// Output folder.
     #[arg(long, default_value = "reports")]
     pub out: PathBuf,
+    /// Formats, comma-separated.
+    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
+    pub format: Vec<Format>,
+}
+
+/// Options of `stickslip handout`.
+#[derive(Debug, Args)]
+pub struct HandoutArgs {
+    /// A built-in scene id (see --list) or a scenario file (TOML).
+    #[arg(value_name = "SCENE", required_unless_present = "list")]
+    pub scene: Option<String>,
+    /// Print the built-in scene ids with their captions and exit.
+    #[arg(long, conflicts_with_all = ["scene", "pdf"])]
+    pub list: bool,
+    /// Output folder.
+    #[arg(long, default_value = "handouts")]
+    pub out: PathBuf,
+    /// Also print the HTML to <SCENE>.pdf with headless Chromium ($STICKSLIP_CHROMIUM, else
+    /// chromium, chromium-browser or google-chrome on PATH).
+    #[arg(long)]
+    pub pdf: bool,
     /// Formats, comma-separated.
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
     pub format: Vec<Format>,

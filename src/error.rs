@@ -45,6 +45,28 @@ pub enum Error {
     /// A scenario file that cannot be read or parsed.
     #[error("scenario {path}: {reason}")]
     Scenario { path: String, reason: String },
+    /// A scene id that is neither a built-in scene nor a scenario file.
+    #[error(
+        "unknown scene `{id}`: `stickslip handout --list` shows the built-in scene ids; a \
+         scenario file (.toml) is accepted too"
+    )]
+    UnknownScene { id: String },
+    /// `--pdf` without a headless Chromium to print with.
+    #[error(
+        "--pdf needs headless Chromium: install the `chromium` package or set \
+         STICKSLIP_CHROMIUM{detail}"
+    )]
+    NoChromium {
+        /// Empty, or why the browser named by STICKSLIP_CHROMIUM cannot be used.
+        detail: String,
+    },
+    /// Chromium ran but did not print the PDF.
+    #[error("printing {path} to PDF with {browser} failed: {reason}")]
+    Pdf {
+        path: String,
+        browser: String,
+        reason: String,
+    },
     /// A tracked-positions file (`stickslip fit`) that cannot be read or is malformed; `line`
     /// is the line of the file (1-based) and `column` the header name of the cell, when the
     /// problem has a place.

@@ -24,6 +24,7 @@ pub mod error;
 pub mod export;
 pub mod fit;
 pub mod formula;
+pub mod handout;
 pub mod model;
 pub mod output;
 pub mod params;

@@ -1,8 +1,9 @@
 //! `stickslip`: thin entry point. Parses the command line, runs it, prints the error chain.
 //!
 //! Exit codes: 0 success; 2 bad input (usage, parameter out of range, unreadable or malformed
-//! scenario or tracked data, unwritable output); 1 an internal failure of the engine, or a fit
-//! that did not converge (its results are written, flagged).
+//! scenario or tracked data, unknown scene, unwritable output, `--pdf` without Chromium); 1 an
+//! internal failure: the engine, a fit that did not converge (its results are written, flagged),
+//! or Chromium failing to print.
 
 use std::io::Write;
 use std::path::Path;
@@ -12,8 +13,8 @@ use anyhow::{Context, Result};
 use clap::Parser;
 
 use stickslip::cli::{
-    BenchArgs, Cli, Command, CommonArgs, EvalModel, FitArgs, PulledMassArgs, ReportArgs, SweepArgs,
-    SweepModel, WoodpeckerArgs, WorksheetArgs,
+    BenchArgs, Cli, Command, CommonArgs, EvalModel, FitArgs, HandoutArgs, PulledMassArgs,
+    ReportArgs, SweepArgs, SweepModel, WoodpeckerArgs, WorksheetArgs,
 };
 use stickslip::error::Error;
 use stickslip::params::{
@@ -39,7 +40,7 @@ fn main() -> ExitCode {
             eprintln!("error: {e:#}");
             let internal = matches!(
                 e.downcast_ref::<Error>(),
-                Some(Error::Stalled { .. } | Error::NotConverged { .. })
+                Some(Error::Stalled { .. } | Error::NotConverged { .. } | Error::Pdf { .. })
             );
             ExitCode::from(if internal { 1 } else { 2 })
         }
@@ -75,6 +76,7 @@ fn run(cli: Cli) -> Result<()> {
             model,
         } => claims(seed, samples, &model),
         Command::Bench(args) => bench(&args),
+        Command::Handout(args) => handout(&args),
         Command::Sweep { model } => sweep(&model),
         Command::Fit(args) => fit(&args),
         Command::Worksheet(args) => worksheet(&args),
@@ -174,6 +176,25 @@ fn report(args: &ReportArgs) -> Result<()> {
         "wrote {} files for {} scenes to {}\n",
         written.len(),
         scenes.len(),
+        args.out.display()
+    ))
+}
+
+/// `stickslip handout`: the browser is looked up first and everything (the PDF included) is
+/// rendered before anything is written.
+fn handout(args: &HandoutArgs) -> Result<()> {
+    use stickslip::handout;
+    let Some(id) = args.scene.as_deref().filter(|_| !args.list) else {
+        return print_stdout(&handout::list()?);
+    };
+    let browser = args.pdf.then(handout::pdf::locate).transpose()?;
+    let scene = handout::find_scene(id)?;
+    let files = handout::render(&scene, &args.format, browser.as_deref())?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} to {}\n",
+        written.len(),
+        scene.id,
         args.out.display()
     ))
 }

@@ -1,15 +1,20 @@
 //! The report in a real browser: every HTML page of the default report is opened in headless
 //! Chromium, screenshotted (must not be blank) and printed to PDF, whose text (pdftotext) must
-//! hold the scene's title and a value of its verification table.
+//! hold the scene's title and a value of its verification table. Every handout printed with
+//! `stickslip handout --pdf` is exactly two A4 pages (pdfinfo).
 //!
-//! Needs `chromium` and `pdftotext` (Debian: chromium, poppler-utils; `.ci/run` installs them).
+//! Needs `chromium`, `pdftotext` and `pdfinfo` (Debian: chromium, poppler-utils; `.ci/run`
+//! installs them).
 //! Without them the test is skipped locally but fails on CI (CI=true).
+
+mod common;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use stickslip::handout;
 use stickslip::report::context::scene_tables;
-use stickslip::report::{builtin_scenes, render, write_all, Format};
+use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
 
 fn find(names: &[&str]) -> Option<PathBuf> {
     names.iter().find_map(|n| {
@@ -142,39 +147,99 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
 fn no_page_references_the_network() {
     let files = render(&builtin_scenes().unwrap(), &[Format::Html, Format::Md]).unwrap();
     for f in &files {
-        let text = String::from_utf8_lossy(&f.bytes);
-        // XML namespace names are identifiers, not resources: drop them before looking.
-        let without_namespaces = strip_namespaces(&text);
-        for bad in [
-            "http:",
-            "https:",
-            "src=\"//",
-            "href=\"//",
-            "@import",
-            "url(",
-        ] {
-            assert!(
-                !without_namespaces.contains(bad),
-                "{}: references {bad}",
-                f.path.display()
-            );
-        }
+        let found = common::network_references(&String::from_utf8_lossy(&f.bytes));
+        assert!(
+            found.is_empty(),
+            "{}: references {found:?}",
+            f.path.display()
+        );
     }
 }
 
-/// The text without `xmlns="…"` and `xmlns:prefix="…"` attributes.
-fn strip_namespaces(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    let mut rest = text;
-    while let Some(i) = rest.find("xmlns") {
-        out.push_str(&rest[..i]);
-        let after = &rest[i..];
-        let end = after
-            .find('"')
-            .and_then(|q| after[q + 1..].find('"').map(|e| q + 1 + e + 1))
-            .unwrap_or(after.len());
-        rest = &after[end..];
+/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file: exactly two
+/// A4 pages, holding the scene's title and a result of its chain of formulas.
+#[test]
+fn every_handout_prints_to_exactly_two_a4_pages() {
+    let (Some(browser), Some(pdfinfo), Some(pdftotext)) = (
+        find(&["chromium", "chromium-browser", "google-chrome"]),
+        find(&["pdfinfo"]),
+        find(&["pdftotext"]),
+    ) else {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install chromium and poppler-utils"
+        );
+        eprintln!("skipped: chromium or poppler-utils not installed");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    let mut scenes: Vec<(String, Scene)> = builtin_scenes()
+        .unwrap()
+        .into_iter()
+        .map(|s| (s.id.clone(), s))
+        .collect();
+    for entry in std::fs::read_dir("scenarios").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "toml") {
+            continue; // e.g. the fit's example track
+        }
+        let arg = path.display().to_string();
+        scenes.push((arg.clone(), handout::find_scene(&arg).unwrap()));
     }
-    out.push_str(rest);
-    out
+    // Two browsers at a time on this 2-core machine.
+    std::thread::scope(|scope| {
+        for chunk in scenes.chunks(scenes.len().div_ceil(2)) {
+            let (browser, pdfinfo, pdftotext) = (&browser, &pdfinfo, &pdftotext);
+            let dir = dir.path();
+            scope.spawn(move || {
+                for (arg, scene) in chunk {
+                    let out = dir.join(&scene.id);
+                    let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
+                        .args(["handout", arg, "--pdf", "--format", "md", "--out"])
+                        .arg(&out)
+                        .env("STICKSLIP_CHROMIUM", browser)
+                        .output()
+                        .unwrap();
+                    assert!(run.status.success(), "{arg}: {run:?}");
+                    let pdf = out.join(format!("{}.pdf", scene.id));
+                    let info = Command::new(pdfinfo).arg(&pdf).output().unwrap();
+                    let info = String::from_utf8_lossy(&info.stdout);
+                    let field = |name: &str| {
+                        info.lines()
+                            .find_map(|l| l.strip_prefix(name))
+                            .map(|v| v.trim().to_string())
+                            .unwrap_or_default()
+                    };
+                    assert_eq!(field("Pages:"), "2", "{arg}: page count");
+                    assert!(field("Page size:").ends_with("(A4)"), "{arg}: {info}");
+                    let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
+                    let text = String::from_utf8_lossy(&text.stdout);
+                    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
+                    let title = scene.title.split_whitespace().collect::<Vec<_>>().join(" ");
+                    assert!(
+                        text.contains(&title),
+                        "{arg}: title {title:?} not in the PDF"
+                    );
+                    let result = first_plain_result(scene);
+                    assert!(
+                        text.contains(&result),
+                        "{arg}: result {result} not in the PDF"
+                    );
+                }
+            });
+        }
+    });
+}
+
+/// The first result of the handout's chain written as a plain decimal ("0.05886").
+fn first_plain_result(scene: &Scene) -> String {
+    handout::build(scene)
+        .unwrap()
+        .steps
+        .iter()
+        .filter(|s| s.reason.is_empty())
+        .map(|s| common::result_tex(&s.tex))
+        .find(|number| number.parse::<f64>().is_ok())
+        .map(str::to_string)
+        .expect("a plain decimal result")
 }

@@ -25,6 +25,20 @@ pub enum Format {
 }
 
 const TEMPLATES: &[(&str, &str)] = &[
+    // Partials shared with the handout (crate::handout).
+    (
+        "verification_table.html",
+        include_str!("../../templates/verification_table.html.tera"),
+    ),
+    (
+        "verification_table.md",
+        include_str!("../../templates/verification_table.md.tera"),
+    ),
+    (
+        "claims.html",
+        include_str!("../../templates/claims.html.tera"),
+    ),
+    ("claims.md", include_str!("../../templates/claims.md.tera")),
     (
         "scene_body.html",
         include_str!("../../templates/scene_body.html.tera"),
@@ -41,7 +55,8 @@ const TEMPLATES: &[(&str, &str)] = &[
     ("scene.md", include_str!("../../templates/scene.md.tera")),
     ("index.md", include_str!("../../templates/index.md.tera")),
 ];
-const CSS: &str = include_str!("../../templates/style.css");
+/// The report's stylesheet (the handout adds its own print rules to it).
+pub(crate) const CSS: &str = include_str!("../../templates/style.css");
 const TITLE: &str = "stickslip: the paper's stick-slip models, verified";
 
 /// Tera filter `cell`: text made safe for a Markdown table cell (pipes escaped, one line).
@@ -58,13 +73,19 @@ pub(crate) fn markdown_cell(
     ))
 }
 
-fn templates() -> Result<Tera> {
+/// The report's templates and partials plus `extra` ones (name, source).
+pub(crate) fn templates(extra: &[(&str, &str)]) -> Result<Tera> {
     let mut tera = Tera::default();
     tera.autoescape_on(vec![".html"]);
     tera.register_filter("cell", markdown_cell);
-    tera.add_raw_templates(TEMPLATES.to_vec())
+    tera.add_raw_templates(TEMPLATES.iter().chain(extra).copied())
         .map_err(|e| template_error("(all)", &e))?;
     Ok(tera)
+}
+
+/// Template `name` rendered with `ctx`.
+pub(crate) fn page(tera: &Tera, name: &str, ctx: &tera::Context) -> Result<String> {
+    tera.render(name, ctx).map_err(|e| template_error(name, &e))
 }
 
 /// A template error with tera's whole cause chain on one line.
@@ -96,7 +117,7 @@ fn draw(id: &str, drawing: &Drawing) -> Result<String> {
 
 /// The parameter pair the claims of a scene are computed on: the scene's own set for its
 /// model, the paper's default set for the other.
-fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
+pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
     match &scene.setup {
         Setup::PulledMass(p) => (*p, WoodpeckerParams::default()),
         Setup::Woodpecker(p) => (PulledMassParams::default(), *p),
@@ -104,7 +125,7 @@ fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
 }
 
 /// The full context of a scene: tables, drawn figures and its claims.
-fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> {
+pub(crate) fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> {
     let mut ctx = scene_tables(scene)?;
     ctx.figures = scene
         .build_figures()?
@@ -141,7 +162,7 @@ struct IndexRow<'a> {
 
 /// Renders `scenes` in the given formats: pages, index and figure files.
 pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
-    let tera = templates()?;
+    let tera = templates(&[])?;
     // Claims are computed once per distinct parameter pair.
     let mut pairs: Vec<(PulledMassParams, WoodpeckerParams)> = Vec::new();
     for s in scenes {
@@ -164,11 +185,7 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
         .collect::<Result<_>>()?;
     let version = env!("CARGO_PKG_VERSION");
     let mut files = Vec::new();
-    let page = |name: &str, ctx: &tera::Context| -> Result<Vec<u8>> {
-        tera.render(name, ctx)
-            .map(String::into_bytes)
-            .map_err(|e| template_error(name, &e))
-    };
+    let page = |name: &str, ctx: &tera::Context| page(&tera, name, ctx).map(String::into_bytes);
     let index_rows: Vec<IndexRow> = contexts
         .iter()
         .map(|c| IndexRow {

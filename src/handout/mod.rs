@@ -1,0 +1,290 @@
+//! `stickslip handout`: one scene as a two-page lecture handout. Page 1: the set-up, the
+//! equation of motion and the chain of formulas from it to the result, each with the numbers
+//! substituted; page 2: figures, the verification table and the paper's claims for the scene.
+//!
+//! ```text
+//! scene → report context (tables, figures, claims) + derivation steps + equation of motion
+//!       → templates/handout.{html,md}.tera → files (+ PDF through headless Chromium, pdf.rs)
+//! ```
+//!
+//! The numbers substituted into each formula come from [`crate::derivation`]; this module only
+//! formats them and says which steps describe the scene's motion.
+
+use std::path::{Path, PathBuf};
+
+use serde::Serialize;
+
+use crate::claims::{self, Sample};
+use crate::derivation;
+use crate::error::{Error, Result};
+use crate::report::context::SceneCtx;
+use crate::report::render::{claim_params, page, scene_context, templates, CSS};
+use crate::report::scene::Setup;
+use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
+use crate::results::quantity::{find, PULLED_MASS, WOODPECKER};
+use physics::Note;
+
+mod layout;
+pub mod pdf;
+mod physics;
+
+const TEMPLATES: &[(&str, &str)] = &[
+    (
+        "handout.html",
+        include_str!("../../templates/handout.html.tera"),
+    ),
+    (
+        "handout.md",
+        include_str!("../../templates/handout.md.tera"),
+    ),
+];
+const HANDOUT_CSS: &str = include_str!("../../templates/handout.css");
+
+/// A line of the equation of motion, in symbols, with a sentence of physics.
+#[derive(Clone, Debug, Serialize)]
+pub struct MotionLine {
+    pub mathml: String,
+    pub tex: String,
+    pub note: String,
+}
+
+/// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
+#[derive(Clone, Debug, Serialize)]
+pub struct StepCtx {
+    /// The §7 key of the quantity ("t_slip").
+    pub key: String,
+    /// "(13)", "§1.4" …
+    pub equation: String,
+    /// MathML of "symbol = formula", "= substituted" and "= result" (no result where the form
+    /// does not apply), so that a long line wraps between them.
+    pub pieces: Vec<String>,
+    /// The whole line in LaTeX (Markdown).
+    pub tex: String,
+    /// Why the form does not describe this motion (shown instead of the result), or empty.
+    pub reason: String,
+    /// A label (definition) or a sentence of physics.
+    pub note: String,
+    /// CSS class: "label" or "numbers" (half a row), "sentence" (a whole row).
+    pub class: String,
+    /// A heading before the step, or empty.
+    pub heading: String,
+}
+
+/// Everything the handout shows besides the report's scene context.
+#[derive(Clone, Debug, Serialize)]
+pub struct Handout {
+    /// The report's context of the scene: parameters, regimes, the figures of the handout (in
+    /// number order), the checked rows of the verification table, claims. The templates see
+    /// it as `scene`, as the report's partials expect.
+    #[serde(skip)]
+    pub scene: SceneCtx,
+    /// The same figures as laid out on page 2: two columns.
+    pub figure_columns: [Vec<layout::Numbered>; 2],
+    /// Claims of the scene that did not fit on page 2, one line each.
+    pub claims_brief: Vec<String>,
+    /// The regime of the closed forms (linearized law) and the inequality that decides it.
+    pub regime: String,
+    pub regime_why: String,
+    pub motion: Vec<MotionLine>,
+    /// The chain of formulas that describe this motion.
+    pub steps: Vec<StepCtx>,
+    /// The formulas left out, one line per reason ("t_ST, v̄: why").
+    pub omitted: Vec<String>,
+    /// Closed forms of the verification table without a check (shown in the full report).
+    pub unchecked: usize,
+}
+
+/// The built-in scene `arg`, or the scenario file at `arg` when it names a file or ends in
+/// `.toml`.
+pub fn find_scene(arg: &str) -> Result<Scene> {
+    if let Some(scene) = builtin_scenes()?.into_iter().find(|s| s.id == arg) {
+        return Ok(scene);
+    }
+    let path = Path::new(arg);
+    if path.is_file() || path.extension().is_some_and(|e| e == "toml") {
+        return Scene::from_file(path);
+    }
+    Err(Error::UnknownScene {
+        id: arg.to_string(),
+    })
+}
+
+/// The built-in scene ids, each with the first sentence of its caption (`--list`).
+pub fn list() -> Result<String> {
+    let scenes = builtin_scenes()?;
+    let width = scenes.iter().map(|s| s.id.len()).max().unwrap_or(0);
+    Ok(scenes
+        .iter()
+        .map(|s| format!("{:width$}  {}\n", s.id, first_sentence(&s.caption)))
+        .collect())
+}
+
+/// The text up to the first full stop that ends a sentence (not "Fig. 6").
+fn first_sentence(text: &str) -> &str {
+    text.match_indices(". ")
+        .map(|(i, _)| &text[..=i])
+        .find(|head| !(head.ends_with("Fig.") || head.ends_with("Figs.")))
+        .unwrap_or(text)
+}
+
+/// The handout of `scene`: context, figures and claims.
+pub fn build(scene: &Scene) -> Result<Handout> {
+    let (pulled, wood) = claim_params(scene);
+    let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
+    let with_figures = Scene {
+        figures: layout::kinds(scene),
+        ..scene.clone()
+    };
+    let mut ctx = scene_context(&with_figures, &claims)?;
+    for f in &mut ctx.figures {
+        f.caption = first_sentence(&f.caption).to_string();
+    }
+    // The finding of each claim states its numbers; the list of them stays in the report.
+    for c in &mut ctx.claims {
+        c.numbers.clear();
+    }
+    let checked = ctx.verification.len();
+    ctx.verification
+        .retain(|r| r.class == "pass" || r.class == "fail");
+    let unchecked = checked - ctx.verification.len();
+    let page = layout::page_two(
+        std::mem::take(&mut ctx.figures),
+        ctx.verification.len(),
+        std::mem::take(&mut ctx.claims),
+    );
+    let mut placed: Vec<&layout::Numbered> = page.columns.iter().flatten().collect();
+    placed.sort_by_key(|n| n.number);
+    ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
+    ctx.claims = page.claims;
+    let (regime, regime_why) = ctx
+        .regimes
+        .first()
+        .map(|r| (r.regime.clone(), r.why.clone()))
+        .unwrap_or_default();
+    let (steps, omitted) = chain(&scene.setup);
+    let motion = physics::equation_of_motion(&scene.setup)
+        .iter()
+        .map(|(tex, note)| MotionLine {
+            mathml: math::mathml(tex),
+            tex: tex.to_string(),
+            note: note.to_string(),
+        })
+        .collect();
+    Ok(Handout {
+        scene: ctx,
+        figure_columns: page.columns,
+        claims_brief: page.brief,
+        regime,
+        regime_why,
+        motion,
+        steps,
+        omitted,
+        unchecked,
+    })
+}
+
+/// The chain of formulas of `setup`'s model: the steps of [`crate::derivation`] the handout
+/// explains ([`physics::note`]), in order. A step that does not describe this motion shows its
+/// reason in place of the result the first time that reason comes up; later steps with the
+/// same reason, and definitions that do not apply, are left out and named in one line per
+/// reason ("t_ST, v̄: why").
+fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
+    let (steps, table) = match setup {
+        Setup::PulledMass(p) => (derivation::pulled_mass(p), PULLED_MASS),
+        Setup::Woodpecker(p) => (derivation::woodpecker(p), WOODPECKER),
+    };
+    let mut shown = Vec::new();
+    let mut in_place: Vec<&str> = Vec::new();
+    let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();
+    // The heading of a step left out goes to the next step shown.
+    let mut heading = None;
+    for step in &steps {
+        let Some((note, step_heading)) = physics::note(setup, step.key) else {
+            continue;
+        };
+        heading = step_heading.or(heading);
+        let (class, text) = match note {
+            Note::Label(text) => ("label", text),
+            Note::Sentence(text) => ("sentence", text),
+            Note::Numbers => ("numbers", ""),
+        };
+        if let Some(reason) = step.reason.as_deref() {
+            if !matches!(note, Note::Sentence(_)) || in_place.contains(&reason) {
+                let symbol = find(table, step.key).map_or(step.key, |q| q.symbol);
+                match left_out.iter_mut().find(|(r, _)| *r == reason) {
+                    Some((_, symbols)) => symbols.push(symbol),
+                    None => left_out.push((reason, vec![symbol])),
+                }
+                continue;
+            }
+            in_place.push(reason);
+        }
+        // "symbol = formula", "= substituted", "= result": a long line wraps between pieces.
+        let mut pieces = match note {
+            Note::Numbers => vec![format!("{} = {}", step.symbol, step.substituted)],
+            _ => vec![
+                format!("{} = {}", step.symbol, step.formula),
+                format!("= {}", step.substituted),
+            ],
+        };
+        pieces.extend(step.result_tex().map(|r| format!("= {r}")));
+        shown.push(StepCtx {
+            key: step.key.to_string(),
+            equation: step.equation.to_string(),
+            pieces: pieces.iter().map(|p| math::mathml(p)).collect(),
+            tex: pieces.join(" "),
+            reason: step.reason.clone().unwrap_or_default(),
+            note: text.to_string(),
+            class: class.to_string(),
+            heading: heading.take().unwrap_or_default().to_string(),
+        });
+    }
+    let omitted = left_out
+        .into_iter()
+        .map(|(reason, symbols)| format!("{}: {reason}", symbols.join(", ")))
+        .collect();
+    (shown, omitted)
+}
+
+/// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) and, with
+/// a `browser`, prints the HTML to `<id>.pdf`. Nothing is written here.
+pub fn render(scene: &Scene, formats: &[Format], browser: Option<&Path>) -> Result<Vec<OutFile>> {
+    let handout = build(scene)?;
+    let mut ctx = tera::Context::new();
+    ctx.insert("scene", &handout.scene);
+    ctx.insert("handout", &handout);
+    ctx.insert("css", &format!("{CSS}{HANDOUT_CSS}"));
+    ctx.insert("version", env!("CARGO_PKG_VERSION"));
+    let tera = templates(TEMPLATES)?;
+    let id = &handout.scene.id;
+    let mut files = Vec::new();
+    let html_requested = formats.contains(&Format::Html);
+    if html_requested || browser.is_some() {
+        let html = page(&tera, "handout.html", &ctx)?;
+        if let Some(browser) = browser {
+            let name = format!("{id}.html");
+            let pdf = pdf::print(browser, &name, &html)?;
+            files.push(out(format!("{id}.pdf"), pdf));
+        }
+        if html_requested {
+            files.push(out(format!("{id}.html"), html.into_bytes()));
+        }
+    }
+    if formats.contains(&Format::Md) {
+        files.push(out(
+            format!("{id}.md"),
+            page(&tera, "handout.md", &ctx)?.into_bytes(),
+        ));
+        for f in &handout.scene.figures {
+            files.push(out(f.file.clone(), f.svg.clone().into_bytes()));
+        }
+    }
+    Ok(files)
+}
+
+fn out(path: String, bytes: Vec<u8>) -> OutFile {
+    OutFile {
+        path: PathBuf::from(path),
+        bytes,
+    }
+}

@@ -1,0 +1,174 @@
+//! Printing the handout to PDF with headless Chromium: find the browser, print a page from a
+//! private temporary folder (its own profile, no network, no first-run work), and hand back the
+//! bytes; the caller writes them with the report's atomic writer, so a failure leaves no PDF.
+
+use std::ffi::OsString;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::error::{Error, Result};
+
+/// Environment variable naming the browser binary; it wins over the search of PATH.
+pub const BROWSER_ENV: &str = "STICKSLIP_CHROMIUM";
+/// Names looked up on PATH, in order.
+const NAMES: &[&str] = &["chromium", "chromium-browser", "google-chrome"];
+/// A handout prints in 1–3 s; a browser stuck longer than this is killed.
+const TIMEOUT: Duration = Duration::from_secs(90);
+/// How often the running browser is polled.
+const POLL: Duration = Duration::from_millis(50);
+
+/// The browser to print with: `$STICKSLIP_CHROMIUM`, else the first of chromium,
+/// chromium-browser, google-chrome on PATH.
+pub fn locate() -> Result<PathBuf> {
+    locate_in(std::env::var_os(BROWSER_ENV), std::env::var_os("PATH"))
+}
+
+fn locate_in(named: Option<OsString>, path: Option<OsString>) -> Result<PathBuf> {
+    if let Some(named) = named.filter(|n| !n.is_empty()) {
+        let named = PathBuf::from(named);
+        // A bare name is looked up on PATH like the defaults.
+        let found = if named.components().count() == 1 {
+            search(path.as_deref(), &named)
+        } else {
+            is_executable(&named).then(|| named.clone())
+        };
+        return found.ok_or_else(|| Error::NoChromium {
+            detail: format!(
+                " ({BROWSER_ENV} = {}: not an executable file)",
+                named.display()
+            ),
+        });
+    }
+    NAMES
+        .iter()
+        .find_map(|n| search(path.as_deref(), Path::new(n)))
+        .ok_or_else(|| Error::NoChromium {
+            detail: String::new(),
+        })
+}
+
+fn search(path: Option<&std::ffi::OsStr>, name: &Path) -> Option<PathBuf> {
+    std::env::split_paths(path?)
+        .map(|dir| dir.join(name))
+        .find(|candidate| is_executable(candidate))
+}
+
+fn is_executable(path: &Path) -> bool {
+    use std::os::unix::fs::PermissionsExt;
+    fs::metadata(path).is_ok_and(|m| m.is_file() && m.permissions().mode() & 0o111 != 0)
+}
+
+/// Prints `html` (a self-contained page, saved as `name` in a temporary folder) with `browser`
+/// and returns the PDF's bytes.
+pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
+    let fail = |reason: String| Error::Pdf {
+        path: name.to_string(),
+        browser: browser.display().to_string(),
+        reason,
+    };
+    let work = tempfile::Builder::new()
+        .prefix("stickslip-pdf-")
+        .tempdir()
+        .map_err(|e| fail(format!("temporary folder: {e}")))?;
+    let page = work.path().join(name);
+    let pdf = work.path().join("out.pdf");
+    let log = work.path().join("chromium.log");
+    fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
+    let log_file = fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
+    let mut child = Command::new(browser)
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--disable-quic",
+            "--no-first-run",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--no-pdf-header-footer",
+        ])
+        .arg(format!(
+            "--user-data-dir={}",
+            work.path().join("profile").display()
+        ))
+        .arg(format!("--print-to-pdf={}", pdf.display()))
+        .arg(format!("file://{}", page.display()))
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        // A file, not a pipe: a chatty browser cannot block on a full pipe while we wait.
+        .stderr(log_file)
+        .spawn()
+        .map_err(|e| fail(format!("cannot start: {e}")))?;
+    let started = Instant::now();
+    let status = loop {
+        match child.try_wait() {
+            Ok(Some(status)) => break status,
+            Ok(None) if started.elapsed() > TIMEOUT => {
+                let _ = child.kill();
+                let _ = child.wait();
+                return Err(fail(format!(
+                    "no answer within {} s, stopped",
+                    TIMEOUT.as_secs()
+                )));
+            }
+            Ok(None) => std::thread::sleep(POLL),
+            Err(e) => return Err(fail(e.to_string())),
+        }
+    };
+    let bytes = fs::read(&pdf).unwrap_or_default();
+    if status.success() && bytes.starts_with(b"%PDF") {
+        return Ok(bytes);
+    }
+    let last_line = fs::read_to_string(&log)
+        .unwrap_or_default()
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .map_or(String::new(), |l| format!("; last message: {}", l.trim()));
+    Err(fail(format!("{status}, no PDF written{last_line}")))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn executable(dir: &Path, name: &str) -> PathBuf {
+        use std::os::unix::fs::PermissionsExt;
+        let path = dir.join(name);
+        fs::write(&path, "#!/bin/sh\nexit 3\n").unwrap();
+        fs::set_permissions(&path, fs::Permissions::from_mode(0o755)).unwrap();
+        path
+    }
+
+    #[test]
+    fn the_environment_variable_wins_over_path_and_must_name_an_executable() {
+        let dir = tempfile::tempdir().unwrap();
+        let on_path = executable(dir.path(), "chromium");
+        let other = executable(dir.path(), "my-browser");
+        let path = Some(dir.path().as_os_str().to_owned());
+        assert_eq!(locate_in(None, path.clone()).unwrap(), on_path);
+        assert_eq!(
+            locate_in(Some(other.clone().into()), path.clone()).unwrap(),
+            other
+        );
+        assert_eq!(
+            locate_in(Some("my-browser".into()), path.clone()).unwrap(),
+            other
+        );
+        let err = locate_in(Some(dir.path().join("nope").into()), path).unwrap_err();
+        assert!(err.to_string().contains("STICKSLIP_CHROMIUM"), "{err}");
+        let err = locate_in(None, Some(OsString::new())).unwrap_err();
+        assert!(err.to_string().starts_with("--pdf needs headless Chromium"));
+    }
+
+    #[test]
+    fn a_browser_that_prints_nothing_is_an_error() {
+        let dir = tempfile::tempdir().unwrap();
+        let fake = executable(dir.path(), "fake-chromium");
+        let err = print(&fake, "x.html", "<p>x</p>").unwrap_err();
+        assert!(matches!(err, Error::Pdf { .. }), "{err}");
+        assert!(err.to_string().contains("no PDF written"), "{err}");
+    }
+}

@@ -1,0 +1,42 @@
+//! Helpers shared by the integration tests.
+
+/// The result of a worked line "… = 5.397 \times 10^{-4}\,\mathrm{W}" as LaTeX, without
+/// its unit: "5.397 \times 10^{-4}".
+pub fn result_tex(worked: &str) -> &str {
+    let last = worked.rsplit("= ").next().unwrap_or_default();
+    last.split(r"\,").next().unwrap_or_default().trim()
+}
+
+/// The network references in a page (`http:`, `//host`, `@import`, `url(`), XML namespace
+/// names aside: those are identifiers, not resources. Empty for a self-contained page.
+pub fn network_references(text: &str) -> Vec<&'static str> {
+    let text = strip_namespaces(text);
+    [
+        "http:",
+        "https:",
+        "src=\"//",
+        "href=\"//",
+        "@import",
+        "url(",
+    ]
+    .into_iter()
+    .filter(|bad| text.contains(bad))
+    .collect()
+}
+
+/// The text without `xmlns="…"` and `xmlns:prefix="…"` attributes.
+fn strip_namespaces(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    let mut rest = text;
+    while let Some(i) = rest.find("xmlns") {
+        out.push_str(&rest[..i]);
+        let after = &rest[i..];
+        let end = after
+            .find('"')
+            .and_then(|q| after[q + 1..].find('"').map(|e| q + 1 + e + 1))
+            .unwrap_or(after.len());
+        rest = &after[end..];
+    }
+    out.push_str(rest);
+    out
+}

@@ -1,0 +1,265 @@
+//! `stickslip handout`: every built-in scene renders a self-contained two-page handout whose
+//! substituted numbers are the engine's closed forms; scenario files are accepted; bad input is
+//! refused with one line and nothing written; the Markdown is pinned by a snapshot.
+
+mod common;
+
+use std::path::Path;
+
+use assert_cmd::Command;
+use stickslip::handout::{self, Handout};
+use stickslip::report::scene::Setup;
+use stickslip::report::{builtin_scenes, Format, OutFile, Scene};
+use stickslip::results::{pulled_mass, woodpecker, Check, CheckValue};
+
+fn text<'a>(files: &'a [OutFile], name: &str) -> &'a str {
+    let f = files
+        .iter()
+        .find(|f| f.path == Path::new(name))
+        .unwrap_or_else(|| panic!("{name} rendered"));
+    std::str::from_utf8(&f.bytes).unwrap()
+}
+
+/// The §7 object of the scene's evaluation and its checks, straight from the engine.
+fn engine(scene: &Scene) -> (serde_json::Value, Vec<Check>) {
+    match &scene.setup {
+        Setup::PulledMass(p) => {
+            let e = pulled_mass::evaluate(p, scene.periods).unwrap();
+            (serde_json::to_value(&e).unwrap(), e.checks)
+        }
+        Setup::Woodpecker(p) => {
+            let e = woodpecker::evaluate(p, scene.periods).unwrap();
+            (serde_json::to_value(&e).unwrap(), e.checks)
+        }
+    }
+}
+
+/// The value of a §7 key: `closed_form` first, then `params`.
+fn section7(json: &serde_json::Value, key: &str) -> f64 {
+    json["closed_form"]
+        .get(key)
+        .or_else(|| json["params"].get(key))
+        .and_then(serde_json::Value::as_f64)
+        .unwrap_or_else(|| panic!("{key}: no §7 number"))
+}
+
+/// The result of a worked line as a number.
+fn result_of(tex: &str) -> f64 {
+    let number = common::result_tex(tex);
+    match number.split_once(r" \times 10^{") {
+        Some((mantissa, exponent)) => {
+            let exponent: i32 = exponent.trim_end_matches('}').parse().unwrap();
+            mantissa.parse::<f64>().unwrap() * 10f64.powi(exponent)
+        }
+        None => number
+            .parse()
+            .unwrap_or_else(|_| panic!("not a number: {tex}")),
+    }
+}
+
+/// `a` and `b` agree to 4 significant figures.
+fn same_to_4_figures(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 5e-4 * b.abs()
+}
+
+#[test]
+fn every_builtin_scene_renders_a_complete_self_contained_handout() {
+    for scene in builtin_scenes().unwrap() {
+        let id = &scene.id;
+        let files = handout::render(&scene, &[Format::Html, Format::Md], None).unwrap();
+        let html = text(&files, &format!("{id}.html"));
+        let md = text(&files, &format!("{id}.md"));
+        assert!(html.contains("<style>") && html.contains("@page"), "{id}");
+        for bad in ["<script", "<link", "<img"] {
+            assert!(!html.contains(bad), "{id}: {bad}");
+        }
+        for (name, page) in [("html", html), ("md", md)] {
+            let found = common::network_references(page);
+            assert!(found.is_empty(), "{id}.{name}: references {found:?}");
+        }
+        assert!(html.contains("<math"), "{id}: MathML");
+        assert_eq!(html.matches("<section class=\"page\"").count(), 2, "{id}");
+        assert!(html.contains("break-after: page"), "{id}: page break");
+        let handout: Handout = handout::build(&scene).unwrap();
+        let svgs = html.matches("<svg").count();
+        assert!((2..=3).contains(&svgs), "{id}: {svgs} figures");
+        assert_eq!(svgs, handout.scene.figures.len(), "{id}");
+        for f in &handout.scene.figures {
+            assert!(md.contains(&format!("]({})", f.file)), "{id}: {}", f.file);
+            assert!(files.iter().any(|g| g.path == Path::new(&f.file)), "{id}");
+        }
+        // The chain: every substituted result is the engine's value to 4 significant figures,
+        // and shows in both formats.
+        let (json, checks) = engine(&scene);
+        assert!(
+            handout.steps.len() >= 5,
+            "{id}: {} steps",
+            handout.steps.len()
+        );
+        for step in &handout.steps {
+            assert!(
+                md.contains(&format!("${}$", step.tex)),
+                "{id}: {}",
+                step.key
+            );
+            for piece in &step.pieces {
+                assert!(html.contains(piece.as_str()), "{id}: {}", step.key);
+            }
+            if step.reason.is_empty() {
+                let (shown, engine) = (result_of(&step.tex), section7(&json, &step.key));
+                assert!(
+                    same_to_4_figures(shown, engine),
+                    "{id}: {} = {shown}, engine {engine}",
+                    step.key
+                );
+            } else {
+                assert!(md.contains(&step.reason), "{id}: {}", step.key);
+            }
+        }
+        // Every check of the engine is a row of the verification table, in both formats.
+        assert_eq!(handout.scene.verification.len(), checks.len(), "{id}");
+        for c in &checks {
+            if let CheckValue::Number(x) = c.numeric {
+                let shown = stickslip::output::format::sig(Some(x), 8);
+                assert!(
+                    html.contains(&shown),
+                    "{id}: check {} = {shown}",
+                    c.quantity
+                );
+                assert!(md.contains(&shown), "{id}: check {} = {shown}", c.quantity);
+            }
+        }
+        // The claims of the scene, and only those.
+        for claim in 1..=8u8 {
+            let heading = format!("Claim {claim}: ");
+            let expected = scene.claims.contains(&claim);
+            assert_eq!(html.contains(&heading), expected, "{id}: claim {claim}");
+            assert_eq!(md.contains(&heading), expected, "{id}: claim {claim}");
+        }
+    }
+}
+
+#[test]
+fn the_handout_is_deterministic() {
+    let scene = handout::find_scene("fig15-double-slip-stick").unwrap();
+    let render = || handout::render(&scene, &[Format::Html, Format::Md], None).unwrap();
+    assert_eq!(render(), render());
+}
+
+#[test]
+fn markdown_handout_matches_its_snapshot() {
+    let scene = handout::find_scene("fig10-linear-slip-stick").unwrap();
+    let files = handout::render(&scene, &[Format::Md], None).unwrap();
+    insta::assert_snapshot!(
+        "handout_fig10_md",
+        text(&files, "fig10-linear-slip-stick.md")
+    );
+}
+
+fn stickslip() -> Command {
+    Command::cargo_bin("stickslip").unwrap()
+}
+
+#[test]
+fn a_scenario_file_becomes_a_handout() {
+    let dir = tempfile::tempdir().unwrap();
+    stickslip()
+        .args(["handout", "scenarios/set-c-late-stick.toml", "--out"])
+        .arg(dir.path())
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(dir.path().join("set-c-late-stick.html")).unwrap();
+    assert!(html.contains("slip_stick_late"));
+    let md = std::fs::read_to_string(dir.path().join("set-c-late-stick.md")).unwrap();
+    assert!(md.contains("](figures/set-c-late-stick-motion.svg)"));
+    assert!(dir
+        .path()
+        .join("figures/set-c-late-stick-motion.svg")
+        .exists());
+    assert!(!dir.path().join("set-c-late-stick.pdf").exists());
+}
+
+#[test]
+fn list_names_every_builtin_scene() {
+    let out = stickslip().args(["handout", "--list"]).output().unwrap();
+    assert!(out.status.success());
+    let listing = String::from_utf8(out.stdout).unwrap();
+    let scenes = builtin_scenes().unwrap();
+    assert_eq!(listing.lines().count(), scenes.len());
+    for (line, scene) in listing.lines().zip(&scenes) {
+        assert!(line.starts_with(&format!("{} ", scene.id)), "{line}");
+    }
+    assert!(listing.contains("(the paper's Fig. 6 set)"), "{listing}");
+}
+
+/// Runs `handout` with `args` into a fresh folder (environment `env` added): exit 2, one line
+/// on stderr containing `expect`, nothing written.
+fn refused(args: &[&str], env: &[(&str, &str)], expect: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let assert = stickslip()
+        .arg("handout")
+        .args(args)
+        .arg("--out")
+        .arg(&out)
+        .envs(env.iter().copied())
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains(expect), "{stderr}");
+    assert!(!stderr.contains("panicked"));
+    assert!(!out.exists(), "nothing may be written");
+}
+
+#[test]
+fn bad_handout_input_is_refused_without_writing() {
+    refused(&["fig99-nope"], &[], "stickslip handout --list");
+    refused(
+        &["scenarios/does-not-exist.toml"],
+        &[],
+        "does-not-exist.toml",
+    );
+    refused(
+        &["fig15-double-slip-stick", "--format", "pdf"],
+        &[],
+        "--format",
+    );
+    refused(
+        &["fig15-double-slip-stick", "--pdf"],
+        &[("STICKSLIP_CHROMIUM", "/nonexistent/chromium")],
+        "--pdf needs headless Chromium: install the `chromium` package or set STICKSLIP_CHROMIUM",
+    );
+}
+
+#[test]
+fn a_failing_browser_is_an_internal_error_and_leaves_no_pdf() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    let assert = stickslip()
+        .args(["handout", "fig05-immediate-slip", "--pdf", "--out"])
+        .arg(&out)
+        .env("STICKSLIP_CHROMIUM", "/bin/false")
+        .assert()
+        .code(1);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("to PDF with /bin/false failed"), "{stderr}");
+    assert!(!out.exists(), "nothing may be written");
+}
+
+#[test]
+fn an_unwritable_output_folder_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let blocker = dir.path().join("a-file");
+    std::fs::write(&blocker, "x").unwrap();
+    let assert = stickslip()
+        .args(["handout", "fig05-immediate-slip", "--out"])
+        .arg(blocker.join("sub"))
+        .assert()
+        .code(2);
+    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
+    assert!(stderr.contains("cannot write"), "{stderr}");
+    assert_eq!(stderr.trim_end().lines().count(), 1);
+    assert_eq!(std::fs::read(&blocker).unwrap(), b"x");
+}
