@@ -12,7 +12,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use stickslip::handout;
+use stickslip::handout::{self, pdf::HEADLESS_FLAGS};
 use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
 
@@ -27,18 +27,8 @@ fn find(names: &[&str]) -> Option<PathBuf> {
 
 fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Output {
     Command::new(browser)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--hide-scrollbars",
-            "--no-pdf-header-footer",
-        ])
+        .args(HEADLESS_FLAGS)
+        .arg("--hide-scrollbars")
         .arg(format!("--user-data-dir={}", profile.display()))
         .args(args)
         .output()

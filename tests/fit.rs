@@ -5,6 +5,8 @@
 //! outputs, determinism, and every malformed file refused (exit 2, one line naming the line,
 //! nothing written).
 
+mod common;
+
 use std::fs;
 use std::path::{Path, PathBuf};
 
@@ -463,26 +465,14 @@ Try: stickslip fit scenarios/tracked-toy-example.csv --scenario scenarios/fig26-
     assert_eq!(fs::read_to_string(&path).unwrap(), text);
 }
 
-/// Runs a fit that must be refused: exit 2, one line containing `want`, nothing written.
+/// Runs a fit that must be refused (`common::refused`) with `want` in its one line.
 fn refused(file_text: &str, extra: &[&str], want: &str) {
     let tmp = tempfile::tempdir().unwrap();
     let file = write(tmp.path(), "bad.csv", file_text);
-    let out = tmp.path().join("fit");
-    let output = stickslip()
-        .arg("fit")
-        .arg(&file)
-        .args(extra)
-        .arg("--out")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .get_output()
-        .clone();
-    let stderr = String::from_utf8(output.stderr).unwrap();
-    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    let mut cmd = stickslip();
+    cmd.arg("fit").arg(&file).args(extra);
+    let stderr = common::refused(cmd);
     assert!(stderr.contains(want), "wanted {want}: {stderr}");
-    assert!(output.stdout.is_empty());
-    assert!(!out.exists(), "nothing written: {want}");
 }
 
 #[test]

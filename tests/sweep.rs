@@ -3,6 +3,8 @@
 //! with small changes of the parameters"), the files written, invalid grid points kept as rows,
 //! and every bad request refused (exit 2, one line naming the parameter, nothing written).
 
+mod common;
+
 use std::fs;
 use std::path::Path;
 
@@ -140,23 +142,12 @@ fn invalid_grid_points_are_rows_not_errors() {
     }
 }
 
-/// Runs a sweep that must be refused: exit 2, one line naming `name`, no output folder.
+/// Runs a sweep that must be refused (`common::refused`) with `name` in its one line.
 fn refused(args: &[&str], name: &str) {
-    let tmp = tempfile::tempdir().unwrap();
-    let out = tmp.path().join("sweep");
-    let output = stickslip()
-        .args(args)
-        .arg("--out")
-        .arg(&out)
-        .assert()
-        .code(2)
-        .get_output()
-        .clone();
-    let stderr = String::from_utf8(output.stderr).unwrap();
-    assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+    let mut cmd = stickslip();
+    cmd.args(args);
+    let stderr = common::refused(cmd);
     assert!(stderr.contains(name), "{args:?}: {stderr}");
-    assert!(output.stdout.is_empty());
-    assert!(!out.exists(), "{args:?}: nothing written");
 }
 
 #[test]

@@ -60,6 +60,20 @@ fn is_executable(path: &Path) -> bool {
     fs::metadata(path).is_ok_and(|m| m.is_file() && m.permissions().mode() & 0o111 != 0)
 }
 
+/// Chromium's flags for printing offline without a desktop: headless, no sandbox (CI runs as
+/// root), no GPU, no network of its own, no page header or footer.
+pub const HEADLESS_FLAGS: &[&str] = &[
+    "--headless",
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+    "--no-pdf-header-footer",
+];
+
 /// Prints `html` (a self-contained page, saved as `name` in a temporary folder) with `browser`
 /// and returns the PDF's bytes.
 pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
@@ -78,17 +92,7 @@ pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
     fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
     let log_file = fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
     let mut child = Command::new(browser)
-        .args([
-            "--headless",
-            "--no-sandbox",
-            "--disable-gpu",
-            "--disable-quic",
-            "--no-first-run",
-            "--disable-background-networking",
-            "--disable-component-update",
-            "--disable-sync",
-            "--no-pdf-header-footer",
-        ])
+        .args(HEADLESS_FLAGS)
         .arg(format!(
             "--user-data-dir={}",
             work.path().join("profile").display()

@@ -1,4 +1,28 @@
 //! Helpers shared by the integration tests.
+// Each test binary compiles this module and uses only some of it.
+#![allow(dead_code)]
+
+use assert_cmd::Command;
+
+/// Runs `cmd` with `--out` a fresh folder: it must be refused (exit 2, one line on stderr, no
+/// panic, nothing on stdout) and write nothing. Returns stderr.
+pub fn refused(mut cmd: Command) -> String {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("out");
+    let output = cmd
+        .arg("--out")
+        .arg(&out)
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert!(output.stdout.is_empty(), "nothing printed: {stderr}");
+    assert!(!out.exists(), "nothing written: {stderr}");
+    stderr
+}
 
 /// The result of a worked line "… = 5.397 \times 10^{-4}\,\mathrm{W}" as LaTeX, without
 /// its unit: "5.397 \times 10^{-4}".
