@@ -10,14 +10,14 @@
 //! The numbers substituted into each formula come from [`crate::derivation`]; this module only
 //! formats them and says which steps describe the scene's motion.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use serde::Serialize;
 
 use crate::claims::{self, Sample};
 use crate::derivation;
 use crate::error::{Error, Result};
-use crate::report::context::SceneCtx;
+use crate::report::context::{FigureCtx, SceneCtx};
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
 use crate::report::scene::Setup;
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
@@ -264,27 +264,18 @@ pub fn render(scene: &Scene, formats: &[Format], browser: Option<&Path>) -> Resu
         if let Some(browser) = browser {
             let name = format!("{id}.html");
             let pdf = pdf::print(browser, &name, &html)?;
-            files.push(out(format!("{id}.pdf"), pdf));
+            files.push(OutFile::new(format!("{id}.pdf"), pdf));
         }
         if html_requested {
-            files.push(out(format!("{id}.html"), html.into_bytes()));
+            files.push(OutFile::new(format!("{id}.html"), html));
         }
     }
     if formats.contains(&Format::Md) {
-        files.push(out(
+        files.push(OutFile::new(
             format!("{id}.md"),
-            page(&tera, "handout.md", &ctx)?.into_bytes(),
+            page(&tera, "handout.md", &ctx)?,
         ));
-        for f in &handout.scene.figures {
-            files.push(out(f.file.clone(), f.svg.clone().into_bytes()));
-        }
+        files.extend(handout.scene.figures.iter().map(FigureCtx::out_file));
     }
     Ok(files)
-}
-
-fn out(path: String, bytes: Vec<u8>) -> OutFile {
-    OutFile {
-        path: PathBuf::from(path),
-        bytes,
-    }
 }

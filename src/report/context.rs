@@ -9,6 +9,7 @@ use crate::output::format::{rel, sig};
 use crate::params::{PulledMassParams, WoodpeckerParams};
 use crate::report::math::mathml;
 use crate::report::scene::{Scene, Setup};
+use crate::report::writer::OutFile;
 use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
 use crate::results::woodpecker::orbit_regime_id;
 use crate::results::{pulled_mass, woodpecker, Applicability, Check, CheckValue, Summary};
@@ -67,6 +68,13 @@ pub struct FigureCtx {
     pub caption: String,
     pub svg: String,
     pub file: String,
+}
+
+impl FigureCtx {
+    /// The figure as the SVG file beside a Markdown page (`file`).
+    pub fn out_file(&self) -> OutFile {
+        OutFile::new(&self.file, self.svg.as_bytes())
+    }
 }
 
 /// A claim of the paper with its computed verdict.

@@ -1,8 +1,6 @@
 //! Rendering the report: scenes → contexts (in parallel) → tera pages and SVG files, all in
 //! memory; [`super::writer`] writes them.
 
-use std::path::PathBuf;
-
 use rayon::prelude::*;
 use serde::Serialize;
 use tera::Tera;
@@ -22,6 +20,16 @@ pub enum Format {
     Html,
     /// GitHub-flavoured Markdown per scene, figures as SVG files beside it.
     Md,
+}
+
+impl Format {
+    /// The file extension, also the suffix of the format's template names.
+    pub fn ext(self) -> &'static str {
+        match self {
+            Format::Html => "html",
+            Format::Md => "md",
+        }
+    }
 }
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -210,14 +218,11 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
     index.insert("total", &total);
     index.insert("all_pass", &(passed == total));
     for format in formats {
-        let ext = match format {
-            Format::Html => "html",
-            Format::Md => "md",
-        };
-        files.push(OutFile {
-            path: PathBuf::from(format!("index.{ext}")),
-            bytes: page(&format!("index.{ext}"), &index)?,
-        });
+        let ext = format.ext();
+        files.push(OutFile::new(
+            format!("index.{ext}"),
+            page(&format!("index.{ext}"), &index)?,
+        ));
         for (i, ctx) in contexts.iter().enumerate() {
             let mut c = tera::Context::new();
             c.insert("scene", ctx);
@@ -225,28 +230,25 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
             c.insert("version", version);
             c.insert("prev", &i.checked_sub(1).map(|j| contexts[j].id.as_str()));
             c.insert("next", &contexts.get(i + 1).map(|n| n.id.as_str()));
-            files.push(OutFile {
-                path: PathBuf::from(format!("{}.{ext}", ctx.id)),
-                bytes: page(&format!("scene.{ext}"), &c)?,
-            });
+            files.push(OutFile::new(
+                format!("{}.{ext}", ctx.id),
+                page(&format!("scene.{ext}"), &c)?,
+            ));
         }
         match format {
             Format::Html => {
                 let mut all = tera::Context::new();
                 all.insert("scenes", &contexts);
                 all.insert("css", CSS);
-                files.push(OutFile {
-                    path: PathBuf::from("all-scenes.html"),
-                    bytes: page("all.html", &all)?,
-                });
+                files.push(OutFile::new("all-scenes.html", page("all.html", &all)?));
             }
             Format::Md => {
-                for f in contexts.iter().flat_map(|c| &c.figures) {
-                    files.push(OutFile {
-                        path: PathBuf::from(&f.file),
-                        bytes: f.svg.clone().into_bytes(),
-                    });
-                }
+                files.extend(
+                    contexts
+                        .iter()
+                        .flat_map(|c| &c.figures)
+                        .map(FigureCtx::out_file),
+                );
             }
         }
     }

@@ -14,6 +14,15 @@ pub struct OutFile {
     pub bytes: Vec<u8>,
 }
 
+impl OutFile {
+    pub fn new(path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) -> Self {
+        OutFile {
+            path: path.into(),
+            bytes: bytes.into(),
+        }
+    }
+}
+
 fn output_error(path: &Path, e: impl std::fmt::Display) -> Error {
     Error::Output {
         path: path.display().to_string(),

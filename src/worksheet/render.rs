@@ -3,10 +3,7 @@
 //! Markdown, and answer-key.json ([`super::json`]). Pure: everything in memory; the caller
 //! writes the files.
 
-use std::path::PathBuf;
-
 use serde::Serialize;
-use tera::Tera;
 
 use super::answer::{Answer, Comparison, Value};
 use super::json::key_json;
@@ -17,7 +14,7 @@ use crate::error::Result;
 use crate::output::format::{rel, sig};
 use crate::params::ModelName;
 use crate::report::math::mathml;
-use crate::report::render::{markdown_cell, template_error};
+use crate::report::render::{page, templates, CSS};
 use crate::report::{Format, OutFile};
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -38,11 +35,8 @@ const TEMPLATES: &[(&str, &str)] = &[
         include_str!("../../templates/answer-key.md.tera"),
     ),
 ];
-/// The report's stylesheet and the worksheet's additions (answer boxes, one student per page).
-const CSS: [&str; 2] = [
-    include_str!("../../templates/style.css"),
-    include_str!("../../templates/worksheet.css"),
-];
+/// The worksheet's additions to the report's stylesheet (answer boxes, one student per page).
+const WORKSHEET_CSS: &str = include_str!("../../templates/worksheet.css");
 /// Significant figures of the answers, and of the integration beside them in the key.
 const ANSWER_DIGITS: usize = 4;
 const NUMERIC_DIGITS: usize = 10;
@@ -281,65 +275,37 @@ fn key_ctx(s: &Student) -> KeyCtx {
     }
 }
 
-// ---------------------------------------------------------------------------------------------
-// Pages
-
-fn templates() -> Result<Tera> {
-    let mut tera = Tera::default();
-    tera.autoescape_on(vec![".html"]);
-    tera.register_filter("cell", markdown_cell);
-    tera.add_raw_templates(TEMPLATES.to_vec())
-        .map_err(|e| template_error("(worksheet)", &e))?;
-    Ok(tera)
-}
-
 /// The worksheet files in `formats` (HTML: worksheets.html, answer-key.html; Markdown:
 /// worksheets.md, answer-key.md, figures/*.svg) and answer-key.json.
 pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
-    let tera = templates()?;
+    let tera = templates(TEMPLATES)?;
     let mut ctx = tera::Context::new();
     ctx.insert("title", title(w.model));
     ctx.insert("intro", intro(w.model));
     ctx.insert("regime", w.regime);
     ctx.insert("seed", &w.seed);
     ctx.insert("count", &w.students.len());
-    ctx.insert("css", &CSS.concat());
+    ctx.insert("css", &format!("{CSS}{WORKSHEET_CSS}"));
     ctx.insert("version", env!("CARGO_PKG_VERSION"));
     ctx.insert("questions", &questions_ctx(w.model, &w.questions));
     let sheets: Vec<SheetCtx> = w.students.iter().map(sheet_ctx).collect();
     ctx.insert("sheets", &sheets);
     let keys: Vec<KeyCtx> = w.students.iter().map(key_ctx).collect();
     ctx.insert("keys", &keys);
-    let page = |name: &str| -> Result<OutFile> {
-        let text = tera
-            .render(name, &ctx)
-            .map_err(|e| template_error(name, &e))?;
-        Ok(OutFile {
-            path: PathBuf::from(name),
-            bytes: text.into_bytes(),
-        })
-    };
     let mut files = Vec::new();
     for format in formats {
-        let ext = match format {
-            Format::Html => "html",
-            Format::Md => "md",
-        };
-        files.push(page(&format!("worksheets.{ext}"))?);
-        files.push(page(&format!("answer-key.{ext}"))?);
+        for name in ["worksheets", "answer-key"] {
+            let name = format!("{name}.{}", format.ext());
+            files.push(OutFile::new(&name, page(&tera, &name, &ctx)?));
+        }
         if *format == Format::Md {
             files.extend(w.students.iter().filter_map(|s| {
-                s.figure.as_ref().map(|svg| OutFile {
-                    path: PathBuf::from(figure_file(s.number)),
-                    bytes: svg.clone().into_bytes(),
-                })
+                let svg = s.figure.as_deref()?;
+                Some(OutFile::new(figure_file(s.number), svg))
             }));
         }
     }
-    files.push(OutFile {
-        path: PathBuf::from("answer-key.json"),
-        bytes: key_json(w)?,
-    });
+    files.push(OutFile::new("answer-key.json", key_json(w)?));
     Ok(files)
 }
 
