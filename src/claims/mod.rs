@@ -35,6 +35,7 @@ use crate::error::Result;
 use crate::formula::woodpecker::Counterpart;
 use crate::model::{self, LawKind};
 use crate::params::{invalid, PulledMassParams, WoodpeckerParams, DEFAULT_PERIODS};
+use crate::results::rel_diff;
 
 pub use lever::halt_threshold_z0;
 
@@ -214,16 +215,6 @@ fn run_pulled(p: &PulledMassParams, law: LawKind) -> Result<Integrated> {
 fn run_wood(p: &WoodpeckerParams, law: LawKind) -> Result<Integrated> {
     let body = model::woodpecker::body(p);
     steady_run(&body, &model::woodpecker::force_law(p, law)?)
-}
-
-/// |a − b| / max(|a|, |b|) (0 when both vanish).
-fn rel_diff(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
-        0.0
-    } else {
-        (a - b).abs() / scale
-    }
 }
 
 /// (max − min) / max|x| of the values (0 for fewer than two).

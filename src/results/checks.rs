@@ -5,6 +5,16 @@ use serde::Serialize;
 /// Relative tolerance of every numeric check (physics.md §4: observed ≤ 4e-13).
 pub const TOLERANCE: f64 = 1e-9;
 
+/// |a − b| / max(|a|, |b|) (0 when both vanish).
+pub fn rel_diff(a: f64, b: f64) -> f64 {
+    let scale = a.abs().max(b.abs());
+    if scale == 0.0 {
+        0.0
+    } else {
+        (a - b).abs() / scale
+    }
+}
+
 /// A checked value: a number, or a label such as a regime name.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(untagged)]

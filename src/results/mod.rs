@@ -7,7 +7,7 @@ pub mod quantity;
 pub mod summary;
 pub mod woodpecker;
 
-pub use checks::{Check, CheckValue, TOLERANCE};
+pub use checks::{rel_diff, Check, CheckValue, TOLERANCE};
 pub use summary::{Power, Summary};
 
 /// Whether a paper formula describes the computed motion, and why not.

@@ -13,7 +13,7 @@ use crate::derivation::{self, Step};
 use crate::engine::Run;
 use crate::error::Result;
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
-use crate::results::{pulled_mass, woodpecker, Check, CheckValue, TOLERANCE};
+use crate::results::{pulled_mass, rel_diff, woodpecker, Check, CheckValue, TOLERANCE};
 
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
 /// (not so when the speed grows far beyond the first maximum, as in continuous slip).
@@ -154,15 +154,6 @@ pub fn answer(
     Ok(Some(Answers { answers, figure }))
 }
 
-fn rel_error(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
-        0.0
-    } else {
-        (a - b).abs() / scale
-    }
-}
-
 /// A closed form confirmed by the passing check `check` of the integration.
 fn measured(
     question: &'static Question,
@@ -185,7 +176,7 @@ fn measured(
 /// agree within [`TOLERANCE`].
 fn confirmed(question: &'static Question, step: &Step, numeric: f64) -> Option<Answer> {
     let value = step.value?;
-    let rel = rel_error(value, numeric);
+    let rel = rel_diff(value, numeric);
     (rel <= TOLERANCE).then(|| Answer {
         question,
         value: Value::Number(value),
