@@ -9,16 +9,10 @@ use std::path::Path;
 use assert_cmd::Command;
 use stickslip::handout::{self, Handout};
 use stickslip::report::scene::Setup;
-use stickslip::report::{builtin_scenes, Format, OutFile, Scene};
+use stickslip::report::{builtin_scenes, Format, Scene};
 use stickslip::results::{pulled_mass, woodpecker, Check, CheckValue};
 
-fn text<'a>(files: &'a [OutFile], name: &str) -> &'a str {
-    let f = files
-        .iter()
-        .find(|f| f.path == Path::new(name))
-        .unwrap_or_else(|| panic!("{name} rendered"));
-    std::str::from_utf8(&f.bytes).unwrap()
-}
+use common::rendered;
 
 /// The §7 object of the scene's evaluation and its checks, straight from the engine.
 fn engine(scene: &Scene) -> (serde_json::Value, Vec<Check>) {
@@ -67,8 +61,8 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
     for scene in builtin_scenes().unwrap() {
         let id = &scene.id;
         let files = handout::render(&scene, &[Format::Html, Format::Md], None).unwrap();
-        let html = text(&files, &format!("{id}.html"));
-        let md = text(&files, &format!("{id}.md"));
+        let html = rendered(&files, &format!("{id}.html"));
+        let md = rendered(&files, &format!("{id}.md"));
         assert!(html.contains("<style>") && html.contains("@page"), "{id}");
         for bad in ["<script", "<link", "<img"] {
             assert!(!html.contains(bad), "{id}: {bad}");
@@ -152,7 +146,7 @@ fn markdown_handout_matches_its_snapshot() {
     let files = handout::render(&scene, &[Format::Md], None).unwrap();
     insta::assert_snapshot!(
         "handout_fig10_md",
-        text(&files, "fig10-linear-slip-stick.md")
+        rendered(&files, "fig10-linear-slip-stick.md")
     );
 }
 
@@ -239,16 +233,7 @@ fn a_failing_browser_is_an_internal_error_and_leaves_no_pdf() {
 
 #[test]
 fn an_unwritable_output_folder_is_refused() {
-    let dir = tempfile::tempdir().unwrap();
-    let blocker = dir.path().join("a-file");
-    std::fs::write(&blocker, "x").unwrap();
-    let assert = stickslip()
-        .args(["handout", "fig05-immediate-slip", "--out"])
-        .arg(blocker.join("sub"))
-        .assert()
-        .code(2);
-    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
-    assert!(stderr.contains("cannot write"), "{stderr}");
-    assert_eq!(stderr.trim_end().lines().count(), 1);
-    assert_eq!(std::fs::read(&blocker).unwrap(), b"x");
+    let mut cmd = stickslip();
+    cmd.args(["handout", "fig05-immediate-slip"]);
+    common::unwritable(cmd);
 }

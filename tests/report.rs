@@ -1,18 +1,14 @@
 //! The report: Markdown snapshots, structure of the pages, determinism, and the `report`
 //! command's handling of user scenarios and bad input.
 
+mod common;
+
 use std::path::Path;
 
 use assert_cmd::Command;
 use stickslip::report::{builtin_scenes, render, Format, OutFile};
 
-fn file<'a>(files: &'a [OutFile], name: &str) -> &'a str {
-    let f = files
-        .iter()
-        .find(|f| f.path == Path::new(name))
-        .unwrap_or_else(|| panic!("{name} rendered"));
-    std::str::from_utf8(&f.bytes).unwrap()
-}
+use common::rendered;
 
 fn default_report() -> Vec<OutFile> {
     render(&builtin_scenes().unwrap(), &[Format::Html, Format::Md]).unwrap()
@@ -21,9 +17,9 @@ fn default_report() -> Vec<OutFile> {
 #[test]
 fn markdown_pages_match_their_snapshots() {
     let files = default_report();
-    insta::assert_snapshot!("index_md", file(&files, "index.md"));
-    insta::assert_snapshot!("fig10_md", file(&files, "fig10-linear-slip-stick.md"));
-    insta::assert_snapshot!("fig15_md", file(&files, "fig15-double-slip-stick.md"));
+    insta::assert_snapshot!("index_md", rendered(&files, "index.md"));
+    insta::assert_snapshot!("fig10_md", rendered(&files, "fig10-linear-slip-stick.md"));
+    insta::assert_snapshot!("fig15_md", rendered(&files, "fig15-double-slip-stick.md"));
 }
 
 #[test]
@@ -63,7 +59,7 @@ fn html_pages_are_self_contained_and_every_figure_is_inline() {
             assert!(!text.contains(bad), "{}: {bad}", f.path.display());
         }
     }
-    let page = file(&files, "fig09-domain.html");
+    let page = rendered(&files, "fig09-domain.html");
     assert_eq!(page.matches("<svg").count(), 2, "two regime maps inline");
     assert!(page.contains("<math"), "MathML formulas");
     // Every Markdown figure link has its SVG file.
@@ -87,7 +83,7 @@ fn the_report_is_deterministic() {
 #[test]
 fn every_default_scene_passes_all_its_checks() {
     let files = default_report();
-    let index = file(&files, "index.md");
+    let index = rendered(&files, "index.md");
     let summary = index
         .split("Checks passed in all scenes: **")
         .nth(1)
@@ -173,15 +169,7 @@ fn bad_report_input_is_refused_without_writing() {
 
 #[test]
 fn an_unwritable_output_folder_is_refused() {
-    let dir = tempfile::tempdir().unwrap();
-    let blocker = dir.path().join("a-file");
-    std::fs::write(&blocker, "x").unwrap();
-    let assert = stickslip()
-        .args(["report", "scenarios/set-b-slip-stick.toml", "--out"])
-        .arg(blocker.join("sub"))
-        .assert()
-        .code(2);
-    let stderr = String::from_utf8_lossy(&assert.get_output().stderr).into_owned();
-    assert!(stderr.contains("cannot write"), "{stderr}");
-    assert_eq!(stderr.trim_end().lines().count(), 1);
+    let mut cmd = stickslip();
+    cmd.args(["report", "scenarios/set-b-slip-stick.toml"]);
+    common::unwritable(cmd);
 }

@@ -2,7 +2,19 @@
 // Each test binary compiles this module and uses only some of it.
 #![allow(dead_code)]
 
+use std::path::Path;
+
 use assert_cmd::Command;
+use stickslip::report::OutFile;
+
+/// The text of the rendered file `name` among `files`.
+pub fn rendered<'a>(files: &'a [OutFile], name: &str) -> &'a str {
+    let f = files
+        .iter()
+        .find(|f| f.path == Path::new(name))
+        .unwrap_or_else(|| panic!("{name} rendered"));
+    std::str::from_utf8(&f.bytes).unwrap()
+}
 
 /// Runs `cmd` with `--out` a fresh folder: it must be refused (exit 2, one line on stderr, no
 /// panic, nothing on stdout) and write nothing. Returns stderr.
@@ -21,6 +33,26 @@ pub fn refused(mut cmd: Command) -> String {
     assert!(!stderr.contains("panicked"), "{stderr}");
     assert!(output.stdout.is_empty(), "nothing printed: {stderr}");
     assert!(!out.exists(), "nothing written: {stderr}");
+    stderr
+}
+
+/// Runs `cmd` with `--out` a folder below a plain file: it must exit 2 with one line
+/// "error: cannot write …" and leave the file as it was. Returns stderr.
+pub fn unwritable(mut cmd: Command) -> String {
+    let tmp = tempfile::tempdir().unwrap();
+    let blocker = tmp.path().join("a-file");
+    std::fs::write(&blocker, b"x").unwrap();
+    let output = cmd
+        .arg("--out")
+        .arg(blocker.join("sub"))
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.starts_with("error: cannot write"), "{stderr}");
+    assert_eq!(std::fs::read(&blocker).unwrap(), b"x");
     stderr
 }
 
