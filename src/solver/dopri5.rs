@@ -788,38 +788,12 @@ pub(super) fn next_breakpoint(problem: &Problem, t: f64) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::exact::Exact;
-    use super::super::test_support::event_error;
+    use super::super::test_support::{
+        back_and_forth, event_error, exact, last_period_kinds, pulled, set_b, woodpecker_fig15,
+    };
     use super::*;
     use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
-    use crate::model::{pulled_mass, woodpecker, LawKind};
-    use crate::params::{PulledMassParams, WoodpeckerParams};
-
-    /// The pulled mass with μs 0.4, μd 0.35 and force F (N), other parameters default, over
-    /// `periods` periods.
-    fn pulled(force: f64, law: LawKind, periods: f64) -> Problem {
-        let p = PulledMassParams {
-            mu_s: 0.4,
-            mu_d: 0.35,
-            force,
-            ..PulledMassParams::default()
-        };
-        let law = pulled_mass::force_law(&p, law).unwrap();
-        Problem {
-            body: pulled_mass::body(&p),
-            t_end: periods * law.period,
-            law,
-        }
-    }
-
-    /// Set B: F = 0.10 N, one slip and one stick per period.
-    fn set_b(law: LawKind) -> Problem {
-        pulled(0.10, law, 4.0)
-    }
-
-    fn exact(problem: &Problem) -> Solution {
-        Exact.solve(problem, Setting::Tolerance(1.0)).unwrap()
-    }
+    use crate::model::LawKind;
 
     #[test]
     fn smooth_oscillator_meets_the_tolerance() {
@@ -841,7 +815,7 @@ mod tests {
     #[test]
     fn set_b_event_times_match_exact_within_1e8_s_at_tol_1e10() {
         for law in [LawKind::Harmonic, LawKind::Linear] {
-            let problem = set_b(law);
+            let problem = set_b(law, 4.0);
             let want = exact(&problem);
             let got = Dopri5.solve(&problem, Setting::Tolerance(1e-10)).unwrap();
             assert_eq!(
@@ -861,7 +835,7 @@ mod tests {
     fn set_b_event_error_decreases_with_the_tolerance() {
         // Harmonic law: on the linear law the slip arcs are cubics, which DOPRI5 integrates
         // exactly between breakpoints (errors at round-off for every tolerance).
-        let problem = set_b(LawKind::Harmonic);
+        let problem = set_b(LawKind::Harmonic, 4.0);
         let want = exact(&problem);
         let errors: Vec<f64> = [1e-4, 1e-6, 1e-8, 1e-10, 1e-12]
             .iter()
@@ -931,60 +905,16 @@ mod tests {
 
     #[test]
     fn woodpecker_fig15_has_two_slips_and_two_sticks_in_the_last_period() {
-        let p = WoodpeckerParams::default();
         for law in [LawKind::Harmonic, LawKind::Linear] {
-            let force_law = woodpecker::force_law(&p, law).unwrap();
-            let period = force_law.period;
-            let problem = Problem {
-                body: woodpecker::body(&p),
-                t_end: 6.0 * period,
-                law: force_law,
-            };
-            let last = |s: &Solution| -> Vec<MethodEvent> {
-                s.events
-                    .iter()
-                    .filter(|e| e.t >= 5.0 * period)
-                    .copied()
-                    .collect()
-            };
+            let problem = woodpecker_fig15(law);
             let want = exact(&problem);
             let got = Dopri5.solve(&problem, Setting::Tolerance(1e-6)).unwrap();
-            let (w, g) = (last(&want), last(&got));
-            let kinds: Vec<_> = g.iter().map(|e| e.kind).collect();
+            let kinds = last_period_kinds(&got, &problem);
             assert_eq!(kinds, ["slip", "stick", "slip", "stick"], "{law:?}");
-            for (a, b) in g.iter().zip(&w) {
-                // Measured: ≤ 1.0e-6 s (harmonic), round-off (linear).
-                assert!((a.t - b.t).abs() < 1e-5, "{law:?}: {a:?} vs {b:?}");
-            }
-            assert!(event_error(&got, &want) < 1e-5, "{law:?}");
+            // Measured: ≤ 1.0e-6 s (harmonic), round-off (linear).
+            let err = event_error(&got, &want);
+            assert!(err < 1e-5, "{law:?}: {err:e}");
             assert!((got.x_end - want.x_end).abs() < 1e-5, "{law:?}");
-        }
-    }
-
-    /// D = cos ωt (N) with a constant N_f = 0.5 N: an immediate slip at t = 0, then the body
-    /// slides back and forth, turning without stopping (a reversal) where |D| > μs N_f at
-    /// v = 0.
-    fn back_and_forth() -> Problem {
-        let omega = std::f64::consts::TAU;
-        let law = ForceLaw::new(
-            1.0,
-            vec![Piece {
-                start: 0.0,
-                end: 1.0,
-                basis: Basis::Cos { omega },
-                drive: Affine::new(0.0, 1.0),
-                normal: Affine::new(0.5, 0.0),
-            }],
-        )
-        .unwrap();
-        Problem {
-            body: Body {
-                mass: 1.0,
-                mu_s: 0.4,
-                mu_d: 0.35,
-            },
-            law,
-            t_end: 3.0,
         }
     }
 
@@ -1084,7 +1014,7 @@ mod tests {
 
     #[test]
     fn a_step_setting_or_a_bad_tolerance_is_refused() {
-        let problem = set_b(LawKind::Linear);
+        let problem = set_b(LawKind::Linear, 4.0);
         for setting in [
             Setting::Step(1e-3),
             Setting::Tolerance(0.0),

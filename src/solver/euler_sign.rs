@@ -90,7 +90,7 @@ mod tests {
     use super::*;
     use crate::model::LawKind;
     use crate::solver::exact::Exact;
-    use crate::solver::moreau::tests::{fitted_slope, set_b};
+    use crate::solver::test_support::{fitted_slope, set_b};
 
     #[test]
     fn spurious_reversals_per_period_grow_like_one_over_h_while_exact_has_none() {

@@ -141,10 +141,14 @@ pub trait Method: Sync {
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution>;
 }
 
-/// Helpers shared by the methods' tests.
+/// Helpers shared by the methods' tests: the problems they solve and how they compare.
 #[cfg(test)]
 pub(crate) mod test_support {
-    use super::Solution;
+    use super::exact::Exact;
+    use super::{Method, Problem, Setting, Solution};
+    use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
+    use crate::model::{pulled_mass, woodpecker, LawKind};
+    use crate::params::{PulledMassParams, WoodpeckerParams};
 
     /// Largest event-time error (s), after checking that the event kinds agree.
     pub fn event_error(got: &Solution, want: &Solution) -> f64 {
@@ -155,5 +159,94 @@ pub(crate) mod test_support {
             .zip(&want.events)
             .map(|(a, b)| (a.t - b.t).abs())
             .fold(0.0, f64::max)
+    }
+
+    /// The exact event-driven engine's solution (it needs no setting).
+    pub fn exact(problem: &Problem) -> Solution {
+        Exact.solve(problem, Setting::Step(1.0)).unwrap()
+    }
+
+    /// The pulled mass with μs 0.4, μd 0.35 and force F (N), other parameters default, over
+    /// `periods` periods.
+    pub fn pulled(force: f64, law: LawKind, periods: f64) -> Problem {
+        let p = PulledMassParams {
+            mu_s: 0.4,
+            mu_d: 0.35,
+            force,
+            ..PulledMassParams::default()
+        };
+        let law = pulled_mass::force_law(&p, law).expect("valid law");
+        Problem {
+            body: pulled_mass::body(&p),
+            t_end: periods * law.period,
+            law,
+        }
+    }
+
+    /// Set B (physics.md §5): F = 0.10 N: one slip and one stick per period.
+    pub fn set_b(law: LawKind, periods: f64) -> Problem {
+        pulled(0.10, law, periods)
+    }
+
+    /// The woodpecker of the paper's Fig. 15 (the default set) over 6 periods: two slips and
+    /// two sticks per period once steady.
+    pub fn woodpecker_fig15(law: LawKind) -> Problem {
+        let p = WoodpeckerParams::default();
+        let law = woodpecker::force_law(&p, law).expect("valid law");
+        Problem {
+            body: woodpecker::body(&p),
+            t_end: 6.0 * law.period,
+            law,
+        }
+    }
+
+    /// D = cos 2πt (N) with a constant N_f = 0.5 N over 3 s: an immediate slip at t = 0, then
+    /// the body slides back and forth, turning without stopping (a reversal) where
+    /// |D| > μs N_f at v = 0.
+    pub fn back_and_forth() -> Problem {
+        let law = ForceLaw::new(
+            1.0,
+            vec![Piece {
+                start: 0.0,
+                end: 1.0,
+                basis: Basis::Cos {
+                    omega: std::f64::consts::TAU,
+                },
+                drive: Affine::new(0.0, 1.0),
+                normal: Affine::new(0.5, 0.0),
+            }],
+        )
+        .unwrap();
+        Problem {
+            body: Body {
+                mass: 1.0,
+                mu_s: 0.4,
+                mu_d: 0.35,
+            },
+            law,
+            t_end: 3.0,
+        }
+    }
+
+    /// The kinds of the events in the last period of `problem` (a whole number of periods).
+    pub fn last_period_kinds(s: &Solution, problem: &Problem) -> Vec<&'static str> {
+        let period = problem.law.period;
+        let start = ((problem.t_end / period).round() - 1.0) * period;
+        s.events
+            .iter()
+            .filter(|e| e.t >= start)
+            .map(|e| e.kind)
+            .collect()
+    }
+
+    /// Least-squares slope of log(err) against log(h).
+    pub fn fitted_slope(points: &[(f64, f64)]) -> f64 {
+        let n = points.len() as f64;
+        let (lx, ly): (Vec<f64>, Vec<f64>) = points.iter().map(|&(h, e)| (h.ln(), e.ln())).unzip();
+        let mx = lx.iter().sum::<f64>() / n;
+        let my = ly.iter().sum::<f64>() / n;
+        let sxy: f64 = lx.iter().zip(&ly).map(|(a, b)| (a - mx) * (b - my)).sum();
+        let sxx: f64 = lx.iter().map(|a| (a - mx) * (a - mx)).sum();
+        sxy / sxx
     }
 }

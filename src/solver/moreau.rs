@@ -146,38 +146,11 @@ pub fn solve_theta(problem: &Problem, h: f64, theta: f64) -> Result<Solution> {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-    use crate::model::{pulled_mass, LawKind};
-    use crate::params::PulledMassParams;
+    use crate::model::LawKind;
     use crate::solver::exact::Exact;
-
-    /// Set B (physics.md §5): μs = 0.4, μd = 0.35, F = 0.10 N: one slip and one stick per period.
-    pub(crate) fn set_b(law: LawKind, periods: f64) -> Problem {
-        let p = PulledMassParams {
-            mu_s: 0.4,
-            mu_d: 0.35,
-            force: 0.10,
-            ..PulledMassParams::default()
-        };
-        let law = pulled_mass::force_law(&p, law).expect("valid law");
-        Problem {
-            body: pulled_mass::body(&p),
-            t_end: periods * law.period,
-            law,
-        }
-    }
-
-    /// Least-squares slope of log(err) against log(h).
-    pub(crate) fn fitted_slope(points: &[(f64, f64)]) -> f64 {
-        let n = points.len() as f64;
-        let (lx, ly): (Vec<f64>, Vec<f64>) = points.iter().map(|&(h, e)| (h.ln(), e.ln())).unzip();
-        let mx = lx.iter().sum::<f64>() / n;
-        let my = ly.iter().sum::<f64>() / n;
-        let sxy: f64 = lx.iter().zip(&ly).map(|(a, b)| (a - mx) * (b - my)).sum();
-        let sxx: f64 = lx.iter().map(|a| (a - mx) * (a - mx)).sum();
-        sxy / sxx
-    }
+    use crate::solver::test_support::{fitted_slope, set_b};
 
     /// The error at one h depends on where the slip onsets fall inside their steps (an onset
     /// is rounded to the step grid, an O(h) shift of a slip that starts with a jump of the

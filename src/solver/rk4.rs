@@ -231,33 +231,11 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::exact::Exact;
-    use super::super::test_support::event_error;
+    use super::super::test_support::{
+        back_and_forth, event_error, exact, last_period_kinds, set_b, woodpecker_fig15,
+    };
     use super::*;
-    use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
-    use crate::model::{pulled_mass, woodpecker, LawKind};
-    use crate::params::{PulledMassParams, WoodpeckerParams};
-
-    /// Set B of the pulled mass (μs 0.4, μd 0.35, F 0.10 N, other parameters default) over
-    /// 4 periods: one slip and one stick per period.
-    fn set_b(law: LawKind) -> Problem {
-        let p = PulledMassParams {
-            mu_s: 0.4,
-            mu_d: 0.35,
-            force: 0.10,
-            ..PulledMassParams::default()
-        };
-        let law = pulled_mass::force_law(&p, law).unwrap();
-        Problem {
-            body: pulled_mass::body(&p),
-            t_end: 4.0 * law.period,
-            law,
-        }
-    }
-
-    fn exact(problem: &Problem) -> Solution {
-        Exact.solve(problem, Setting::Step(1.0)).unwrap()
-    }
+    use crate::model::LawKind;
 
     /// Least-squares slope of log y against log x.
     fn slope(points: &[(f64, f64)]) -> f64 {
@@ -273,7 +251,7 @@ mod tests {
     #[test]
     fn final_position_converges_at_order_4_with_located_events() {
         // Harmonic law (smooth between events); h = T/200 … T/3200.
-        let problem = set_b(LawKind::Harmonic);
+        let problem = set_b(LawKind::Harmonic, 4.0);
         let want = exact(&problem);
         let points: Vec<(f64, f64)> = [200.0, 400.0, 800.0, 1600.0, 3200.0]
             .iter()
@@ -291,7 +269,7 @@ mod tests {
 
     #[test]
     fn set_b_events_match_exact() {
-        let problem = set_b(LawKind::Harmonic);
+        let problem = set_b(LawKind::Harmonic, 4.0);
         let want = exact(&problem);
         let got = Rk4
             .solve(&problem, Setting::Step(problem.law.period / 200.0))
@@ -306,7 +284,7 @@ mod tests {
         assert_eq!(got.stats.steps, 809);
         // On the linear law the slip arcs are cubics in t, which RK4 integrates exactly
         // between breakpoints: even a coarse step gives round-off.
-        let problem = set_b(LawKind::Linear);
+        let problem = set_b(LawKind::Linear, 4.0);
         let got = Rk4
             .solve(&problem, Setting::Step(problem.law.period / 25.0))
             .unwrap();
@@ -317,19 +295,13 @@ mod tests {
 
     #[test]
     fn woodpecker_fig15_has_two_slips_and_two_sticks_in_the_last_period() {
-        let p = WoodpeckerParams::default();
         for law in [LawKind::Harmonic, LawKind::Linear] {
-            let force_law = woodpecker::force_law(&p, law).unwrap();
-            let period = force_law.period;
-            let problem = Problem {
-                body: woodpecker::body(&p),
-                t_end: 6.0 * period,
-                law: force_law,
-            };
+            let problem = woodpecker_fig15(law);
             let want = exact(&problem);
-            let got = Rk4.solve(&problem, Setting::Step(period / 100.0)).unwrap();
-            let last: Vec<_> = got.events.iter().filter(|e| e.t >= 5.0 * period).collect();
-            let kinds: Vec<_> = last.iter().map(|e| e.kind).collect();
+            let got = Rk4
+                .solve(&problem, Setting::Step(problem.law.period / 100.0))
+                .unwrap();
+            let kinds = last_period_kinds(&got, &problem);
             assert_eq!(kinds, ["slip", "stick", "slip", "stick"], "{law:?}");
             // Measured: 1.7e-9 s (harmonic), round-off (linear).
             let err = event_error(&got, &want);
@@ -340,33 +312,10 @@ mod tests {
 
     #[test]
     fn reversals_are_located_like_the_exact_engine() {
-        // D = cos 2πt (N), constant N_f = 0.5 N: immediate slip, then reversals.
-        let law = ForceLaw::new(
-            1.0,
-            vec![Piece {
-                start: 0.0,
-                end: 1.0,
-                basis: Basis::Cos {
-                    omega: std::f64::consts::TAU,
-                },
-                drive: Affine::new(0.0, 1.0),
-                normal: Affine::new(0.5, 0.0),
-            }],
-        )
-        .unwrap();
-        let body = Body {
-            mass: 1.0,
-            mu_s: 0.4,
-            mu_d: 0.35,
-        };
-        let problem = Problem {
-            body,
-            law,
-            t_end: 3.0,
-        };
+        let problem = back_and_forth();
         let got = Rk4.solve(&problem, Setting::Step(1.0 / 200.0)).unwrap();
         let run = crate::engine::integrate(
-            &body,
+            &problem.body,
             &problem.law,
             &crate::engine::RunOptions {
                 periods: 3,
@@ -394,7 +343,7 @@ mod tests {
 
     #[test]
     fn a_tolerance_setting_or_a_bad_step_is_refused() {
-        let problem = set_b(LawKind::Linear);
+        let problem = set_b(LawKind::Linear, 4.0);
         for setting in [
             Setting::Tolerance(1e-6),
             Setting::Step(0.0),

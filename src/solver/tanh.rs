@@ -699,7 +699,7 @@ mod tests {
     use super::*;
     use crate::model::LawKind;
     use crate::solver::exact::Exact;
-    use crate::solver::moreau::tests::{fitted_slope, set_b};
+    use crate::solver::test_support::{fitted_slope, set_b};
 
     const EPSILONS: [f64; 4] = [1e-3, 1e-4, 1e-5, 1e-6];
 
