@@ -545,3 +545,22 @@ fn a_missing_file_is_named() {
         .code(2)
         .stderr(predicates::str::contains("tracked data no/such/file.csv"));
 }
+
+#[test]
+fn fixed_parameters_that_cannot_describe_the_data_are_an_unconverged_fit_not_bad_input() {
+    // k = 1000 N/m makes the model's period ~7× shorter than the track's: the search runs out
+    // of the model's range (d0 → 0). That is a failed fit (exit 1), not a bad parameter.
+    let tmp = tempfile::tempdir().unwrap();
+    let out = tmp.path().join("fit");
+    let output = stickslip()
+        .args(["fit", EXAMPLE, "--k", "1000", "--out"])
+        .arg(&out)
+        .assert()
+        .code(1)
+        .get_output()
+        .clone();
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(stderr.contains("the fit did not converge"), "{stderr}");
+    assert!(!out.exists());
+}

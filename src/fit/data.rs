@@ -323,11 +323,25 @@ fn records(text: &str, separator: u8) -> std::result::Result<Vec<Row>, (Option<u
             continue;
         }
         rows.push(Row {
-            line: record.position().map_or(0, csv::Position::line),
+            line: record.position().map_or(0, |pos| record_line(text, pos)),
             cells,
         });
     }
     Ok(rows)
+}
+
+/// The line a record is on. csv reports where it started reading, which is the first of the
+/// blank and `#` comment lines it skipped before the record.
+fn record_line(text: &str, pos: &csv::Position) -> u64 {
+    let skipped = usize::try_from(pos.byte())
+        .ok()
+        .and_then(|b| text.get(b..))
+        .map_or(0, |rest| {
+            rest.lines()
+                .take_while(|l| l.trim().is_empty() || l.starts_with('#'))
+                .count()
+        });
+    pos.line() + skipped as u64
 }
 
 fn non_empty(cells: &[String]) -> usize {
@@ -520,6 +534,15 @@ mod tests {
                 "line 1: column y (px) is in 'px'",
             ),
             ("t,y\n".to_string(), "no data rows"),
+            // Lines are counted with the comments and blank lines the reader skips.
+            (
+                format!("# app\n\n# units: s, m\nt,y (px)\n{}", body(12)),
+                "line 4: column y (px) is in 'px'",
+            ),
+            (
+                format!("t,y\n{}\n# paused\n\n1.5,abc\n", body(15)),
+                "line 20, column y: 'abc' is not a number",
+            ),
         ];
         for (text, want) in cases {
             let msg = message(&text);

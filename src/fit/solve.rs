@@ -97,7 +97,16 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
     let k = setup.free.len();
     let params = setup.params(&best.x.as_slice()[..k]);
     let (shift, y_off) = (best.x[k].rem_euclid(params.period()), best.x[k + 1]);
-    let eval = setup.eval(&params, shift, y_off)?;
+    // LM only moves inside the transformed coordinates, yet they can saturate (d0 = e^x
+    // underflowing to 0 when the fixed parameters cannot describe the data at all).
+    let eval = setup
+        .eval(&params, shift, y_off)
+        .map_err(|e| Error::NotConverged {
+            reason: format!(
+                "the search left the model's range ({e}); check the fixed parameters and the \
+                 units of the file"
+            ),
+        })?;
     let n = setup.y.len();
     let s2 = eval.r.norm_squared() / n.saturating_sub(k + 2).max(1) as f64;
     // The errors of the physical parameters, not of their internal coordinates.
