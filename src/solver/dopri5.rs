@@ -459,10 +459,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
     // Direction of slip, 0 when stuck.
     let mut dir = 0.0_f64;
     let mut at_same_time = (t, 0u32);
-    let mut record = |t: f64, kind: &'static str, stats: &mut Stats| {
-        stats.events += 1;
-        events.push(MethodEvent { t, kind });
-    };
+    let mut record = |t: f64, kind: &'static str| events.push(MethodEvent { t, kind });
     'phases: while t < problem.t_end {
         if at_same_time.0 == t {
             at_same_time.1 += 1;
@@ -481,7 +478,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
                 match stuck.advance(problem, opts, &mut stats)? {
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
-                        record(onset, "slip", &mut stats);
+                        record(onset, "slip");
                         dir = problem.forces(onset).0.signum();
                         t = onset;
                         continue 'phases;
@@ -503,10 +500,10 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
                     (t, x) = (te, xe);
                     let (d, n) = problem.forces(te);
                     if d.abs() <= problem.body.mu_s * n {
-                        record(te, "stick", &mut stats);
+                        record(te, "stick");
                         dir = 0.0;
                     } else if d.signum() != s {
-                        record(te, "reversal", &mut stats);
+                        record(te, "reversal");
                         dir = d.signum();
                     }
                     // Otherwise v touched 0 where the drive keeps pushing the same way: the
@@ -520,12 +517,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             }
         }
     }
-    Ok(Solution {
-        events,
-        x_end: x,
-        v_end,
-        stats,
-    })
+    Ok(Solution::new(events, x, v_end, stats))
 }
 
 /// One accepted slipping step up to the next breakpoint of the force law or t_end, with the

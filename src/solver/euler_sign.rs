@@ -75,13 +75,7 @@ impl Method for EulerSign {
         }
         stats.steps = n;
         stats.accepted = n;
-        stats.events = events.len() as u64;
-        Ok(Solution {
-            events,
-            x_end: x,
-            v_end: v,
-            stats,
-        })
+        Ok(Solution::new(events, x, v, stats))
     }
 }
 

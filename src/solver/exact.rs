@@ -58,15 +58,9 @@ impl Method for Exact {
             rhs_evals: run.segments.len() as u64,
             steps: run.segments.len() as u64,
             accepted: run.segments.len() as u64,
-            rejected: 0,
-            events: events.len() as u64,
+            ..Stats::default()
         };
-        Ok(Solution {
-            events,
-            x_end,
-            v_end,
-            stats,
-        })
+        Ok(Solution::new(events, x_end, v_end, stats))
     }
 }
 

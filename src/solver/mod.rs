@@ -77,6 +77,19 @@ pub struct Solution {
     pub stats: Stats,
 }
 
+impl Solution {
+    /// A method's result; `stats.events` is set to the number of `events`.
+    pub fn new(events: Vec<MethodEvent>, x_end: f64, v_end: f64, mut stats: Stats) -> Self {
+        stats.events = events.len() as u64;
+        Solution {
+            events,
+            x_end,
+            v_end,
+            stats,
+        }
+    }
+}
+
 /// The dry-friction initial-value problem shared by all methods.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Problem {

@@ -136,13 +136,7 @@ pub fn solve_theta(problem: &Problem, h: f64, theta: f64) -> Result<Solution> {
     }
     stats.steps = n;
     stats.accepted = n;
-    stats.events = events.len() as u64;
-    Ok(Solution {
-        events,
-        x_end: x,
-        v_end: v,
-        stats,
-    })
+    Ok(Solution::new(events, x, v, stats))
 }
 
 #[cfg(test)]

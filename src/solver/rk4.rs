@@ -169,7 +169,6 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
     let mut at_same_time = (f64::NAN, 0u32);
     if problem.t_end > 0.0 && margin(problem, 0.0, &mut stats) > 0.0 {
         dir = problem.forces(0.0).0.signum();
-        stats.events += 1;
         events.push(MethodEvent { t, kind: "slip" });
     }
     while t < problem.t_end {
@@ -216,17 +215,11 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
                     // (no event, as in the exact engine).
                     continue;
                 };
-                stats.events += 1;
                 events.push(MethodEvent { t: te, kind });
             }
         }
     }
-    Ok(Solution {
-        events,
-        x_end: y.y[0],
-        v_end: y.y[1],
-        stats,
-    })
+    Ok(Solution::new(events, y.y[0], y.y[1], stats))
 }
 
 #[cfg(test)]

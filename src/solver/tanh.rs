@@ -328,13 +328,7 @@ impl TanhAdaptive {
                 states.push(y);
             }
         }
-        stats.events = events.len() as u64;
-        let solution = Solution {
-            events,
-            x_end: y[0],
-            v_end: y[1],
-            stats,
-        };
+        let solution = Solution::new(events, y[0], y[1], stats);
         Ok((solution, states))
     }
 }
@@ -622,14 +616,7 @@ impl TanhImplicit {
                 }
             }
         }
-        let mut stats = st.stats;
-        stats.events = events.len() as u64;
-        let solution = Solution {
-            events,
-            x_end: y[0],
-            v_end: y[1],
-            stats,
-        };
+        let solution = Solution::new(events, y[0], y[1], st.stats);
         Ok((solution, states))
     }
 }
