@@ -14,10 +14,10 @@ use super::spec::{LineChart, Panel};
 pub use super::style::FigureError;
 use super::style::{
     curve_color, dash_pattern, draw_err, draw_legend, draw_stroked, finish_svg, font, legend_size,
-    text_width, tick_label, LegendEntry, LegendKey, AXIS_COLOR, CURVE_WIDTH, FIGURE_WIDTH,
-    FRAME_WIDTH, GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH,
-    MARKER_FONT_PX, MARKER_WIDTH, PANEL_HEIGHT, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN,
-    TICK_FONT_PX, X_LABEL_AREA, Y_LABEL_AREA,
+    text_width, tick_label, LegendEntry, AXIS_COLOR, CURVE_WIDTH, FIGURE_WIDTH, FRAME_WIDTH,
+    GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH, MARKER_FONT_PX,
+    MARKER_WIDTH, PANEL_HEIGHT, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN, TICK_FONT_PX,
+    X_LABEL_AREA, Y_LABEL_AREA,
 };
 
 /// At most this many points of one curve are drawn (first, last and local extrema kept).
@@ -458,19 +458,7 @@ pub(super) fn to_pixels(run: &[Point], to_px: impl Fn(&Point) -> Px) -> Vec<Px> 
 
 /// Legend rows of the labelled curves of a panel.
 fn legend_entries(panel: &Panel) -> Vec<LegendEntry> {
-    panel
-        .curves
-        .iter()
-        .filter(|c| !c.label.is_empty())
-        .map(|c| LegendEntry {
-            label: c.label.clone(),
-            key: LegendKey::Line {
-                color: c.color,
-                stroke: c.stroke,
-                width: CURVE_WIDTH,
-            },
-        })
-        .collect()
+    LegendEntry::lines(&panel.curves, CURVE_WIDTH).collect()
 }
 
 /// Upper-left corner of the legend: the inner corner of the frame that hides the fewest line

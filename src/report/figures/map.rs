@@ -139,18 +139,7 @@ fn legend_entries(spec: &CategoryMap) -> Vec<LegendEntry> {
         label: label.clone(),
         key: LegendKey::Swatch { fill: *fill },
     });
-    let curves = spec
-        .curves
-        .iter()
-        .filter(|c| !c.label.is_empty())
-        .map(|c| LegendEntry {
-            label: c.label.clone(),
-            key: LegendKey::Line {
-                color: c.color,
-                stroke: c.stroke,
-                width: MAP_CURVE_WIDTH,
-            },
-        });
+    let curves = LegendEntry::lines(&spec.curves, MAP_CURVE_WIDTH);
     categories.chain(curves).collect()
 }
 

@@ -11,7 +11,7 @@ use plotters::prelude::{DrawingArea, SVGBackend};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{Color, IntoFont, RGBColor, ShapeStyle, TextStyle};
 
-use super::spec::Stroke;
+use super::spec::{Curve, Stroke};
 
 /// Width of every figure (px of the SVG user space).
 pub const FIGURE_WIDTH: u32 = 900;
@@ -267,6 +267,23 @@ pub fn draw_stroked(
 pub struct LegendEntry {
     pub label: String,
     pub key: LegendKey,
+}
+
+impl LegendEntry {
+    /// Line-sample rows of the labelled `curves`, drawn `width` px wide.
+    pub fn lines(curves: &[Curve], width: u32) -> impl Iterator<Item = LegendEntry> + '_ {
+        curves
+            .iter()
+            .filter(|c| !c.label.is_empty())
+            .map(move |c| LegendEntry {
+                label: c.label.clone(),
+                key: LegendKey::Line {
+                    color: c.color,
+                    stroke: c.stroke,
+                    width,
+                },
+            })
+    }
 }
 
 /// What a legend row shows left of its text.
