@@ -3,6 +3,8 @@
 //! events agreeing with the JSON's steady events, the woodpecker's y_W column, and a bad target
 //! (exit 2, one line, nothing written).
 
+mod common;
+
 use std::fs;
 use std::path::Path;
 
@@ -16,17 +18,6 @@ fn stickslip() -> Command {
     let mut cmd = Command::cargo_bin("stickslip").unwrap();
     cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
     cmd
-}
-
-/// Header and rows of a CSV file (no quoting in these files).
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(String::from).collect())
-        .collect();
-    (header, rows)
 }
 
 fn f(cell: &str) -> f64 {
@@ -65,11 +56,11 @@ fn eval_with_csv_writes_the_four_files_with_units_in_the_headers() {
         ]
     );
     for law in LAWS {
-        let (header, rows) = read_csv(&dir.join(format!("timeseries_{law}.csv")));
+        let (header, rows) = common::read_csv(&dir.join(format!("timeseries_{law}.csv")));
         assert_eq!(header, ["t_s", "x_m", "v_m_s", "a_m_s2", "stuck"]);
         // 8 periods × 200 uniform points + the end + the event times.
         assert!(rows.len() > 1600, "{law}: {} rows", rows.len());
-        let (header, rows) = read_csv(&dir.join(format!("events_{law}.csv")));
+        let (header, rows) = common::read_csv(&dir.join(format!("events_{law}.csv")));
         assert_eq!(header, ["t_s", "kind", "phase", "x_m", "v_m_s"]);
         assert!(!rows.is_empty());
     }
@@ -80,7 +71,7 @@ fn time_series_rows_are_in_time_order_and_stuck_means_v_zero() {
     let tmp = tempfile::tempdir().unwrap();
     eval_set_b(tmp.path(), false);
     for law in LAWS {
-        let (_, rows) = read_csv(&tmp.path().join(format!("timeseries_{law}.csv")));
+        let (_, rows) = common::read_csv(&tmp.path().join(format!("timeseries_{law}.csv")));
         let mut last_t = f64::NEG_INFINITY;
         let (mut stuck_rows, mut moving_rows) = (0, 0);
         for row in &rows {
@@ -110,7 +101,7 @@ fn event_phases_match_the_steady_events_of_the_json_output() {
     let tmp = tempfile::tempdir().unwrap();
     let json: Value = serde_json::from_slice(&eval_set_b(tmp.path(), true)).unwrap();
     for law in LAWS {
-        let (_, rows) = read_csv(&tmp.path().join(format!("events_{law}.csv")));
+        let (_, rows) = common::read_csv(&tmp.path().join(format!("events_{law}.csv")));
         let times: Vec<f64> = rows.iter().map(|r| f(&r[0])).collect();
         assert!(
             times.windows(2).all(|w| w[0] <= w[1]),
@@ -156,7 +147,7 @@ fn the_woodpecker_series_carries_the_bird_coordinate() {
         .assert()
         .success();
     for law in LAWS {
-        let (header, rows) = read_csv(&tmp.path().join(format!("timeseries_{law}.csv")));
+        let (header, rows) = common::read_csv(&tmp.path().join(format!("timeseries_{law}.csv")));
         assert_eq!(
             header,
             ["t_s", "y_m", "v_m_s", "a_m_s2", "stuck", "y_woodpecker_m"]
@@ -166,7 +157,7 @@ fn the_woodpecker_series_carries_the_bird_coordinate() {
         if law == "harmonic" {
             assert!((f(&rows[0][5]) - 0.016).abs() < 1e-15, "{:?}", rows[0]);
         }
-        let (header, _) = read_csv(&tmp.path().join(format!("events_{law}.csv")));
+        let (header, _) = common::read_csv(&tmp.path().join(format!("events_{law}.csv")));
         assert_eq!(header, ["t_s", "kind", "phase", "y_m", "v_m_s"]);
     }
 }

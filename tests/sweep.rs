@@ -6,7 +6,6 @@
 mod common;
 
 use std::fs;
-use std::path::Path;
 
 use assert_cmd::Command;
 
@@ -16,16 +15,6 @@ const Z0_CRITICAL: f64 = 7.0746e-3;
 
 fn stickslip() -> Command {
     Command::cargo_bin("stickslip").unwrap()
-}
-
-fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
-    let text = fs::read_to_string(path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
-    let mut lines = text.lines();
-    let header = lines.next().unwrap().split(',').map(String::from).collect();
-    let rows = lines
-        .map(|l| l.split(',').map(String::from).collect())
-        .collect();
-    (header, rows)
 }
 
 #[test]
@@ -62,7 +51,7 @@ fn the_harmonic_double_slip_stick_ends_near_the_critical_z0() {
                 .starts_with("<svg")
     );
 
-    let (header, rows) = read_csv(&out.join("sweep.csv"));
+    let (header, rows) = common::read_csv(&out.join("sweep.csv"));
     assert_eq!(
         header,
         [
@@ -126,7 +115,7 @@ fn invalid_grid_points_are_rows_not_errors() {
         .arg(tmp.path())
         .assert()
         .success();
-    let (header, rows) = read_csv(&tmp.path().join("sweep.csv"));
+    let (header, rows) = common::read_csv(&tmp.path().join("sweep.csv"));
     assert_eq!(header[0], "mu_d");
     assert_eq!(rows.len(), 11);
     for row in &rows {
