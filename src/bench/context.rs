@@ -12,8 +12,6 @@ use crate::error::{Error, Result};
 use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::LineChart;
 
-const CSS: &str = include_str!("../../templates/style.css");
-
 #[derive(Serialize)]
 struct Kv {
     name: String,
@@ -150,7 +148,7 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
     let (peer_targets, peer_ratios) = cost_tables::peer_tables(r);
     Ok(Ctx {
         title: "stickslip bench: speed against accuracy, and where methods fail".into(),
-        css: CSS,
+        css: crate::report::render::CSS,
         version: r.machine.crate_version.clone(),
         elapsed: format!("{:.1} s", r.elapsed_s),
         quick: r.quick,
