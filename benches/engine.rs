@@ -16,13 +16,12 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 use stickslip::engine::{analyse, integrate, RunOptions};
-use stickslip::formula::pulled_mass as cf;
-use stickslip::formula::woodpecker as wcf;
-use stickslip::model::woodpecker;
-use stickslip::model::{pulled_mass, LawKind};
+use stickslip::models::pulled_mass::formula as cf;
+use stickslip::models::woodpecker;
+use stickslip::models::woodpecker::formula as wcf;
+use stickslip::models::{pulled_mass, LawKind};
 use stickslip::params::{PulledMassParams, WoodpeckerParams};
 use stickslip::report::{builtin_scenes, render, Format};
-use stickslip::results;
 
 /// Periods integrated per run (the targets above are stated for 20).
 const PERIODS: u32 = 20;
@@ -85,12 +84,17 @@ fn whole_evaluation(c: &mut Criterion) {
     let p = set_b();
     c.bench_function(
         "evaluate: closed forms, 8 periods of both laws, checks",
-        |b| b.iter(|| results::pulled_mass::evaluate(black_box(&p), black_box(8))),
+        |b| {
+            b.iter(|| {
+                stickslip::models::pulled_mass::results::evaluate(black_box(&p), black_box(8))
+            })
+        },
     );
 }
 
 fn woodpecker_closed_forms(c: &mut Criterion) {
-    let inputs = results::woodpecker::linear_inputs(&WoodpeckerParams::default());
+    let inputs =
+        stickslip::models::woodpecker::results::linear_inputs(&WoodpeckerParams::default());
     c.bench_function("woodpecker closed forms, both phases and the orbit", |b| {
         b.iter(|| wcf::evaluate(black_box(&inputs)))
     });

@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand};
 
 use crate::fit::data::{Columns, Unit};
 use crate::fit::FitParam;
-use crate::formula::woodpecker::Counterpart;
+use crate::models::woodpecker::formula::Counterpart;
 use crate::params::{ModelName, OmegaMode};
 use crate::report::Format;
 

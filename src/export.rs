@@ -14,11 +14,11 @@
 use std::fmt::Write as _;
 
 use crate::engine::{Event, Run};
-use crate::model::{woodpecker as wood_model, LawKind};
+use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
+use crate::models::{woodpecker as wood_model, LawKind};
 use crate::params::WoodpeckerParams;
 use crate::report::OutFile;
 use crate::results::summary::kind_name;
-use crate::results::{pulled_mass, woodpecker};
 
 /// Uniform samples per integrated period (event times are added on top).
 pub const SAMPLES_PER_PERIOD: u64 = 200;

@@ -20,7 +20,7 @@ use stickslip::error::Error;
 use stickslip::params::{
     invalid, ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS,
 };
-use stickslip::{output, report, results};
+use stickslip::{output, report};
 
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -286,9 +286,10 @@ fn pulled_params(args: &PulledMassArgs) -> Result<(PulledMassParams, u32)> {
 fn eval_pulled_mass(args: &PulledMassArgs) -> Result<()> {
     let (p, periods) = pulled_params(args)?;
     let evaluation = match &args.common.csv {
-        None => results::pulled_mass::evaluate(&p, periods)?,
+        None => stickslip::models::pulled_mass::results::evaluate(&p, periods)?,
         Some(dir) => {
-            let (evaluation, runs) = results::pulled_mass::evaluate_with_runs(&p, periods, true)?;
+            let (evaluation, runs) =
+                stickslip::models::pulled_mass::results::evaluate_with_runs(&p, periods, true)?;
             // Written before anything is printed: a bad target leaves no output at all.
             report::write_all(dir, &stickslip::export::pulled_mass_files(&runs))?;
             evaluation
@@ -326,9 +327,10 @@ fn woodpecker_params(args: &WoodpeckerArgs) -> Result<(WoodpeckerParams, u32)> {
 fn eval_woodpecker(args: &WoodpeckerArgs) -> Result<()> {
     let (p, periods) = woodpecker_params(args)?;
     let evaluation = match &args.common.csv {
-        None => results::woodpecker::evaluate(&p, periods)?,
+        None => stickslip::models::woodpecker::results::evaluate(&p, periods)?,
         Some(dir) => {
-            let (evaluation, runs) = results::woodpecker::evaluate_with_runs(&p, periods, true)?;
+            let (evaluation, runs) =
+                stickslip::models::woodpecker::results::evaluate_with_runs(&p, periods, true)?;
             report::write_all(dir, &stickslip::export::woodpecker_files(&p, &runs))?;
             evaluation
         }

@@ -6,7 +6,7 @@ use std::path::Path;
 use serde::{Deserialize, Serialize};
 
 use crate::error::{Error, Result};
-use crate::formula::woodpecker::Counterpart;
+use crate::models::woodpecker::formula::Counterpart;
 
 /// Standard gravity used throughout the paper (m/s²).
 pub const G_STANDARD: f64 = 9.81;

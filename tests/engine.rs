@@ -4,8 +4,8 @@ use stickslip::engine::{
     analyse, integrate, Affine, Basis, Body, EventKind, ForceLaw, IntegrationRegime, Piece, Run,
     RunOptions,
 };
-use stickslip::formula::pulled_mass as cf;
-use stickslip::model::{pulled_mass, LawKind};
+use stickslip::models::pulled_mass::formula as cf;
+use stickslip::models::{pulled_mass, LawKind};
 use stickslip::params::PulledMassParams;
 
 fn run(body: &Body, law: &ForceLaw, periods: u32) -> Run {

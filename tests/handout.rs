@@ -8,9 +8,10 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use stickslip::handout::{self, Handout};
+use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use stickslip::report::scene::Setup;
 use stickslip::report::{builtin_scenes, Format, Scene};
-use stickslip::results::{pulled_mass, woodpecker, Check, CheckValue};
+use stickslip::results::{Check, CheckValue};
 
 use common::rendered;
 

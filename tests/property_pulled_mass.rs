@@ -2,9 +2,9 @@
 //! check of the closed forms against the exact linear integration passes at 1e-9.
 
 use proptest::prelude::*;
-use stickslip::formula::pulled_mass::{self as cf, Regime};
+use stickslip::models::pulled_mass::formula::{self as cf, Regime};
+use stickslip::models::pulled_mass::results::evaluate;
 use stickslip::params::PulledMassParams;
-use stickslip::results::pulled_mass::evaluate;
 
 /// φ inside the interval of regime `which`, away from its ends by a relative 1e-6.
 fn phi_in_regime(which: u8, frac: f64, mu_s: f64, mu_d: f64) -> f64 {

@@ -12,8 +12,8 @@ use serde::Serialize;
 
 use crate::engine::{Body, ForceLaw};
 use crate::error::Result;
-use crate::formula::pulled_mass::phi_continuous;
-use crate::model::{pulled_mass, woodpecker, LawKind};
+use crate::models::pulled_mass::formula::phi_continuous;
+use crate::models::{pulled_mass, woodpecker, LawKind};
 use crate::params::{PulledMassParams, WoodpeckerParams};
 use crate::solver::exact::Exact;
 use crate::solver::{Method, MethodEvent, Problem, Setting};

@@ -12,10 +12,10 @@ use super::{
     Numbers, Verdict,
 };
 use crate::error::Result;
-use crate::formula::woodpecker::{self as cf, Counterpart};
-use crate::model::{woodpecker, LawKind};
+use crate::models::woodpecker::formula::{self as cf, Counterpart};
+use crate::models::woodpecker::results::linear_inputs;
+use crate::models::{woodpecker, LawKind};
 use crate::params::WoodpeckerParams;
-use crate::results::woodpecker::linear_inputs;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
 const CLOSE: f64 = 0.10;
@@ -29,7 +29,7 @@ fn motion(r: &Integrated) -> String {
 }
 
 /// Claim 3: the linearization does not affect "too heavily" the numerical results.
-pub(super) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Claim> {
+pub(crate) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Claim> {
     let mut n = Numbers::default();
     let (vh, vl) = (pulled.harmonic.steady.v_avg, pulled.linear.steady.v_avg);
     let pulled_same = pulled.harmonic.steady.regime() == pulled.linear.steady.regime();
@@ -170,7 +170,7 @@ fn friction_ratio(r: &Integrated, w_s: f64) -> Option<f64> {
 }
 
 /// Claim 7: the powers. W_S v̄ ∝ W_S³ and is not the friction dissipation; P = F v̄ is.
-pub(super) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Claim> {
+pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Claim> {
     let mut n = Numbers::default();
     let pair = doubled_pair(w).map(|p| (p, "")).or_else(|| {
         doubled_pair(&WoodpeckerParams::default())

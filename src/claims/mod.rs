@@ -20,11 +20,10 @@
 //! ```
 
 mod both;
-mod halt;
-mod lever;
-mod pulled_mass;
-mod sample;
-mod woodpecker;
+pub(crate) mod sample;
+
+use crate::models::pulled_mass::claims as pulled_mass;
+use crate::models::woodpecker::{claims as woodpecker, halt, lever};
 
 use serde::{Deserialize, Serialize};
 
@@ -32,10 +31,10 @@ use crate::engine::{
     analyse, integrate, Body, EventKind, ForceLaw, IntegrationRegime, Run, RunOptions, Steady,
 };
 use crate::error::Result;
-use crate::formula::woodpecker::Counterpart;
-use crate::model::{self, LawKind};
+use crate::models::woodpecker::formula::Counterpart;
+use crate::models::LawKind;
 use crate::params::{invalid, PulledMassParams, WoodpeckerParams, DEFAULT_PERIODS};
-use crate::results::rel_diff;
+pub(crate) use crate::results::rel_diff;
 
 pub use lever::halt_threshold_z0;
 
@@ -156,10 +155,15 @@ pub fn evaluate(
 
 /// Builds the `numbers` of a claim, leaving out values that do not exist or are not finite.
 #[derive(Default)]
-struct Numbers(Vec<ClaimNumber>);
+pub(crate) struct Numbers(Vec<ClaimNumber>);
 
 impl Numbers {
-    fn push(&mut self, label: &str, value: impl Into<Option<f64>>, unit: &str) -> &mut Self {
+    pub(crate) fn push(
+        &mut self,
+        label: &str,
+        value: impl Into<Option<f64>>,
+        unit: &str,
+    ) -> &mut Self {
         if let Some(value) = value.into().filter(|v| v.is_finite()) {
             self.0.push(ClaimNumber {
                 label: label.to_string(),
@@ -170,20 +174,20 @@ impl Numbers {
         self
     }
 
-    fn take(&mut self) -> Vec<ClaimNumber> {
+    pub(crate) fn take(&mut self) -> Vec<ClaimNumber> {
         std::mem::take(&mut self.0)
     }
 }
 
 /// An exact integration over the default number of periods, with its steady state.
-struct Integrated {
-    run: Run,
-    steady: Steady,
+pub(crate) struct Integrated {
+    pub(crate) run: Run,
+    pub(crate) steady: Steady,
 }
 
 impl Integrated {
     /// The first stick after the first slip onset: (slip time, stick time), absolute (s).
-    fn first_slip_and_stick(&self) -> Option<(f64, Option<f64>)> {
+    pub(crate) fn first_slip_and_stick(&self) -> Option<(f64, Option<f64>)> {
         let mut events = self.run.events.iter().filter(|e| e.is_transition());
         let slip = events.find(|e| matches!(e.kind, EventKind::Slip { .. }))?;
         let stick = events
@@ -206,19 +210,19 @@ fn steady_run(body: &Body, law: &ForceLaw) -> Result<Integrated> {
 }
 
 /// Integrates the pulled mass under `law`.
-fn run_pulled(p: &PulledMassParams, law: LawKind) -> Result<Integrated> {
-    let body = model::pulled_mass::body(p);
-    steady_run(&body, &model::pulled_mass::force_law(p, law)?)
+pub(crate) fn run_pulled(p: &PulledMassParams, law: LawKind) -> Result<Integrated> {
+    let body = crate::models::pulled_mass::body(p);
+    steady_run(&body, &crate::models::pulled_mass::force_law(p, law)?)
 }
 
 /// Integrates the woodpecker sleeve under `law` (the linear law needs a defined counterpart).
-fn run_wood(p: &WoodpeckerParams, law: LawKind) -> Result<Integrated> {
-    let body = model::woodpecker::body(p);
-    steady_run(&body, &model::woodpecker::force_law(p, law)?)
+pub(crate) fn run_wood(p: &WoodpeckerParams, law: LawKind) -> Result<Integrated> {
+    let body = crate::models::woodpecker::body(p);
+    steady_run(&body, &crate::models::woodpecker::force_law(p, law)?)
 }
 
 /// (max − min) / max|x| of the values (0 for fewer than two).
-fn spread(values: &[f64]) -> f64 {
+pub(crate) fn spread(values: &[f64]) -> f64 {
     let max = values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let min = values.iter().copied().fold(f64::INFINITY, f64::min);
     let scale = values.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
@@ -230,12 +234,12 @@ fn spread(values: &[f64]) -> f64 {
 }
 
 /// A speed in mm/s for the findings.
-fn mm_s(v: f64) -> String {
+pub(crate) fn mm_s(v: f64) -> String {
     format!("{:.2} mm/s", 1e3 * v)
 }
 
 /// The lowercase name of a counterpart, as on the command line.
-fn counterpart_name(c: Counterpart) -> &'static str {
+pub(crate) fn counterpart_name(c: Counterpart) -> &'static str {
     match c {
         Counterpart::Extremes => "extremes",
         Counterpart::Zeros => "zeros",
@@ -244,7 +248,7 @@ fn counterpart_name(c: Counterpart) -> &'static str {
 }
 
 /// An integrated regime in plain words, for the findings.
-fn regime_words(r: IntegrationRegime) -> &'static str {
+pub(crate) fn regime_words(r: IntegrationRegime) -> &'static str {
     match r {
         IntegrationRegime::NoSlip => "no slip at all",
         IntegrationRegime::SingleSlipStick => "one slip and one stick per period",
@@ -259,7 +263,7 @@ fn regime_words(r: IntegrationRegime) -> &'static str {
 }
 
 /// A relative error in words: scientific below 0.1 %, else in percent.
-fn rel_text(e: f64) -> String {
+pub(crate) fn rel_text(e: f64) -> String {
     if e == 0.0 {
         "0".to_string()
     } else if e < 1e-3 {
@@ -270,6 +274,6 @@ fn rel_text(e: f64) -> String {
 }
 
 /// An optional value formatted with `f`, or "none".
-fn or_none(v: Option<f64>, f: impl Fn(f64) -> String) -> String {
+pub(crate) fn or_none(v: Option<f64>, f: impl Fn(f64) -> String) -> String {
     v.map_or_else(|| "none".to_string(), f)
 }

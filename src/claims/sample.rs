@@ -14,26 +14,26 @@
 use rand::{rngs::StdRng, Rng, SeedableRng};
 
 use super::{Sample, SampleResult};
-use crate::formula::pulled_mass as pcf;
-use crate::formula::woodpecker::{self as wcf, LinearWoodpecker};
+use crate::models::pulled_mass::formula as pcf;
+use crate::models::woodpecker::formula::{self as wcf, LinearWoodpecker};
 use crate::params::PulledMassParams;
 
 /// Draws per kept set before the woodpecker sample gives up (most draws are kept).
 const MAX_DRAWS_PER_SET: usize = 100;
 
 /// The ranges of the woodpecker sample, for the finding.
-pub(super) const WOODPECKER_RANGES: &str = "λ in [1, 3], μs in [0.3, 1], k in [5, 50] N/m, m_S \
+pub(crate) const WOODPECKER_RANGES: &str = "λ in [1, 3], μs in [0.3, 1], k in [5, 50] N/m, m_S \
      in [2, 20] g, ζ0 in [2, 20] mm, δ0/ζ0 in [0, 0.95), kept when in the closed-form domain \
      and not slipping at once";
 
 /// The first late-stick set of the pulled-mass sample, to integrate.
-pub(super) struct PulledExample {
+pub(crate) struct PulledExample {
     pub params: PulledMassParams,
 }
 
 /// Claim 1 on the sample: sets in the "non-stick" area of Fig. 9 (φ > 1/Θ, no immediate slip)
 /// that still stick, in the next period (φ ≤ φ_c).
-pub(super) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<PulledExample>) {
+pub(crate) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<PulledExample>) {
     let mut rng = StdRng::seed_from_u64(sample.seed);
     let mut counterexamples = 0;
     let mut example = None;
@@ -70,7 +70,7 @@ pub(super) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<Pulled
 
 /// Claim 4 on the sample: valid sets with μd,MIN^(I) ≤ μd,MIN^(II). `g` (m/s²) and the quarter
 /// period `tau` (s) do not change either critical value; they only complete the set.
-pub(super) fn woodpecker_mu_min_order(sample: &Sample, g: f64, tau: f64) -> SampleResult {
+pub(crate) fn woodpecker_mu_min_order(sample: &Sample, g: f64, tau: f64) -> SampleResult {
     let mut rng = StdRng::seed_from_u64(sample.seed);
     let (mut kept, mut counterexamples) = (0, 0);
     let mut example = None;

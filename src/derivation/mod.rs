@@ -13,15 +13,13 @@
 //! reason, taken from the applicability logic of [`crate::results`].
 
 pub mod expr;
-mod pulled_mass;
-mod woodpecker;
 
 pub use expr::Expr;
 
+pub use crate::models::pulled_mass::derivation::pulled_mass;
+pub use crate::models::woodpecker::derivation::woodpecker;
 use crate::results::quantity::{find, Quantity};
 use crate::results::Applicability;
-pub use pulled_mass::pulled_mass;
-pub use woodpecker::woodpecker;
 
 /// One worked step: a closed form, the numbers put in, the result.
 #[derive(Clone, Debug, PartialEq)]
@@ -54,7 +52,7 @@ pub const UNDEFINED: &str =
 impl Step {
     /// A step of `key` with formula `expr`, the formula function's `value` (`None` when the
     /// expression is undefined) and why the form does not describe the motion, if so.
-    fn new(
+    pub(crate) fn new(
         key: &'static str,
         symbol: &'static str,
         equation: &'static str,
@@ -104,19 +102,19 @@ impl Step {
 
 /// Collects the steps of one model in order; each step's symbol and value become a quantity
 /// leaf for the steps after it.
-struct Steps<'a> {
+pub(crate) struct Steps<'a> {
     table: &'static [Quantity],
     /// (key, equation, unit) of the §7 `params` keys with a step (W, ω, T, …).
     params: &'static [(&'static str, &'static str, &'static str)],
     applicability: &'a [Applicability],
     /// Why no closed form of a key applies when the results' list does not name it (e.g. the
     /// woodpecker outside the closed-form domain); `None`: such keys apply.
-    fallback: Option<&'a str>,
-    steps: Vec<Step>,
+    pub(crate) fallback: Option<&'a str>,
+    pub(crate) steps: Vec<Step>,
 }
 
 impl<'a> Steps<'a> {
-    fn new(
+    pub(crate) fn new(
         table: &'static [Quantity],
         params: &'static [(&'static str, &'static str, &'static str)],
         applicability: &'a [Applicability],
@@ -132,7 +130,7 @@ impl<'a> Steps<'a> {
 
     /// Adds the step `symbol = expr` of `key` whose formula function gives `value`, and returns
     /// the quantity leaf of its symbol for later steps (NaN when undefined).
-    fn push(
+    pub(crate) fn push(
         &mut self,
         key: &'static str,
         symbol: &'static str,

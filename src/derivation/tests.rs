@@ -7,11 +7,11 @@ use proptest::prelude::*;
 use serde_json::Value;
 
 use super::*;
-use crate::formula::pulled_mass as pm;
-use crate::formula::woodpecker::Counterpart;
+use crate::models::pulled_mass::formula as pm;
+use crate::models::woodpecker::formula::Counterpart;
+use crate::models::{pulled_mass::results as pm_results, woodpecker::results as wp_results};
 use crate::params::{OmegaMode, PulledMassParams, WoodpeckerParams};
 use crate::report::math::mathml;
-use crate::results::{pulled_mass as pm_results, woodpecker as wp_results};
 
 /// Evaluating a tree repeats the formula's arithmetic in another order: a few ulps apart.
 const REL: f64 = 1e-12;

@@ -28,7 +28,7 @@ use serde::Serialize;
 
 use crate::engine::{analyse, integrate, RunOptions};
 use crate::error::{Error, Result};
-use crate::model::{woodpecker, LawKind};
+use crate::models::{woodpecker, LawKind};
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
 pub use data::Tracked;
 pub use model::{data_period, track, Axis, Track};

@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use crate::engine::{integrate, Run, RunOptions};
 use crate::error::{Error, Result};
-use crate::model::{woodpecker, LawKind};
+use crate::models::{woodpecker, LawKind};
 use crate::params::{invalid, WoodpeckerParams, MAX_PERIODS};
 
 /// Periods integrated before the first tracked time.

@@ -4,9 +4,9 @@
 use std::fmt::Write;
 
 use super::format::{rel, sig};
-use crate::results::pulled_mass::Evaluation;
+use crate::models::pulled_mass::results::Evaluation;
+use crate::models::woodpecker::results as woodpecker;
 use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
-use crate::results::woodpecker;
 use crate::results::{Check, CheckValue, Summary};
 
 const DIGITS: usize = 10;

@@ -4,15 +4,16 @@
 use serde::Serialize;
 
 use crate::error::Result;
-use crate::formula::woodpecker::Counterpart;
+use crate::models::woodpecker::formula::Counterpart;
+use crate::models::woodpecker::results::orbit_regime_id;
+use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use crate::output::format::{rel, sig};
 use crate::params::{PulledMassParams, WoodpeckerParams};
 use crate::report::math::mathml;
 use crate::report::scene::{Scene, Setup};
 use crate::report::writer::OutFile;
 use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
-use crate::results::woodpecker::orbit_regime_id;
-use crate::results::{pulled_mass, woodpecker, Applicability, Check, CheckValue, Summary};
+use crate::results::{Applicability, Check, CheckValue, Summary};
 
 /// Significant digits of the tables.
 const DIGITS: usize = 8;
@@ -263,7 +264,7 @@ fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
 }
 
 /// The §1.5 inequality that decides the pulled-mass regime, with numbers.
-fn pulled_regime_reason(c: &crate::formula::pulled_mass::ClosedForm, mu_s: f64) -> String {
+fn pulled_regime_reason(c: &crate::models::pulled_mass::formula::ClosedForm, mu_s: f64) -> String {
     let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
     let two_mu_s = num(2.0 * mu_s);
     match c.regime.id() {

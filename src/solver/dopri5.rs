@@ -785,7 +785,7 @@ mod tests {
     };
     use super::*;
     use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
-    use crate::model::LawKind;
+    use crate::models::LawKind;
 
     #[test]
     fn smooth_oscillator_meets_the_tolerance() {

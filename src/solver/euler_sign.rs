@@ -82,7 +82,7 @@ impl Method for EulerSign {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::LawKind;
+    use crate::models::LawKind;
     use crate::solver::exact::Exact;
     use crate::solver::test_support::{fitted_slope, set_b};
 

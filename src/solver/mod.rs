@@ -160,7 +160,7 @@ pub(crate) mod test_support {
     use super::exact::Exact;
     use super::{Method, Problem, Setting, Solution};
     use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
-    use crate::model::{pulled_mass, woodpecker, LawKind};
+    use crate::models::{pulled_mass, woodpecker, LawKind};
     use crate::params::{PulledMassParams, WoodpeckerParams};
 
     /// Largest event-time error (s), after checking that the event kinds agree.

@@ -142,7 +142,7 @@ pub fn solve_theta(problem: &Problem, h: f64, theta: f64) -> Result<Solution> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::LawKind;
+    use crate::models::LawKind;
     use crate::solver::exact::Exact;
     use crate::solver::test_support::{fitted_slope, set_b};
 

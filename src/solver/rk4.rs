@@ -228,7 +228,7 @@ mod tests {
         back_and_forth, event_error, exact, last_period_kinds, set_b, woodpecker_fig15,
     };
     use super::*;
-    use crate::model::LawKind;
+    use crate::models::LawKind;
 
     /// Least-squares slope of log y against log x.
     fn slope(points: &[(f64, f64)]) -> f64 {

@@ -684,7 +684,7 @@ pub fn creep_per_stick(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::model::LawKind;
+    use crate::models::LawKind;
     use crate::solver::exact::Exact;
     use crate::solver::test_support::{fitted_slope, set_b};
 

@@ -20,8 +20,9 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
+use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use crate::params::{invalid, num, PulledMassParams, WoodpeckerParams};
-use crate::results::{pulled_mass, woodpecker, Summary};
+use crate::results::Summary;
 
 pub use render::{render, summary_line};
 

@@ -12,8 +12,9 @@ use super::threshold::mu_d_sticking_at_half_period;
 use crate::derivation::{self, Step};
 use crate::engine::Run;
 use crate::error::Result;
+use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
-use crate::results::{pulled_mass, rel_diff, woodpecker, Check, CheckValue, TOLERANCE};
+use crate::results::{rel_diff, Check, CheckValue, TOLERANCE};
 
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
 /// (not so when the speed grows far beyond the first maximum, as in continuous slip).

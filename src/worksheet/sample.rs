@@ -5,10 +5,10 @@
 use rand::rngs::StdRng;
 use rand::Rng;
 
-use crate::formula::pulled_mass as pm;
-use crate::formula::woodpecker as wp;
+use crate::models::pulled_mass::formula as pm;
+use crate::models::woodpecker::formula as wp;
+use crate::models::woodpecker::results::{linear_inputs, orbit_regime_id};
 use crate::params::{ModelName, PulledMassParams, WoodpeckerParams, G_STANDARD};
-use crate::results::woodpecker::{linear_inputs, orbit_regime_id};
 
 /// One student's case: the model and its parameters (SI).
 #[derive(Clone, Copy, Debug, PartialEq)]

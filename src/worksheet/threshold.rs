@@ -4,7 +4,7 @@
 
 use crate::engine::{integrate, EventKind, RunOptions};
 use crate::error::Result;
-use crate::model::{woodpecker as wp_model, LawKind};
+use crate::models::{woodpecker as wp_model, LawKind};
 use crate::params::WoodpeckerParams;
 
 /// Relative bracket around the closed-form μd,MIN for the search.

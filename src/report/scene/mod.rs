@@ -8,9 +8,9 @@ use crate::error::{Error, Result};
 use crate::params::{ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS};
 use crate::report::figures::spec::{CategoryMap, LineChart};
 
-pub mod pulled_mass;
 pub mod sampling;
-pub mod woodpecker;
+
+use crate::models::{pulled_mass, woodpecker};
 
 /// The model and parameters of a scene.
 #[derive(Clone, Debug, PartialEq)]
@@ -153,8 +153,8 @@ impl Scene {
         let mut out = Vec::new();
         for kind in &self.figures {
             let built = match &self.setup {
-                Setup::PulledMass(p) => pulled_mass::figures(&self.id, p, *kind)?,
-                Setup::Woodpecker(p) => woodpecker::figures(&self.id, p, *kind)?,
+                Setup::PulledMass(p) => pulled_mass::scene::figures(&self.id, p, *kind)?,
+                Setup::Woodpecker(p) => woodpecker::scene::figures(&self.id, p, *kind)?,
             };
             out.extend(built);
         }

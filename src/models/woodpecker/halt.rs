@@ -8,13 +8,13 @@
 //! ```
 //! A μd between the two is integrated exactly and its first slip is followed to its stop.
 
-use super::{or_none, run_wood, Claim, ClaimModel, Numbers, Verdict};
+use crate::claims::{or_none, run_wood, Claim, ClaimModel, Numbers, Verdict};
 use crate::error::Result;
-use crate::formula::lobe::{HaltKind, Phase, PhaseLobes};
-use crate::formula::woodpecker::{self as cf, WoodpeckerClosedForm};
-use crate::model::LawKind;
+use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
+use crate::models::woodpecker::lobe::{HaltKind, Phase, PhaseLobes};
+use crate::models::woodpecker::results::linear_inputs;
+use crate::models::LawKind;
 use crate::params::WoodpeckerParams;
-use crate::results::woodpecker::linear_inputs;
 
 const PAPER_SAYS: &str = "The dynamic coefficient has to exceed μd,MIN^(I) (51) for the sleeve \
      to stop in the first half period; otherwise the motion, once started, does not end.";
@@ -49,7 +49,7 @@ fn ms(t: f64) -> String {
 }
 
 /// Claim 5 on the given set, or on the Fig. 15 set when the closed forms do not apply to it.
-pub(super) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
+pub(crate) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
     let given = cf::evaluate(&linear_inputs(w));
     let (set, c, name) = match (given.mu_d_halt_1, given.mu_d_min_1) {
         (Some(_), Some(_)) => (*w, given, "Given set"),

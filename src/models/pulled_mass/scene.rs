@@ -3,15 +3,15 @@
 
 use rayon::prelude::*;
 
-use super::sampling::{curve, function_curve, sample, SAMPLES};
-use super::{Drawing, Figure, FigureKind};
 use crate::engine::{analyse, integrate, IntegrationRegime, RunOptions};
 use crate::error::Result;
-use crate::formula::pulled_mass::{self as cf, ClosedForm, Regime};
-use crate::model::{pulled_mass, LawKind};
+use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
+use crate::models::pulled_mass::results::{evaluate_with_runs, Runs};
+use crate::models::{pulled_mass, LawKind};
 use crate::params::PulledMassParams;
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
-use crate::results::pulled_mass::{evaluate_with_runs, Runs};
+use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
+use crate::report::scene::{Drawing, Figure, FigureKind};
 
 /// Palette indices and strokes of the two laws, the same in every figure.
 const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);

@@ -1,12 +1,12 @@
 //! Worked substitutions of the pulled mass (physics.md §1.1, §1.3–1.4): W, ω, T, φ, then every
 //! closed form of the linearized law in the order of a derivation. Values come from
-//! [`crate::formula::pulled_mass`]; which forms apply, from [`crate::results::pulled_mass`].
+//! [`crate::models::pulled_mass::formula`]; which forms apply, from [`crate::models::pulled_mass::results`].
 
-use super::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
-use super::{Step, Steps};
-use crate::formula::pulled_mass as cf;
+use crate::derivation::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
+use crate::derivation::{Step, Steps};
+use crate::models::pulled_mass::formula as cf;
+use crate::models::pulled_mass::results::applicability;
 use crate::params::PulledMassParams;
-use crate::results::pulled_mass::applicability;
 use crate::results::quantity::PULLED_MASS;
 
 /// Equation and unit of the §7 `params` keys with a step.

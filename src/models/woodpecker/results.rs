@@ -3,17 +3,17 @@
 
 use serde::Serialize;
 
-use super::checks::Check;
-use super::summary::{Power, Summary};
-use super::Applicability;
 use crate::engine::{analyse, integrate, Event, EventKind, IntegrationRegime, Run, RunOptions};
 use crate::error::Result;
-use crate::formula::lobe::HaltKind;
-use crate::formula::woodpecker::{
+use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
 };
-use crate::model::{woodpecker, LawKind};
+use crate::models::woodpecker::lobe::HaltKind;
+use crate::models::{woodpecker, LawKind};
 use crate::params::{validate_periods, WoodpeckerParams};
+use crate::results::checks::Check;
+use crate::results::summary::{Power, Summary};
+use crate::results::Applicability;
 
 /// Input parameters and the derived quantities (keys of §7 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]

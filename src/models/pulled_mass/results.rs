@@ -3,14 +3,14 @@
 
 use serde::Serialize;
 
-use super::checks::Check;
-use super::summary::{Power, Summary};
-use super::Applicability;
 use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
 use crate::error::Result;
-use crate::formula::pulled_mass::{self as cf, ClosedForm, Regime};
-use crate::model::{pulled_mass, LawKind};
+use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
+use crate::models::{pulled_mass, LawKind};
 use crate::params::{validate_periods, PulledMassParams};
+use crate::results::checks::Check;
+use crate::results::summary::{Power, Summary};
+use crate::results::Applicability;
 
 /// Input parameters and the derived W, T, ω, φ (keys of §7 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -8,21 +8,21 @@
 //! (28)  Γ = [c·D^{3/2} + μs³ + 3μs²μd − μd³]/(96 μs³ μd²),  c = 1 (derived) or 2 (misreading)
 //! ```
 
-use super::sample::{self, PulledExample};
-use super::{
+use crate::claims::sample::{self, PulledExample};
+use crate::claims::{
     mm_s, or_none, rel_diff, run_pulled, Claim, ClaimModel, Integrated, Numbers, Sample, Verdict,
 };
 use crate::engine::IntegrationRegime;
 use crate::error::Result;
-use crate::formula::pulled_mass as cf;
-use crate::model::LawKind;
+use crate::models::pulled_mass::formula as cf;
+use crate::models::LawKind;
 use crate::params::PulledMassParams;
 
 /// Agreement of a closed form with the exact integration (physics.md §4).
 const AGREE: f64 = 1e-9;
 
 /// Set B of physics.md §5: μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m (slip-stick).
-pub(super) fn set_b() -> PulledMassParams {
+pub(crate) fn set_b() -> PulledMassParams {
     PulledMassParams {
         mu_s: 0.4,
         mu_d: 0.35,
@@ -32,7 +32,7 @@ pub(super) fn set_b() -> PulledMassParams {
 }
 
 /// A pulled-mass set that is periodic in both laws, with both integrations.
-pub(super) struct PeriodicSet {
+pub(crate) struct PeriodicSet {
     pub p: PulledMassParams,
     /// "the given set" or "set B (…)".
     pub name: String,
@@ -57,7 +57,7 @@ impl PeriodicSet {
 }
 
 /// The given set if both laws reach a periodic orbit that advances, else set B.
-pub(super) fn periodic_set(p: &PulledMassParams) -> Result<PeriodicSet> {
+pub(crate) fn periodic_set(p: &PulledMassParams) -> Result<PeriodicSet> {
     let given = PeriodicSet::of(p, "the given set".to_string())?;
     if given.moves_periodically() {
         return Ok(given);
@@ -71,7 +71,7 @@ pub(super) fn periodic_set(p: &PulledMassParams) -> Result<PeriodicSet> {
 }
 
 /// Claim 1: (20) is the same-period condition; with μs = μd the least friction for a stick is φ.
-pub(super) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
+pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
     let phi = p.phi();
     let (stick_max, phi_c) = (
         cf::phi_stick_max(p.mu_s, p.mu_d),
@@ -192,7 +192,7 @@ fn gamma_with(c: f64, mu_s: f64, mu_d: f64) -> f64 {
 }
 
 /// Claim 2: coefficient 1 (not 2) in front of D^{3/2} in (28).
-pub(super) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
+pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
     let given_sticks = cf::regime(p.phi(), p.mu_s, p.mu_d) == cf::Regime::SlipStick;
     let (q, name) = if given_sticks {
         (*p, "the given set")
@@ -215,7 +215,7 @@ pub(super) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
         (false, true) => Verdict::Refuted,
         _ => Verdict::Qualified,
     };
-    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), super::rel_text);
+    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), crate::claims::rel_text);
     let finding = format!(
         "On {name}, the exact integration of the linearized law gives v̄ = {}. Eq. (27) with \
          coefficient 1 gives {} (relative error {}); with coefficient 2 it gives {} (relative \

@@ -9,17 +9,17 @@
 
 use rayon::prelude::*;
 
-use super::sampling::{curve, function_curve, sample, SAMPLES};
-use super::{Drawing, Figure, FigureKind};
 use crate::engine::{analyse, integrate, EventKind, Run, RunOptions};
 use crate::error::{Error, Result};
-use crate::formula::woodpecker::{
+use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, Phase, WoodpeckerClosedForm,
 };
-use crate::model::{woodpecker, LawKind};
+use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs, orbit_regime_id};
+use crate::models::{woodpecker, LawKind};
 use crate::params::{invalid, WoodpeckerParams};
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
-use crate::results::woodpecker::{evaluate_with_runs, linear_inputs, orbit_regime_id};
+use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
+use crate::report::scene::{Drawing, Figure, FigureKind};
 
 /// Palette index and stroke of each law, the same in every figure.
 const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);

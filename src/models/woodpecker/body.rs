@@ -7,10 +7,10 @@
 //! ```
 //! The zero crossings of F_e, where |F_e| has a kink, are breakpoints of the force law.
 
-use super::LawKind;
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::{Error, Result};
-use crate::formula::woodpecker::{self as formula, counterpart};
+use crate::models::woodpecker::formula::{self as formula, counterpart};
+use crate::models::LawKind;
 use crate::params::WoodpeckerParams;
 
 /// The sleeve: M = m_S, μs, μd.
@@ -113,7 +113,7 @@ pub fn spring_coordinate(p: &WoodpeckerParams, law: LawKind, t: f64) -> Option<f
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::formula::woodpecker::Counterpart;
+    use crate::models::woodpecker::formula::Counterpart;
 
     #[test]
     fn laws_follow_the_spring_coordinate_and_split_at_its_zeros() {

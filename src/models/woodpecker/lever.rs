@@ -8,13 +8,13 @@
 //!                and one stick per period (no intermediate halt)
 //! ```
 
-use super::{
+use crate::claims::{
     mm_s, or_none, regime_words, run_wood, Claim, ClaimModel, ClaimNumber, Integrated, Numbers,
     Verdict,
 };
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
-use crate::model::LawKind;
+use crate::models::LawKind;
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
 
 /// Mean speed of the toy quoted for Fig. 26 (m/s).
@@ -79,7 +79,7 @@ fn threshold_above(p: &WoodpeckerParams) -> Option<f64> {
 }
 
 /// The Fig. 26 set: the Fig. 15 set with μd 0.332, k 20.3 N/m, d0 9.5 mm.
-pub(super) fn fig26() -> WoodpeckerParams {
+pub(crate) fn fig26() -> WoodpeckerParams {
     WoodpeckerParams {
         mu_d: 0.332,
         k: 20.3,
@@ -201,7 +201,7 @@ impl Evidence {
 }
 
 /// Claim 8: λ = 1 never sticks; λ = l/h reproduces Figs. 15, 16 and 26.
-pub(super) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
+pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
     let e = Evidence::of(w)?;
     Ok(Claim {
         id: 8,

@@ -6,9 +6,9 @@
 //! linear:    N_f = 2W (1 − 2t/T) on [0, T/2],  2W (2t/T − 1) on [T/2, T]    (Sec. 2.2)
 //! ```
 
-use super::LawKind;
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::Result;
+use crate::models::LawKind;
 use crate::params::PulledMassParams;
 
 /// The body: M = 2m, μs, μd.

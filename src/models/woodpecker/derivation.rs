@@ -1,14 +1,14 @@
 //! Worked substitutions of the linearized woodpecker (physics.md §2, §3.1–3.6): W_S, ω, T, λ,
 //! the linear amplitudes, the dimensionless groups, phases I and II (one function for both,
 //! by the swap u^(−) ↔ u^(+), η ↔ η'), and the whole period. Values come from
-//! [`crate::formula::woodpecker`]; which forms apply, from [`crate::results::woodpecker`].
+//! [`crate::models::woodpecker::formula`]; which forms apply, from [`crate::models::woodpecker::results`].
 
-use super::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
-use super::{Step, Steps};
-use crate::formula::woodpecker::{self as cf, Counterpart, Groups, PhaseClosedForm};
+use crate::derivation::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
+use crate::derivation::{Step, Steps};
+use crate::models::woodpecker::formula::{self as cf, Counterpart, Groups, PhaseClosedForm};
+use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
 use crate::params::{OmegaMode, WoodpeckerParams};
 use crate::results::quantity::WOODPECKER;
-use crate::results::woodpecker::{applicability, domain_note, linear_inputs};
 
 /// Equation and unit of the §7 `params` keys with a step.
 const PARAMS: &[(&str, &str, &str)] = &[

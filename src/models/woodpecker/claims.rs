@@ -6,13 +6,13 @@
 //! (71) v̄ = g τ W_S² Γ/(24 ζ0² k²),  Γ = Γ^(I) + Γ^(II) depends on λμs, λμd only
 //! ```
 
-use super::sample::{self, WOODPECKER_RANGES};
-use super::{rel_diff, run_wood, spread, Claim, ClaimModel, Numbers, Sample, Verdict};
+use crate::claims::sample::{self, WOODPECKER_RANGES};
+use crate::claims::{rel_diff, run_wood, spread, Claim, ClaimModel, Numbers, Sample, Verdict};
 use crate::error::Result;
-use crate::formula::woodpecker as cf;
-use crate::model::LawKind;
+use crate::models::woodpecker::formula as cf;
+use crate::models::woodpecker::results::linear_inputs;
+use crate::models::LawKind;
 use crate::params::WoodpeckerParams;
-use crate::results::woodpecker::linear_inputs;
 
 /// Share of counterexamples above which a statement "for sensible values" is refuted.
 const REFUTING_SHARE: f64 = 0.05;
@@ -21,7 +21,7 @@ const Z0_STEPS: u32 = 40;
 const Z0_KEPT: usize = 5;
 
 /// Claim 4: "μd,MIN^(I) > μd,MIN^(II) for sensible values".
-pub(super) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
+pub(crate) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
     let c = cf::evaluate(&linear_inputs(w));
     let (one, two) = (c.mu_d_min_1, c.mu_d_min_2);
     let given_fails = one.zip(two).is_some_and(|(a, b)| a <= b);
@@ -36,7 +36,7 @@ pub(super) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
     let given = match one.zip(two) {
         Some((a, b)) => format!(
             "Given set (`{}` counterpart, λ = {:.3}): μd,MIN^(I) = {a:.4}, μd,MIN^(II) = {b:.4}{}",
-            super::counterpart_name(w.counterpart),
+            crate::claims::counterpart_name(w.counterpart),
             w.lambda(),
             if a > b {
                 ", in the paper's order."
@@ -99,7 +99,7 @@ fn standard_z0s(w: &WoodpeckerParams) -> Vec<f64> {
 }
 
 /// Claim 6: Γ does not depend on η; in the standard regime v̄ is independent of δ0.
-pub(super) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
+pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
     let mut set = *w;
     let mut name = "the given set";
     let mut z0s = standard_z0s(&set);
@@ -153,11 +153,11 @@ pub(super) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
         z0s.len(),
         1e3 * z_lo,
         1e3 * z_hi,
-        super::or_none(gammas.first().copied(), |g| format!("{g:.6}")),
-        super::rel_text(s_gamma),
-        super::or_none(v_num.first().copied(), super::mm_s),
-        super::rel_text(s_v),
-        super::rel_text(worst_closed),
+        crate::claims::or_none(gammas.first().copied(), |g| format!("{g:.6}")),
+        crate::claims::rel_text(s_gamma),
+        crate::claims::or_none(v_num.first().copied(), crate::claims::mm_s),
+        crate::claims::rel_text(s_v),
+        crate::claims::rel_text(worst_closed),
     );
     Ok(Claim {
         id: 6,
