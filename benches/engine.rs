@@ -17,10 +17,11 @@ use criterion::{criterion_group, criterion_main, Criterion};
 
 use stickslip::engine::{analyse, integrate, RunOptions};
 use stickslip::models::pulled_mass::formula as cf;
+use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::woodpecker;
 use stickslip::models::woodpecker::formula as wcf;
+use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::{pulled_mass, LawKind};
-use stickslip::params::{PulledMassParams, WoodpeckerParams};
 use stickslip::report::{builtin_scenes, render, Format};
 
 /// Periods integrated per run (the targets above are stated for 20).

@@ -18,7 +18,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use stickslip::fit::data::{parse, ReadOptions, Tracked, Unit};
 use stickslip::fit::synthetic::Synthetic;
 use stickslip::fit::{fit, track, FitParam};
-use stickslip::params::WoodpeckerParams;
+use stickslip::models::woodpecker::WoodpeckerParams;
 
 /// The Figs. 26–27 scenario values (the starting point).
 fn fig26() -> WoodpeckerParams {

@@ -1,14 +1,18 @@
-//! Command-line interface (clap derive). Flags override the values of a `--scenario` file;
-//! what neither gives takes the paper's default set.
+//! Command-line interface (clap derive). The model subcommands and their parameter flags are
+//! made from the model registry ([`crate::models`]); flags override the values of a
+//! `--scenario` file, and what neither gives takes the paper's default set.
 
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand};
+use std::marker::PhantomData;
+
+use clap::builder::{PossibleValuesParser, TypedValueParser};
+use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand};
 
 use crate::fit::data::{Columns, Unit};
 use crate::fit::FitParam;
-use crate::models::woodpecker::formula::Counterpart;
-use crate::params::{ModelName, OmegaMode};
+use crate::models::woodpecker::WoodpeckerParams;
+use crate::models::{Model, Physics};
 use crate::report::Format;
 
 /// Stick-slip models of a physics paper: closed forms checked against exact integration.
@@ -25,7 +29,7 @@ pub enum Command {
     /// linearized law, and compare with the harmonic law.
     Eval {
         #[command(subcommand)]
-        model: EvalModel,
+        model: ModelCommand<NoArgs>,
     },
     /// Render the report: the built-in scenes of the paper's figures, or the given scenario
     /// files, as HTML and Markdown.
@@ -40,7 +44,7 @@ pub enum Command {
         #[arg(long, default_value_t = 2000)]
         samples: usize,
         #[command(subcommand)]
-        model: EvalModel,
+        model: ModelCommand<NoArgs>,
     },
     /// Benchmark every time-stepping method against the exact engine: work-precision sweeps,
     /// where each method fails, and optionally SciPy side by side (written to --out).
@@ -53,7 +57,7 @@ pub enum Command {
     /// and sticks per period and the regime (sweep.csv, sweep.svg in --out).
     Sweep {
         #[command(subcommand)]
-        model: SweepModel,
+        model: ModelCommand<SweepArgs>,
     },
     /// Fit the harmonic woodpecker to the tracked positions of a real toy (Figs. 26–27): μd,
     /// z0, d0 (optionally μs, k) by Levenberg–Marquardt, with standard errors, residuals and
@@ -87,15 +91,15 @@ pub struct FitArgs {
     #[arg(long, default_value = "fit")]
     pub out: PathBuf,
     #[command(flatten)]
-    pub model: WoodpeckerArgs,
+    pub model: ModelFlags<WoodpeckerParams>,
 }
 
 /// Options of `stickslip worksheet`.
 #[derive(Debug, Args)]
 pub struct WorksheetArgs {
     /// Model of the exercises.
-    #[arg(long, value_enum)]
-    pub model: ModelName,
+    #[arg(long, value_parser = model_parser())]
+    pub model: Model,
     /// Students, one sheet each (1 to 500).
     #[arg(long, default_value_t = 30,
           value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::worksheet::MAX_STUDENTS)))]
@@ -137,24 +141,6 @@ pub struct SweepArgs {
     /// Output folder (sweep.csv, sweep.svg).
     #[arg(long, default_value = "sweep")]
     pub out: PathBuf,
-}
-
-#[derive(Debug, Subcommand)]
-pub enum SweepModel {
-    /// Sweep a parameter of the pulled mass.
-    PulledMass {
-        #[command(flatten)]
-        sweep: SweepArgs,
-        #[command(flatten)]
-        model: PulledMassArgs,
-    },
-    /// Sweep a parameter of the woodpecker.
-    Woodpecker {
-        #[command(flatten)]
-        sweep: SweepArgs,
-        #[command(flatten)]
-        model: WoodpeckerArgs,
-    },
 }
 
 /// Options of `stickslip bench`.
@@ -210,16 +196,8 @@ pub struct HandoutArgs {
     pub format: Vec<Format>,
 }
 
-#[derive(Debug, Subcommand)]
-pub enum EvalModel {
-    /// The pulled mass pressed by an oscillating normal force (paper Sec. 2).
-    PulledMass(PulledMassArgs),
-    /// The falling woodpecker toy: the sleeve on the pole (paper Sec. 3).
-    Woodpecker(WoodpeckerArgs),
-}
-
 /// Options shared by every model.
-#[derive(Debug, Args)]
+#[derive(Clone, Debug, Args)]
 pub struct CommonArgs {
     /// Scenario file (TOML) with the parameters; flags given as well override it.
     #[arg(long, value_name = "FILE")]
@@ -236,73 +214,147 @@ pub struct CommonArgs {
     pub csv: Option<PathBuf>,
 }
 
-/// Parameters of the pulled mass [defaults: the paper's Fig. 6 set].
-#[derive(Debug, Args)]
-pub struct PulledMassArgs {
-    #[command(flatten)]
+/// A subcommand without options of its own.
+#[derive(Clone, Debug, Args)]
+pub struct NoArgs {}
+
+/// The parameter flags of a model as given on the command line, and the shared options. The
+/// flags are made from the model's parameter descriptors; [`crate::commands::model_params`]
+/// applies them over the scenario and the defaults.
+#[derive(Clone, Debug)]
+pub struct ModelArgs {
+    /// The model, with its default parameters.
+    pub model: Model,
     pub common: CommonArgs,
-    /// Static friction coefficient μs [default: 0.4].
-    #[arg(long, allow_hyphen_values = true)]
-    pub mu_s: Option<f64>,
-    /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.25].
-    #[arg(long, allow_hyphen_values = true)]
-    pub mu_d: Option<f64>,
-    /// Mass m of the block in kg (the hanging mass is equal) [default: 0.06].
-    #[arg(long, allow_hyphen_values = true)]
-    pub mass: Option<f64>,
-    /// Spring constant k in N/m [default: 45].
-    #[arg(long, allow_hyphen_values = true)]
-    pub k: Option<f64>,
-    /// Pulling force F in N [default: 0.18].
-    #[arg(long, allow_hyphen_values = true)]
-    pub force: Option<f64>,
-    /// Gravitational acceleration g in m/s² [default: 9.81].
-    #[arg(long, allow_hyphen_values = true)]
-    pub g: Option<f64>,
+    /// The numeric parameters given, by key.
+    pub numbers: Vec<(&'static str, f64)>,
+    /// The options given, by key.
+    pub choices: Vec<(&'static str, String)>,
 }
 
-/// Parameters of the woodpecker [defaults: the paper's Fig. 15 set].
-#[derive(Debug, Args)]
-pub struct WoodpeckerArgs {
-    #[command(flatten)]
-    pub common: CommonArgs,
-    /// Static friction coefficient μs [default: 0.65].
-    #[arg(long, allow_hyphen_values = true)]
-    pub mu_s: Option<f64>,
-    /// Dynamic friction coefficient μd, 0 < μd ≤ μs [default: 0.32].
-    #[arg(long, allow_hyphen_values = true)]
-    pub mu_d: Option<f64>,
-    /// Spring constant k in N/m [default: 20].
-    #[arg(long, allow_hyphen_values = true)]
-    pub k: Option<f64>,
-    /// Sleeve mass m_S in kg [default: 0.006].
-    #[arg(long, allow_hyphen_values = true)]
-    pub m_sleeve: Option<f64>,
-    /// Woodpecker (bird) mass m_W in kg [default: 0.014].
-    #[arg(long, allow_hyphen_values = true)]
-    pub m_bird: Option<f64>,
-    /// Lever arm l of the spring force in m [default: 0.016].
-    #[arg(long, allow_hyphen_values = true)]
-    pub l: Option<f64>,
-    /// Distance h between the two pole contacts in m [default: 0.007].
-    #[arg(long, allow_hyphen_values = true)]
-    pub h: Option<f64>,
-    /// Spring offset z0 in m [default: 0.007].
-    #[arg(long, allow_hyphen_values = true)]
-    pub z0: Option<f64>,
-    /// Spring oscillation amplitude d0 in m [default: 0.009].
-    #[arg(long, allow_hyphen_values = true)]
-    pub d0: Option<f64>,
-    /// Gravitational acceleration g in m/s² [default: 9.81].
-    #[arg(long, allow_hyphen_values = true)]
-    pub g: Option<f64>,
-    /// Lever ratio λ (each contact carries λ|F_e|) [default: l/h].
-    #[arg(long, allow_hyphen_values = true)]
-    pub lever: Option<f64>,
-    /// Definition of ω [default: bird].
-    #[arg(long, value_enum)]
-    pub omega: Option<OmegaMode>,
-    /// Linear counterpart of the harmonic spring coordinate [default: zeros].
-    #[arg(long, value_enum)]
-    pub counterpart: Option<Counterpart>,
+impl ModelArgs {
+    /// The model's flags and the shared options, added to `cmd`.
+    fn augment(model: &Model, cmd: clap::Command) -> clap::Command {
+        let flags = model.flags().into_iter().map(|f| {
+            let arg = Arg::new(f.key)
+                .long(f.key.replace('_', "-"))
+                .value_name(f.key.to_uppercase())
+                .help(f.help)
+                .action(ArgAction::Set);
+            match f.values {
+                None => arg
+                    .allow_hyphen_values(true)
+                    .value_parser(clap::value_parser!(f64)),
+                Some(values) => arg.value_parser(PossibleValuesParser::new(values)),
+            }
+        });
+        CommonArgs::augment_args(cmd.args(flags))
+    }
+
+    /// The flags given for `model`.
+    fn from_matches(model: Model, m: &ArgMatches) -> Result<Self, clap::Error> {
+        let mut args = Self {
+            model,
+            common: CommonArgs::from_arg_matches(m)?,
+            numbers: Vec::new(),
+            choices: Vec::new(),
+        };
+        for flag in model.flags() {
+            match flag.values {
+                None => {
+                    if let Some(v) = m.get_one::<f64>(flag.key) {
+                        args.numbers.push((flag.key, *v));
+                    }
+                }
+                Some(_) => {
+                    if let Some(v) = m.get_one::<String>(flag.key) {
+                        args.choices.push((flag.key, v.clone()));
+                    }
+                }
+            }
+        }
+        Ok(args)
+    }
+}
+
+/// The flags of one model, flattened into a command that is about that model (`fit`).
+#[derive(Clone, Debug)]
+pub struct ModelFlags<M> {
+    pub args: ModelArgs,
+    model: PhantomData<M>,
+}
+
+impl<M: Physics> FromArgMatches for ModelFlags<M> {
+    fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
+        Ok(Self {
+            args: ModelArgs::from_matches(M::default().into_model(), m)?,
+            model: PhantomData,
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
+impl<M: Physics> Args for ModelFlags<M> {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        ModelArgs::augment(&M::default().into_model(), cmd)
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+/// One subcommand per registered model (`eval pulled-mass`, `sweep woodpecker`), each with the
+/// model's flags, the shared options and the options `X` of the command.
+#[derive(Clone, Debug)]
+pub struct ModelCommand<X> {
+    pub args: ModelArgs,
+    pub extra: X,
+}
+
+impl<X: FromArgMatches> FromArgMatches for ModelCommand<X> {
+    fn from_arg_matches(m: &ArgMatches) -> Result<Self, clap::Error> {
+        let Some((id, sub)) = m.subcommand() else {
+            return Err(clap::Error::new(clap::error::ErrorKind::MissingSubcommand));
+        };
+        let model = Model::from_id(id)
+            .ok_or_else(|| clap::Error::new(clap::error::ErrorKind::InvalidSubcommand))?;
+        Ok(Self {
+            args: ModelArgs::from_matches(model, sub)?,
+            extra: X::from_arg_matches(sub)?,
+        })
+    }
+
+    fn update_from_arg_matches(&mut self, m: &ArgMatches) -> Result<(), clap::Error> {
+        *self = Self::from_arg_matches(m)?;
+        Ok(())
+    }
+}
+
+impl<X: Args> Subcommand for ModelCommand<X> {
+    fn augment_subcommands(cmd: clap::Command) -> clap::Command {
+        Model::defaults().iter().fold(cmd, |cmd, model| {
+            let sub = ModelArgs::augment(model, clap::Command::new(model.id()));
+            // The model's line, not the doc of `X`, is the subcommand's about.
+            cmd.subcommand(X::augment_args(sub).about(model.about()))
+        })
+    }
+
+    fn augment_subcommands_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_subcommands(cmd)
+    }
+
+    fn has_subcommand(name: &str) -> bool {
+        Model::from_id(name).is_some()
+    }
+}
+
+/// `--model`: a registered model id.
+fn model_parser() -> impl TypedValueParser<Value = Model> {
+    PossibleValuesParser::new(Model::ids())
+        .map(|id| Model::from_id(&id).unwrap_or_else(|| Model::defaults()[0]))
 }

@@ -14,9 +14,9 @@
 use std::fmt::Write as _;
 
 use crate::engine::{Event, Run};
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use crate::models::{woodpecker as wood_model, LawKind};
-use crate::params::WoodpeckerParams;
 use crate::report::OutFile;
 use crate::results::summary::kind_name;
 

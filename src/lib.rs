@@ -18,6 +18,7 @@
 pub mod bench;
 pub mod claims;
 pub mod cli;
+pub mod commands;
 pub mod derivation;
 pub mod engine;
 pub mod error;
@@ -27,6 +28,7 @@ pub mod handout;
 pub mod models;
 pub mod output;
 pub mod params;
+pub mod present;
 pub mod report;
 pub mod results;
 pub mod solver;

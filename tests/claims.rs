@@ -4,8 +4,9 @@
 
 use stickslip::claims::{evaluate, halt_threshold_z0, Claim, Claims, Sample, Verdict};
 use stickslip::engine::IntegrationRegime;
+use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::woodpecker::results as woodpecker;
-use stickslip::params::{PulledMassParams, WoodpeckerParams};
+use stickslip::models::woodpecker::WoodpeckerParams;
 
 /// The z0 (m) at which the Fig. 15 set loses its intermediate halt (physics.md §6, claim 8).
 const FIG16_THRESHOLD: f64 = 7.0746e-3;

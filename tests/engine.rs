@@ -5,8 +5,8 @@ use stickslip::engine::{
     RunOptions,
 };
 use stickslip::models::pulled_mass::formula as cf;
+use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::{pulled_mass, LawKind};
-use stickslip::params::PulledMassParams;
 
 fn run(body: &Body, law: &ForceLaw, periods: u32) -> Run {
     integrate(

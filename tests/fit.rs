@@ -16,7 +16,9 @@ use serde_json::Value;
 use stickslip::fit::data::{parse, ReadOptions, Unit};
 use stickslip::fit::synthetic::Synthetic;
 use stickslip::fit::{self, FitParam};
-use stickslip::params::{Scenario, WoodpeckerParams};
+use stickslip::models::woodpecker::WoodpeckerParams;
+use stickslip::models::Model;
+use stickslip::params::Scenario;
 
 const EXAMPLE: &str = "scenarios/tracked-toy-example.csv";
 const FIG26: &str = "scenarios/fig26-tracked-toy.toml";
@@ -30,7 +32,10 @@ fn stickslip() -> Command {
 /// The tracked toy's parameters (Figs. 26–27).
 fn fig26() -> WoodpeckerParams {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(FIG26);
-    Scenario::load(&path).unwrap().params(&path).unwrap()
+    match Scenario::load(&path).unwrap().model_params(&path).unwrap() {
+        Model::Woodpecker(p) => p,
+        other => panic!("{FIG26} describes {}", other.id()),
+    }
 }
 
 fn synthetic(truth: WoodpeckerParams, seed: u64) -> Synthetic {

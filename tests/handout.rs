@@ -8,8 +8,8 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use stickslip::handout::{self, Handout};
+use stickslip::models::Model;
 use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
-use stickslip::report::scene::Setup;
 use stickslip::report::{builtin_scenes, Format, Scene};
 use stickslip::results::{Check, CheckValue};
 
@@ -18,11 +18,11 @@ use common::rendered;
 /// The §7 object of the scene's evaluation and its checks, straight from the engine.
 fn engine(scene: &Scene) -> (serde_json::Value, Vec<Check>) {
     match &scene.setup {
-        Setup::PulledMass(p) => {
+        Model::PulledMass(p) => {
             let e = pulled_mass::evaluate(p, scene.periods).unwrap();
             (serde_json::to_value(&e).unwrap(), e.checks)
         }
-        Setup::Woodpecker(p) => {
+        Model::Woodpecker(p) => {
             let e = woodpecker::evaluate(p, scene.periods).unwrap();
             (serde_json::to_value(&e).unwrap(), e.checks)
         }

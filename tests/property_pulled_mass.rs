@@ -4,7 +4,7 @@
 use proptest::prelude::*;
 use stickslip::models::pulled_mass::formula::{self as cf, Regime};
 use stickslip::models::pulled_mass::results::evaluate;
-use stickslip::params::PulledMassParams;
+use stickslip::models::pulled_mass::PulledMassParams;
 
 /// φ inside the interval of regime `which`, away from its ends by a relative 1e-6.
 fn phi_in_regime(which: u8, frac: f64, mu_s: f64, mu_d: f64) -> f64 {

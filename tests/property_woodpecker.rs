@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use stickslip::models::woodpecker::formula::Counterpart;
 use stickslip::models::woodpecker::results::{evaluate, orbit_regime_id};
-use stickslip::params::{OmegaMode, WoodpeckerParams};
+use stickslip::models::woodpecker::{OmegaMode, WoodpeckerParams};
 
 fn random_set(rng: &mut StdRng) -> WoodpeckerParams {
     let mu_s = rng.gen_range(0.2..1.0);

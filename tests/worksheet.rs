@@ -13,9 +13,10 @@ use std::path::Path;
 use assert_cmd::Command;
 use serde_json::Value;
 use stickslip::engine::{integrate, EventKind, RunOptions};
+use stickslip::models::pulled_mass::PulledMassParams;
+use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use stickslip::models::{woodpecker as wp_model, LawKind};
-use stickslip::params::{PulledMassParams, WoodpeckerParams};
 use stickslip::results::{CheckValue, Summary};
 
 /// Closed forms and integration agree to this (physics.md §4).

@@ -37,11 +37,12 @@ pub mod tables;
 pub use peer::PeerChoice;
 pub use render::render;
 
+use crate::models::Model;
 use analysis::{cost_rows, CostRow};
 use failure_table::{failure_table, FailureRow, ENDPOINTS};
 use machine::Machine;
 use peer::PeerReport;
-use problems::{BenchProblem, ModelParams, Reference, PERIODS};
+use problems::{BenchProblem, Reference, PERIODS};
 pub use studies::Studies;
 use sweep::{measure, method_kind, Grid, MethodKind, SweepPoint};
 
@@ -74,7 +75,7 @@ pub struct ProblemInfo {
     pub model: &'static str,
     pub law: &'static str,
     pub title: String,
-    pub params: ModelParams,
+    pub params: Model,
     pub period_s: f64,
     pub periods: u32,
     pub t_end_s: f64,

@@ -13,8 +13,9 @@ use serde::Serialize;
 use crate::engine::{Body, ForceLaw};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::phi_continuous;
-use crate::models::{pulled_mass, woodpecker, LawKind};
-use crate::params::{PulledMassParams, WoodpeckerParams};
+use crate::models::pulled_mass::PulledMassParams;
+use crate::models::woodpecker::WoodpeckerParams;
+use crate::models::{LawKind, Model};
 use crate::solver::exact::Exact;
 use crate::solver::{Method, MethodEvent, Problem, Setting};
 
@@ -28,14 +29,6 @@ pub const HALT_OFFSET_Z0: f64 = 1e-5;
 /// Relative offset of the two pulled-mass boundary cases from φ_c.
 pub const PHI_C_OFFSET: f64 = 1e-3;
 
-/// The model parameters of a problem, as the SciPy peer reads them.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum ModelParams {
-    PulledMass(PulledMassParams),
-    Woodpecker(WoodpeckerParams),
-}
-
 /// One problem of the benchmark: a force law on a body over [`PERIODS`] periods.
 #[derive(Clone, Debug, PartialEq)]
 pub struct BenchProblem {
@@ -46,7 +39,7 @@ pub struct BenchProblem {
     pub law: LawKind,
     /// Human-readable title for tables and charts.
     pub title: String,
-    pub params: ModelParams,
+    pub params: Model,
     pub problem: Problem,
 }
 
@@ -93,30 +86,27 @@ fn problem(body: Body, law: ForceLaw) -> Problem {
     Problem { body, law, t_end }
 }
 
-/// A pulled-mass problem under the given law.
-pub fn pulled(id: &str, title: &str, p: PulledMassParams, law: LawKind) -> Result<BenchProblem> {
-    p.validate()?;
+/// The problem of `model` under `law`.
+pub fn of(id: &str, title: &str, model: Model, law: LawKind) -> Result<BenchProblem> {
+    model.validate()?;
     Ok(BenchProblem {
         id: format!("{id}_{}", law_id(law)),
-        model: "pulled-mass",
+        model: model.id(),
         law,
         title: format!("{title}, {} law", law_id(law)),
-        params: ModelParams::PulledMass(p),
-        problem: problem(pulled_mass::body(&p), pulled_mass::force_law(&p, law)?),
+        params: model,
+        problem: problem(model.body(), model.force_law(law)?),
     })
+}
+
+/// A pulled-mass problem under the given law.
+pub fn pulled(id: &str, title: &str, p: PulledMassParams, law: LawKind) -> Result<BenchProblem> {
+    of(id, title, Model::PulledMass(p), law)
 }
 
 /// A woodpecker problem under the given law.
 pub fn wood(id: &str, title: &str, p: WoodpeckerParams, law: LawKind) -> Result<BenchProblem> {
-    p.validate()?;
-    Ok(BenchProblem {
-        id: format!("{id}_{}", law_id(law)),
-        model: "woodpecker",
-        law,
-        title: format!("{title}, {} law", law_id(law)),
-        params: ModelParams::Woodpecker(p),
-        problem: problem(woodpecker::body(&p), woodpecker::force_law(&p, law)?),
-    })
+    of(id, title, Model::Woodpecker(p), law)
 }
 
 /// The four problems of the work-precision sweep.

@@ -14,8 +14,8 @@ use super::{
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
 use crate::models::woodpecker::results::linear_inputs;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::params::WoodpeckerParams;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
 const CLOSE: f64 = 0.10;

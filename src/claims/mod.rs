@@ -31,9 +31,12 @@ use crate::engine::{
     analyse, integrate, Body, EventKind, ForceLaw, IntegrationRegime, Run, RunOptions, Steady,
 };
 use crate::error::Result;
+use crate::models::param::invalid;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::Counterpart;
-use crate::models::LawKind;
-use crate::params::{invalid, PulledMassParams, WoodpeckerParams, DEFAULT_PERIODS};
+use crate::models::woodpecker::WoodpeckerParams;
+use crate::models::{LawKind, Model};
+use crate::params::DEFAULT_PERIODS;
 pub(crate) use crate::results::rel_diff;
 
 pub use lever::halt_threshold_z0;
@@ -122,6 +125,15 @@ pub struct Claims {
 }
 
 /// Checks the parameters and the sample, then evaluates the eight claims.
+/// The parameter pair the claims are computed on when one model's set is given: that set for
+/// its model, the paper's default set for the other.
+pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {
+    match *model {
+        Model::PulledMass(p) => (p, WoodpeckerParams::default()),
+        Model::Woodpecker(p) => (PulledMassParams::default(), p),
+    }
+}
+
 pub fn evaluate(
     pulled: &PulledMassParams,
     wood: &WoodpeckerParams,

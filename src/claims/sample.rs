@@ -15,8 +15,8 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 
 use super::{Sample, SampleResult};
 use crate::models::pulled_mass::formula as pcf;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::{self as wcf, LinearWoodpecker};
-use crate::params::PulledMassParams;
 
 /// Draws per kept set before the woodpecker sample gives up (most draws are kept).
 const MAX_DRAWS_PER_SET: usize = 100;

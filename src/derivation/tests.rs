@@ -8,9 +8,10 @@ use serde_json::Value;
 
 use super::*;
 use crate::models::pulled_mass::formula as pm;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::Counterpart;
+use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
 use crate::models::{pulled_mass::results as pm_results, woodpecker::results as wp_results};
-use crate::params::{OmegaMode, PulledMassParams, WoodpeckerParams};
 use crate::report::math::mathml;
 
 /// Evaluating a tree repeats the formula's arithmetic in another order: a few ulps apart.

@@ -28,8 +28,9 @@ use serde::Serialize;
 
 use crate::engine::{analyse, integrate, RunOptions};
 use crate::error::{Error, Result};
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
+use crate::params::DEFAULT_PERIODS;
 pub use data::Tracked;
 pub use model::{data_period, track, Axis, Track};
 pub use param::FitParam;
@@ -255,7 +256,7 @@ fn curve(
 
 #[cfg(test)]
 pub(crate) mod tests {
-    use crate::params::WoodpeckerParams;
+    use crate::models::woodpecker::WoodpeckerParams;
 
     /// The tracked toy's set (scenarios/fig26-tracked-toy.toml), for the unit tests.
     pub(crate) fn fig26() -> WoodpeckerParams {

@@ -13,8 +13,10 @@ use serde::Serialize;
 
 use crate::engine::{integrate, Run, RunOptions};
 use crate::error::{Error, Result};
+use crate::models::param::invalid;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::params::{invalid, WoodpeckerParams, MAX_PERIODS};
+use crate::params::MAX_PERIODS;
 
 /// Periods integrated before the first tracked time.
 pub const TRANSIENT_PERIODS: u32 = 3;

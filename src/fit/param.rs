@@ -11,7 +11,9 @@
 
 use serde::Serialize;
 
-use crate::params::{WoodpeckerParams, MU_MAX};
+use crate::models::woodpecker::WoodpeckerParams;
+
+use crate::models::param::MU_MAX;
 
 /// A woodpecker parameter the fit can adjust.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, clap::ValueEnum)]

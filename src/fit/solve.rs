@@ -23,7 +23,7 @@ use nalgebra::{storage::Owned, DMatrix, DVector, Dyn};
 use super::model::track;
 use super::param::{from_internal, to_internal, with_values, FitParam};
 use crate::error::{Error, Result};
-use crate::params::WoodpeckerParams;
+use crate::models::woodpecker::WoodpeckerParams;
 
 /// Phases t_shift = jT/PHASE_SCAN tried before the fit.
 pub const PHASE_SCAN: usize = 24;

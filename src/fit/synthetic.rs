@@ -15,7 +15,7 @@ use rand::{Rng, SeedableRng};
 use super::data::Unit;
 use super::track;
 use crate::error::Result;
-use crate::params::WoodpeckerParams;
+use crate::models::woodpecker::WoodpeckerParams;
 
 /// What to generate.
 #[derive(Clone, Copy, Debug, PartialEq)]

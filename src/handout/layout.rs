@@ -8,8 +8,10 @@
 
 use serde::Serialize;
 
+use crate::models::with_model;
+use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx};
-use crate::report::scene::{FigureKind, Setup};
+use crate::report::scene::FigureKind;
 use crate::report::Scene;
 
 /// At most this many figures: the two columns, and one below the shorter.
@@ -59,18 +61,7 @@ pub struct PageTwo {
 /// the pulled mass, the spring coordinate's counterparts for the woodpecker), each unless the
 /// scene has that kind already.
 pub fn kinds(scene: &Scene) -> Vec<FigureKind> {
-    let standard = match scene.setup {
-        Setup::PulledMass(_) => [
-            FigureKind::PulledMotion { periods: 2.0 },
-            FigureKind::PulledForces,
-            FigureKind::PulledCompare,
-        ],
-        Setup::Woodpecker(_) => [
-            FigureKind::WoodMotion { periods: 2.0 },
-            FigureKind::WoodForces,
-            FigureKind::WoodSpring,
-        ],
-    };
+    let standard = with_model!(&scene.setup, p => p.standard_scene().figures);
     let mut kinds = scene.figures.clone();
     for kind in standard {
         let same = std::mem::discriminant(&kind);

@@ -15,18 +15,18 @@ use std::path::Path;
 use serde::Serialize;
 
 use crate::claims::{self, Sample};
-use crate::derivation;
 use crate::error::{Error, Result};
+use crate::models::{with_model, Model};
+use crate::present::Present;
 use crate::report::context::{FigureCtx, SceneCtx};
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
-use crate::report::scene::Setup;
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
-use crate::results::quantity::{find, PULLED_MASS, WOODPECKER};
+use crate::results::quantity::find;
 use physics::Note;
 
 mod layout;
 pub mod pdf;
-mod physics;
+pub(crate) mod physics;
 
 const TEMPLATES: &[(&str, &str)] = &[
     (
@@ -188,11 +188,8 @@ pub fn build(scene: &Scene) -> Result<Handout> {
 /// reason in place of the result the first time that reason comes up; later steps with the
 /// same reason, and definitions that do not apply, are left out and named in one line per
 /// reason ("t_ST, v̄: why").
-fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
-    let (steps, table) = match setup {
-        Setup::PulledMass(p) => (derivation::pulled_mass(p), PULLED_MASS),
-        Setup::Woodpecker(p) => (derivation::woodpecker(p), WOODPECKER),
-    };
+fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
+    let (steps, table) = with_model!(setup, p => p.derivation());
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
     let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();

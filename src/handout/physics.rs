@@ -3,10 +3,11 @@
 //! a definition, a sentence of physics for a step of the motion. Keys not named here stay out of
 //! the handout's chain (thresholds such as μd,MIN; the report shows them).
 
-use crate::report::scene::Setup;
+use crate::models::{with_model, Model};
+use crate::present::Present;
 
 /// (LaTeX, sentence) lines of the pulled mass: physics.md §1.1–1.2.
-const PULLED_MASS: &[(&str, &str)] = &[
+pub(crate) const PULLED_MASS: &[(&str, &str)] = &[
     (
         r"(m + m')\,\ddot x = 2m\,\ddot x = F - \mu_d\,N(t) \quad (\dot x > 0)",
         "while slipping: both masses move (14), friction opposes F (5)",
@@ -30,7 +31,7 @@ const PULLED_MASS: &[(&str, &str)] = &[
 ];
 
 /// (LaTeX, sentence) lines of the woodpecker: physics.md §2–3.1.
-const WOODPECKER: &[(&str, &str)] = &[
+pub(crate) const WOODPECKER: &[(&str, &str)] = &[
     (
         r"m_S\,\ddot y = W_S + F_e(t) - 2\lambda\mu_d\,|F_e(t)| \quad (\dot y > 0)",
         "sleeve, y down: weight and spring force drive, friction at two contacts brakes",
@@ -63,7 +64,7 @@ pub enum Note {
 
 use Note::{Label, Numbers, Sentence};
 
-const PULLED_MASS_STEPS: &[(&str, Note)] = &[
+pub(crate) const PULLED_MASS_STEPS: &[(&str, Note)] = &[
     ("W", Label("weight of each mass")),
     ("omega", Label("of the hanging mass")),
     ("T", Label("period of N(t)")),
@@ -118,7 +119,7 @@ const PULLED_MASS_STEPS: &[(&str, Note)] = &[
     ),
 ];
 
-const WOODPECKER_STEPS: &[(&str, Note)] = &[
+pub(crate) const WOODPECKER_STEPS: &[(&str, Note)] = &[
     ("W_S", Label("sleeve weight")),
     ("T", Label("period of F_e(t)")),
     ("lambda", Label("torque balance: N = λ|F_e|")),
@@ -180,24 +181,20 @@ const HEADINGS: &[(&str, &str)] = &[
 
 /// How the step of `key` is shown in the chain of `setup`'s model, and the heading before it;
 /// `None`: not in the chain.
-pub fn note(setup: &Setup, key: &str) -> Option<(Note, Option<&'static str>)> {
-    let table = match setup {
-        Setup::PulledMass(_) => PULLED_MASS_STEPS,
-        Setup::Woodpecker(_) => WOODPECKER_STEPS,
-    };
+pub fn note(setup: &Model, key: &str) -> Option<(Note, Option<&'static str>)> {
+    fn note_of<M: Present>(_: &M, key: &str) -> Option<Note> {
+        M::handout_note(key)
+    }
     let heading = HEADINGS.iter().find(|(k, _)| *k == key).map(|(_, h)| *h);
-    table
-        .iter()
-        .find(|(k, _)| *k == key)
-        .map(|(_, n)| (*n, heading))
+    with_model!(setup, p => note_of(p, key)).map(|n| (n, heading))
 }
 
 /// The equation of motion of the scene's model, line by line.
-pub fn equation_of_motion(setup: &Setup) -> &'static [(&'static str, &'static str)] {
-    match setup {
-        Setup::PulledMass(_) => PULLED_MASS,
-        Setup::Woodpecker(_) => WOODPECKER,
+pub fn equation_of_motion(setup: &Model) -> &'static [(&'static str, &'static str)] {
+    fn lines<M: Present>(_: &M) -> &'static [(&'static str, &'static str)] {
+        M::equation_of_motion()
     }
+    with_model!(setup, p => lines(p))
 }
 
 #[cfg(test)]

@@ -1,12 +1,28 @@
-//! The paper's two models as forcings of the one dry-friction engine: each builds a [`Body`]
-//! and a [`ForceLaw`] for the harmonic law (the real oscillation) or the linearized
-//! (triangle-wave) law of the closed forms.
+//! The models, and the one place that lists them.
 //!
-//! [`Body`]: crate::engine::Body
-//! [`ForceLaw`]: crate::engine::ForceLaw
+//! A model is the unit of extension: its folder (`src/models/<name>/`) holds its parameters
+//! with their descriptors, its body and force laws for the engine, its closed forms, its
+//! evaluation and checks, its claims, its worked derivations and its figures, and its params
+//! struct implements [`Physics`] (and, with the `cli` feature, [`crate::present::Present`]).
+//! The rest of the program holds a [`Model`], the enum of every model's parameters, and reaches
+//! the model through [`with_model!`], which expands to a `match` with one arm per model.
+//!
+//! Why an enum plus a trait rather than `Box<dyn Trait>`: the evaluation, the figures and the
+//! tables of each model are different types (the woodpecker has phases, counterparts and a
+//! linear law that may not exist), so the code that uses them is generic over `M: Physics`
+//! and monomorphised; the enum is the value people pass around (scenario files, command line,
+//! sweeps, worksheets, benchmarks) and is listed once, in the [`registry!`] call below.
+//!
+//! Registering a model: a `pub mod` line here and one entry in the `registry!` call.
 
+use serde::de::DeserializeOwned;
 use serde::Serialize;
 
+use crate::engine::{Body, ForceLaw};
+use crate::error::Result;
+use param::{ChoiceSpec, ParamSpec};
+
+pub mod param;
 pub mod pulled_mass;
 pub mod woodpecker;
 
@@ -18,4 +34,217 @@ pub enum LawKind {
     Harmonic,
     /// The triangle wave with the same extremes or zeros, for which the paper gives closed forms.
     Linear,
+}
+
+/// What the engine and the command line need of a model; implemented by its params struct.
+pub trait Physics:
+    Copy + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static
+{
+    /// The id on the command line and in scenario files ("pulled-mass").
+    const ID: &'static str;
+    /// One line on what the model is (the `--help` of its subcommand).
+    const ABOUT: &'static str;
+    /// Where the default parameters come from.
+    const DEFAULTS_SOURCE: &'static str;
+    /// Every numeric parameter, described once.
+    const PARAMS: &'static [ParamSpec<Self>];
+    /// The parameters that take one of a few named values.
+    const CHOICES: &'static [ChoiceSpec<Self>] = &[];
+    /// The evaluation of §7: closed forms, both laws integrated, checks.
+    type Evaluation: Serialize;
+
+    /// These parameters as a [`Model`].
+    fn into_model(self) -> Model;
+    /// Checks every parameter against its valid range.
+    fn validate(&self) -> Result<()>;
+    /// Period T of the forcing (s).
+    fn period(&self) -> f64;
+    /// The body the engine moves.
+    fn body(&self) -> Body;
+    /// The force law of `law` (the linearized law may not exist for some parameters).
+    fn force_law(&self, law: LawKind) -> Result<ForceLaw>;
+    /// Validates, evaluates the closed forms and integrates both laws for `periods` periods.
+    fn evaluate(&self, periods: u32) -> Result<Self::Evaluation>;
+    /// The id of the regime of the linearized law's closed forms.
+    fn closed_form_regime(&self) -> &'static str;
+}
+
+/// Lists the models once: the [`Model`] enum, [`Model::defaults`] and the dispatch macro
+/// [`with_model!`] are generated from the one list.
+macro_rules! registry {
+    ($d:tt $($variant:ident($params:ty)),+ $(,)?) => {
+        /// A model with its parameters: the value the rest of the program passes around.
+        #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+        #[serde(untagged)]
+        pub enum Model {
+            $($variant($params)),+
+        }
+
+        impl Model {
+            /// Every model with its default parameters, in the order of the registry.
+            pub fn defaults() -> Vec<Model> {
+                vec![$(Model::$variant(<$params>::default())),+]
+            }
+        }
+
+        /// `with_model!(model, p => expr)`: `expr` with `p` bound to the model's params struct
+        /// (a `match` with one arm per registered model).
+        macro_rules! with_model {
+            ($d m:expr, $d p:ident => $d body:expr) => {
+                match $d m {
+                    $($crate::models::Model::$variant($d p) => $d body,)+
+                }
+            };
+        }
+    };
+}
+
+registry! {$
+    PulledMass(pulled_mass::PulledMassParams),
+    Woodpecker(woodpecker::WoodpeckerParams),
+}
+
+pub(crate) use with_model;
+
+impl Model {
+    /// The model's id ("pulled-mass", "woodpecker").
+    pub fn id(&self) -> &'static str {
+        fn id<M: Physics>(_: &M) -> &'static str {
+            M::ID
+        }
+        with_model!(self, p => id(p))
+    }
+
+    /// The default parameters of the model with `id`.
+    pub fn from_id(id: &str) -> Option<Model> {
+        Self::defaults().into_iter().find(|m| m.id() == id)
+    }
+
+    /// Every model id, in the order of the registry.
+    pub fn ids() -> Vec<&'static str> {
+        Self::defaults().iter().map(Model::id).collect()
+    }
+
+    /// Checks every parameter against its valid range.
+    pub fn validate(&self) -> Result<()> {
+        with_model!(self, p => p.validate())
+    }
+
+    /// Period T of the forcing (s).
+    pub fn period(&self) -> f64 {
+        with_model!(self, p => p.period())
+    }
+
+    /// The body the engine moves.
+    pub fn body(&self) -> Body {
+        with_model!(self, p => p.body())
+    }
+
+    /// The force law of `law`.
+    pub fn force_law(&self, law: LawKind) -> Result<ForceLaw> {
+        with_model!(self, p => p.force_law(law))
+    }
+
+    /// The id of the regime of the linearized law's closed forms.
+    pub fn closed_form_regime(&self) -> &'static str {
+        with_model!(self, p => p.closed_form_regime())
+    }
+
+    /// The keys of the numeric parameters.
+    pub fn param_keys(&self) -> Vec<&'static str> {
+        fn keys<M: Physics>(_: &M) -> Vec<&'static str> {
+            M::PARAMS.iter().map(|s| s.key).collect()
+        }
+        with_model!(self, p => keys(p))
+    }
+
+    /// The value of numeric parameter `key` (`None`: no such parameter, or an unset optional).
+    pub fn get(&self, key: &str) -> Option<f64> {
+        fn get<M: Physics>(p: &M, key: &str) -> Option<f64> {
+            M::PARAMS
+                .iter()
+                .find(|s| s.key == key)
+                .and_then(|s| (s.get)(p))
+        }
+        with_model!(self, p => get(p, key))
+    }
+
+    /// Sets numeric parameter `key`; false when the model has no such parameter.
+    pub fn set(&mut self, key: &str, value: f64) -> bool {
+        fn set<M: Physics>(p: &mut M, key: &str, value: f64) -> bool {
+            M::PARAMS
+                .iter()
+                .find(|s| s.key == key)
+                .map(|s| (s.set)(p, value))
+                .is_some()
+        }
+        with_model!(self, p => set(p, key, value))
+    }
+
+    /// Sets option `key` to `value` (one of its values); false when there is no such option.
+    pub fn set_choice(&mut self, key: &str, value: &str) -> bool {
+        fn set<M: Physics>(p: &mut M, key: &str, value: &str) -> bool {
+            M::CHOICES
+                .iter()
+                .find(|s| s.key == key && s.values.contains(&value))
+                .map(|s| (s.set)(p, value))
+                .is_some()
+        }
+        with_model!(self, p => set(p, key, value))
+    }
+
+    /// The model with the parameters of a scenario's `[params]` table (defaults for the keys it
+    /// omits); `path` names the file in errors.
+    pub fn with_scenario_params(
+        &self,
+        table: &toml::Table,
+        path: &std::path::Path,
+    ) -> Result<Model> {
+        fn read<M: Physics>(_: &M, table: &toml::Table, path: &std::path::Path) -> Result<Model> {
+            crate::params::Scenario::read_params::<M>(table, path).map(M::into_model)
+        }
+        with_model!(self, p => read(p, table, path))
+    }
+}
+
+/// A parameter of a model as the command line shows it: its key, its help with the default,
+/// and its values when it is a choice.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FlagInfo {
+    pub key: &'static str,
+    pub help: String,
+    /// `None` for a number.
+    pub values: Option<&'static [&'static str]>,
+}
+
+impl Model {
+    /// One line on what the model is.
+    pub fn about(&self) -> &'static str {
+        fn about<M: Physics>(_: &M) -> &'static str {
+            M::ABOUT
+        }
+        with_model!(self, p => about(p))
+    }
+
+    /// Every parameter of the model as a flag, numbers first, with the defaults of `self`.
+    pub fn flags(&self) -> Vec<FlagInfo> {
+        fn flags<M: Physics>(p: &M) -> Vec<FlagInfo> {
+            let numbers = M::PARAMS.iter().map(|s| FlagInfo {
+                key: s.key,
+                help: format!(
+                    "{} [default: {}]",
+                    s.help,
+                    (s.get)(p).map_or(s.unset.to_string(), |v| v.to_string())
+                ),
+                values: None,
+            });
+            let choices = M::CHOICES.iter().map(|c| FlagInfo {
+                key: c.key,
+                help: format!("{} [default: {}]", c.help, (c.get)(p)),
+                values: Some(c.values),
+            });
+            numbers.chain(choices).collect()
+        }
+        with_model!(self, p => flags(p))
+    }
 }

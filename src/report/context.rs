@@ -4,13 +4,16 @@
 use serde::Serialize;
 
 use crate::error::Result;
+use crate::models::pulled_mass::PulledMassParams;
+use crate::models::with_model;
 use crate::models::woodpecker::formula::Counterpart;
 use crate::models::woodpecker::results::orbit_regime_id;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use crate::output::format::{rel, sig};
-use crate::params::{PulledMassParams, WoodpeckerParams};
+use crate::present::Present;
 use crate::report::math::mathml;
-use crate::report::scene::{Scene, Setup};
+use crate::report::scene::Scene;
 use crate::report::writer::OutFile;
 use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
 use crate::results::{Applicability, Check, CheckValue, Summary};
@@ -115,10 +118,7 @@ pub struct SceneCtx {
 
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
-    let mut ctx = match &scene.setup {
-        Setup::PulledMass(p) => pulled_tables(scene, p)?,
-        Setup::Woodpecker(p) => woodpecker_tables(scene, p)?,
-    };
+    let mut ctx = with_model!(&scene.setup, p => p.scene_tables(scene)?);
     ctx.closed_regime = ctx
         .regimes
         .first()
@@ -223,7 +223,7 @@ fn blank(scene: &Scene, model: &str) -> SceneCtx {
     }
 }
 
-fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
+pub(crate) fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
     let e = pulled_mass::evaluate(p, scene.periods)?;
     let mut ctx = blank(scene, "pulled mass");
     let pp = &e.params;
@@ -295,7 +295,7 @@ fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
     }
 }
 
-fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
+pub(crate) fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
     let e = woodpecker::evaluate(p, scene.periods)?;
     let mut ctx = blank(scene, "woodpecker");
     let pp = &e.params;

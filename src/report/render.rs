@@ -7,11 +7,12 @@ use tera::Tera;
 
 use super::context::{claim, scene_tables, FigureCtx, SceneCtx};
 use super::figures::{chart, map};
-use super::scene::{Drawing, Scene, Setup};
+use super::scene::{Drawing, Scene};
 use super::writer::OutFile;
 use crate::claims::{self, Claims, Sample};
 use crate::error::{Error, Result};
-use crate::params::{PulledMassParams, WoodpeckerParams};
+use crate::models::pulled_mass::PulledMassParams;
+use crate::models::woodpecker::WoodpeckerParams;
 
 /// Output formats of the report.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -126,10 +127,7 @@ fn draw(id: &str, drawing: &Drawing) -> Result<String> {
 /// The parameter pair the claims of a scene are computed on: the scene's own set for its
 /// model, the paper's default set for the other.
 pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
-    match &scene.setup {
-        Setup::PulledMass(p) => (*p, WoodpeckerParams::default()),
-        Setup::Woodpecker(p) => (PulledMassParams::default(), *p),
-    }
+    crate::claims::params_for(&scene.setup)
 }
 
 /// The full context of a scene: tables, drawn figures and its claims.

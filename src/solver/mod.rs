@@ -160,8 +160,9 @@ pub(crate) mod test_support {
     use super::exact::Exact;
     use super::{Method, Problem, Setting, Solution};
     use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
+    use crate::models::pulled_mass::PulledMassParams;
+    use crate::models::woodpecker::WoodpeckerParams;
     use crate::models::{pulled_mass, woodpecker, LawKind};
-    use crate::params::{PulledMassParams, WoodpeckerParams};
 
     /// Largest event-time error (s), after checking that the event kinds agree.
     pub fn event_error(got: &Solution, want: &Solution) -> f64 {

@@ -20,8 +20,9 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
-use crate::params::{invalid, num, PulledMassParams, WoodpeckerParams};
+use crate::models::param::{invalid, num};
+use crate::models::{with_model, Model, Physics};
+use crate::present::Present;
 use crate::results::Summary;
 
 pub use render::{render, summary_line};
@@ -30,116 +31,34 @@ pub use render::{render, summary_line};
 pub const MIN_STEPS: u32 = 2;
 pub const MAX_STEPS: u32 = 100_000;
 
-/// The base parameters of the swept model (every value but the swept one stays fixed).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Base {
-    PulledMass(PulledMassParams),
-    Woodpecker(WoodpeckerParams),
-}
-
 /// A numeric parameter that can be swept: its name, CSV unit suffix, axis label and the factor
-/// from SI to the axis unit.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// from SI to the axis unit (from the model's parameter descriptor).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Param {
     pub name: &'static str,
     /// Unit as a CSV suffix ("m", "kg", "N_m"); empty for dimensionless parameters.
-    pub unit: &'static str,
+    pub unit: String,
     /// Unit as written in messages ("m", "N/m"); empty for dimensionless parameters.
     pub unit_text: &'static str,
-    pub axis_label: &'static str,
+    pub axis_label: String,
     pub axis_scale: f64,
 }
 
-const fn param(
-    name: &'static str,
-    unit: &'static str,
-    unit_text: &'static str,
-    axis_label: &'static str,
-    axis_scale: f64,
-) -> Param {
-    Param {
-        name,
-        unit,
-        unit_text,
-        axis_label,
-        axis_scale,
+/// The parameters `model` can sweep: every numeric parameter.
+pub fn params(model: &Model) -> Vec<Param> {
+    fn of<M: Physics>(_: &M) -> Vec<Param> {
+        M::PARAMS
+            .iter()
+            .map(|s| Param {
+                name: s.key,
+                unit: s.csv_unit(),
+                unit_text: s.unit,
+                axis_label: s.axis_label(),
+                axis_scale: s.display.1,
+            })
+            .collect()
     }
-}
-
-/// The sweepable parameters of the pulled mass.
-pub const PULLED_MASS_PARAMS: [Param; 6] = [
-    param("mu_s", "", "", "μs", 1.0),
-    param("mu_d", "", "", "μd", 1.0),
-    param("mass", "kg", "kg", "m (g)", 1e3),
-    param("k", "N_m", "N/m", "k (N/m)", 1.0),
-    param("force", "N", "N", "F (mN)", 1e3),
-    param("g", "m_s2", "m/s²", "g (m/s²)", 1.0),
-];
-
-/// The sweepable parameters of the woodpecker.
-pub const WOODPECKER_PARAMS: [Param; 11] = [
-    param("mu_s", "", "", "μs", 1.0),
-    param("mu_d", "", "", "μd", 1.0),
-    param("k", "N_m", "N/m", "k (N/m)", 1.0),
-    param("m_sleeve", "kg", "kg", "m_S (g)", 1e3),
-    param("m_bird", "kg", "kg", "m_W (g)", 1e3),
-    param("l", "m", "m", "l (mm)", 1e3),
-    param("h", "m", "m", "h (mm)", 1e3),
-    param("z0", "m", "m", "z0 (mm)", 1e3),
-    param("d0", "m", "m", "d0 (mm)", 1e3),
-    param("g", "m_s2", "m/s²", "g (m/s²)", 1.0),
-    param("lever", "", "", "λ", 1.0),
-];
-
-impl Base {
-    /// "pulled-mass" or "woodpecker".
-    pub fn model(&self) -> &'static str {
-        match self {
-            Base::PulledMass(_) => "pulled-mass",
-            Base::Woodpecker(_) => "woodpecker",
-        }
-    }
-
-    /// The parameters this model can sweep.
-    pub fn params(&self) -> &'static [Param] {
-        match self {
-            Base::PulledMass(_) => &PULLED_MASS_PARAMS,
-            Base::Woodpecker(_) => &WOODPECKER_PARAMS,
-        }
-    }
-
-    /// The base with parameter `name` set to `value` (`name` is one of [`Base::params`]).
-    fn with(&self, name: &str, value: f64) -> Base {
-        match *self {
-            Base::PulledMass(mut p) => {
-                match name {
-                    "mu_s" => p.mu_s = value,
-                    "mu_d" => p.mu_d = value,
-                    "mass" => p.mass = value,
-                    "k" => p.k = value,
-                    "force" => p.force = value,
-                    _ => p.g = value,
-                }
-                Base::PulledMass(p)
-            }
-            Base::Woodpecker(mut p) => {
-                match name {
-                    "mu_s" => p.mu_s = value,
-                    "mu_d" => p.mu_d = value,
-                    "k" => p.k = value,
-                    "m_sleeve" => p.m_sleeve = value,
-                    "m_bird" => p.m_bird = value,
-                    "l" => p.l = value,
-                    "h" => p.h = value,
-                    "z0" => p.z0 = value,
-                    "d0" => p.d0 = value,
-                    "g" => p.g = value,
-                    _ => p.lever = Some(value),
-                }
-                Base::Woodpecker(p)
-            }
-        }
-    }
+    with_model!(model, p => of(p))
 }
 
 /// What the user asked to sweep.
@@ -197,14 +116,14 @@ pub struct Sweep {
 
 /// Checks the grid request against the model: a known parameter, finite distinct ends, and
 /// [`MIN_STEPS`] ≤ steps ≤ [`MAX_STEPS`].
-pub fn validate(base: &Base, spec: &GridSpec) -> Result<Param> {
-    let known = base.params();
+pub fn validate(base: &Model, spec: &GridSpec) -> Result<Param> {
+    let known = params(base);
     let Some(param) = known.iter().find(|p| p.name == spec.param) else {
         let names: Vec<_> = known.iter().map(|p| p.name).collect();
         return Err(invalid(
             "param",
             &spec.param,
-            format!("param in {{{}}} ({})", names.join(", "), base.model()),
+            format!("param in {{{}}} ({})", names.join(", "), base.id()),
         ));
     };
     for (name, value) in [("from", spec.from), ("to", spec.to)] {
@@ -231,7 +150,7 @@ pub fn validate(base: &Base, spec: &GridSpec) -> Result<Param> {
         ));
     }
     crate::params::validate_periods(spec.periods)?;
-    Ok(*param)
+    Ok(param.clone())
 }
 
 /// The i-th of `n` uniform grid values from `from` to `to`, both ends exact.
@@ -258,13 +177,15 @@ pub fn progress_bar(len: u32) -> ProgressBar {
 ///
 /// Errors: the request fails [`validate`]; every point is invalid (the first point's error is
 /// returned, so that a bad fixed parameter is named); or the engine fails at some point.
-pub fn run(base: &Base, spec: &GridSpec, progress: &ProgressBar) -> Result<Sweep> {
+pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Sweep> {
     let param = validate(base, spec)?;
     let points = (0..spec.steps)
         .into_par_iter()
         .map(|i| {
             let value = grid_value(spec.from, spec.to, i, spec.steps);
-            let point = evaluate_point(&base.with(param.name, value), value, spec.periods);
+            let mut model = *base;
+            model.set(param.name, value);
+            let point = evaluate_point(&model, value, spec.periods);
             progress.inc(1);
             point
         })
@@ -278,7 +199,7 @@ pub fn run(base: &Base, spec: &GridSpec, progress: &ProgressBar) -> Result<Sweep
         }
     }
     Ok(Sweep {
-        model: base.model(),
+        model: base.id(),
         param,
         spec: spec.clone(),
         points,
@@ -286,23 +207,17 @@ pub fn run(base: &Base, spec: &GridSpec, progress: &ProgressBar) -> Result<Sweep
 }
 
 /// Evaluates one grid point; an invalid parameter set is a point, not an error.
-fn evaluate_point(base: &Base, value: f64, periods: u32) -> Result<Point> {
-    let evaluated = match base {
-        Base::PulledMass(p) => pulled_mass::evaluate(p, periods).map(|e| {
-            (
-                LawPoint::of(&e.harmonic),
-                Some(LawPoint::of(&e.linear)),
-                e.closed_form.regime.id(),
-            )
-        }),
-        Base::Woodpecker(p) => woodpecker::evaluate(p, periods).map(|e| {
-            (
-                LawPoint::of(&e.harmonic),
-                e.linear.as_ref().map(LawPoint::of),
-                woodpecker::orbit_regime_id(e.closed_form.regime),
-            )
-        }),
-    };
+fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
+    fn laws<M: Present>(p: &M, periods: u32) -> Result<(LawPoint, Option<LawPoint>, &'static str)> {
+        let e = p.evaluate(periods)?;
+        let laws = M::laws(&e);
+        Ok((
+            LawPoint::of(laws.harmonic),
+            laws.linear.map(LawPoint::of),
+            laws.closed_form_regime,
+        ))
+    }
+    let evaluated = with_model!(model, p => laws(p, periods));
     match evaluated {
         Ok((harmonic, linear, closed)) => Ok(Point {
             value,

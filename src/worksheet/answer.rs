@@ -5,15 +5,15 @@
 
 use serde::Serialize;
 
+use super::exercise::Exercise;
 use super::figure::v_figure;
 use super::question::{Kind, Question};
-use super::sample::Case;
-use super::threshold::mu_d_sticking_at_half_period;
-use crate::derivation::{self, Step};
+use crate::derivation::Step;
 use crate::engine::Run;
 use crate::error::Result;
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
-use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
+use crate::models::{with_model, Model};
+use crate::params::DEFAULT_PERIODS;
+use crate::present::Present;
 use crate::results::{rel_diff, Check, CheckValue, TOLERANCE};
 
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
@@ -68,35 +68,19 @@ struct Evaluated {
     linear: Option<Run>,
 }
 
-fn evaluate(case: &Case, record_segments: bool) -> Result<Evaluated> {
-    Ok(match case {
-        Case::PulledMass(p) => {
-            let (e, runs) = pulled_mass::evaluate_with_runs(p, DEFAULT_PERIODS, record_segments)?;
-            Evaluated {
-                checks: e.checks,
-                linear: Some(runs.linear),
-            }
-        }
-        Case::Woodpecker(p) => {
-            let (e, runs) = woodpecker::evaluate_with_runs(p, DEFAULT_PERIODS, record_segments)?;
-            Evaluated {
-                checks: e.checks,
-                linear: runs.linear,
-            }
-        }
-    })
+fn evaluate(case: &Model, record_segments: bool) -> Result<Evaluated> {
+    let (checks, linear) =
+        with_model!(case, p => p.checks_and_linear_run(DEFAULT_PERIODS, record_segments)?);
+    Ok(Evaluated { checks, linear })
 }
 
 /// The worked steps of a case.
-pub fn steps(case: &Case) -> Vec<Step> {
-    match case {
-        Case::PulledMass(p) => derivation::pulled_mass(p),
-        Case::Woodpecker(p) => derivation::woodpecker(p),
-    }
+pub fn steps(case: &Model) -> Vec<Step> {
+    with_model!(case, p => p.derivation().0)
 }
 
 /// The step of `key` with a value (its form applies), if any.
-fn applying<'a>(steps: &'a [Step], key: &str) -> Option<&'a Step> {
+pub(crate) fn applying<'a>(steps: &'a [Step], key: &str) -> Option<&'a Step> {
     steps.iter().find(|s| s.key == key && s.value.is_some())
 }
 
@@ -113,7 +97,7 @@ pub fn closed_forms_apply(steps: &[Step], questions: &[&Question]) -> bool {
 /// The answers of `case` to `questions`, each confirmed by the exact integration within
 /// [`TOLERANCE`]; `None` when one is not.
 pub fn answer(
-    case: &Case,
+    case: &Model,
     steps: &[Step],
     questions: &[&'static Question],
 ) -> Result<Option<Answers>> {
@@ -126,10 +110,9 @@ pub fn answer(
     for &question in questions {
         let answer = match question.kind {
             Kind::ClosedForm { step, check } => measured(question, steps, &evaluated, step, check),
-            Kind::Threshold { step } => match case {
-                Case::Woodpecker(p) => threshold(question, steps, p, step)?,
-                Case::PulledMass(_) => None,
-            },
+            Kind::Threshold { step } => {
+                with_model!(case, p => p.threshold(question, steps, step)?)
+            }
             Kind::Regime => regime(question, case, steps, &evaluated),
             Kind::ReadFigure { step, check } => {
                 let Some(run) = &evaluated.linear else {
@@ -175,7 +158,7 @@ fn measured(
 
 /// The answer of a closed form `step` and the integration's `numeric` value of it, when they
 /// agree within [`TOLERANCE`].
-fn confirmed(question: &'static Question, step: &Step, numeric: f64) -> Option<Answer> {
+pub(crate) fn confirmed(question: &'static Question, step: &Step, numeric: f64) -> Option<Answer> {
     let value = step.value?;
     let rel = rel_diff(value, numeric);
     (rel <= TOLERANCE).then(|| Answer {
@@ -194,7 +177,7 @@ fn confirmed(question: &'static Question, step: &Step, numeric: f64) -> Option<A
 /// `single_slip_stick`), and the values its inequalities compare.
 fn regime(
     question: &'static Question,
-    case: &Case,
+    case: &Model,
     steps: &[Step],
     evaluated: &Evaluated,
 ) -> Option<Answer> {
@@ -206,28 +189,10 @@ fn regime(
         return None;
     };
     let value = |key: &str| applying(steps, key).and_then(|s| s.value);
-    let comparisons: Vec<(&'static str, Option<f64>)> = match case {
-        Case::PulledMass(p) => vec![
-            (r"\varphi", value("phi")),
-            (r"1/\Theta", value("phi_stick_max")),
-            (r"\varphi_c", value("phi_continuous")),
-            (r"2\mu_s", Some(2.0 * p.mu_s)),
-        ],
-        Case::Woodpecker(p) => vec![
-            (
-                r"u_s^{(-)}\eta'",
-                value("u_s_minus")
-                    .zip(value("eta_prime"))
-                    .map(|(u, h)| u * h),
-            ),
-            (r"\mu_d", Some(p.mu_d)),
-            (r"\mu_{d,HALT}^{(I)}", value("mu_d_halt_1")),
-            (r"\mu_{d,HALT}^{(II)}", value("mu_d_halt_2")),
-        ],
-    };
+    let comparisons = with_model!(case, p => p.regime_comparisons(&value));
     Some(Answer {
         question,
-        value: Value::Text(case.regime().to_string()),
+        value: Value::Text(case.closed_form_regime().to_string()),
         step: None,
         numeric: Value::Text(numeric.clone()),
         rel_error: None,
@@ -237,18 +202,4 @@ fn regime(
             .map(|(symbol, v)| v.map(|value| Comparison { symbol, value }))
             .collect::<Option<_>>()?,
     })
-}
-
-/// μd,MIN^(I) (51), confirmed by the μd at which the integrated phase-I slip from rest sticks
-/// exactly at T/2.
-fn threshold(
-    question: &'static Question,
-    steps: &[Step],
-    p: &WoodpeckerParams,
-    step: &str,
-) -> Result<Option<Answer>> {
-    let Some((step, value)) = applying(steps, step).and_then(|s| Some((s, s.value?))) else {
-        return Ok(None);
-    };
-    Ok(mu_d_sticking_at_half_period(p, value)?.and_then(|n| confirmed(question, step, n)))
 }

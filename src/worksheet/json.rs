@@ -5,9 +5,9 @@
 use serde::Serialize;
 
 use super::answer::{Comparison, Value};
-use super::sample::Case;
 use super::Worksheets;
 use crate::error::{Error, Result};
+use crate::models::Model;
 
 #[derive(Serialize)]
 struct KeyJson<'a> {
@@ -47,12 +47,8 @@ struct AnswerJson<'a> {
 }
 
 /// The parameters as a scenario's `[params]` table (the woodpecker's ω mode under `omega`).
-fn params_json(case: &Case) -> Result<serde_json::Value> {
-    let mut value = match case {
-        Case::PulledMass(p) => serde_json::to_value(p),
-        Case::Woodpecker(p) => serde_json::to_value(p),
-    }
-    .map_err(json_error)?;
+fn params_json(case: &Model) -> Result<serde_json::Value> {
+    let mut value = serde_json::to_value(case).map_err(json_error)?;
     if let Some(map) = value.as_object_mut() {
         if let Some(mode) = map.remove("omega_mode") {
             map.insert("omega".to_string(), mode);
@@ -77,7 +73,7 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
         .map(|s| {
             Ok(StudentJson {
                 student: s.number,
-                regime: s.case.regime(),
+                regime: s.case.closed_form_regime(),
                 params: params_json(&s.case)?,
                 answers: s
                     .answers

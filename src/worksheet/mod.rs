@@ -12,12 +12,12 @@
 //! the same whatever the number of threads.
 
 pub mod answer;
+pub mod exercise;
 pub mod figure;
 pub mod json;
 pub mod question;
 pub mod render;
 pub mod sample;
-pub mod threshold;
 
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
@@ -26,10 +26,9 @@ use rayon::prelude::*;
 pub use answer::{Answer, Comparison, Value};
 pub use question::{Kind, Question};
 pub use render::render;
-pub use sample::Case;
 
 use crate::error::{Error, Result};
-use crate::params::ModelName;
+use crate::models::Model;
 
 /// Draws per student before giving up on the requested regime and questions.
 pub const MAX_ATTEMPTS: u32 = 20_000;
@@ -39,7 +38,7 @@ pub const MAX_STUDENTS: u32 = 500;
 /// What the teacher asks for.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Request {
-    pub model: ModelName,
+    pub model: Model,
     pub students: u32,
     pub seed: u64,
     /// A regime id of [`question::regimes`]; `None`: the model's standard regime.
@@ -54,7 +53,7 @@ pub struct Request {
 pub struct Student {
     /// 1-based.
     pub number: u32,
-    pub case: Case,
+    pub case: Model,
     pub answers: Vec<Answer>,
     /// SVG of v(t), when a question reads it.
     pub figure: Option<String>,
@@ -63,7 +62,7 @@ pub struct Student {
 /// The whole set: the request resolved, and every student.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Worksheets {
-    pub model: ModelName,
+    pub model: Model,
     pub seed: u64,
     pub regime: &'static str,
     pub questions: Vec<&'static Question>,
@@ -139,7 +138,7 @@ fn names(questions: &[&Question]) -> String {
 /// Draws, checks and answers every student's case.
 pub fn generate(req: &Request) -> Result<Worksheets> {
     if !(1..=MAX_STUDENTS).contains(&req.students) {
-        return Err(crate::params::invalid(
+        return Err(crate::models::param::invalid(
             "students",
             req.students,
             format!("1 <= students <= {MAX_STUDENTS}"),
@@ -164,7 +163,7 @@ pub fn generate(req: &Request) -> Result<Worksheets> {
 /// One student's case in `regime` whose every answer is confirmed, from at most `attempts`
 /// draws of the generator seeded with `seed`.
 pub fn student(
-    model: ModelName,
+    model: Model,
     regime: &'static str,
     questions: &[&'static Question],
     number: u32,
@@ -174,7 +173,7 @@ pub fn student(
     let mut rng = StdRng::seed_from_u64(seed);
     for _ in 0..attempts {
         let case = sample::draw(model, regime, &mut rng);
-        if case.regime() != regime {
+        if case.closed_form_regime() != regime {
             continue;
         }
         let steps = answer::steps(&case);
@@ -200,7 +199,7 @@ pub fn student(
 mod tests {
     use super::*;
 
-    fn request(model: ModelName, regime: Option<&str>, questions: Option<&[&str]>) -> Request {
+    fn request(model: Model, regime: Option<&str>, questions: Option<&[&str]>) -> Request {
         Request {
             model,
             students: 1,
@@ -216,27 +215,38 @@ mod tests {
 
     #[test]
     fn defaults_are_the_standard_regime_and_every_question_it_allows() {
-        let (regime, qs) = resolve(&request(ModelName::PulledMass, None, None)).unwrap();
+        let (regime, qs) =
+            resolve(&request(Model::PulledMass(Default::default()), None, None)).unwrap();
         assert_eq!(regime, "slip_stick");
         assert_eq!(qs.len(), question::PULLED_MASS.len());
-        let (regime, qs) = resolve(&request(ModelName::Woodpecker, None, None)).unwrap();
+        let (regime, qs) =
+            resolve(&request(Model::Woodpecker(Default::default()), None, None)).unwrap();
         assert_eq!(regime, "double_slip_stick");
         assert_eq!(qs.len(), question::WOODPECKER.len());
-        let late = request(ModelName::PulledMass, Some("slip_stick_late"), None);
+        let late = request(
+            Model::PulledMass(Default::default()),
+            Some("slip_stick_late"),
+            None,
+        );
         let (_, qs) = resolve(&late).unwrap();
         assert_eq!(keys(&qs), ["t_slip", "v_max", "regime", "read_v_max"]);
     }
 
     #[test]
     fn choices_outside_the_catalogue_name_the_flag_and_the_valid_values() {
-        let err = resolve(&request(ModelName::Woodpecker, Some("no_slip"), None)).unwrap_err();
+        let err = resolve(&request(
+            Model::Woodpecker(Default::default()),
+            Some("no_slip"),
+            None,
+        ))
+        .unwrap_err();
         let msg = err.to_string();
         assert!(
             msg.contains("--regime") && msg.contains("single_slip_stick"),
             "{msg}"
         );
         let late = request(
-            ModelName::PulledMass,
+            Model::PulledMass(Default::default()),
             Some("slip_stick_late"),
             Some(&["power"]),
         );
@@ -246,7 +256,7 @@ mod tests {
             "{msg}"
         );
         assert!(msg.contains("in regime slip_stick_late"), "{msg}");
-        let mut zero = request(ModelName::PulledMass, None, None);
+        let mut zero = request(Model::PulledMass(Default::default()), None, None);
         zero.students = 0;
         assert!(generate(&zero)
             .unwrap_err()
@@ -257,13 +267,13 @@ mod tests {
     #[test]
     fn a_regime_out_of_reach_of_the_draws_is_an_error_not_a_loop() {
         let req = request(
-            ModelName::Woodpecker,
+            Model::Woodpecker(Default::default()),
             Some("single_slip_stick"),
             Some(&["t_slip_1"]),
         );
         let (regime, qs) = resolve(&req).unwrap();
         // About one draw in a thousand is single slip-stick with a phase-I slip from rest.
-        let err = student(ModelName::Woodpecker, regime, &qs, 1, 5, 3).unwrap_err();
+        let err = student(Model::Woodpecker(Default::default()), regime, &qs, 1, 5, 3).unwrap_err();
         assert_eq!(
             err,
             Error::Unreachable {
@@ -272,6 +282,14 @@ mod tests {
             }
         );
         assert!(err.to_string().contains("--regime"));
-        assert!(student(ModelName::Woodpecker, regime, &qs, 1, 5, MAX_ATTEMPTS).is_ok());
+        assert!(student(
+            Model::Woodpecker(Default::default()),
+            regime,
+            &qs,
+            1,
+            5,
+            MAX_ATTEMPTS
+        )
+        .is_ok());
     }
 }

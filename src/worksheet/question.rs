@@ -3,7 +3,8 @@
 //! regimes in which its closed form can describe the motion. Also the regimes a teacher can ask
 //! for and the inequalities that decide them.
 
-use crate::params::ModelName;
+use super::exercise::Exercise;
+use crate::models::{with_model, Model};
 
 /// How a question is answered.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -43,9 +44,9 @@ pub struct Question {
     pub regimes: &'static [&'static str],
 }
 
-const PULLED_REGIMES: &[&str] = &["slip_stick", "slip_stick_late", "continuous_slip"];
+pub(crate) const PULLED_REGIMES: &[&str] = &["slip_stick", "slip_stick_late", "continuous_slip"];
 const SAME_PERIOD: &[&str] = &["slip_stick"];
-const WOODPECKER_REGIMES: &[&str] = &[
+pub(crate) const WOODPECKER_REGIMES: &[&str] = &[
     "double_slip_stick",
     "double_slip_no_halt",
     "single_slip_stick",
@@ -217,49 +218,27 @@ pub const WOODPECKER: &[Question] = &[
 ];
 
 /// The question catalogue of a model.
-pub fn catalogue(model: ModelName) -> &'static [Question] {
-    match model {
-        ModelName::PulledMass => PULLED_MASS,
-        ModelName::Woodpecker => WOODPECKER,
+pub fn catalogue(model: Model) -> &'static [Question] {
+    fn of<M: Exercise>(_: &M) -> &'static [Question] {
+        M::catalogue()
     }
+    with_model!(&model, p => of(p))
 }
 
 /// Regimes a worksheet can ask for (closed-form ids), the default first. The others
 /// (immediate slip, no slip, outside the closed-form domain) leave no closed form to compute.
-pub fn regimes(model: ModelName) -> &'static [&'static str] {
-    match model {
-        ModelName::PulledMass => PULLED_REGIMES,
-        ModelName::Woodpecker => WOODPECKER_REGIMES,
+pub fn regimes(model: Model) -> &'static [&'static str] {
+    fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
+        M::regimes()
     }
+    with_model!(&model, p => of(p))
 }
 
 /// The rules that decide the regime, as (regime id, condition in LaTeX), shown with the regime
 /// question (physics.md §1.5, §3.2, §3.6).
-pub fn regime_rules(model: ModelName) -> &'static [(&'static str, &'static str)] {
-    match model {
-        ModelName::PulledMass => &[
-            ("immediate_continuous_slip", r"\varphi > 2\mu_s"),
-            ("slip_stick", r"\varphi \le 1/\Theta"),
-            ("slip_stick_late", r"1/\Theta < \varphi \le \varphi_c"),
-            ("continuous_slip", r"\varphi_c < \varphi \le 2\mu_s"),
-        ],
-        ModelName::Woodpecker => &[
-            (
-                "double_slip_stick",
-                r"u_s^{(-)}\eta' \ge 1,\quad \mu_d \ge \mu_{d,HALT}^{(I)},\quad \mu_d \ge \mu_{d,HALT}^{(II)}",
-            ),
-            (
-                "double_slip_no_halt",
-                r"\text{one slip per period, two speed maxima}",
-            ),
-            (
-                "single_slip_stick",
-                r"\text{one slip per period, one speed maximum}",
-            ),
-            (
-                "continuous_or_multiperiod",
-                r"\text{the sleeve never halts}",
-            ),
-        ],
+pub fn regime_rules(model: Model) -> &'static [(&'static str, &'static str)] {
+    fn of<M: Exercise>(_: &M) -> &'static [(&'static str, &'static str)] {
+        M::regime_rules()
     }
+    with_model!(&model, p => of(p))
 }

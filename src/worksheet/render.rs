@@ -6,13 +6,13 @@
 use serde::Serialize;
 
 use super::answer::{Answer, Comparison, Value};
+use super::exercise::Exercise;
 use super::json::key_json;
 use super::question::{self, Kind, Question};
-use super::sample::Case;
 use super::{Student, Worksheets};
 use crate::error::Result;
+use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
-use crate::params::ModelName;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};
 use crate::report::{Format, OutFile};
@@ -42,55 +42,30 @@ const ANSWER_DIGITS: usize = 4;
 const NUMERIC_DIGITS: usize = 10;
 
 /// What the student is told about the model (the parameters follow in a table).
-fn intro(model: ModelName) -> &'static str {
-    match model {
-        ModelName::PulledMass => {
-            "A block of mass m lies on a table and is pulled by a constant horizontal force F. \
-             An equal mass hangs below it on a spring of constant k, moves with it (inertial \
-             mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the linearized \
-             (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half period, \
-             W = mg. At t = 0 the block is at rest."
-        }
-        ModelName::Woodpecker => {
-            "The sleeve of the woodpecker toy (mass m_S) slides down the pole while the bird \
-             (mass m_W) oscillates on the spring of constant k. Use the linearized (triangle-wave) \
-             law of the paper with the lever ratio λ = l/h, ω = √(k/m_W) and the counterpart \
-             ζ0 = d0, δ0 = d0 (2/π) arcsin(z0/d0). At t = 0 the sleeve is at rest."
-        }
+fn intro(model: Model) -> &'static str {
+    fn of<M: Exercise>(_: &M) -> &'static str {
+        M::INTRO
     }
+    with_model!(&model, p => of(p))
 }
 
-fn title(model: ModelName) -> &'static str {
-    match model {
-        ModelName::PulledMass => "the pulled mass",
-        ModelName::Woodpecker => "the falling woodpecker",
+fn title(model: Model) -> &'static str {
+    fn of<M: Exercise>(_: &M) -> &'static str {
+        M::TITLE
     }
+    with_model!(&model, p => of(p))
 }
 
-/// (LaTeX symbol, value as typed, unit) of a case's parameters, in the order of the sheet.
-fn parameters(case: &Case) -> Vec<(&'static str, f64, &'static str)> {
-    match case {
-        Case::PulledMass(p) => vec![
-            (r"\mu_s", p.mu_s, ""),
-            (r"\mu_d", p.mu_d, ""),
-            ("m", p.mass, "kg"),
-            ("k", p.k, "N/m"),
-            ("F", p.force, "N"),
-            ("g", p.g, "m/s²"),
-        ],
-        Case::Woodpecker(p) => vec![
-            (r"\mu_s", p.mu_s, ""),
-            (r"\mu_d", p.mu_d, ""),
-            ("k", p.k, "N/m"),
-            ("m_S", p.m_sleeve, "kg"),
-            ("m_W", p.m_bird, "kg"),
-            ("l", p.l, "m"),
-            ("h", p.h, "m"),
-            ("z_0", p.z0, "m"),
-            ("d_0", p.d0, "m"),
-            ("g", p.g, "m/s²"),
-        ],
+/// (LaTeX symbol, value as typed, unit) of a case's given parameters, in the order of the
+/// sheet (an unset optional parameter is not shown).
+fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
+    fn of<M: Physics>(p: &M) -> Vec<(&'static str, f64, &'static str)> {
+        M::PARAMS
+            .iter()
+            .filter_map(|s| Some((s.tex, (s.get)(p)?, s.unit)))
+            .collect()
     }
+    with_model!(case, p => of(p))
 }
 
 /// A formula for both formats: MathML for HTML, LaTeX for Markdown.
@@ -170,7 +145,7 @@ fn with_unit(value: String, unit: &str) -> String {
     }
 }
 
-fn params_ctx(case: &Case) -> Vec<ParamCtx> {
+fn params_ctx(case: &Model) -> Vec<ParamCtx> {
     parameters(case)
         .into_iter()
         .map(|(symbol, value, unit)| ParamCtx {
@@ -181,7 +156,7 @@ fn params_ctx(case: &Case) -> Vec<ParamCtx> {
         .collect()
 }
 
-fn questions_ctx(model: ModelName, questions: &[&Question]) -> Vec<QuestionCtx> {
+fn questions_ctx(model: Model, questions: &[&Question]) -> Vec<QuestionCtx> {
     questions
         .iter()
         .enumerate()
@@ -316,7 +291,7 @@ mod tests {
 
     #[test]
     fn every_rule_and_question_symbol_renders_to_mathml() {
-        for model in [ModelName::PulledMass, ModelName::Woodpecker] {
+        for model in Model::defaults() {
             let texts = question::regime_rules(model)
                 .iter()
                 .map(|r| r.1)

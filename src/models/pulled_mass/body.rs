@@ -8,8 +8,8 @@
 
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::Result;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
-use crate::params::PulledMassParams;
 
 /// The body: M = 2m, μs, μd.
 pub fn body(p: &PulledMassParams) -> Body {

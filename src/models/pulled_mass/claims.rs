@@ -15,8 +15,8 @@ use crate::claims::{
 use crate::engine::IntegrationRegime;
 use crate::error::Result;
 use crate::models::pulled_mass::formula as cf;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
-use crate::params::PulledMassParams;
 
 /// Agreement of a closed form with the exact integration (physics.md §4).
 const AGREE: f64 = 1e-9;

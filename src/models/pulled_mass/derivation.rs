@@ -6,7 +6,7 @@ use crate::derivation::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::pulled_mass::formula as cf;
 use crate::models::pulled_mass::results::applicability;
-use crate::params::PulledMassParams;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::results::quantity::PULLED_MASS;
 
 /// Equation and unit of the §7 `params` keys with a step.

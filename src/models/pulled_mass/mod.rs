@@ -14,8 +14,54 @@
 pub mod body;
 pub(crate) mod claims;
 pub mod derivation;
+mod exercise;
 pub mod formula;
+pub mod params;
+mod present;
 pub mod results;
 pub mod scene;
 
 pub use body::{body, force_law};
+pub use params::PulledMassParams;
+
+use crate::engine::{Body, ForceLaw};
+use crate::error::Result;
+use crate::models::param::ParamSpec;
+use crate::models::{LawKind, Model, Physics};
+
+impl Physics for PulledMassParams {
+    const ID: &'static str = "pulled-mass";
+    const ABOUT: &'static str =
+        "The pulled mass pressed by an oscillating normal force (paper Sec. 2)";
+    const DEFAULTS_SOURCE: &'static str = params::DEFAULTS_SOURCE;
+    const PARAMS: &'static [ParamSpec<Self>] = params::PARAMS;
+    type Evaluation = results::Evaluation;
+
+    fn into_model(self) -> Model {
+        Model::PulledMass(self)
+    }
+
+    fn validate(&self) -> Result<()> {
+        PulledMassParams::validate(self)
+    }
+
+    fn period(&self) -> f64 {
+        PulledMassParams::period(self)
+    }
+
+    fn body(&self) -> Body {
+        body::body(self)
+    }
+
+    fn force_law(&self, law: LawKind) -> Result<ForceLaw> {
+        body::force_law(self, law)
+    }
+
+    fn evaluate(&self, periods: u32) -> Result<results::Evaluation> {
+        results::evaluate(self, periods)
+    }
+
+    fn closed_form_regime(&self) -> &'static str {
+        formula::regime(self.phi(), self.mu_s, self.mu_d).id()
+    }
+}

@@ -10,8 +10,8 @@
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::{Error, Result};
 use crate::models::woodpecker::formula::{self as formula, counterpart};
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
-use crate::params::WoodpeckerParams;
 
 /// The sleeve: M = m_S, μs, μd.
 pub fn body(p: &WoodpeckerParams) -> Body {

@@ -11,8 +11,8 @@ use crate::claims::{rel_diff, run_wood, spread, Claim, ClaimModel, Numbers, Samp
 use crate::error::Result;
 use crate::models::woodpecker::formula as cf;
 use crate::models::woodpecker::results::linear_inputs;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
-use crate::params::WoodpeckerParams;
 
 /// Share of counterexamples above which a statement "for sensible values" is refuted.
 const REFUTING_SHARE: f64 = 0.05;

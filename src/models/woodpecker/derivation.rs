@@ -7,7 +7,7 @@ use crate::derivation::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::woodpecker::formula::{self as cf, Counterpart, Groups, PhaseClosedForm};
 use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
-use crate::params::{OmegaMode, WoodpeckerParams};
+use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
 use crate::results::quantity::WOODPECKER;
 
 /// Equation and unit of the §7 `params` keys with a step.

@@ -34,7 +34,7 @@ pub use super::lobe::{halt_threshold, mu_d_halt, HaltKind, Orbit, OrbitRegime, O
 // Counterpart of the harmonic law (§3.1)
 
 /// How the triangle wave (ζ0, δ0) is matched to the harmonic spring coordinate z0 + d0 cos ωt.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Counterpart {
     /// Same maximum and minimum spring coordinate: ζ0 = d0, δ0 = z0.
@@ -43,6 +43,25 @@ pub enum Counterpart {
     Zeros,
     /// Same zero crossings of F_e and the same slope dF_e/dt there.
     Tangent,
+}
+
+impl Counterpart {
+    /// Every counterpart, in the order of the paper.
+    pub const ALL: [Counterpart; 3] = [Self::Extremes, Self::Zeros, Self::Tangent];
+
+    /// The id typed on the command line and in scenario files.
+    pub fn id(self) -> &'static str {
+        match self {
+            Self::Extremes => "extremes",
+            Self::Zeros => "zeros",
+            Self::Tangent => "tangent",
+        }
+    }
+
+    /// The counterpart of an id, if it is one.
+    pub fn from_id(id: &str) -> Option<Self> {
+        Self::ALL.into_iter().find(|c| c.id() == id)
+    }
 }
 
 /// (ζ0, δ0) in m of the linear counterpart of z(t) = z0 + d0 cos ωt (§3.1):

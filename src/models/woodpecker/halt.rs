@@ -13,8 +13,8 @@ use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
 use crate::models::woodpecker::lobe::{HaltKind, Phase, PhaseLobes};
 use crate::models::woodpecker::results::linear_inputs;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
-use crate::params::WoodpeckerParams;
 
 const PAPER_SAYS: &str = "The dynamic coefficient has to exceed μd,MIN^(I) (51) for the sleeve \
      to stop in the first half period; otherwise the motion, once started, does not end.";

@@ -14,8 +14,9 @@ use crate::claims::{
 };
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
-use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
+use crate::params::DEFAULT_PERIODS;
 
 /// Mean speed of the toy quoted for Fig. 26 (m/s).
 const QUOTED_FIG26: f64 = 0.020;

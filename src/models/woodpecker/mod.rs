@@ -15,11 +15,58 @@
 pub mod body;
 pub(crate) mod claims;
 pub mod derivation;
+mod exercise;
 pub mod formula;
 pub(crate) mod halt;
 pub(crate) mod lever;
 pub mod lobe;
+pub mod params;
+mod present;
 pub mod results;
 pub mod scene;
+pub mod threshold;
 
 pub use body::{body, force_law, linear_amplitudes, spring_coordinate};
+pub use params::{OmegaMode, WoodpeckerParams};
+
+use crate::engine::{Body, ForceLaw};
+use crate::error::Result;
+use crate::models::param::{ChoiceSpec, ParamSpec};
+use crate::models::{LawKind, Model, Physics};
+
+impl Physics for WoodpeckerParams {
+    const ID: &'static str = "woodpecker";
+    const ABOUT: &'static str = "The falling woodpecker toy: the sleeve on the pole (paper Sec. 3)";
+    const DEFAULTS_SOURCE: &'static str = params::DEFAULTS_SOURCE;
+    const PARAMS: &'static [ParamSpec<Self>] = params::PARAMS;
+    const CHOICES: &'static [ChoiceSpec<Self>] = params::CHOICES;
+    type Evaluation = results::Evaluation;
+
+    fn into_model(self) -> Model {
+        Model::Woodpecker(self)
+    }
+
+    fn validate(&self) -> Result<()> {
+        WoodpeckerParams::validate(self)
+    }
+
+    fn period(&self) -> f64 {
+        WoodpeckerParams::period(self)
+    }
+
+    fn body(&self) -> Body {
+        body::body(self)
+    }
+
+    fn force_law(&self, law: LawKind) -> Result<ForceLaw> {
+        body::force_law(self, law)
+    }
+
+    fn evaluate(&self, periods: u32) -> Result<results::Evaluation> {
+        results::evaluate(self, periods)
+    }
+
+    fn closed_form_regime(&self) -> &'static str {
+        results::orbit_regime_id(formula::evaluate(&results::linear_inputs(self)).regime)
+    }
+}

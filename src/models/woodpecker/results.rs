@@ -9,8 +9,9 @@ use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
 };
 use crate::models::woodpecker::lobe::HaltKind;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::params::{validate_periods, WoodpeckerParams};
+use crate::params::validate_periods;
 use crate::results::checks::Check;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;

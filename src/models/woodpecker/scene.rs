@@ -11,12 +11,13 @@ use rayon::prelude::*;
 
 use crate::engine::{analyse, integrate, EventKind, Run, RunOptions};
 use crate::error::{Error, Result};
+use crate::models::param::invalid;
 use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, Phase, WoodpeckerClosedForm,
 };
 use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs, orbit_regime_id};
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::params::{invalid, WoodpeckerParams};
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
 use crate::report::scene::{Drawing, Figure, FigureKind};

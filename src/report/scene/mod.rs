@@ -5,19 +5,12 @@
 use std::path::Path;
 
 use crate::error::{Error, Result};
-use crate::params::{ModelName, PulledMassParams, Scenario, WoodpeckerParams, DEFAULT_PERIODS};
+use crate::models::{with_model, Model};
+use crate::params::{Scenario, DEFAULT_PERIODS};
+use crate::present::Present;
 use crate::report::figures::spec::{CategoryMap, LineChart};
 
 pub mod sampling;
-
-use crate::models::{pulled_mass, woodpecker};
-
-/// The model and parameters of a scene.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Setup {
-    PulledMass(PulledMassParams),
-    Woodpecker(WoodpeckerParams),
-}
 
 /// What a scene draws. Each kind may produce one or more figures.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -74,7 +67,8 @@ pub struct Scene {
     pub caption: String,
     /// The scenario's description of the parameters.
     pub description: String,
-    pub setup: Setup,
+    /// The model and its parameters.
+    pub setup: Model,
     /// Periods integrated for the results tables.
     pub periods: u32,
     pub figures: Vec<FigureKind>,
@@ -92,14 +86,8 @@ impl Scene {
         figures: Vec<FigureKind>,
         claims: Vec<u8>,
     ) -> Result<Self> {
-        let setup = match scenario.model {
-            ModelName::PulledMass => Setup::PulledMass(scenario.params(path)?),
-            ModelName::Woodpecker => Setup::Woodpecker(scenario.params(path)?),
-        };
-        match &setup {
-            Setup::PulledMass(p) => p.validate()?,
-            Setup::Woodpecker(p) => p.validate()?,
-        }
+        let setup = scenario.model_params(path)?;
+        setup.validate()?;
         Ok(Self {
             id: id.to_string(),
             title: scenario.title.clone(),
@@ -123,28 +111,8 @@ impl Scene {
                 path: path.display().to_string(),
                 reason: "the file name gives no scene name".to_string(),
             })?;
-        let (figures, claims, caption) = match scenario.model {
-            ModelName::PulledMass => (
-                vec![
-                    FigureKind::PulledMotion { periods: 2.0 },
-                    FigureKind::PulledForces,
-                    FigureKind::PulledCompare,
-                ],
-                vec![1, 2, 3, 7],
-                "Motion of the pulled mass under both force laws, the competing forces, and the \
-                 harmonic law against its linearization.",
-            ),
-            ModelName::Woodpecker => (
-                vec![
-                    FigureKind::WoodMotion { periods: 2.0 },
-                    FigureKind::WoodForces,
-                    FigureKind::WoodSpring,
-                ],
-                vec![3, 4, 5, 6, 7, 8],
-                "Motion of the woodpecker's sleeve under both force laws, the forces that decide \
-                 the slip, and the linear counterparts of the spring coordinate.",
-            ),
-        };
+        let standard = with_model!(&scenario.model, p => p.standard_scene());
+        let (figures, claims, caption) = (standard.figures, standard.claims, standard.caption);
         Self::from_scenario(id, &scenario, path, caption, figures, claims)
     }
 
@@ -152,10 +120,7 @@ impl Scene {
     pub fn build_figures(&self) -> Result<Vec<Figure>> {
         let mut out = Vec::new();
         for kind in &self.figures {
-            let built = match &self.setup {
-                Setup::PulledMass(p) => pulled_mass::scene::figures(&self.id, p, *kind)?,
-                Setup::Woodpecker(p) => woodpecker::scene::figures(&self.id, p, *kind)?,
-            };
+            let built = with_model!(&self.setup, p => p.figures(&self.id, *kind)?);
             out.extend(built);
         }
         Ok(out)

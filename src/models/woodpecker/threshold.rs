@@ -4,8 +4,8 @@
 
 use crate::engine::{integrate, EventKind, RunOptions};
 use crate::error::Result;
+use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker as wp_model, LawKind};
-use crate::params::WoodpeckerParams;
 
 /// Relative bracket around the closed-form μd,MIN for the search.
 const BRACKET: f64 = 1e-3;

@@ -1,0 +1,272 @@
+//! The subcommands: each reads its options, calls the library and writes or prints the
+//! result. Everything a command writes is rendered first, so an error leaves no partial output.
+
+use std::io::Write;
+
+use anyhow::{Context, Result};
+
+use crate::cli::{
+    BenchArgs, Cli, Command, FitArgs, HandoutArgs, ModelArgs, ModelCommand, NoArgs, ReportArgs,
+    SweepArgs, WorksheetArgs,
+};
+use crate::error::Error;
+use crate::models::param::invalid;
+use crate::models::{with_model, Model};
+use crate::params::{Scenario, DEFAULT_PERIODS, MAX_PERIODS};
+use crate::present::Present;
+use crate::report;
+
+/// Runs a parsed command line.
+pub fn run(cli: Cli) -> Result<()> {
+    match cli.command {
+        Command::Eval { model } => eval(&model.args),
+        Command::Report(args) => report(&args),
+        Command::Claims {
+            seed,
+            samples,
+            model,
+        } => claims(seed, samples, &model),
+        Command::Bench(args) => bench(&args),
+        Command::Handout(args) => handout(&args),
+        Command::Sweep { model } => sweep(&model),
+        Command::Fit(args) => fit(&args),
+        Command::Worksheet(args) => worksheet(&args),
+    }
+}
+
+/// The model's parameters and the periods to integrate: the defaults, overridden by the
+/// scenario file (if any), overridden by the flags given.
+pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
+    let common = &args.common;
+    let scenario = common.scenario.as_deref().map(Scenario::load).transpose()?;
+    let periods = match common.periods {
+        Some(n) => u32::try_from(n)
+            .map_err(|_| invalid("periods", n, format!("1 <= periods <= {MAX_PERIODS}")))?,
+        None => scenario
+            .as_ref()
+            .and_then(|s| s.periods)
+            .unwrap_or(DEFAULT_PERIODS),
+    };
+    let mut model = match (&scenario, &common.scenario) {
+        (Some(s), Some(path)) => {
+            if s.model.id() != args.model.id() {
+                return Err(Error::Scenario {
+                    path: path.display().to_string(),
+                    reason: format!("describes model {}, not {}", s.model.id(), args.model.id()),
+                }
+                .into());
+            }
+            s.model_params(path)?
+        }
+        _ => args.model,
+    };
+    for &(key, value) in &args.numbers {
+        model.set(key, value);
+    }
+    for (key, value) in &args.choices {
+        model.set_choice(key, value);
+    }
+    Ok((model, periods))
+}
+
+/// `stickslip eval MODEL`: the §7 evaluation as tables or JSON, and the CSV files with --csv.
+fn eval(args: &ModelArgs) -> Result<()> {
+    fn show<M: Present>(p: &M, periods: u32, args: &ModelArgs) -> Result<String> {
+        let evaluation = match &args.common.csv {
+            None => p.evaluate(periods)?,
+            Some(dir) => {
+                let (evaluation, files) = p.evaluate_with_csv(periods)?;
+                // Written before anything is printed: a bad target leaves no output at all.
+                report::write_all(dir, &files)?;
+                evaluation
+            }
+        };
+        Ok(if args.common.json {
+            serde_json::to_string_pretty(&evaluation)? + "\n"
+        } else {
+            M::text(&evaluation)
+        })
+    }
+    let (model, periods) = model_params(args)?;
+    print_stdout(&with_model!(&model, p => show(p, periods, args))?)
+}
+
+/// `stickslip claims MODEL`: the paper's claims on the given parameters (the other model keeps
+/// the paper's set) and on a seeded random sample.
+fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()> {
+    let common = &model.args.common;
+    reject_flag("claims", "--csv", common.csv.is_some())?;
+    let (params, _) = model_params(&model.args)?;
+    let (pulled, wood) = crate::claims::params_for(&params);
+    let sample = crate::claims::Sample {
+        seed,
+        size: samples,
+    };
+    let claims = crate::claims::evaluate(&pulled, &wood, &sample)?;
+    print_stdout(&if common.json {
+        serde_json::to_string_pretty(&claims)? + "\n"
+    } else {
+        crate::output::text::claims(&claims)
+    })
+}
+
+/// `stickslip fit`: read, fit, write the files, print; a fit that did not converge is still
+/// written and printed (flagged), then reported as an error (exit 1).
+fn fit(args: &FitArgs) -> Result<()> {
+    let common = &args.model.args.common;
+    reject_flag("fit", "--periods", common.periods.is_some())?;
+    reject_flag("fit", "--csv", common.csv.is_some())?;
+    let Model::Woodpecker(base) = model_params(&args.model.args)?.0 else {
+        unreachable!("fit takes the woodpecker's flags")
+    };
+    let opts = crate::fit::data::ReadOptions {
+        columns: args.columns.clone(),
+        unit: args.units,
+    };
+    let data = crate::fit::data::read(&args.file, &opts)?;
+    let fit = crate::fit::fit(&data, &base, &args.free)?;
+    report::write_all(&args.out, &crate::fit::render(&fit)?)?;
+    print_stdout(&if common.json {
+        crate::fit::json(&fit)?
+    } else {
+        crate::fit::text(&fit, &args.out)
+    })?;
+    if !fit.converged {
+        return Err(Error::NotConverged {
+            reason: format!(
+                "{} (results in {} are flagged \"converged\": false)",
+                fit.termination,
+                args.out.display()
+            ),
+        }
+        .into());
+    }
+    Ok(())
+}
+
+/// `stickslip worksheet`: every sheet and the key are rendered before anything is written.
+fn worksheet(args: &WorksheetArgs) -> Result<()> {
+    let request = crate::worksheet::Request {
+        model: args.model,
+        students: args.students,
+        seed: args.seed,
+        regime: args.regime.clone(),
+        questions: args.questions.clone(),
+    };
+    let sheets = crate::worksheet::generate(&request)?;
+    let files = crate::worksheet::render(&sheets, &args.format)?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} students ({}, regime {}) to {}\n",
+        written.len(),
+        sheets.students.len(),
+        args.model.id(),
+        sheets.regime,
+        args.out.display()
+    ))
+}
+
+/// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
+fn bench(args: &BenchArgs) -> Result<()> {
+    let started = std::time::Instant::now();
+    let config = crate::bench::Config {
+        quick: args.quick,
+        repeats: args.repeats,
+        peer: args.peer,
+    };
+    let results = crate::bench::run(&config)?;
+    let files = crate::bench::render(&results)?;
+    let written = report::write_all(&args.out, &files)?;
+    eprintln!(
+        "bench: elapsed {:.1} s (measurements {:.1} s)",
+        started.elapsed().as_secs_f64(),
+        results.elapsed_s
+    );
+    print_stdout(&format!(
+        "wrote {} files to {}\n",
+        written.len(),
+        args.out.display()
+    ))
+}
+
+/// `stickslip report`: the built-in scenes or the given scenario files.
+fn report(args: &ReportArgs) -> Result<()> {
+    let scenes = if args.scenarios.is_empty() {
+        report::builtin_scenes()?
+    } else {
+        args.scenarios
+            .iter()
+            .map(|path| report::Scene::from_file(path))
+            .collect::<crate::error::Result<Vec<_>>>()?
+    };
+    let files = report::render(&scenes, &args.format)?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} scenes to {}\n",
+        written.len(),
+        scenes.len(),
+        args.out.display()
+    ))
+}
+
+/// `stickslip handout`: the browser is looked up first and everything (the PDF included) is
+/// rendered before anything is written.
+fn handout(args: &HandoutArgs) -> Result<()> {
+    use crate::handout;
+    let Some(id) = args.scene.as_deref().filter(|_| !args.list) else {
+        return print_stdout(&handout::list()?);
+    };
+    let browser = args.pdf.then(handout::pdf::locate).transpose()?;
+    let scene = handout::find_scene(id)?;
+    let files = handout::render(&scene, &args.format, browser.as_deref())?;
+    let written = report::write_all(&args.out, &files)?;
+    print_stdout(&format!(
+        "wrote {} files for {} to {}\n",
+        written.len(),
+        scene.id,
+        args.out.display()
+    ))
+}
+
+/// `stickslip sweep MODEL`: the grid around the base parameters of flags and scenario; files
+/// are written only once every point has been computed.
+fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
+    let common = &model.args.common;
+    reject_flag("sweep", "--json", common.json)?;
+    reject_flag("sweep", "--csv", common.csv.is_some())?;
+    let (base, periods) = model_params(&model.args)?;
+    let grid = &model.extra;
+    let spec = crate::sweep::GridSpec {
+        param: grid.param.clone(),
+        from: grid.from,
+        to: grid.to,
+        steps: grid.steps,
+        periods,
+    };
+    crate::sweep::validate(&base, &spec)?;
+    let progress = crate::sweep::progress_bar(spec.steps);
+    let result = crate::sweep::run(&base, &spec, &progress)?;
+    let files = crate::sweep::render(&result)?;
+    report::write_all(&grid.out, &files)?;
+    print_stdout(&crate::sweep::summary_line(&result, &grid.out))
+}
+
+/// A flag that the subcommand does not use is refused rather than silently ignored.
+fn reject_flag(command: &str, flag: &str, given: bool) -> Result<()> {
+    if given {
+        anyhow::bail!("{flag} does not apply to `stickslip {command}`");
+    }
+    Ok(())
+}
+
+/// Prints to standard output; a closed pipe (`| head`) is not an error of ours.
+fn print_stdout(text: &str) -> Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    match stdout
+        .write_all(text.as_bytes())
+        .and_then(|()| stdout.flush())
+    {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other.context("writing to standard output"),
+    }
+}

@@ -1,0 +1,94 @@
+//! The pulled mass on a worksheet: its questions and regimes, its introduction, and how a
+//! student's parameter set is drawn.
+
+use rand::rngs::StdRng;
+use rand::Rng;
+
+use super::formula as pm;
+use super::{results, PulledMassParams};
+use crate::engine::Run;
+use crate::error::Result;
+use crate::params::G_STANDARD;
+use crate::results::Check;
+use crate::worksheet::exercise::Exercise;
+use crate::worksheet::question::{self, Question};
+use crate::worksheet::sample::round3;
+
+impl Exercise for PulledMassParams {
+    const TITLE: &'static str = "the pulled mass";
+    const INTRO: &'static str = "A block of mass m lies on a table and is pulled by a constant \
+         horizontal force F. An equal mass hangs below it on a spring of constant k, moves with \
+         it (inertial mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the \
+         linearized (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half \
+         period, W = mg. At t = 0 the block is at rest.";
+
+    fn catalogue() -> &'static [Question] {
+        question::PULLED_MASS
+    }
+
+    fn regimes() -> &'static [&'static str] {
+        question::PULLED_REGIMES
+    }
+
+    fn regime_rules() -> &'static [(&'static str, &'static str)] {
+        &[
+            ("immediate_continuous_slip", r"\varphi > 2\mu_s"),
+            ("slip_stick", r"\varphi \le 1/\Theta"),
+            ("slip_stick_late", r"1/\Theta < \varphi \le \varphi_c"),
+            ("continuous_slip", r"\varphi_c < \varphi \le 2\mu_s"),
+        ]
+    }
+
+    fn draw(regime: &str, rng: &mut StdRng) -> Self {
+        draw_set(regime, rng)
+    }
+
+    fn regime_comparisons(
+        &self,
+        value: &dyn Fn(&str) -> Option<f64>,
+    ) -> Vec<(&'static str, Option<f64>)> {
+        vec![
+            (r"\varphi", value("phi")),
+            (r"1/\Theta", value("phi_stick_max")),
+            (r"\varphi_c", value("phi_continuous")),
+            (r"2\mu_s", Some(2.0 * self.mu_s)),
+        ]
+    }
+
+    fn checks_and_linear_run(
+        &self,
+        periods: u32,
+        record_segments: bool,
+    ) -> Result<(Vec<Check>, Option<Run>)> {
+        let (e, runs) = results::evaluate_with_runs(self, periods, record_segments)?;
+        Ok((e.checks, Some(runs.linear)))
+    }
+}
+
+/// μs 0.25–0.8, μd/μs 0.5–1, m 20–200 g, k 10–100 N/m, and F = φW with φ inside the interval of
+/// the regime (§1.5), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
+/// the motion is large enough to see.
+fn draw_set(regime: &str, rng: &mut StdRng) -> PulledMassParams {
+    let mu_s = rng.gen_range(0.25..0.8);
+    let mu_d = mu_s * rng.gen_range(0.5..=1.0);
+    let mass = rng.gen_range(0.02..0.2);
+    let k = rng.gen_range(10.0..100.0);
+    let (stick, cont) = (
+        pm::phi_stick_max(mu_s, mu_d),
+        pm::phi_continuous(mu_s, mu_d),
+    );
+    let (lo, hi) = match regime {
+        "slip_stick_late" => (stick, cont),
+        "continuous_slip" => (cont, 2.0 * mu_s),
+        _ => (0.3 * stick, stick),
+    };
+    let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);
+    PulledMassParams {
+        mu_s: round3(mu_s),
+        mu_d: round3(mu_d),
+        mass: round3(mass),
+        k: round3(k),
+        force: round3(phi * mass * G_STANDARD),
+        g: G_STANDARD,
+    }
+}

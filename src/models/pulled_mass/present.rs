@@ -1,0 +1,66 @@
+//! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
+
+use super::{derivation, results, scene, PulledMassParams};
+use crate::derivation::Step;
+use crate::error::Result;
+use crate::handout::physics::{self, Note};
+use crate::present::{Laws, Present, StandardScene};
+use crate::report::context::{self, SceneCtx};
+use crate::report::scene::{Figure, FigureKind};
+use crate::report::{OutFile, Scene};
+use crate::results::quantity::{Quantity, PULLED_MASS};
+
+impl Present for PulledMassParams {
+    fn standard_scene(&self) -> StandardScene {
+        StandardScene {
+            figures: vec![
+                FigureKind::PulledMotion { periods: 2.0 },
+                FigureKind::PulledForces,
+                FigureKind::PulledCompare,
+            ],
+            claims: vec![1, 2, 3, 7],
+            caption: "Motion of the pulled mass under both force laws, the competing forces, \
+                      and the harmonic law against its linearization.",
+        }
+    }
+
+    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>> {
+        scene::figures(scene_id, self, kind)
+    }
+
+    fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx> {
+        context::pulled_tables(scene, self)
+    }
+
+    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]) {
+        (derivation::pulled_mass(self), PULLED_MASS)
+    }
+
+    fn handout_note(key: &str) -> Option<Note> {
+        physics::PULLED_MASS_STEPS
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, n)| *n)
+    }
+
+    fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
+        physics::PULLED_MASS
+    }
+
+    fn laws(e: &results::Evaluation) -> Laws<'_> {
+        Laws {
+            harmonic: &e.harmonic,
+            linear: Some(&e.linear),
+            closed_form_regime: e.closed_form.regime.id(),
+        }
+    }
+
+    fn text(e: &results::Evaluation) -> String {
+        crate::output::text::pulled_mass(e)
+    }
+
+    fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {
+        let (evaluation, runs) = results::evaluate_with_runs(self, periods, true)?;
+        Ok((evaluation, crate::export::pulled_mass_files(&runs)))
+    }
+}

@@ -1,0 +1,118 @@
+//! The woodpecker on a worksheet: its questions and regimes, its introduction, how a
+//! student's parameter set is drawn, and the μd,MIN threshold found on the engine.
+
+use rand::rngs::StdRng;
+use rand::Rng;
+
+use super::threshold::mu_d_sticking_at_half_period;
+use super::{results, WoodpeckerParams};
+use crate::derivation::Step;
+use crate::engine::Run;
+use crate::error::Result;
+use crate::params::G_STANDARD;
+use crate::results::Check;
+use crate::worksheet::answer::{applying, confirmed, Answer};
+use crate::worksheet::exercise::Exercise;
+use crate::worksheet::question::{self, Question};
+use crate::worksheet::sample::round3;
+
+impl Exercise for WoodpeckerParams {
+    const TITLE: &'static str = "the falling woodpecker";
+    const INTRO: &'static str = "The sleeve of the woodpecker toy (mass m_S) slides down the \
+         pole while the bird (mass m_W) oscillates on the spring of constant k. Use the \
+         linearized (triangle-wave) law of the paper with the lever ratio λ = l/h, ω = √(k/m_W) \
+         and the counterpart ζ0 = d0, δ0 = d0 (2/π) arcsin(z0/d0). At t = 0 the sleeve is at \
+         rest.";
+
+    fn catalogue() -> &'static [Question] {
+        question::WOODPECKER
+    }
+
+    fn regimes() -> &'static [&'static str] {
+        question::WOODPECKER_REGIMES
+    }
+
+    fn regime_rules() -> &'static [(&'static str, &'static str)] {
+        &[
+            (
+                "double_slip_stick",
+                r"u_s^{(-)}\eta' \ge 1,\quad \mu_d \ge \mu_{d,HALT}^{(I)},\quad \mu_d \ge \mu_{d,HALT}^{(II)}",
+            ),
+            (
+                "double_slip_no_halt",
+                r"\text{one slip per period, two speed maxima}",
+            ),
+            (
+                "single_slip_stick",
+                r"\text{one slip per period, one speed maximum}",
+            ),
+            (
+                "continuous_or_multiperiod",
+                r"\text{the sleeve never halts}",
+            ),
+        ]
+    }
+
+    fn draw(_regime: &str, rng: &mut StdRng) -> Self {
+        draw_set(rng)
+    }
+
+    fn regime_comparisons(
+        &self,
+        value: &dyn Fn(&str) -> Option<f64>,
+    ) -> Vec<(&'static str, Option<f64>)> {
+        vec![
+            (
+                r"u_s^{(-)}\eta'",
+                value("u_s_minus")
+                    .zip(value("eta_prime"))
+                    .map(|(u, h)| u * h),
+            ),
+            (r"\mu_d", Some(self.mu_d)),
+            (r"\mu_{d,HALT}^{(I)}", value("mu_d_halt_1")),
+            (r"\mu_{d,HALT}^{(II)}", value("mu_d_halt_2")),
+        ]
+    }
+
+    fn threshold(
+        &self,
+        question: &'static Question,
+        steps: &[Step],
+        step: &str,
+    ) -> Result<Option<Answer>> {
+        let Some((step, value)) = applying(steps, step).and_then(|s| Some((s, s.value?))) else {
+            return Ok(None);
+        };
+        Ok(mu_d_sticking_at_half_period(self, value)?.and_then(|n| confirmed(question, step, n)))
+    }
+
+    fn checks_and_linear_run(
+        &self,
+        periods: u32,
+        record_segments: bool,
+    ) -> Result<(Vec<Check>, Option<Run>)> {
+        let (e, runs) = results::evaluate_with_runs(self, periods, record_segments)?;
+        Ok((e.checks, runs.linear))
+    }
+}
+
+/// Around the paper's Fig. 15 toy: μs 0.5–0.8, μd/μs 0.3–1, k 10–40 N/m, m_S 4–12 g,
+/// m_W 8–25 g, l 12–20 mm, h 5–10 mm, d0 6–12 mm, z0/d0 0.3–0.95; λ = l/h, ω = √(k/m_W) and the
+/// `zeros` counterpart (the defaults).
+fn draw_set(rng: &mut StdRng) -> WoodpeckerParams {
+    let mu_s = rng.gen_range(0.5..0.8);
+    let d0 = rng.gen_range(0.006..0.012);
+    WoodpeckerParams {
+        mu_s: round3(mu_s),
+        mu_d: round3(mu_s * rng.gen_range(0.3..=1.0)),
+        k: round3(rng.gen_range(10.0..40.0)),
+        m_sleeve: round3(rng.gen_range(0.004..0.012)),
+        m_bird: round3(rng.gen_range(0.008..0.025)),
+        l: round3(rng.gen_range(0.012..0.020)),
+        h: round3(rng.gen_range(0.005..0.010)),
+        z0: round3(d0 * rng.gen_range(0.3..0.95)),
+        d0: round3(d0),
+        g: G_STANDARD,
+        ..WoodpeckerParams::default()
+    }
+}

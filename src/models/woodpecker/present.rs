@@ -1,0 +1,67 @@
+//! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
+
+use super::{derivation, results, scene, WoodpeckerParams};
+use crate::derivation::Step;
+use crate::error::Result;
+use crate::handout::physics::{self, Note};
+use crate::present::{Laws, Present, StandardScene};
+use crate::report::context::{self, SceneCtx};
+use crate::report::scene::{Figure, FigureKind};
+use crate::report::{OutFile, Scene};
+use crate::results::quantity::{Quantity, WOODPECKER};
+
+impl Present for WoodpeckerParams {
+    fn standard_scene(&self) -> StandardScene {
+        StandardScene {
+            figures: vec![
+                FigureKind::WoodMotion { periods: 2.0 },
+                FigureKind::WoodForces,
+                FigureKind::WoodSpring,
+            ],
+            claims: vec![3, 4, 5, 6, 7, 8],
+            caption: "Motion of the woodpecker's sleeve under both force laws, the forces that \
+                      decide the slip, and the linear counterparts of the spring coordinate.",
+        }
+    }
+
+    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>> {
+        scene::figures(scene_id, self, kind)
+    }
+
+    fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx> {
+        context::woodpecker_tables(scene, self)
+    }
+
+    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]) {
+        (derivation::woodpecker(self), WOODPECKER)
+    }
+
+    fn handout_note(key: &str) -> Option<Note> {
+        physics::WOODPECKER_STEPS
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, n)| *n)
+    }
+
+    fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
+        physics::WOODPECKER
+    }
+
+    fn laws(e: &results::Evaluation) -> Laws<'_> {
+        Laws {
+            harmonic: &e.harmonic,
+            linear: e.linear.as_ref(),
+            closed_form_regime: results::orbit_regime_id(e.closed_form.regime),
+        }
+    }
+
+    fn text(e: &results::Evaluation) -> String {
+        crate::output::text::woodpecker(e)
+    }
+
+    fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {
+        let (evaluation, runs) = results::evaluate_with_runs(self, periods, true)?;
+        let files = crate::export::woodpecker_files(self, &runs);
+        Ok((evaluation, files))
+    }
+}

@@ -1,0 +1,52 @@
+//! What the presentation layer asks of a model: its standard scene and figures, its report
+//! tables, its worked derivation, its teaching notes, its terminal tables and CSV files.
+//! Implemented by each model's params struct in `src/models/<name>/present.rs`; the report,
+//! handout, worksheet, sweep and command line reach it through [`crate::models::with_model!`].
+
+use crate::derivation::Step;
+use crate::error::Result;
+use crate::handout::physics::Note;
+use crate::models::Physics;
+use crate::report::context::SceneCtx;
+use crate::report::scene::{Figure, FigureKind};
+use crate::report::{OutFile, Scene};
+use crate::results::quantity::Quantity;
+use crate::results::Summary;
+
+/// The figures, claims and caption of a user's scenario of this model.
+pub struct StandardScene {
+    pub figures: Vec<FigureKind>,
+    pub claims: Vec<u8>,
+    pub caption: &'static str,
+}
+
+/// The laws of an evaluation as a sweep or a table reads them.
+pub struct Laws<'a> {
+    pub harmonic: &'a Summary,
+    /// `None` where the linearized law does not exist for the parameters.
+    pub linear: Option<&'a Summary>,
+    /// The regime id of the linearized law's closed forms.
+    pub closed_form_regime: &'static str,
+}
+
+/// The presentation of a model.
+pub trait Present: Physics {
+    /// The standard figures, claims and caption of a scenario of this model.
+    fn standard_scene(&self) -> StandardScene;
+    /// The figures of `kind` for the scene `scene_id`.
+    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>>;
+    /// The report's tables of a scene of this model.
+    fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx>;
+    /// The worked substitutions of every closed form, and the quantities they are of.
+    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]);
+    /// How the handout explains the step of `key`.
+    fn handout_note(key: &str) -> Option<Note>;
+    /// The equation of motion, line by line: (formula, its physics).
+    fn equation_of_motion() -> &'static [(&'static str, &'static str)];
+    /// The laws of an evaluation.
+    fn laws(e: &Self::Evaluation) -> Laws<'_>;
+    /// The evaluation as terminal tables.
+    fn text(e: &Self::Evaluation) -> String;
+    /// The evaluation, and the CSV files of its runs (time series and events of both laws).
+    fn evaluate_with_csv(&self, periods: u32) -> Result<(Self::Evaluation, Vec<OutFile>)>;
+}

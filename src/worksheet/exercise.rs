@@ -1,0 +1,52 @@
+//! What a worksheet asks of a model: its questions and regimes, the words that introduce it,
+//! how a student's parameter set is drawn, and the model-specific parts of the answers.
+//! Implemented by each model's params struct (`src/models/<name>/exercise.rs`).
+
+use rand::rngs::StdRng;
+
+use super::answer::Answer;
+use super::question::Question;
+use crate::derivation::Step;
+use crate::engine::Run;
+use crate::error::Result;
+use crate::present::Present;
+use crate::results::Check;
+
+/// The worksheet side of a model.
+pub trait Exercise: Present {
+    /// The model in the sheet's title ("the pulled mass").
+    const TITLE: &'static str;
+    /// What the student is told about the model (the parameters follow in a table).
+    const INTRO: &'static str;
+    /// Every question the model's sheets can ask.
+    fn catalogue() -> &'static [Question];
+    /// Regimes a worksheet can ask for (closed-form ids), the default first.
+    fn regimes() -> &'static [&'static str];
+    /// The rules that decide the regime, as (regime id, condition in LaTeX).
+    fn regime_rules() -> &'static [(&'static str, &'static str)];
+    /// A candidate parameter set aimed at `regime`, every value rounded as typed.
+    fn draw(regime: &str, rng: &mut StdRng) -> Self;
+    /// The values the regime's inequalities compare, as (LaTeX symbol, value); `value` gives
+    /// the value of a worked step.
+    fn regime_comparisons(
+        &self,
+        value: &dyn Fn(&str) -> Option<f64>,
+    ) -> Vec<(&'static str, Option<f64>)>;
+    /// The answer to a threshold question (a parameter value found by bisection on the
+    /// engine); `None` where the model has none.
+    fn threshold(
+        &self,
+        _question: &'static Question,
+        _steps: &[Step],
+        _step: &str,
+    ) -> Result<Option<Answer>> {
+        Ok(None)
+    }
+    /// The checks of the evaluation and the run of the linearized law (with its segments when
+    /// `record_segments`), `None` where that law does not exist.
+    fn checks_and_linear_run(
+        &self,
+        periods: u32,
+        record_segments: bool,
+    ) -> Result<(Vec<Check>, Option<Run>)>;
+}
