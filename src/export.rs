@@ -14,9 +14,6 @@
 use std::fmt::Write as _;
 
 use crate::engine::{Event, Run};
-use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
-use crate::models::{woodpecker as wood_model, LawKind};
 use crate::report::OutFile;
 use crate::results::summary::kind_name;
 
@@ -36,30 +33,19 @@ pub fn num(x: f64) -> String {
     }
 }
 
-/// The CSV files of an evaluated pulled mass (both laws always exist).
-pub fn pulled_mass_files(runs: &pulled_mass::Runs) -> Vec<OutFile> {
-    let mut files = Vec::with_capacity(4);
-    for (law, run) in [("harmonic", &runs.harmonic), ("linear", &runs.linear)] {
-        files.push(timeseries(law, run, "x_m", None));
-        files.push(events(law, run, "x_m"));
-    }
-    files
-}
-
-/// The CSV files of an evaluated woodpecker; the linear ones only when the linear law exists.
-pub fn woodpecker_files(p: &WoodpeckerParams, runs: &woodpecker::Runs) -> Vec<OutFile> {
-    let mut files = Vec::with_capacity(4);
-    let laws = [
-        ("harmonic", LawKind::Harmonic, Some(&runs.harmonic)),
-        ("linear", LawKind::Linear, runs.linear.as_ref()),
-    ];
-    for (name, kind, run) in laws {
-        let Some(run) = run else { continue };
-        let spring = move |t: f64| wood_model::spring_coordinate(p, kind, t);
-        files.push(timeseries(name, run, "y_m", Some(&spring)));
-        files.push(events(name, run, "y_m"));
-    }
-    files
+/// The time series and the event list of one law's run (`law`: "harmonic" or "linear"), with
+/// the body's position in a column named `position` ("x_m", "y_m") and, where `spring` is
+/// given, the spring coordinate's companion column (the woodpecker's y_W = y_S + z).
+pub fn law_files(
+    law: &str,
+    run: &Run,
+    position: &str,
+    spring: Option<&dyn Fn(f64) -> Option<f64>>,
+) -> [OutFile; 2] {
+    [
+        timeseries(law, run, position, spring),
+        events(law, run, position),
+    ]
 }
 
 /// Sample times: a uniform grid over the run plus the times of its kept events, sorted, with

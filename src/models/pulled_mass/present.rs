@@ -3,6 +3,7 @@
 use super::{derivation, results, scene, PulledMassParams};
 use crate::derivation::Step;
 use crate::error::Result;
+use crate::export::law_files;
 use crate::handout::physics::{self, Note};
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::{self, SceneCtx};
@@ -61,6 +62,10 @@ impl Present for PulledMassParams {
 
     fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {
         let (evaluation, runs) = results::evaluate_with_runs(self, periods, true)?;
-        Ok((evaluation, crate::export::pulled_mass_files(&runs)))
+        let mut files = Vec::with_capacity(4);
+        for (law, run) in [("harmonic", &runs.harmonic), ("linear", &runs.linear)] {
+            files.extend(law_files(law, run, "x_m", None));
+        }
+        Ok((evaluation, files))
     }
 }

@@ -1,9 +1,11 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, WoodpeckerParams};
+use super::{derivation, results, scene, spring_coordinate, WoodpeckerParams};
 use crate::derivation::Step;
 use crate::error::Result;
+use crate::export::law_files;
 use crate::handout::physics::{self, Note};
+use crate::models::LawKind;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::{self, SceneCtx};
 use crate::report::scene::{Figure, FigureKind};
@@ -61,7 +63,17 @@ impl Present for WoodpeckerParams {
 
     fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {
         let (evaluation, runs) = results::evaluate_with_runs(self, periods, true)?;
-        let files = crate::export::woodpecker_files(self, &runs);
+        let mut files = Vec::with_capacity(4);
+        let laws = [
+            ("harmonic", LawKind::Harmonic, Some(&runs.harmonic)),
+            ("linear", LawKind::Linear, runs.linear.as_ref()),
+        ];
+        for (name, law, run) in laws {
+            let Some(run) = run else { continue };
+            // The bird's position y_W = y_S + z beside the sleeve's.
+            let spring = move |t: f64| spring_coordinate(self, law, t);
+            files.extend(law_files(name, run, "y_m", Some(&spring)));
+        }
         Ok((evaluation, files))
     }
 }
