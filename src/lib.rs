@@ -15,21 +15,31 @@
 //! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
 //! force law.
 
+#[cfg(feature = "cli")]
 pub mod bench;
 pub mod claims;
+#[cfg(feature = "cli")]
 pub mod cli;
+#[cfg(feature = "cli")]
 pub mod derivation;
 pub mod engine;
 pub mod error;
+#[cfg(feature = "cli")]
 pub mod export;
+#[cfg(feature = "cli")]
 pub mod fit;
 pub mod formula;
+#[cfg(feature = "cli")]
 pub mod handout;
 pub mod model;
+#[cfg(feature = "cli")]
 pub mod output;
 pub mod params;
+#[cfg(feature = "cli")]
 pub mod report;
 pub mod results;
 pub mod solver;
+#[cfg(feature = "cli")]
 pub mod sweep;
+#[cfg(feature = "cli")]
 pub mod worksheet;

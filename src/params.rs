@@ -79,7 +79,8 @@ impl PulledMassParams {
 }
 
 /// How ω of the harmonic woodpecker is defined (physics.md §2; regimes do not depend on it).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "lowercase")]
 pub enum OmegaMode {
     /// ω = √(k/m_W) (default: reproduces the paper's figures).
@@ -255,7 +256,8 @@ pub fn positive(name: &'static str, value: f64) -> Result<()> {
 }
 
 /// Which model a scenario describes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "kebab-case")]
 pub enum ModelName {
     /// The pulled mass (paper Sec. 2).

@@ -34,7 +34,8 @@ pub use super::lobe::{halt_threshold, mu_d_halt, HaltKind, Orbit, OrbitRegime, O
 // Counterpart of the harmonic law (§3.1)
 
 /// How the triangle wave (ζ0, δ0) is matched to the harmonic spring coordinate z0 + d0 cos ωt.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(clap::ValueEnum))]
 #[serde(rename_all = "lowercase")]
 pub enum Counterpart {
     /// Same maximum and minimum spring coordinate: ζ0 = d0, δ0 = z0.
