@@ -82,6 +82,36 @@ pub enum Error {
     NotConverged { reason: String },
 }
 
+impl Error {
+    /// The exit code of the process that stops on this error. The rule: 2 when the input is at
+    /// fault, that is when another command line, input file, output folder or installed
+    /// browser would have succeeded (a parameter out of range, an invalid choice, a regime
+    /// that no worksheet draw reaches, a scenario or tracked-data file that cannot be read or
+    /// parsed, an unknown scene, an unwritable output, `--pdf` without Chromium); 1 when the
+    /// program or the tool it runs failed on valid input (the engine stalled, a force law our
+    /// own code built is invalid, a figure or template failed to render, a fit did not
+    /// converge, Chromium failed to print). The match is exhaustive: a new variant has to be
+    /// classified.
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            Self::InvalidParam { .. }
+            | Self::InvalidChoice { .. }
+            | Self::Unreachable { .. }
+            | Self::Scenario { .. }
+            | Self::UnknownScene { .. }
+            | Self::TrackedData { .. }
+            | Self::Output { .. }
+            | Self::NoChromium { .. } => 2,
+            Self::Stalled { .. }
+            | Self::InvalidLaw(_)
+            | Self::Figure { .. }
+            | Self::Template { .. }
+            | Self::NotConverged { .. }
+            | Self::Pdf { .. } => 1,
+        }
+    }
+}
+
 /// "line 17, column y: ", "line 17: " or nothing.
 fn place(line: Option<u64>, column: Option<&str>) -> String {
     match (line, column) {
@@ -94,3 +124,83 @@ fn place(line: Option<u64>, column: Option<&str>) -> String {
 
 /// Result alias of the library.
 pub type Result<T> = std::result::Result<T, Error>;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn text(s: &str) -> String {
+        s.to_string()
+    }
+
+    #[test]
+    fn bad_input_exits_2() {
+        let bad_input = [
+            Error::InvalidParam {
+                name: "mu_d",
+                value: text("0.5"),
+                rule: text("0 < mu_d <= mu_s"),
+            },
+            Error::InvalidChoice {
+                flag: "--format",
+                value: text("pdf"),
+                valid: text("html, md"),
+            },
+            Error::Unreachable {
+                regime: text("double"),
+                attempts: 1000,
+            },
+            Error::Scenario {
+                path: text("s.toml"),
+                reason: text("missing title"),
+            },
+            Error::UnknownScene { id: text("nope") },
+            Error::TrackedData {
+                path: text("t.csv"),
+                line: Some(3),
+                column: None,
+                reason: text("not a number"),
+            },
+            Error::Output {
+                path: text("out"),
+                reason: text("not a directory"),
+            },
+            Error::NoChromium {
+                detail: String::new(),
+            },
+        ];
+        for e in bad_input {
+            assert_eq!(e.exit_code(), 2, "{e}");
+        }
+    }
+
+    #[test]
+    fn internal_failures_exit_1() {
+        let internal = [
+            Error::Stalled {
+                t: 1.5,
+                reason: "no progress",
+            },
+            Error::InvalidLaw(text("pieces end at 1 s, not at the period 2 s")),
+            Error::Figure {
+                id: text("motion"),
+                reason: text("empty range"),
+            },
+            Error::Template {
+                name: text("index.html"),
+                reason: text("unknown variable"),
+            },
+            Error::NotConverged {
+                reason: text("maximum evaluations"),
+            },
+            Error::Pdf {
+                path: text("handout.pdf"),
+                browser: text("chromium"),
+                reason: text("exit status 1"),
+            },
+        ];
+        for e in internal {
+            assert_eq!(e.exit_code(), 1, "{e}");
+        }
+    }
+}

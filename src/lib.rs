@@ -14,23 +14,39 @@
 //! driving force D(t) and friction-bearing normal force N_f(t) (physics.md §0). The engine in
 //! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
 //! force law.
+//!
+//! The `cli` feature (default) adds the presentation layer: command line, reports, figures,
+//! handouts, worksheets, sweeps, fits and benchmarks. Without it the core (params, models,
+//! engine, results, claims, solvers) builds on its own, for wasm32 too.
 
+#[cfg(feature = "cli")]
 pub mod bench;
 pub mod claims;
+#[cfg(feature = "cli")]
 pub mod cli;
+#[cfg(feature = "cli")]
 pub mod commands;
+#[cfg(feature = "cli")]
 pub mod derivation;
 pub mod engine;
 pub mod error;
+#[cfg(feature = "cli")]
 pub mod export;
+#[cfg(feature = "cli")]
 pub mod fit;
+#[cfg(feature = "cli")]
 pub mod handout;
 pub mod models;
+#[cfg(feature = "cli")]
 pub mod output;
 pub mod params;
+#[cfg(feature = "cli")]
 pub mod present;
+#[cfg(feature = "cli")]
 pub mod report;
 pub mod results;
 pub mod solver;
+#[cfg(feature = "cli")]
 pub mod sweep;
+#[cfg(feature = "cli")]
 pub mod worksheet;

@@ -2,8 +2,8 @@
 //!
 //! Exit codes: 0 success; 2 bad input (usage, parameter out of range, unreadable or malformed
 //! scenario or tracked data, unknown scene, unwritable output, `--pdf` without Chromium); 1 an
-//! internal failure: the engine, a fit that did not converge (its results are written, flagged),
-//! or Chromium failing to print.
+//! internal failure: the engine, a figure or template, a fit that did not converge (its results
+//! are written, flagged), or Chromium failing to print. [`Error::exit_code`] holds the rule.
 
 use std::process::ExitCode;
 
@@ -29,11 +29,8 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: {e:#}");
-            let internal = matches!(
-                e.downcast_ref::<Error>(),
-                Some(Error::Stalled { .. } | Error::NotConverged { .. } | Error::Pdf { .. })
-            );
-            ExitCode::from(if internal { 1 } else { 2 })
+            // The library's errors decide (Error::exit_code); the others are usage refused here.
+            ExitCode::from(e.downcast_ref::<Error>().map_or(2, Error::exit_code))
         }
     }
 }

@@ -55,9 +55,17 @@ fn search(path: Option<&std::ffi::OsStr>, name: &Path) -> Option<PathBuf> {
         .find(|candidate| is_executable(candidate))
 }
 
+#[cfg(unix)]
 fn is_executable(path: &Path) -> bool {
     use std::os::unix::fs::PermissionsExt;
     fs::metadata(path).is_ok_and(|m| m.is_file() && m.permissions().mode() & 0o111 != 0)
+}
+
+/// Without Unix permission bits any regular file counts; one that is not a program fails to
+/// start when printing, which is reported as [`Error::Pdf`].
+#[cfg(not(unix))]
+fn is_executable(path: &Path) -> bool {
+    fs::metadata(path).is_ok_and(|m| m.is_file())
 }
 
 /// Chromium's flags for printing offline without a desktop: headless, no sandbox (CI runs as
@@ -134,7 +142,8 @@ pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
     Err(fail(format!("{status}, no PDF written{last_line}")))
 }
 
-#[cfg(test)]
+// The fake browsers are shell scripts made executable with Unix permissions.
+#[cfg(all(test, unix))]
 mod tests {
     use super::*;
 

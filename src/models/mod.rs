@@ -104,6 +104,8 @@ registry! {$
     Woodpecker(woodpecker::WoodpeckerParams),
 }
 
+// The presentation layer dispatches on the model too; the core needs only the methods below.
+#[cfg(feature = "cli")]
 pub(crate) use with_model;
 
 impl Model {

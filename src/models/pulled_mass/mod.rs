@@ -13,12 +13,16 @@
 
 pub mod body;
 pub(crate) mod claims;
+#[cfg(feature = "cli")]
 pub mod derivation;
+#[cfg(feature = "cli")]
 mod exercise;
 pub mod formula;
 pub mod params;
+#[cfg(feature = "cli")]
 mod present;
 pub mod results;
+#[cfg(feature = "cli")]
 pub mod scene;
 
 pub use body::{body, force_law};

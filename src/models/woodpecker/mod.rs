@@ -14,15 +14,19 @@
 
 pub mod body;
 pub(crate) mod claims;
+#[cfg(feature = "cli")]
 pub mod derivation;
+#[cfg(feature = "cli")]
 mod exercise;
 pub mod formula;
 pub(crate) mod halt;
 pub(crate) mod lever;
 pub mod lobe;
 pub mod params;
+#[cfg(feature = "cli")]
 mod present;
 pub mod results;
+#[cfg(feature = "cli")]
 pub mod scene;
 pub mod threshold;
 
