@@ -8,8 +8,8 @@
 
 use super::pulled_mass::PeriodicSet;
 use super::{
-    counterpart_name, mm_s, regime_words, rel_diff, run_wood, Claim, ClaimModel, Integrated,
-    Numbers, Verdict,
+    counterpart_name, mm_s, regime_words, rel_diff, run_wood, Claim, Integrated, Numbers, Verdict,
+    BOTH_MODELS,
 };
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
@@ -133,7 +133,7 @@ pub(crate) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
     );
     Ok(Claim {
         id: 3,
-        model: ClaimModel::Both,
+        model: BOTH_MODELS,
         title: "The linearized law reproduces the harmonic one only qualitatively".to_string(),
         paper_says: "The linearization is a safe way to obtain analytical results without \
                      affecting too heavily the numerical (exact) results (Fig. 12)."
@@ -234,7 +234,7 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
     );
     Ok(Claim {
         id: 7,
-        model: ClaimModel::Both,
+        model: BOTH_MODELS,
         title: "W_S v̄ grows as W_S³ and is not the friction dissipation; F v̄ is".to_string(),
         paper_says: "The sleeve's weight dissipates energy at a constant rate depending on the \
                      second (and, later, the third) power of W_S; for the pulled mass P = F v̄ \

@@ -72,14 +72,8 @@ pub enum Verdict {
     Qualified,
 }
 
-/// Which model a claim is about.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum ClaimModel {
-    PulledMass,
-    Woodpecker,
-    Both,
-}
+/// The `model` of a claim about both models; a claim about one model names its id.
+pub const BOTH_MODELS: &str = "both";
 
 /// One number behind a verdict (SI units; `unit` is "" for a pure number).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -107,7 +101,8 @@ pub struct SampleResult {
 pub struct Claim {
     /// 1..=8, the numbering of physics.md §6.
     pub id: u8,
-    pub model: ClaimModel,
+    /// The id of the model the claim is about, or [`BOTH_MODELS`].
+    pub model: &'static str,
     pub title: String,
     /// The paper's statement, short.
     pub paper_says: String,

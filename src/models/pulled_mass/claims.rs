@@ -10,13 +10,14 @@
 
 use crate::claims::sample::{self, PulledExample};
 use crate::claims::{
-    mm_s, or_none, rel_diff, run_pulled, Claim, ClaimModel, Integrated, Numbers, Sample, Verdict,
+    mm_s, or_none, rel_diff, run_pulled, Claim, Integrated, Numbers, Sample, Verdict,
 };
 use crate::engine::IntegrationRegime;
 use crate::error::Result;
 use crate::models::pulled_mass::formula as cf;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
+use crate::models::Physics;
 
 /// Agreement of a closed form with the exact integration (physics.md §4).
 const AGREE: f64 = 1e-9;
@@ -128,7 +129,7 @@ pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
     );
     Ok(Claim {
         id: 1,
-        model: ClaimModel::PulledMass,
+        model: <PulledMassParams as Physics>::ID,
         title: "Eq. (20) is the condition to stick within the same period, not to stick at all"
             .to_string(),
         paper_says: "The necessary condition for the stick is t_ST ≤ T, i.e. F/W ≤ 1/Θ (20); with \
@@ -234,7 +235,7 @@ pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
         .push("relative error, coefficient 2", e2, "");
     Ok(Claim {
         id: 2,
-        model: ClaimModel::PulledMass,
+        model: <PulledMassParams as Physics>::ID,
         title: "Eq. (28): the coefficient of D^{3/2} in Γ is 1".to_string(),
         paper_says: "v̄ = gTφ³Γ (27) with Γ = [D^{3/2} + μs³ + 3μs²μd − μd³]/(96 μs³ μd²) (28), \
                      D = μs² + 2μsμd − μd²; the damaged print also admits 2·D^{3/2}."

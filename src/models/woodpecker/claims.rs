@@ -7,12 +7,13 @@
 //! ```
 
 use crate::claims::sample::{self, WOODPECKER_RANGES};
-use crate::claims::{rel_diff, run_wood, spread, Claim, ClaimModel, Numbers, Sample, Verdict};
+use crate::claims::{rel_diff, run_wood, spread, Claim, Numbers, Sample, Verdict};
 use crate::error::Result;
 use crate::models::woodpecker::formula as cf;
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
+use crate::models::Physics;
 
 /// Share of counterexamples above which a statement "for sensible values" is refuted.
 const REFUTING_SHARE: f64 = 0.05;
@@ -63,7 +64,7 @@ pub(crate) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
         );
     Claim {
         id: 4,
-        model: ClaimModel::Woodpecker,
+        model: <WoodpeckerParams as Physics>::ID,
         title: "μd,MIN^(I) > μd,MIN^(II) does not hold in general".to_string(),
         paper_says:
             "For sensible values μd,MIN^(I) (51) is always larger than μd,MIN^(II) (65), so \
@@ -161,7 +162,7 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
     );
     Ok(Claim {
         id: 6,
-        model: ClaimModel::Woodpecker,
+        model: <WoodpeckerParams as Physics>::ID,
         title: "Γ does not depend on η: in the standard regime v̄ is independent of δ0".to_string(),
         paper_says: "v̄ = g τ W_S² Γ(η, μd, μs)/(24 ζ0² k²) (71), with Γ = Γ^(I) + Γ^(II) written \
                      as a function of η (54), (69), (70)."

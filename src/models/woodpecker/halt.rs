@@ -8,13 +8,14 @@
 //! ```
 //! A μd between the two is integrated exactly and its first slip is followed to its stop.
 
-use crate::claims::{or_none, run_wood, Claim, ClaimModel, Numbers, Verdict};
+use crate::claims::{or_none, run_wood, Claim, Numbers, Verdict};
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
 use crate::models::woodpecker::lobe::{HaltKind, Phase, PhaseLobes};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
+use crate::models::Physics;
 
 const PAPER_SAYS: &str = "The dynamic coefficient has to exceed μd,MIN^(I) (51) for the sleeve \
      to stop in the first half period; otherwise the motion, once started, does not end.";
@@ -89,7 +90,7 @@ pub(crate) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
     };
     Ok(Claim {
         id: 5,
-        model: ClaimModel::Woodpecker,
+        model: <WoodpeckerParams as Physics>::ID,
         title: "μd ≥ μd,MIN^(I) is sufficient, not necessary, for the intermediate halt"
             .to_string(),
         paper_says: PAPER_SAYS.to_string(),

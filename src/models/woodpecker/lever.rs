@@ -9,13 +9,13 @@
 //! ```
 
 use crate::claims::{
-    mm_s, or_none, regime_words, run_wood, Claim, ClaimModel, ClaimNumber, Integrated, Numbers,
-    Verdict,
+    mm_s, or_none, regime_words, run_wood, Claim, ClaimNumber, Integrated, Numbers, Verdict,
 };
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
+use crate::models::Physics;
 use crate::params::DEFAULT_PERIODS;
 
 /// Mean speed of the toy quoted for Fig. 26 (m/s).
@@ -206,7 +206,7 @@ pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
     let e = Evidence::of(w)?;
     Ok(Claim {
         id: 8,
-        model: ClaimModel::Woodpecker,
+        model: <WoodpeckerParams as Physics>::ID,
         title: "The sleeve sticks only with the lever ratio λ = l/h in the contact force"
             .to_string(),
         paper_says: PAPER_SAYS.to_string(),
