@@ -1,10 +1,14 @@
 //! Force laws as data: a period tiled by pieces on which the driving force D and the
 //! friction-bearing normal force N_f are affine in one basis function b(t).
 
+use serde::Serialize;
+
 use crate::error::{Error, Result};
 
-/// The basis function b(t) of a piece; t is the time within the period (s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The basis function b(t) of a piece; t is the time within the period (s). Serialized as
+/// `{"kind": "linear", "t_ref": …}` or `{"kind": "cos", "omega": …}`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Basis {
     /// b(t) = t − t_ref (s): the triangle-wave (linearized) laws.
     Linear { t_ref: f64 },
@@ -24,7 +28,7 @@ impl Basis {
 }
 
 /// An affine function of the basis, c0 + c1·b(t) (units of the quantity it stands for).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Affine {
     pub c0: f64,
     pub c1: f64,
@@ -49,7 +53,7 @@ impl Affine {
 }
 
 /// One piece of a force law, on [start, end) within the period (s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Piece {
     pub start: f64,
     pub end: f64,
@@ -73,7 +77,7 @@ impl Piece {
 }
 
 /// A periodic force law: pieces tiling [0, period).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ForceLaw {
     /// Period T (s).
     pub period: f64,
@@ -135,7 +139,7 @@ impl ForceLaw {
 }
 
 /// The body: inertial mass and friction coefficients.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Body {
     /// Inertial mass M (kg).
     pub mass: f64,
