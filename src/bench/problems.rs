@@ -28,7 +28,7 @@ pub const HALT_OFFSET_Z0: f64 = 1e-5;
 /// Relative offset of the two pulled-mass boundary cases from φ_c.
 pub const PHI_C_OFFSET: f64 = 1e-3;
 
-/// The model parameters of a problem, as the SciPy peer reads them.
+/// The model parameters of a problem, as results.json records them.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(untagged)]
 pub enum ModelParams {
