@@ -9,22 +9,29 @@ event-restart loop, the way a careful SciPy user would integrate a dry-friction 
     SLIP (s = +-1)  M dv/dt = D - s mu_d N_f until v crosses 0 (direction -s)
                     -> STUCK if |D| <= mu_s N_f, else SLIP in direction sgn D (a reversal)
 
-Every phase is also restarted at the kinks of the force law (the triangle-wave corners, the zeros
-of the woodpecker's spring force), so no solver steps over a corner of its right-hand side.
-The force laws are built here from the model parameters (physics.md 1.1-1.2, 2, 3.1):
+The script knows no model. It receives each problem's force law as data, the tool's own
+engine::ForceLaw and engine::Body serialized: a period tiled by pieces [start, end) on which the
+driving force D and the friction-bearing normal force N_f are affine in one basis function b,
 
-    pulled mass   M = 2m, D = F, N_f = W (1 + cos wt) or its triangle wave 2W|1 - 2 tau|
-    woodpecker    M = m_S, D = W_S + k z(t), N_f = 2 lambda k |z(t)|, z = z0 + d0 cos wt or
-                  delta0 + zeta(t) with the triangle zeta of amplitude zeta0 (counterpart)
+    D = drive.c0 + drive.c1 b,   N_f = normal.c0 + normal.c1 b,
+    b = t_loc - t_ref ("linear")  or  cos(omega t_loc) ("cos"),   t_loc = t mod period,
+
+and evaluates D(t) and N_f(t) from them (periodic extension, piece lookup). Every phase is also
+restarted at the period starts and at the piece boundaries, the kinks of the force law, so no
+solver steps over a corner of its right-hand side.
 
 Input (JSON, a file path or '-' for stdin): {"repeats": N, "long_run_s": 1.0,
-"tolerances": [...], "methods": [...], "problems": [{"id", "model", "law", "params", "periods",
-"exact": {"events": [{"t", "kind"}], "x_end_m"}}]}.
+"tolerances": [...], "methods": [...], "problems": [{"id", "model", "law", "periods",
+"body": {"mass", "mu_s", "mu_d"},
+"force_law": {"period", "pieces": [{"start", "end", "basis": {"kind": "linear", "t_ref"} or
+{"kind": "cos", "omega"}, "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]},
+"exact": {"events": [{"t", "kind"}], "x_end_m"}}]}. "model" and "law" are labels only.
 Output (JSON on stdout): versions, machine and one point per problem x method x tolerance with
 the best-of-N time, rhs evaluations, event-time error against the exact events (matched in
 order) and x_end with its error. Only numpy and scipy are needed.
 """
 
+import bisect
 import json
 import math
 import platform
@@ -40,86 +47,62 @@ from scipy.integrate import solve_ivp
 STUCK_MAX_STEP_PER_PERIOD = 16
 
 
+class Piece:
+    """One piece of a force law: D and N_f affine in the basis b(t) on [start, end)."""
+
+    def __init__(self, piece):
+        self.start, self.end = piece["start"], piece["end"]
+        basis = piece["basis"]
+        if basis["kind"] == "linear":
+            t_ref = basis["t_ref"]
+            self.basis = lambda t: t - t_ref
+        elif basis["kind"] == "cos":
+            omega = basis["omega"]
+            self.basis = lambda t: math.cos(omega * t)
+        else:
+            raise ValueError("unknown basis kind %r" % basis["kind"])
+        self.d0, self.d1 = piece["drive"]["c0"], piece["drive"]["c1"]
+        self.n0, self.n1 = piece["normal"]["c0"], piece["normal"]["c1"]
+
+    def drive(self, t):
+        """D at time t within the period (N)."""
+        return self.d0 + self.d1 * self.basis(t)
+
+    def normal(self, t):
+        """N_f at time t within the period (N)."""
+        return self.n0 + self.n1 * self.basis(t)
+
+
 class Law:
-    """A force law: M, mu_s, mu_d, period, D(t), N_f(t), and the kinks within one period."""
+    """The body (M, mu_s, mu_d) under its periodic force law, both as the tool sends them."""
 
-    def __init__(self, mass, mu_s, mu_d, period, drive, normal, kinks):
-        self.mass, self.mu_s, self.mu_d = mass, mu_s, mu_d
-        self.period, self.drive, self.normal = period, drive, normal
-        self.kinks = sorted(k for k in kinks if 0.0 < k < period)
+    def __init__(self, body, force_law):
+        self.mass, self.mu_s, self.mu_d = body["mass"], body["mu_s"], body["mu_d"]
+        self.period = force_law["period"]
+        self.pieces = [Piece(p) for p in force_law["pieces"]]
+        self.ends = [p.end for p in self.pieces]
+        # The piece boundaries within the period: D or N_f may have a corner there.
+        self.kinks = [p.start for p in self.pieces[1:]]
 
+    def piece_at(self, t):
+        """The piece holding t (absolute, s) and the time within the period."""
+        local = t % self.period
+        i = bisect.bisect_right(self.ends, local)
+        return self.pieces[min(i, len(self.pieces) - 1)], local
 
-def triangle(t, period):
-    """|1 - 2 tau| with tau = (t mod T)/T: 1 at t = 0, 0 at T/2."""
-    tau = (t % period) / period
-    return abs(1.0 - 2.0 * tau)
+    def drive(self, t):
+        """D(t) at absolute time t (N)."""
+        piece, local = self.piece_at(t)
+        return piece.drive(local)
 
-
-def pulled_mass(p, law):
-    m, g, k, force = p["mass"], p["g"], p["k"], p["force"]
-    w = m * g
-    omega = math.sqrt(k / m)
-    period = 2.0 * math.pi / omega
-    if law == "harmonic":
-        normal = lambda t: w * (1.0 + math.cos(omega * t))
-        kinks = []
-    else:
-        normal = lambda t: 2.0 * w * triangle(t, period)
-        kinks = [0.5 * period]
-    return Law(2.0 * m, p["mu_s"], p["mu_d"], period, lambda t: force, normal, kinks)
-
-
-def counterpart(z0, d0, kind):
-    """(zeta0, delta0) of the linear counterpart of z0 + d0 cos wt (physics.md 3.1)."""
-    if kind == "extremes":
-        return d0, z0
-    ratio = z0 / d0
-    if abs(ratio) > 1.0:
-        raise ValueError("the %s counterpart needs |z0| <= d0" % kind)
-    if kind == "zeros":
-        return d0, d0 * (2.0 / math.pi) * math.asin(ratio)
-    zeta0 = math.sqrt(d0 * d0 - z0 * z0) / (2.0 / math.pi)
-    return zeta0, zeta0 * (2.0 / math.pi) * math.asin(ratio)
-
-
-def woodpecker(p, law):
-    k, ms, mw, g = p["k"], p["m_sleeve"], p["m_bird"], p["g"]
-    lam = p["lever"] if p.get("lever") is not None else p["l"] / p["h"]
-    mode = p.get("omega", "bird")
-    omega = {
-        "bird": math.sqrt(k / mw),
-        "reduced": math.sqrt(k * (ms + mw) / (ms * mw)),
-        "total": math.sqrt(k / (ms + mw)),
-    }[mode]
-    period = 2.0 * math.pi / omega
-    ws = ms * g
-    z0, d0 = p["z0"], p["d0"]
-    if law == "harmonic":
-        z = lambda t: z0 + d0 * math.cos(omega * t)
-        kinks = []
-        if abs(z0) < d0:
-            t1 = math.acos(-z0 / d0) / omega
-            kinks = [t1, period - t1]
-    else:
-        zeta0, delta0 = counterpart(z0, d0, p.get("counterpart", "zeros"))
-        tau = 0.25 * period
-
-        def z(t):
-            phase = (t % period) / tau
-            zeta = zeta0 * (1.0 - phase) if phase <= 2.0 else zeta0 * (phase - 3.0)
-            return delta0 + zeta
-
-        kinks = [2.0 * tau]
-        if abs(delta0) < zeta0:
-            kinks += [tau * (1.0 + delta0 / zeta0), tau * (3.0 - delta0 / zeta0)]
-    drive = lambda t: ws + k * z(t)
-    normal = lambda t: 2.0 * lam * k * abs(z(t))
-    return Law(ms, p["mu_s"], p["mu_d"], period, drive, normal, kinks)
+    def normal(self, t):
+        """N_f(t) at absolute time t (N)."""
+        piece, local = self.piece_at(t)
+        return piece.normal(local)
 
 
 def build_law(problem):
-    builder = pulled_mass if problem["model"] == "pulled-mass" else woodpecker
-    return builder(problem["params"], problem["law"])
+    return Law(problem["body"], problem["force_law"])
 
 
 def breakpoints(law, t_end):

@@ -8,6 +8,16 @@
 //!         (log-log interpolation on the Pareto front, see analysis::cost_at)
 //! ```
 //! Absent Python or SciPy is a plain statement in the report, never an error.
+//!
+//! The script holds no model: each problem's force law and body are sent as data, the engine's
+//! own [`ForceLaw`](crate::engine::ForceLaw) and [`Body`](crate::engine::Body) serialized:
+//!
+//! ```text
+//! "body":      {"mass", "mu_s", "mu_d"}
+//! "force_law": {"period", "pieces": [{"start", "end",
+//!                "basis": {"kind": "linear", "t_ref"} | {"kind": "cos", "omega"},
+//!                "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]}
+//! ```
 
 use std::io::Write;
 use std::path::PathBuf;
@@ -174,7 +184,8 @@ pub fn probe(machine: &mut Machine) -> Result<(), String> {
     }
 }
 
-/// The script's input: problems with their parameters and exact events, tolerances, repeats.
+/// The script's input: problems with their body, force law and exact events, tolerances,
+/// repeats.
 fn input(problems: &[(&BenchProblem, &Reference)], tolerances: &[f64], repeats: u32) -> String {
     let problems: Vec<serde_json::Value> = problems
         .iter()
@@ -183,7 +194,8 @@ fn input(problems: &[(&BenchProblem, &Reference)], tolerances: &[f64], repeats: 
                 "id": bp.id,
                 "model": bp.model,
                 "law": bp.law_id(),
-                "params": bp.params,
+                "body": bp.problem.body,
+                "force_law": bp.problem.law,
                 "periods": PERIODS,
                 "exact": { "events": r.events, "x_end_m": r.x_end_m },
             })
@@ -391,4 +403,156 @@ fn targets(ratios: &[RatioRow], problems: &[&String]) -> Vec<TargetRow> {
         });
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bench::problems::{boundary_problems, reference, sweep_problems};
+    use crate::engine::Affine;
+    use serde_json::Value;
+
+    /// The sweep and boundary problems (both models, both laws) and the script's input for them.
+    fn problems_and_input() -> (Vec<BenchProblem>, String) {
+        let mut problems = sweep_problems().unwrap();
+        problems.extend(boundary_problems().unwrap());
+        let references: Vec<Reference> = problems.iter().map(|bp| reference(bp).unwrap()).collect();
+        let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+        let text = input(&pairs, &[1e-6], 1);
+        (problems, text)
+    }
+
+    /// Times over several periods: every piece start and middle, and irregular ones.
+    fn times(bp: &BenchProblem) -> Vec<f64> {
+        let law = &bp.problem.law;
+        let mut out: Vec<f64> = (0..24).map(|k| f64::from(k) * 0.37 * law.period).collect();
+        for n in [0.0, 1.0, 7.0] {
+            for p in &law.pieces {
+                out.extend([
+                    n * law.period + p.start,
+                    n * law.period + 0.5 * (p.start + p.end),
+                ]);
+            }
+        }
+        out
+    }
+
+    fn number(v: &Value, key: &str) -> f64 {
+        v[key]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{key} is a number in {v}"))
+    }
+
+    /// D and N_f at absolute time t from a serialized force law, read the way the script reads
+    /// it: t mod period, the piece whose end is past it, c0 + c1·b.
+    fn evaluate(law: &Value, t: f64) -> (f64, f64) {
+        let local = t.rem_euclid(number(law, "period"));
+        let pieces = law["pieces"].as_array().expect("pieces");
+        let i = pieces.partition_point(|p| number(p, "end") <= local);
+        let p = &pieces[i.min(pieces.len() - 1)];
+        let basis = &p["basis"];
+        let b = match basis["kind"].as_str() {
+            Some("linear") => local - number(basis, "t_ref"),
+            Some("cos") => (number(basis, "omega") * local).cos(),
+            other => panic!("basis kind {other:?}"),
+        };
+        let at = |a: &Value| number(a, "c0") + number(a, "c1") * b;
+        (at(&p["drive"]), at(&p["normal"]))
+    }
+
+    /// |a − b| ≤ 1e-12·scale. serde_json's default float parsing (no `float_roundtrip`
+    /// feature) may be an ulp off, which t − t_ref and ωt amplify; Python's is exact, and the
+    /// script's forces are checked bit for bit below. A wrong piece or basis is off by far more.
+    fn close(a: f64, b: f64, scale: f64) -> bool {
+        (a - b).abs() <= 1e-12 * scale.abs()
+    }
+
+    #[test]
+    fn the_serialized_law_and_body_give_the_engines_forces() {
+        let (problems, text) = problems_and_input();
+        let input: Value = serde_json::from_str(&text).unwrap();
+        let sent = input["problems"].as_array().unwrap();
+        assert_eq!(sent.len(), problems.len());
+        for (bp, json) in problems.iter().zip(sent) {
+            let (body, b) = (&json["body"], bp.problem.body);
+            for (key, value) in [("mass", b.mass), ("mu_s", b.mu_s), ("mu_d", b.mu_d)] {
+                assert!(close(number(body, key), value, value), "{} {key}", bp.id);
+            }
+            let (law, period) = (&json["force_law"], bp.period());
+            assert!(close(number(law, "period"), period, period), "{}", bp.id);
+            let pieces = law["pieces"].as_array().unwrap();
+            assert_eq!(pieces.len(), bp.problem.law.pieces.len(), "{}", bp.id);
+            for t in times(bp) {
+                let (d, n) = bp.problem.forces(t);
+                let piece = bp.problem.law.piece_at(t);
+                let (sent_d, sent_n) = evaluate(law, t);
+                let scale = |a: Affine| a.c0.abs() + a.c1.abs();
+                assert!(
+                    close(sent_d, d, scale(piece.drive)) && close(sent_n, n, scale(piece.normal)),
+                    "{} at t = {t}: engine ({d}, {n}), sent ({sent_d}, {sent_n})",
+                    bp.id
+                );
+            }
+        }
+    }
+
+    /// The script itself evaluates the law it is sent (skipped without python3 and SciPy).
+    #[test]
+    fn the_script_evaluates_the_serialized_law_like_the_engine() {
+        if let Err(reason) = probe(&mut Machine::detect()) {
+            eprintln!("skipped: {reason}");
+            return;
+        }
+        let script = script_path().expect("bench/scipy_peer.py");
+        // The input text goes through verbatim: parsed here, it could lose an ulp (below).
+        let (problems, text) = problems_and_input();
+        let times_json = json!(problems.iter().map(times).collect::<Vec<_>>());
+        let request = format!(r#"{{"input": {text}, "times": {times_json}}}"#);
+        // The forces come back as the bits of the doubles: serde_json's default float parsing
+        // may be an ulp off, integers are exact.
+        const PROGRAM: &str = "\
+import importlib.util, json, struct, sys
+spec = importlib.util.spec_from_file_location('scipy_peer', sys.argv[1])
+peer = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(peer)
+bits = lambda x: struct.unpack('<Q', struct.pack('<d', x))[0]
+out = []
+request = json.load(sys.stdin)
+for p, times in zip(request['input']['problems'], request['times']):
+    law = peer.build_law(p)
+    out.append({'body': [bits(law.mass), bits(law.mu_s), bits(law.mu_d)],
+                'forces': [[bits(law.drive(t)), bits(law.normal(t))] for t in times]})
+json.dump(out, sys.stdout)
+";
+        let mut child = Command::new("python3")
+            .args(["-c", PROGRAM])
+            .arg(&script)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .spawn()
+            .expect("python3 starts");
+        child
+            .stdin
+            .take()
+            .unwrap()
+            .write_all(request.as_bytes())
+            .unwrap();
+        let out = child.wait_with_output().unwrap();
+        assert!(out.status.success(), "the evaluation script failed");
+        let got: Vec<Value> = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(got.len(), problems.len());
+        let bits = |x: f64| json!(x.to_bits());
+        for (bp, got) in problems.iter().zip(&got) {
+            let b = bp.problem.body;
+            let body = json!([bits(b.mass), bits(b.mu_s), bits(b.mu_d)]);
+            assert_eq!(got["body"], body, "{}", bp.id);
+            let forces = got["forces"].as_array().unwrap();
+            assert_eq!(forces.len(), times(bp).len());
+            for (t, f) in times(bp).into_iter().zip(forces) {
+                // Same operations on the same doubles (cos from the same libm): the same bits.
+                let (d, n) = bp.problem.forces(t);
+                assert_eq!(f, &json!([bits(d), bits(n)]), "{} at t = {t}", bp.id);
+            }
+        }
+    }
 }

@@ -1,10 +1,14 @@
 //! Force laws as data: a period tiled by pieces on which the driving force D and the
 //! friction-bearing normal force N_f are affine in one basis function b(t).
 
+use serde::Serialize;
+
 use crate::error::{Error, Result};
 
-/// The basis function b(t) of a piece; t is the time within the period (s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The basis function b(t) of a piece; t is the time within the period (s). Serialized as
+/// `{"kind": "linear", "t_ref": …}` or `{"kind": "cos", "omega": …}`.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Basis {
     /// b(t) = t − t_ref (s): the triangle-wave (linearized) laws.
     Linear { t_ref: f64 },
@@ -24,7 +28,7 @@ impl Basis {
 }
 
 /// An affine function of the basis, c0 + c1·b(t) (units of the quantity it stands for).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Affine {
     pub c0: f64,
     pub c1: f64,
@@ -49,7 +53,7 @@ impl Affine {
 }
 
 /// One piece of a force law, on [start, end) within the period (s).
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Piece {
     pub start: f64,
     pub end: f64,
@@ -73,7 +77,7 @@ impl Piece {
 }
 
 /// A periodic force law: pieces tiling [0, period).
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ForceLaw {
     /// Period T (s).
     pub period: f64,
@@ -135,7 +139,7 @@ impl ForceLaw {
 }
 
 /// The body: inertial mass and friction coefficients.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Body {
     /// Inertial mass M (kg).
     pub mass: f64,
@@ -143,4 +147,73 @@ pub struct Body {
     pub mu_s: f64,
     /// Dynamic friction coefficient μd ≤ μs.
     pub mu_d: f64,
+}
+
+impl Body {
+    /// Acceleration while slipping (m/s²), from Newton's law M dv/dt = D − s μd N_f:
+    ///
+    /// ```text
+    /// a = (D − s·μd·N_f) / M
+    /// ```
+    ///
+    /// `drive` is D (N), positive along the motion axis; `normal` is N_f ≥ 0 (N); `s` = ±1 is
+    /// the direction of slip (the sign of v), so that kinetic friction −s·μd·N_f opposes the
+    /// motion.
+    #[inline]
+    pub fn slip_acceleration(&self, drive: f64, normal: f64, s: f64) -> f64 {
+        (drive - s * self.mu_d * normal) / self.mass
+    }
+
+    /// [`Body::slip_acceleration`] on a piece where D and N_f are affine in b(t): the same
+    /// a = (D − s·μd·N_f)/M (m/s²), linear in (D, N_f), formed on the coefficients as
+    /// (1/M)·D_i + (−s·μd/M)·N_i. Evaluated at b(t) it agrees with the pointwise form to
+    /// rounding, not bit for bit: the engine's events and the committed reports are computed
+    /// with this order, so it is kept.
+    #[inline]
+    pub fn slip_acceleration_affine(&self, drive: Affine, normal: Affine, s: f64) -> Affine {
+        Affine::combine(1.0 / self.mass, drive, -s * self.mu_d / self.mass, normal)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn slip_acceleration_opposes_the_direction_of_slip() {
+        // M 2 kg, μd 0.25, D 3 N, N_f 4 N: friction is 1 N against the motion.
+        let body = Body {
+            mass: 2.0,
+            mu_s: 0.4,
+            mu_d: 0.25,
+        };
+        assert_eq!(body.slip_acceleration(3.0, 4.0, 1.0), 1.0);
+        assert_eq!(body.slip_acceleration(3.0, 4.0, -1.0), 2.0);
+        assert_eq!(body.slip_acceleration(-3.0, 4.0, -1.0), -1.0);
+        // On coefficients: D = 3 + 0.5 b, N_f = 4 − 2 b.
+        let a = body.slip_acceleration_affine(Affine::new(3.0, 0.5), Affine::new(4.0, -2.0), 1.0);
+        assert_eq!(a, Affine::new(1.0, 0.5));
+    }
+
+    #[test]
+    fn affine_slip_acceleration_agrees_with_the_pointwise_form() {
+        let body = Body {
+            mass: 0.12,
+            mu_s: 0.4,
+            mu_d: 0.35,
+        };
+        let (drive, normal) = (Affine::new(0.1, 0.03), Affine::new(1.1772, -0.7));
+        for s in [1.0, -1.0] {
+            let a = body.slip_acceleration_affine(drive, normal, s);
+            for b in [-1.0, -0.3, 0.0, 0.7, 1.0] {
+                let pointwise = body.slip_acceleration(drive.at(b), normal.at(b), s);
+                let scale = (drive.at(b).abs() + body.mu_d * normal.at(b).abs()) / body.mass;
+                assert!(
+                    (a.at(b) - pointwise).abs() <= 8.0 * f64::EPSILON * scale,
+                    "s {s}, b {b}: {} vs {pointwise}",
+                    a.at(b)
+                );
+            }
+        }
+    }
 }

@@ -276,12 +276,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     continue;
                 }
                 let s = f64::from(dir);
-                let accel = Affine::combine(
-                    1.0 / body.mass,
-                    piece.drive,
-                    -s * body.mu_d / body.mass,
-                    piece.normal,
-                );
+                let accel = body.slip_acceleration_affine(piece.drive, piece.normal, s);
                 let arc = Arc::new(piece.basis, accel, t, x, v);
                 let slide = slide(&arc, dir, piece, t, &mut accel_sign, |tm| {
                     rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));

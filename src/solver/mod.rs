@@ -108,7 +108,7 @@ impl Problem {
     /// Acceleration while slipping in direction `s` (m/s²): (D − s μd N_f)/M.
     pub fn slip_acceleration(&self, t: f64, s: f64) -> f64 {
         let (d, n) = self.forces(t);
-        (d - s * self.body.mu_d * n) / self.body.mass
+        self.body.slip_acceleration(d, n, s)
     }
 
     /// Static switching function for direction `s`: s·D − μs N_f (N); the body leaves rest in

@@ -173,7 +173,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
         let a_at = |t: f64| {
             pulled_mass::force_law(p, LawKind::Linear)
                 .ok()
-                .map(|law| (law.drive(t) - body.mu_d * law.normal(t)) / body.mass)
+                .map(|law| body.slip_acceleration(law.drive(t), law.normal(t), 1.0))
         };
         let a = t_of(first.slip).and_then(a_at);
         out.push(Check::measured_on_scale(

@@ -343,7 +343,7 @@ fn checks(
     let body = woodpecker::body(p);
     let accel_at = |t: f64| {
         law.as_ref()
-            .map(|l| (l.drive(t) - body.mu_d * l.normal(t)) / body.mass)
+            .map(|l| body.slip_acceleration(l.drive(t), l.normal(t), 1.0))
     };
     // The slips to measure: the orbit's, from a settled period; or, in continuous slip, the
     // first slip from rest in the first period.
