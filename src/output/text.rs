@@ -229,7 +229,7 @@ fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmo
     );
     let (hp, lp) = (power_rows(harmonic), power_rows(linear));
     for ((name, h), (_, l)) in hp.into_iter().zip(lp) {
-        row(out, name, s(h), s(l));
+        row(out, &name, s(h), s(l));
     }
     let laws: &[(&str, &Summary)] = if harmonic_only {
         &[("harmonic", harmonic)]
@@ -258,27 +258,11 @@ fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmo
     }
 }
 
-fn power_rows(s: &Summary) -> Vec<(&'static str, Option<f64>)> {
-    match s.power {
-        crate::results::Power::PulledMass {
-            power,
-            power_friction,
-        } => {
-            vec![
-                ("power F v̄ (W)", power),
-                ("friction dissipation (W)", power_friction),
-            ]
-        }
-        crate::results::Power::Woodpecker {
-            power_weight,
-            power_friction,
-        } => {
-            vec![
-                ("power W_S v̄ (W)", power_weight),
-                ("friction dissipation (W)", power_friction),
-            ]
-        }
-    }
+fn power_rows(s: &Summary) -> Vec<(String, Option<f64>)> {
+    vec![
+        (format!("power {} (W)", s.power.symbol), s.power.driving),
+        ("friction dissipation (W)".to_string(), s.power.friction),
+    ]
 }
 
 /// Renders the claims of the paper with their verdicts and numbers.

@@ -537,12 +537,6 @@ fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> Table {
         "mean speed v̄ (mm/s)",
         cell(&|s| sig(s.v_avg.map(|v| 1e3 * v), DIGITS)),
     );
-    push(
-        "friction dissipation (W)",
-        cell(&|s| match s.power {
-            crate::results::Power::PulledMass { power_friction, .. }
-            | crate::results::Power::Woodpecker { power_friction, .. } => opt(power_friction),
-        }),
-    );
+    push("friction dissipation (W)", cell(&|s| opt(s.power.friction)));
     Table { header, rows }
 }

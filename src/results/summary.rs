@@ -24,20 +24,27 @@ pub struct MaximumOut {
     pub phase: f64,
 }
 
-/// The power keys, which differ by model.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-#[serde(untagged)]
-pub enum Power {
-    /// Pulled mass: P = F v̄ (W), and the friction dissipation measured on the run (W).
-    PulledMass {
-        power: Option<f64>,
-        power_friction: Option<f64>,
-    },
-    /// Woodpecker: P_W = W_S v̄ (W), and the friction dissipation (W).
-    Woodpecker {
-        power_weight: Option<f64>,
-        power_friction: Option<f64>,
-    },
+/// The power of the driving force on the settled orbit and the friction dissipation measured
+/// on the run (W); serialized as `{key: driving, "power_friction": friction}`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Power {
+    /// The §7 key of the driving power: `power` (pulled mass, F v̄) or `power_weight`
+    /// (woodpecker, W_S v̄).
+    pub key: &'static str,
+    /// The driving power as a product ("F v̄", "W_S v̄").
+    pub symbol: &'static str,
+    pub driving: Option<f64>,
+    pub friction: Option<f64>,
+}
+
+impl Serialize for Power {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        let mut map = s.serialize_map(Some(2))?;
+        map.serialize_entry(self.key, &self.driving)?;
+        map.serialize_entry("power_friction", &self.friction)?;
+        map.end()
+    }
 }
 
 /// Summary of an exact integration of one law; keys as physics.md §7.

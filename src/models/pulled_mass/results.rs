@@ -73,9 +73,11 @@ pub fn evaluate_with_runs(
         harmonic: run_of(LawKind::Harmonic)?,
     };
     let summary_of = |run: &Run| {
-        Summary::new(run, &analyse(run), |v_avg, friction| Power::PulledMass {
-            power: v_avg.map(|v| p.force * v),
-            power_friction: friction,
+        Summary::new(run, &analyse(run), |v_avg, friction| Power {
+            key: "power",
+            symbol: "F v̄",
+            driving: v_avg.map(|v| p.force * v),
+            friction,
         })
     };
     let linear = summary_of(&runs.linear);
@@ -247,10 +249,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
 
 /// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation).
 fn push_steady(out: &mut Vec<Check>, s: &Summary, force: f64, v: f64, x: f64, suffix: &str) {
-    let dissipated = match s.power {
-        Power::PulledMass { power_friction, .. } => power_friction,
-        Power::Woodpecker { .. } => None,
-    };
+    let dissipated = s.power.friction;
     let (eq_v, eq_x, eq_p) = if suffix.is_empty() {
         ("(27)", "(30)", "(29)")
     } else {

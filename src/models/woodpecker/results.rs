@@ -100,9 +100,11 @@ pub fn evaluate_with_runs(
     };
     let w_s = p.sleeve_weight();
     let summary_of = |run: &Run| {
-        Summary::new(run, &analyse(run), |v_avg, friction| Power::Woodpecker {
-            power_weight: v_avg.map(|v| w_s * v),
-            power_friction: friction,
+        Summary::new(run, &analyse(run), |v_avg, friction| Power {
+            key: "power_weight",
+            symbol: "W_S v̄",
+            driving: v_avg.map(|v| w_s * v),
+            friction,
         })
     };
     let linear = runs.linear.as_ref().map(summary_of);
