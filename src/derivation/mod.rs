@@ -18,7 +18,7 @@ pub use expr::Expr;
 
 pub use crate::models::pulled_mass::derivation::pulled_mass;
 pub use crate::models::woodpecker::derivation::woodpecker;
-use crate::results::quantity::{find, Quantity};
+use crate::results::quantity::Registry;
 use crate::results::Applicability;
 
 /// One worked step: a closed form, the numbers put in, the result.
@@ -102,8 +102,8 @@ impl Step {
 
 /// Collects the steps of one model in order; each step's symbol and value become a quantity
 /// leaf for the steps after it.
-pub(crate) struct Steps<'a> {
-    table: &'static [Quantity],
+pub(crate) struct Steps<'a, K> {
+    model: std::marker::PhantomData<K>,
     /// (key, equation, unit) of the §7 `params` keys with a step (W, ω, T, …).
     params: &'static [(&'static str, &'static str, &'static str)],
     applicability: &'a [Applicability],
@@ -113,14 +113,13 @@ pub(crate) struct Steps<'a> {
     pub(crate) steps: Vec<Step>,
 }
 
-impl<'a> Steps<'a> {
+impl<'a, K: Registry> Steps<'a, K> {
     pub(crate) fn new(
-        table: &'static [Quantity],
         params: &'static [(&'static str, &'static str, &'static str)],
         applicability: &'a [Applicability],
     ) -> Self {
         Steps {
-            table,
+            model: std::marker::PhantomData,
             params,
             applicability,
             fallback: None,
@@ -137,8 +136,8 @@ impl<'a> Steps<'a> {
         expr: Expr,
         value: Option<f64>,
     ) -> Expr {
-        let (equation, unit) = match find(self.table, key) {
-            Some(q) => (q.equation, q.unit),
+        let (equation, unit) = match K::from_id(key) {
+            Some(k) => (k.quantity().equation, k.quantity().unit),
             None => self
                 .params
                 .iter()

@@ -17,11 +17,12 @@ use serde::Serialize;
 use crate::claims::{self, Sample};
 use crate::derivation;
 use crate::error::{Error, Result};
+use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
 use crate::report::context::{FigureCtx, SceneCtx};
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
 use crate::report::scene::Setup;
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
-use crate::results::quantity::{find, PULLED_MASS, WOODPECKER};
+use crate::results::quantity::Registry;
 use physics::Note;
 
 mod layout;
@@ -189,9 +190,13 @@ pub fn build(scene: &Scene) -> Result<Handout> {
 /// same reason, and definitions that do not apply, are left out and named in one line per
 /// reason ("t_ST, v̄: why").
 fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
-    let (steps, table) = match setup {
-        Setup::PulledMass(p) => (derivation::pulled_mass(p), PULLED_MASS),
-        Setup::Woodpecker(p) => (derivation::woodpecker(p), WOODPECKER),
+    let steps = match setup {
+        Setup::PulledMass(p) => derivation::pulled_mass(p),
+        Setup::Woodpecker(p) => derivation::woodpecker(p),
+    };
+    let symbol_of = |key: &'static str| match setup {
+        Setup::PulledMass(_) => pm::Key::from_id(key).map(|k| k.quantity().symbol),
+        Setup::Woodpecker(_) => wp::Key::from_id(key).map(|k| k.quantity().symbol),
     };
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
@@ -210,7 +215,7 @@ fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
         };
         if let Some(reason) = step.reason.as_deref() {
             if !matches!(note, Note::Sentence(_)) || in_place.contains(&reason) {
-                let symbol = find(table, step.key).map_or(step.key, |q| q.symbol);
+                let symbol = symbol_of(step.key).unwrap_or(step.key);
                 match left_out.iter_mut().find(|(r, _)| *r == reason) {
                     Some((_, symbols)) => symbols.push(symbol),
                     None => left_out.push((reason, vec![symbol])),

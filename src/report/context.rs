@@ -4,15 +4,15 @@
 use serde::Serialize;
 
 use crate::error::Result;
+use crate::models::pulled_mass::{quantity as pm, results as pulled_mass};
 use crate::models::woodpecker::formula::Counterpart;
-use crate::models::woodpecker::results::orbit_regime_id;
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
+use crate::models::woodpecker::{quantity as wp, results as woodpecker};
 use crate::output::format::{rel, sig};
 use crate::params::{PulledMassParams, WoodpeckerParams};
 use crate::report::math::mathml;
 use crate::report::scene::{Scene, Setup};
 use crate::report::writer::OutFile;
-use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
+use crate::results::quantity::{Quantity, Registry};
 use crate::results::{Applicability, Check, CheckValue, Summary};
 
 /// Significant digits of the tables.
@@ -251,8 +251,7 @@ fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
         integration_regime("linearized law, exact integration", &e.linear),
         integration_regime("harmonic law, exact integration", &e.harmonic),
     ];
-    let values = serde_json::to_value(c).unwrap_or_default();
-    fill_checks(&mut ctx, PULLED_MASS, &values, &e.checks, &e.applicability);
+    fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
     ctx.linearization = laws_table(
         &[
             ("harmonic", Some(&e.harmonic)),
@@ -329,7 +328,7 @@ fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
     let c = &e.closed_form;
     ctx.regimes = vec![RegimeRow {
         law: "linearized law, closed forms (§3.6)".to_string(),
-        regime: orbit_regime_id(c.regime).to_string(),
+        regime: c.regime.id().to_string(),
         why: format!(
             "paper's standard regime (both sticks within their half periods): {}; immediate \
              slip (38): {}",
@@ -348,8 +347,7 @@ fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
         &e.harmonic,
     ));
     ctx.domain_note = e.domain_note.clone().unwrap_or_default();
-    let values = serde_json::to_value(c).unwrap_or_default();
-    fill_checks(&mut ctx, WOODPECKER, &values, &e.checks, &e.applicability);
+    fill_checks(&mut ctx, |k: wp::Key| c.get(k), &e.checks, &e.applicability);
     // Harmonic against each linear counterpart.
     let mut columns: Vec<(String, Option<Summary>)> = vec![("harmonic".into(), Some(e.harmonic))];
     for cp in [
@@ -372,30 +370,29 @@ fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
     Ok(ctx)
 }
 
-/// The verification rows: every closed form with its check (or why it has none), then the
-/// checks of quantities outside the table (orbit, regime).
-fn fill_checks(
+/// The verification rows: every closed form of model `K` with its check (or why it has none),
+/// then the checks of quantities outside the table (orbit, regime).
+fn fill_checks<K: Registry>(
     ctx: &mut SceneCtx,
-    table: &'static [Quantity],
-    values: &serde_json::Value,
+    get: impl Fn(K) -> Option<f64>,
     checks: &[Check],
     applicability: &[Applicability],
 ) {
     let mut rows = Vec::new();
-    for q in table {
-        let closed = values.get(q.key).and_then(serde_json::Value::as_f64);
-        let check = checks.iter().find(|c| c.quantity == q.key);
+    for e in K::numbers() {
+        let q = &e.quantity;
+        let closed = get(e.key);
+        let check = checks.iter().find(|c| c.quantity == q.id);
         let note = applicability
             .iter()
-            .find(|a| a.quantity == q.key && !a.applies)
+            .find(|a| a.quantity == q.id && !a.applies)
             .map(|a| a.reason.clone());
         rows.push(match (check, note) {
             (Some(c), _) => check_row(q, c),
             (None, Some(note)) => plain_row(q, closed, "n/a", "na", note),
             (None, None) => {
-                let via_time = q.key.strip_prefix("tau_").map(|rest| format!("t_{rest}"));
-                let note = match via_time {
-                    Some(t) if checks.iter().any(|c| c.quantity == t) => {
+                let note = match e.key.time() {
+                    Some(t) if checks.iter().any(|c| c.quantity == t.id()) => {
                         "checked as t = T·τ (row below)"
                     }
                     _ => "no direct counterpart in the integration",
@@ -406,16 +403,20 @@ fn fill_checks(
     }
     for c in checks
         .iter()
-        .filter(|c| !table.iter().any(|q| q.key == c.quantity))
+        .filter(|c| !K::numbers().any(|e| e.quantity.id == c.quantity))
     {
-        let q = find(table, &c.quantity).copied().unwrap_or(Quantity {
-            key: "",
-            symbol: "",
-            unit: "",
-            equation: "§3.6",
-            tag: "[D]",
-            latex: "",
-        });
+        let q = K::from_id(&c.quantity)
+            .map(|k| *k.quantity())
+            .unwrap_or(Quantity {
+                id: "",
+                symbol: "",
+                tex: "",
+                unit: "",
+                equation: "§3.6",
+                tag: "[D]",
+                latex: "",
+                words: "",
+            });
         let mut r = check_row(&q, c);
         if r.symbol.is_empty() {
             r.symbol = c.quantity.replace('_', " ");

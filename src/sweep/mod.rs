@@ -299,7 +299,7 @@ fn evaluate_point(base: &Base, value: f64, periods: u32) -> Result<Point> {
             (
                 LawPoint::of(&e.harmonic),
                 e.linear.as_ref().map(LawPoint::of),
-                woodpecker::orbit_regime_id(e.closed_form.regime),
+                e.closed_form.regime.id(),
             )
         }),
     };

@@ -7,7 +7,7 @@ use rand::Rng;
 
 use crate::models::pulled_mass::formula as pm;
 use crate::models::woodpecker::formula as wp;
-use crate::models::woodpecker::results::{linear_inputs, orbit_regime_id};
+use crate::models::woodpecker::results::linear_inputs;
 use crate::params::{ModelName, PulledMassParams, WoodpeckerParams, G_STANDARD};
 
 /// One student's case: the model and its parameters (SI).
@@ -22,7 +22,7 @@ impl Case {
     pub fn regime(&self) -> &'static str {
         match self {
             Case::PulledMass(p) => pm::regime(p.phi(), p.mu_s, p.mu_d).id(),
-            Case::Woodpecker(p) => orbit_regime_id(wp::evaluate(&linear_inputs(p)).regime),
+            Case::Woodpecker(p) => wp::evaluate(&linear_inputs(p)).regime.id(),
         }
     }
 }

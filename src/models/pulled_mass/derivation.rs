@@ -5,9 +5,9 @@
 use crate::derivation::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::pulled_mass::formula as cf;
+use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::applicability;
 use crate::params::PulledMassParams;
-use crate::results::quantity::PULLED_MASS;
 
 /// Equation and unit of the §7 `params` keys with a step.
 const PARAMS: &[(&str, &str, &str)] = &[
@@ -26,7 +26,7 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
     let (period, phi_value) = (p.period(), p.phi());
     let c = cf::evaluate(p.g, period, p.force, phi_value, p.mu_s, p.mu_d);
     let notes = applicability(&c);
-    let mut s = Steps::new(PULLED_MASS, PARAMS, &notes);
+    let mut s = Steps::<Key>::new(PARAMS, &notes);
     let (m, g, k, f) = (
         given("m", p.mass),
         given("g", p.g),

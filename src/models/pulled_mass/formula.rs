@@ -7,6 +7,9 @@
 
 use serde::Serialize;
 
+use super::quantity::Key;
+use crate::results::quantity::{serialize_closed_form, Value};
+
 /// D ≡ μs² + 2μsμd − μd² (dimensionless), §1.3.
 pub fn big_d(mu_s: f64, mu_d: f64) -> f64 {
     mu_s * mu_s + 2.0 * mu_s * mu_d - mu_d * mu_d
@@ -213,8 +216,9 @@ pub fn regime(phi: f64, mu_s: f64, mu_d: f64) -> Regime {
     }
 }
 
-/// Every closed form of §1.3–1.5 for one parameter set; keys as physics.md §7.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// Every closed form of §1.3–1.5 for one parameter set. Serialized as the §7 `closed_form`
+/// object through the registry ([`super::quantity`]), which names every field.
+#[derive(Clone, Debug, PartialEq)]
 pub struct ClosedForm {
     pub phi: f64,
     pub tau_slip: f64,
@@ -242,6 +246,52 @@ pub struct ClosedForm {
     pub immediate_slip: bool,
     /// The same-period formulas (18)–(30) describe the motion (regime slip_stick).
     pub same_period_valid: bool,
+    /// P_late = F v̄_late, the power of the late-stick orbit (checked; not a §7 key).
+    pub power_late: Option<f64>,
+}
+
+impl ClosedForm {
+    /// The value of the quantity `key`.
+    pub fn value(&self, key: Key) -> Value {
+        match key {
+            Key::Phi => self.phi.into(),
+            Key::TauSlip => self.tau_slip.into(),
+            Key::TSlip => self.t_slip.into(),
+            Key::ASlip => self.a_slip.into(),
+            Key::TauMaxSpeed => self.tau_max_speed.into(),
+            Key::TMaxSpeed => self.t_max_speed.into(),
+            Key::VMax => self.v_max.into(),
+            Key::TauStick => self.tau_stick.into(),
+            Key::TStick => self.t_stick.into(),
+            Key::SlipDuration => self.slip_duration.into(),
+            Key::Theta => self.theta.into(),
+            Key::PhiStickMax => self.phi_stick_max.into(),
+            Key::PhiContinuous => self.phi_continuous.into(),
+            Key::MuMinEqual => self.mu_min_equal.into(),
+            Key::Gamma => self.gamma.into(),
+            Key::VAvg => self.v_avg.into(),
+            Key::AdvancePerPeriod => self.advance_per_period.into(),
+            Key::Power => self.power.into(),
+            Key::TauStickLate => self.tau_stick_late.into(),
+            Key::AdvancePerPeriodLate => self.advance_per_period_late.into(),
+            Key::VAvgLate => self.v_avg_late.into(),
+            Key::Regime => Value::Label(self.regime.id()),
+            Key::ImmediateSlip => self.immediate_slip.into(),
+            Key::SamePeriodValid => self.same_period_valid.into(),
+            Key::PowerLate => self.power_late.into(),
+        }
+    }
+
+    /// The number of the quantity `key` (`None` for a label or where it is undefined).
+    pub fn get(&self, key: Key) -> Option<f64> {
+        self.value(key).number()
+    }
+}
+
+impl Serialize for ClosedForm {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        serialize_closed_form(s, |key| self.value(key))
+    }
 }
 
 /// Evaluates every closed form for φ = F/W, μs, μd, g (m/s²), T (s) and F (N).
@@ -277,12 +327,15 @@ pub fn evaluate(g: f64, period: f64, force: f64, phi: f64, mu_s: f64, mu_d: f64)
         regime,
         immediate_slip: phi > 2.0 * mu_s,
         same_period_valid: regime == Regime::SlipStick,
+        power_late: advance_late.map(|x| power(force, x / period)),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::results::quantity::tests::serialized_keys_are_the_registry;
+    use crate::results::quantity::{Kind, Registry};
 
     const G: f64 = 9.81;
     const T: f64 = 0.229_429_488_381_819_04;
@@ -352,6 +405,32 @@ mod tests {
         close(c.phi_continuous, 0.254_556_168_6, "phi_c");
         assert_eq!(c.regime, Regime::ContinuousSlip);
         assert_eq!(c.tau_stick_late, None);
+    }
+
+    /// The §7 `closed_form` keys, in order.
+    const SECTION_7_KEYS: &str = "phi, tau_slip, t_slip, a_slip, tau_max_speed, t_max_speed, v_max, tau_stick, t_stick, slip_duration, theta, phi_stick_max, phi_continuous, mu_min_equal, gamma, v_avg, advance_per_period, power, tau_stick_late, advance_per_period_late, v_avg_late, regime, immediate_slip, same_period_valid";
+
+    #[test]
+    fn json_has_exactly_the_section_7_keys_in_order() {
+        let (mu_s, mu_d, f) = (0.4, 0.35, 0.10);
+        let c = evaluate(G, T, f, f / W, mu_s, mu_d);
+        let json = serde_json::to_value(&c).unwrap();
+        serialized_keys_are_the_registry::<Key>(&json);
+        let want: Vec<&str> = SECTION_7_KEYS.split(", ").collect();
+        let registry: Vec<&str> = Key::ENTRIES
+            .iter()
+            .filter(|e| e.kind != Kind::Checked)
+            .map(|e| e.quantity.id)
+            .collect();
+        assert_eq!(registry, want);
+        let text = serde_json::to_string(&c).unwrap();
+        let positions: Vec<usize> = want
+            .iter()
+            .map(|k| text.find(&format!("\"{k}\":")).unwrap())
+            .collect();
+        assert!(positions.windows(2).all(|w| w[0] < w[1]), "{text}");
+        assert_eq!(json["regime"], "slip_stick");
+        assert!(json["tau_stick_late"].is_null() && json.get("power_late").is_none());
     }
 
     #[test]

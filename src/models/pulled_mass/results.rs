@@ -6,9 +6,11 @@ use serde::Serialize;
 use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
+use crate::models::pulled_mass::quantity::Key;
 use crate::models::{pulled_mass, LawKind};
 use crate::params::{validate_periods, PulledMassParams};
 use crate::results::checks::Check;
+use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
 
@@ -140,9 +142,8 @@ pub fn applicability(c: &ClosedForm) -> Vec<Applicability> {
             _ => None,
         }
     };
-    crate::results::quantity::PULLED_MASS
-        .iter()
-        .map(|q| Applicability::new(q.key, reason(q.key)))
+    Key::numbers()
+        .map(|e| Applicability::new(e.quantity.id, reason(e.quantity.id)))
         .collect()
 }
 

@@ -6,9 +6,9 @@
 use crate::derivation::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::woodpecker::formula::{self as cf, Counterpart, Groups, PhaseClosedForm};
+use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
 use crate::params::{OmegaMode, WoodpeckerParams};
-use crate::results::quantity::WOODPECKER;
 
 /// Equation and unit of the §7 `params` keys with a step.
 const PARAMS: &[(&str, &str, &str)] = &[
@@ -115,7 +115,7 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
     let c = cf::evaluate(&lw);
     let note = domain_note(p, &c);
     let notes = applicability(&c, note.as_deref());
-    let mut s = Steps::new(WOODPECKER, PARAMS, &notes);
+    let mut s = Steps::<Key>::new(PARAMS, &notes);
     let (g, k) = (given("g", p.g), given("k", p.k));
     let (m_s, m_w) = (given("m_S", p.m_sleeve), given("m_W", p.m_bird));
     let (z0, d0) = (given("z_0", p.z0), given("d_0", p.d0));
@@ -262,7 +262,7 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
 
 /// The steps of one phase (§3.3, or §3.4 by the swap); returns the leaf of its Γ.
 fn phase(
-    s: &mut Steps,
+    s: &mut Steps<Key>,
     names: &PhaseNames,
     c: &Common,
     f: &Factors,

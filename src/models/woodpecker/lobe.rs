@@ -284,6 +284,20 @@ pub enum OrbitRegime {
     OutsideClosedFormDomain,
 }
 
+impl OrbitRegime {
+    /// The identifier used in JSON and reports (physics.md §3.6).
+    pub fn id(self) -> &'static str {
+        match self {
+            OrbitRegime::NoSlip => "no_slip",
+            OrbitRegime::DoubleSlipStick => "double_slip_stick",
+            OrbitRegime::DoubleSlipNoHalt => "double_slip_no_halt",
+            OrbitRegime::SingleSlipStick => "single_slip_stick",
+            OrbitRegime::ContinuousOrMultiperiod => "continuous_or_multiperiod",
+            OrbitRegime::OutsideClosedFormDomain => "outside_closed_form_domain",
+        }
+    }
+}
+
 /// One slip of the periodic orbit (SI). Times are measured from the start of the period in which
 /// the slip starts (0 ≤ t_slip < T) and are not reduced mod T: a halt may come after T (every
 /// phase-II slip that halts in A/A_late or B_late, and phase-I slips that halt in A_late).

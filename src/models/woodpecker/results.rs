@@ -212,7 +212,7 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                 (Some(note), _) => Some(note.to_string()),
                 (None, None) => Some(format!(
                     "no slip starts from rest in phase {name} on the periodic orbit ({})",
-                    orbit_regime_id(c.regime)
+                    c.regime.id()
                 )),
                 (None, Some(halt)) => match (j, halt) {
                     (0 | 1, _) => None,
@@ -261,18 +261,6 @@ fn halt_name(h: HaltKind) -> &'static str {
         HaltKind::BLate => "B_late",
         HaltKind::A => "A",
         HaltKind::ALate => "A_late",
-    }
-}
-
-/// The §7 identifier of a closed-form regime.
-pub fn orbit_regime_id(r: OrbitRegime) -> &'static str {
-    match r {
-        OrbitRegime::NoSlip => "no_slip",
-        OrbitRegime::DoubleSlipStick => "double_slip_stick",
-        OrbitRegime::DoubleSlipNoHalt => "double_slip_no_halt",
-        OrbitRegime::SingleSlipStick => "single_slip_stick",
-        OrbitRegime::ContinuousOrMultiperiod => "continuous_or_multiperiod",
-        OrbitRegime::OutsideClosedFormDomain => "outside_closed_form_domain",
     }
 }
 
@@ -395,7 +383,7 @@ fn checks(
     out.push(Check::label_agreeing(
         "regime",
         "§3.6",
-        orbit_regime_id(c.regime),
+        c.regime.id(),
         summary.regime.id(),
         regime_agrees(c.regime, summary.regime),
     ));

@@ -14,7 +14,7 @@ use crate::error::{Error, Result};
 use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, Phase, WoodpeckerClosedForm,
 };
-use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs, orbit_regime_id};
+use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs};
 use crate::models::{woodpecker, LawKind};
 use crate::params::{invalid, WoodpeckerParams};
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
@@ -395,7 +395,7 @@ fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
              and {} by the closed forms. Vertical lines: {about_markers}.",
             counterpart_name(p.counterpart),
             s.regime.id(),
-            orbit_regime_id(c.regime)
+            c.regime.id()
         ),
         (Some(s), Some(note)) => format!(
             "The linear law with the {} counterpart (dashed) is in the regime {} by integration; \
@@ -612,7 +612,7 @@ fn phase_chart(p: &WoodpeckerParams, phase: Phase) -> Result<(LineChart, String)
             "The parameters are outside the paper's standard regime (the closed forms find the \
              orbit {}): where a marker and the curve disagree, the formula does not describe \
              this motion.",
-            orbit_regime_id(c.regime)
+            c.regime.id()
         )
     };
     let caption = format!(
@@ -830,7 +830,7 @@ fn regime_index(id: &str) -> u8 {
 /// Regime of the linear orbit from the closed forms (§3.6).
 fn linear_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64) -> u8 {
     let q = WoodpeckerParams { mu_d, z0, ..*p };
-    regime_index(orbit_regime_id(closed_form(&q).regime))
+    regime_index(closed_form(&q).regime.id())
 }
 
 /// Regime of the harmonic law by exact integration over `periods` periods.
