@@ -144,7 +144,7 @@ impl<'a, K: Registry> Steps<'a, K> {
                 .find(|m| m.0 == key)
                 .map_or(("", ""), |m| (m.1, m.2)),
         };
-        let not_applicable = match self.applicability.iter().find(|a| a.quantity == key) {
+        let not_applicable = match self.applicability.iter().find(|a| a.quantity.id() == key) {
             Some(a) => (!a.applies).then(|| a.reason.clone()),
             None => self.fallback.map(str::to_string),
         };

@@ -148,7 +148,7 @@ proptest! {
     fn pulled_mass_trees_are_the_closed_forms(p in pulled_params()) {
         let e = pm_results::evaluate(&p, 4).unwrap();
         let json = serde_json::to_value(&e).unwrap();
-        let applies = |key: &str| e.applicability.iter().all(|a| a.quantity != key || a.applies);
+        let applies = |key: &str| e.applicability.iter().all(|a| a.quantity.id() != key || a.applies);
         check_steps(&pulled_mass(&p), &json, applies);
     }
 
@@ -159,7 +159,7 @@ proptest! {
         let phase_key = |key: &str| {
             key.ends_with("_1") || key.ends_with("_2")
         };
-        let applies = |key: &str| match e.applicability.iter().find(|a| a.quantity == key) {
+        let applies = |key: &str| match e.applicability.iter().find(|a| a.quantity.id() == key) {
             Some(a) => a.applies,
             None => e.domain_note.is_none() || !phase_key(key),
         };

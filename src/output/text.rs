@@ -37,7 +37,7 @@ pub fn pulled_mass(e: &Evaluation) -> String {
         regime_reason(e)
     );
     closed_form_table(&mut out, |k: pm::Key| c.get(k));
-    checks_table::<pm::Key>(&mut out, &e.checks);
+    checks_table(&mut out, &e.checks);
     laws_table(&mut out, &e.harmonic, Some(&e.linear));
     out
 }
@@ -87,11 +87,11 @@ pub fn woodpecker(e: &woodpecker::Evaluation) -> String {
     if !not_applying.is_empty() && e.domain_note.is_none() {
         let _ = writeln!(out, "\nformulas that do not describe this motion");
         for a in not_applying {
-            let symbol = wp::Key::from_id(a.quantity).map_or(a.quantity, |k| k.quantity().symbol);
+            let symbol = a.quantity.quantity().symbol;
             let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
         }
     }
-    checks_table::<wp::Key>(&mut out, &e.checks);
+    checks_table(&mut out, &e.checks);
     laws_table(&mut out, &e.harmonic, e.linear.as_ref());
     out
 }
@@ -134,7 +134,7 @@ fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f6
     }
 }
 
-fn checks_table<K: Registry>(out: &mut String, checks: &[Check]) {
+fn checks_table(out: &mut String, checks: &[Check]) {
     let passed = checks.iter().filter(|c| c.pass).count();
     let _ = writeln!(
         out,
@@ -148,7 +148,10 @@ fn checks_table<K: Registry>(out: &mut String, checks: &[Check]) {
         "quantity", "eq.", "closed form", "numeric", "rel.err"
     );
     for c in checks {
-        let symbol = K::from_id(&c.quantity).map_or(c.quantity.as_str(), |k| k.quantity().symbol);
+        let symbol = c
+            .quantity
+            .quantity()
+            .map_or(c.quantity.id(), |q| q.symbol.into());
         let _ = writeln!(
             out,
             "  {:<24} {:<18} {:>18} {:>18} {:>9}  {}",

@@ -13,7 +13,7 @@ use crate::report::math::mathml;
 use crate::report::scene::{Scene, Setup};
 use crate::report::writer::OutFile;
 use crate::results::quantity::{Quantity, Registry};
-use crate::results::{Applicability, Check, CheckValue, Summary};
+use crate::results::{Applicability, Check, CheckValue, Checked, Summary};
 
 /// Significant digits of the tables.
 const DIGITS: usize = 8;
@@ -382,17 +382,19 @@ fn fill_checks<K: Registry>(
     for e in K::numbers() {
         let q = &e.quantity;
         let closed = get(e.key);
-        let check = checks.iter().find(|c| c.quantity == q.id);
+        let check = checks
+            .iter()
+            .find(|c| c.quantity == Checked::Key(e.key.into()));
         let note = applicability
             .iter()
-            .find(|a| a.quantity == q.id && !a.applies)
+            .find(|a| a.quantity == e.key.into() && !a.applies)
             .map(|a| a.reason.clone());
         rows.push(match (check, note) {
             (Some(c), _) => check_row(q, c),
             (None, Some(note)) => plain_row(q, closed, "n/a", "na", note),
             (None, None) => {
                 let note = match e.key.time() {
-                    Some(t) if checks.iter().any(|c| c.quantity == t.id()) => {
+                    Some(t) if checks.iter().any(|c| c.quantity == Checked::Key(t.into())) => {
                         "checked as t = T·τ (row below)"
                     }
                     _ => "no direct counterpart in the integration",
@@ -403,23 +405,21 @@ fn fill_checks<K: Registry>(
     }
     for c in checks
         .iter()
-        .filter(|c| !K::numbers().any(|e| e.quantity.id == c.quantity))
+        .filter(|c| !K::numbers().any(|e| c.quantity == Checked::Key(e.key.into())))
     {
-        let q = K::from_id(&c.quantity)
-            .map(|k| *k.quantity())
-            .unwrap_or(Quantity {
-                id: "",
-                symbol: "",
-                tex: "",
-                unit: "",
-                equation: "§3.6",
-                tag: "[D]",
-                latex: "",
-                words: "",
-            });
+        let q = c.quantity.quantity().copied().unwrap_or(Quantity {
+            id: "",
+            symbol: "",
+            tex: "",
+            unit: "",
+            equation: "§3.6",
+            tag: "[D]",
+            latex: "",
+            words: "",
+        });
         let mut r = check_row(&q, c);
         if r.symbol.is_empty() {
-            r.symbol = c.quantity.replace('_', " ");
+            r.symbol = c.quantity.id().replace('_', " ");
         }
         rows.push(r);
     }

@@ -166,7 +166,7 @@ fn measured(
     let check = evaluated
         .checks
         .iter()
-        .find(|c| c.quantity == check && c.pass)?;
+        .find(|c| c.quantity.id() == check && c.pass)?;
     let CheckValue::Number(numeric) = check.numeric else {
         return None;
     };
@@ -201,7 +201,7 @@ fn regime(
     let check = evaluated
         .checks
         .iter()
-        .find(|c| c.quantity == "regime" && c.pass)?;
+        .find(|c| c.quantity.id() == "regime" && c.pass)?;
     let CheckValue::Text(numeric) = &check.numeric else {
         return None;
     };

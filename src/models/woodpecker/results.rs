@@ -9,9 +9,11 @@ use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
 };
 use crate::models::woodpecker::lobe::HaltKind;
+use crate::models::woodpecker::quantity::{Key, OrbitQuantity, Scope};
 use crate::models::{woodpecker, LawKind};
 use crate::params::{validate_periods, WoodpeckerParams};
 use crate::results::checks::Check;
+use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
 
@@ -161,33 +163,35 @@ pub fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<Str
     })
 }
 
-const PHASE_KEYS: [[&str; 8]; 2] = [
+/// The quantities of a phase's slip from rest ([`Scope::Slip`]), in the order of their
+/// applicability and checks.
+const PHASE_KEYS: [[Key; 8]; 2] = [
     [
-        "t_slip_1",
-        "a_slip_1",
-        "t_max_speed_1",
-        "v_max_1",
-        "t_stick_1",
-        "s_1",
-        "gamma_1",
-        "distance_1",
+        Key::TSlip1,
+        Key::ASlip1,
+        Key::TMaxSpeed1,
+        Key::VMax1,
+        Key::TStick1,
+        Key::S1,
+        Key::Gamma1,
+        Key::Distance1,
     ],
     [
-        "t_slip_2",
-        "a_slip_2",
-        "t_max_speed_2",
-        "v_max_2",
-        "t_stick_2",
-        "s_2",
-        "gamma_2",
-        "distance_2",
+        Key::TSlip2,
+        Key::ASlip2,
+        Key::TMaxSpeed2,
+        Key::VMax2,
+        Key::TStick2,
+        Key::S2,
+        Key::Gamma2,
+        Key::Distance2,
     ],
 ];
 
 /// For each paper formula of the phases and of the whole period: does it describe the motion?
 pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
     let mut out = Vec::new();
-    let mut push = |quantity: &'static str, reason: Option<String>| {
+    let mut push = |quantity: Key, reason: Option<String>| {
         out.push(Applicability::new(quantity, reason));
     };
     let orbit_slips: &[OrbitSlip] = c.orbit.as_ref().map_or(&[], |o| &o.slips);
@@ -244,8 +248,11 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                 .to_string(),
         )
     };
-    for key in ["gamma", "distance_per_period", "v_avg", "power_weight"] {
-        push(key, period_reason.clone());
+    for e in Key::ENTRIES
+        .iter()
+        .filter(|e| e.regimes == Scope::PaperRegime)
+    {
+        push(e.key, period_reason.clone());
     }
     out
 }
@@ -321,7 +328,11 @@ fn checks(
     run: &Run,
     summary: &Summary,
 ) -> Vec<Check> {
-    let applies = |key: &str| applicability.iter().any(|a| a.quantity == key && a.applies);
+    let applies = |key: Key| {
+        applicability
+            .iter()
+            .any(|a| a.quantity == key.into() && a.applies)
+    };
     let mut out = Vec::new();
     // A period of the settled orbit whose slips halt before the run ends (halts come < 2T
     // after the period start).
@@ -378,17 +389,17 @@ fn checks(
         }
     }
     if let Some(orbit) = &c.orbit {
-        push_period_checks(&mut out, c, orbit, summary, applies("v_avg"));
+        push_period_checks(&mut out, c, orbit, summary, applies(Key::VAvg));
     }
     out.push(Check::label_agreeing(
-        "regime",
+        Key::Regime,
         "§3.6",
         c.regime.id(),
         summary.regime.id(),
         regime_agrees(c.regime, summary.regime),
     ));
     out.push(Check::label(
-        "immediate_slip",
+        Key::ImmediateSlip,
         "(38)",
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
@@ -423,20 +434,20 @@ fn phase_values(c: &WoodpeckerClosedForm, phase: Phase) -> [Option<f64>; 8] {
 }
 
 /// The paper's equation of a phase key.
-fn equation(key: &str) -> &'static str {
+fn equation(key: Key) -> &'static str {
     match key {
-        "t_slip_1" => "(41)",
-        "a_slip_1" => "(45)",
-        "t_max_speed_1" => "(46)",
-        "v_max_1" => "(48)",
-        "t_stick_1" => "(49)",
-        "distance_1" => "(55)",
-        "t_slip_2" => "(58)",
-        "a_slip_2" => "(64)",
-        "t_max_speed_2" => "(62)",
-        "v_max_2" => "(63)",
-        "t_stick_2" => "(60)",
-        "distance_2" => "(68)",
+        Key::TSlip1 => "(41)",
+        Key::ASlip1 => "(45)",
+        Key::TMaxSpeed1 => "(46)",
+        Key::VMax1 => "(48)",
+        Key::TStick1 => "(49)",
+        Key::Distance1 => "(55)",
+        Key::TSlip2 => "(58)",
+        Key::ASlip2 => "(64)",
+        Key::TMaxSpeed2 => "(62)",
+        Key::VMax2 => "(63)",
+        Key::TStick2 => "(60)",
+        Key::Distance2 => "(68)",
         _ => "§3.6",
     }
 }
@@ -455,7 +466,7 @@ fn push_orbit_checks(
     if !stick_covered {
         let stick = m.and_then(|m| m.stick);
         out.push(Check::measured(
-            &format!("orbit_t_stick_{k}"),
+            OrbitQuantity::TStick { slip: k },
             "§3.6",
             slip.t_halt,
             stick.map(|e| e.t - start),
@@ -467,13 +478,19 @@ fn push_orbit_checks(
         }
         let measured = m.and_then(|m| m.maxima.get(j));
         out.push(Check::measured(
-            &format!("orbit_t_max_speed_{k}_{}", j + 1),
+            OrbitQuantity::TMaxSpeed {
+                slip: k,
+                maximum: j + 1,
+            },
             "§3.6",
             t,
             measured.map(|e| e.t - start),
         ));
         out.push(Check::measured(
-            &format!("orbit_v_max_{k}_{}", j + 1),
+            OrbitQuantity::VMax {
+                slip: k,
+                maximum: j + 1,
+            },
             "§3.6",
             v,
             measured.map(|e| e.v),
@@ -482,7 +499,7 @@ fn push_orbit_checks(
     if !distance_covered {
         let distance = m.and_then(|m| m.stick.map(|st| st.x - m.slip.x));
         out.push(Check::measured(
-            &format!("orbit_distance_{k}"),
+            OrbitQuantity::Distance { slip: k },
             "§3.6",
             slip.distance,
             distance,
@@ -501,19 +518,24 @@ fn push_period_checks(
     if paper_applies {
         if let (Some(y), Some(v)) = (c.distance_per_period, c.v_avg) {
             out.push(Check::measured(
-                "distance_per_period",
+                Key::DistancePerPeriod,
                 "(68),(69)",
                 y,
                 s.advance_per_period,
             ));
-            out.push(Check::measured("v_avg", "(71)", v, s.v_avg));
+            out.push(Check::measured(Key::VAvg, "(71)", v, s.v_avg));
         }
     }
     out.push(Check::measured(
-        "orbit_distance_per_period",
+        Key::OrbitDistancePerPeriod,
         "§3.6",
         orbit.distance_per_period,
         s.advance_per_period,
     ));
-    out.push(Check::measured("orbit_v_avg", "§3.6", orbit.v_avg, s.v_avg));
+    out.push(Check::measured(
+        Key::OrbitVAvg,
+        "§3.6",
+        orbit.v_avg,
+        s.v_avg,
+    ));
 }
