@@ -445,7 +445,7 @@ fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
             mathml(q.latex)
         },
         formula_tex: q.latex.to_string(),
-        equation: c.equation.clone(),
+        equation: c.equation.to_string(),
         tag: q.tag.to_string(),
         closed_form: value(&c.closed_form),
         numeric: value(&c.numeric),

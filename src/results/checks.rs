@@ -46,6 +46,15 @@ impl Checked {
         }
     }
 
+    /// The paper's equation of the quantity, or the physics.md section of a derived result:
+    /// the registry's.
+    pub fn equation(self) -> &'static str {
+        match self {
+            Checked::Key(k) => k.quantity().equation,
+            Checked::Orbit(_) => wp::ORBIT,
+        }
+    }
+
     /// How the quantity is shown, when it has an entry in a registry.
     pub fn quantity(self) -> Option<&'static Quantity> {
         match self {
@@ -96,8 +105,9 @@ impl Serialize for Checked {
 pub struct Check {
     /// The quantity checked (serialized as its §7 key).
     pub quantity: Checked,
-    /// Equation number in the paper, or the physics.md section of a derived result.
-    pub equation: String,
+    /// Equation number in the paper, or the physics.md section of a derived result (from the
+    /// registry: [`Checked::equation`]).
+    pub equation: &'static str,
     pub closed_form: CheckValue,
     pub numeric: CheckValue,
     /// |closed − numeric| / max(|closed|, |numeric|); null for labels.
@@ -108,23 +118,13 @@ pub struct Check {
 
 impl Check {
     /// A numeric check at the standard tolerance.
-    pub fn number(
-        quantity: impl Into<Checked>,
-        equation: &str,
-        closed_form: f64,
-        numeric: f64,
-    ) -> Self {
-        Self::measured(quantity, equation, closed_form, Some(numeric))
+    pub fn number(quantity: impl Into<Checked>, closed_form: f64, numeric: f64) -> Self {
+        Self::measured(quantity, closed_form, Some(numeric))
     }
 
     /// A numeric check whose numeric side may be missing; a missing value fails the check.
-    pub fn measured(
-        quantity: impl Into<Checked>,
-        equation: &str,
-        closed_form: f64,
-        numeric: Option<f64>,
-    ) -> Self {
-        Self::measured_on_scale(quantity, equation, closed_form, numeric, 0.0)
+    pub fn measured(quantity: impl Into<Checked>, closed_form: f64, numeric: Option<f64>) -> Self {
+        Self::measured_on_scale(quantity, closed_form, numeric, 0.0)
     }
 
     /// As [`Check::measured`], with the error taken relative to at least `scale`: for a
@@ -132,11 +132,11 @@ impl Check {
     /// acceleration at slip onset is (μs − μd) N/M, measured as D − μd N: scale g).
     pub fn measured_on_scale(
         quantity: impl Into<Checked>,
-        equation: &str,
         closed_form: f64,
         numeric: Option<f64>,
         scale: f64,
     ) -> Self {
+        let quantity = quantity.into();
         let rel_error = numeric.map(|n| {
             let scale = closed_form.abs().max(n.abs()).max(scale);
             if scale == 0.0 {
@@ -146,8 +146,8 @@ impl Check {
             }
         });
         Self {
-            quantity: quantity.into(),
-            equation: equation.to_string(),
+            quantity,
+            equation: quantity.equation(),
             closed_form: CheckValue::Number(closed_form),
             numeric: numeric.map_or(
                 CheckValue::Text("not observed".to_string()),
@@ -160,33 +160,22 @@ impl Check {
     }
 
     /// A check of a label (regime, flag): passes when both are equal.
-    pub fn label(
-        quantity: impl Into<Checked>,
-        equation: &str,
-        closed_form: &str,
-        numeric: &str,
-    ) -> Self {
-        Self::label_agreeing(
-            quantity,
-            equation,
-            closed_form,
-            numeric,
-            closed_form == numeric,
-        )
+    pub fn label(quantity: impl Into<Checked>, closed_form: &str, numeric: &str) -> Self {
+        Self::label_agreeing(quantity, closed_form, numeric, closed_form == numeric)
     }
 
     /// A check of two labels that agree when `agree` (e.g. a closed-form regime that admits
     /// several integration regimes).
     pub fn label_agreeing(
         quantity: impl Into<Checked>,
-        equation: &str,
         closed_form: &str,
         numeric: &str,
         agree: bool,
     ) -> Self {
+        let quantity = quantity.into();
         Self {
-            quantity: quantity.into(),
-            equation: equation.to_string(),
+            quantity,
+            equation: quantity.equation(),
             closed_form: CheckValue::Text(closed_form.to_string()),
             numeric: CheckValue::Text(numeric.to_string()),
             rel_error: None,
@@ -203,23 +192,25 @@ mod tests {
 
     #[test]
     fn relative_error_and_verdict() {
-        let c = Check::number(pm::Key::VMax, "(26)", 2.0, 2.0 * (1.0 + 2e-9));
+        let c = Check::number(pm::Key::VMax, 2.0, 2.0 * (1.0 + 2e-9));
         assert!(!c.pass);
         assert!((c.rel_error.unwrap() - 2e-9).abs() < 1e-15);
-        assert!(Check::number(pm::Key::Phi, "", 0.0, 0.0).pass);
-        assert!(!Check::label(pm::Key::Regime, "", "a", "b").pass);
+        assert!(Check::number(pm::Key::Phi, 0.0, 0.0).pass);
+        assert!(!Check::label(pm::Key::Regime, "a", "b").pass);
     }
 
     #[test]
     fn a_check_is_serialized_with_the_name_of_its_quantity() {
-        let c = Check::number(wp::Key::TSlip1, "(41)", 1.0, 1.0);
+        let c = Check::number(wp::Key::TSlip1, 1.0, 1.0);
         let json = serde_json::to_value(&c).unwrap();
         assert_eq!(json["quantity"], wp::Key::TSlip1.id());
+        assert_eq!(json["equation"], wp::Key::TSlip1.quantity().equation);
         let orbit = wp::OrbitQuantity::VMax {
             slip: 2,
             maximum: 1,
         };
-        let json = serde_json::to_value(Check::number(orbit, "", 1.0, 1.0)).unwrap();
+        let json = serde_json::to_value(Check::number(orbit, 1.0, 1.0)).unwrap();
         assert_eq!(json["quantity"], "orbit_v_max_2_1");
+        assert_eq!(json["equation"], wp::ORBIT);
     }
 }

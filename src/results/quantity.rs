@@ -219,6 +219,8 @@ pub(crate) mod tests {
             assert!(!q.id.is_empty() && !q.symbol.is_empty() && !q.tex.is_empty());
             assert!(!q.equation.is_empty() && !q.tag.is_empty() && !q.latex.is_empty());
             assert!(!q.words.is_empty(), "{}", q.id);
+            // The tag is shown beside the equation; an equation that carries it prints it twice.
+            assert!(!q.equation.contains('['), "{}: {}", q.id, q.equation);
             let twins = K::ENTRIES.iter().filter(|f| f.quantity.id == q.id).count();
             assert_eq!(twins, 1, "{}", q.id);
         }

@@ -155,12 +155,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
     let t_of = |e: Option<Event>| e.map(|e| e.t);
     let mut out = Vec::new();
     if !c.immediate_slip {
-        out.push(Check::measured(
-            Key::TSlip,
-            "(13),(25)",
-            c.t_slip,
-            t_of(first.slip),
-        ));
+        out.push(Check::measured(Key::TSlip, c.t_slip, t_of(first.slip)));
         // a just after the onset, from the force law at the located slip time.
         let body = pulled_mass::body(p);
         let a_at = |t: f64| {
@@ -169,24 +164,16 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 .map(|law| (law.drive(t) - body.mu_d * law.normal(t)) / body.mass)
         };
         let a = t_of(first.slip).and_then(a_at);
-        out.push(Check::measured_on_scale(
-            Key::ASlip,
-            "§1.3 [D]",
-            c.a_slip,
-            a,
-            p.g,
-        ));
+        out.push(Check::measured_on_scale(Key::ASlip, c.a_slip, a, p.g));
         // τ_M < 1: the first maximum is the (17) one, in every non-immediate regime.
         if c.tau_max_speed < 1.0 {
             out.push(Check::measured(
                 Key::TMaxSpeed,
-                "(17)",
                 c.t_max_speed,
                 t_of(first.maximum),
             ));
             out.push(Check::measured(
                 Key::VMax,
-                "(26)",
                 c.v_max,
                 first.maximum.map(|e| e.v),
             ));
@@ -196,10 +183,9 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
         Regime::SlipStick => {
             let stick = t_of(first.stick);
             let duration = stick.zip(t_of(first.slip)).map(|(st, sl)| st - sl);
-            out.push(Check::measured(Key::TStick, "(18),(25)", c.t_stick, stick));
+            out.push(Check::measured(Key::TStick, c.t_stick, stick));
             out.push(Check::measured(
                 Key::SlipDuration,
-                "(21)",
                 c.slip_duration,
                 duration,
             ));
@@ -207,9 +193,9 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 &mut out,
                 summary,
                 [
-                    (Key::VAvg, "(27)", c.v_avg),
-                    (Key::AdvancePerPeriod, "(30)", c.advance_per_period),
-                    (Key::Power, "(29)", c.power),
+                    (Key::VAvg, c.v_avg),
+                    (Key::AdvancePerPeriod, c.advance_per_period),
+                    (Key::Power, c.power),
                 ],
             );
         }
@@ -221,14 +207,14 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 c.power_late,
             ) {
                 let tau = t_of(first.stick).map(|t| t / run.period);
-                out.push(Check::measured(Key::TauStickLate, "§1.4", late, tau));
+                out.push(Check::measured(Key::TauStickLate, late, tau));
                 push_steady(
                     &mut out,
                     summary,
                     [
-                        (Key::VAvgLate, "§1.4", v),
-                        (Key::AdvancePerPeriodLate, "§1.4", x),
-                        (Key::PowerLate, "(29) with v̄_late", power),
+                        (Key::VAvgLate, v),
+                        (Key::AdvancePerPeriodLate, x),
+                        (Key::PowerLate, power),
                     ],
                 );
             }
@@ -237,29 +223,27 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
     }
     out.push(Check::label(
         Key::Regime,
-        "§1.5",
         expected_integration_regime(c.regime),
         summary.regime.id(),
     ));
     out.push(Check::label(
         Key::ImmediateSlip,
-        "φ > 2μs",
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
     ));
     out
 }
 
-/// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation): the keys, their
-/// equations and closed-form values, same-period or late.
-fn push_steady(out: &mut Vec<Check>, s: &Summary, [v, x, power]: [(Key, &str, f64); 3]) {
+/// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation): the keys and
+/// their closed-form values, same-period or late.
+fn push_steady(out: &mut Vec<Check>, s: &Summary, [v, x, power]: [(Key, f64); 3]) {
     let dissipated = match s.power {
         Power::PulledMass { power_friction, .. } => power_friction,
         Power::Woodpecker { .. } => None,
     };
-    out.push(Check::measured(v.0, v.1, v.2, s.v_avg));
-    out.push(Check::measured(x.0, x.1, x.2, s.advance_per_period));
-    out.push(Check::measured(power.0, power.1, power.2, dissipated));
+    out.push(Check::measured(v.0, v.1, s.v_avg));
+    out.push(Check::measured(x.0, x.1, s.advance_per_period));
+    out.push(Check::measured(power.0, power.1, dissipated));
 }
 
 /// The first slip of a run from rest: its onset, first speed maximum and stick.

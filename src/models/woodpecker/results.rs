@@ -378,8 +378,7 @@ fn checks(
         for (j, value) in measured {
             if let (true, Some(closed)) = (applies(keys[j]), phase_values[j]) {
                 let scale = if j == 1 { p.g } else { 0.0 };
-                let eq = equation(keys[j]);
-                out.push(Check::measured_on_scale(keys[j], eq, closed, value, scale));
+                out.push(Check::measured_on_scale(keys[j], closed, value, scale));
             }
         }
         if let Some(slip) = orbit_slip {
@@ -393,14 +392,12 @@ fn checks(
     }
     out.push(Check::label_agreeing(
         Key::Regime,
-        "§3.6",
         c.regime.id(),
         summary.regime.id(),
         regime_agrees(c.regime, summary.regime),
     ));
     out.push(Check::label(
         Key::ImmediateSlip,
-        "(38)",
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
     ));
@@ -433,25 +430,6 @@ fn phase_values(c: &WoodpeckerClosedForm, phase: Phase) -> [Option<f64>; 8] {
     }
 }
 
-/// The paper's equation of a phase key.
-fn equation(key: Key) -> &'static str {
-    match key {
-        Key::TSlip1 => "(41)",
-        Key::ASlip1 => "(45)",
-        Key::TMaxSpeed1 => "(46)",
-        Key::VMax1 => "(48)",
-        Key::TStick1 => "(49)",
-        Key::Distance1 => "(55)",
-        Key::TSlip2 => "(58)",
-        Key::ASlip2 => "(64)",
-        Key::TMaxSpeed2 => "(62)",
-        Key::VMax2 => "(63)",
-        Key::TStick2 => "(60)",
-        Key::Distance2 => "(68)",
-        _ => "§3.6",
-    }
-}
-
 /// Orbit checks of one slip: its halt time, every speed maximum and its distance (§3.6), less
 /// those a paper formula already checks (`covered`: stick, first maximum, distance).
 fn push_orbit_checks(
@@ -467,7 +445,6 @@ fn push_orbit_checks(
         let stick = m.and_then(|m| m.stick);
         out.push(Check::measured(
             OrbitQuantity::TStick { slip: k },
-            "§3.6",
             slip.t_halt,
             stick.map(|e| e.t - start),
         ));
@@ -482,7 +459,6 @@ fn push_orbit_checks(
                 slip: k,
                 maximum: j + 1,
             },
-            "§3.6",
             t,
             measured.map(|e| e.t - start),
         ));
@@ -491,7 +467,6 @@ fn push_orbit_checks(
                 slip: k,
                 maximum: j + 1,
             },
-            "§3.6",
             v,
             measured.map(|e| e.v),
         ));
@@ -500,7 +475,6 @@ fn push_orbit_checks(
         let distance = m.and_then(|m| m.stick.map(|st| st.x - m.slip.x));
         out.push(Check::measured(
             OrbitQuantity::Distance { slip: k },
-            "§3.6",
             slip.distance,
             distance,
         ));
@@ -519,23 +493,16 @@ fn push_period_checks(
         if let (Some(y), Some(v)) = (c.distance_per_period, c.v_avg) {
             out.push(Check::measured(
                 Key::DistancePerPeriod,
-                "(68),(69)",
                 y,
                 s.advance_per_period,
             ));
-            out.push(Check::measured(Key::VAvg, "(71)", v, s.v_avg));
+            out.push(Check::measured(Key::VAvg, v, s.v_avg));
         }
     }
     out.push(Check::measured(
         Key::OrbitDistancePerPeriod,
-        "§3.6",
         orbit.distance_per_period,
         s.advance_per_period,
     ));
-    out.push(Check::measured(
-        Key::OrbitVAvg,
-        "§3.6",
-        orbit.v_avg,
-        s.v_avg,
-    ));
+    out.push(Check::measured(Key::OrbitVAvg, orbit.v_avg, s.v_avg));
 }
