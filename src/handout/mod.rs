@@ -17,12 +17,10 @@ use serde::Serialize;
 use crate::claims::{self, Sample};
 use crate::derivation;
 use crate::error::{Error, Result};
-use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
 use crate::report::context::{FigureCtx, SceneCtx};
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
 use crate::report::scene::Setup;
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
-use crate::results::quantity::Registry;
 use physics::Note;
 
 mod layout;
@@ -194,10 +192,6 @@ fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
         Setup::PulledMass(p) => derivation::pulled_mass(p),
         Setup::Woodpecker(p) => derivation::woodpecker(p),
     };
-    let symbol_of = |key: &'static str| match setup {
-        Setup::PulledMass(_) => pm::Key::from_id(key).map(|k| k.quantity().symbol),
-        Setup::Woodpecker(_) => wp::Key::from_id(key).map(|k| k.quantity().symbol),
-    };
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
     let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();
@@ -215,7 +209,7 @@ fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
         };
         if let Some(reason) = step.reason.as_deref() {
             if !matches!(note, Note::Sentence(_)) || in_place.contains(&reason) {
-                let symbol = symbol_of(step.key).unwrap_or(step.key);
+                let symbol = step.key.symbol();
                 match left_out.iter_mut().find(|(r, _)| *r == reason) {
                     Some((_, symbols)) => symbols.push(symbol),
                     None => left_out.push((reason, vec![symbol])),
@@ -234,7 +228,7 @@ fn chain(setup: &Setup) -> (Vec<StepCtx>, Vec<String>) {
         };
         pieces.extend(step.result_tex().map(|r| format!("= {r}")));
         shown.push(StepCtx {
-            key: step.key.to_string(),
+            key: step.key.id().to_string(),
             equation: step.equation.to_string(),
             pieces: pieces.iter().map(|p| math::mathml(p)).collect(),
             tex: pieces.join(" "),

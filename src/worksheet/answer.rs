@@ -97,7 +97,9 @@ pub fn steps(case: &Case) -> Vec<Step> {
 
 /// The step of `key` with a value (its form applies), if any.
 fn applying<'a>(steps: &'a [Step], key: &str) -> Option<&'a Step> {
-    steps.iter().find(|s| s.key == key && s.value.is_some())
+    steps
+        .iter()
+        .find(|s| s.key.id() == key && s.value.is_some())
 }
 
 /// Whether every closed form the questions need applies to the case (cheap: no integration).
