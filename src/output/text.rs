@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use super::format::{rel, sig};
-use crate::models::pulled_mass::{quantity as pm, results::Evaluation};
+use crate::models::pulled_mass::{formula::Regime, quantity as pm, results::Evaluation};
 use crate::models::woodpecker::{quantity as wp, results as woodpecker};
 use crate::results::quantity::Registry;
 use crate::results::{Check, CheckValue, Summary};
@@ -104,11 +104,11 @@ fn regime_reason(e: &Evaluation) -> String {
         sig(Some(c.phi_stick_max), 6),
         sig(Some(c.phi_continuous), 6),
     );
-    match c.regime.id() {
-        "immediate_continuous_slip" => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
-        "slip_stick" => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
-        "slip_stick_late" => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
-        _ => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
+        Regime::SlipStick => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
+        Regime::ContinuousSlip => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
     }
 }
 

@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use crate::error::Result;
+use crate::models::pulled_mass::formula::{ClosedForm, Regime};
 use crate::models::pulled_mass::{quantity as pm, results as pulled_mass};
 use crate::models::woodpecker::formula::Counterpart;
 use crate::models::woodpecker::{quantity as wp, results as woodpecker};
@@ -263,14 +264,14 @@ fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
 }
 
 /// The §1.5 inequality that decides the pulled-mass regime, with numbers.
-fn pulled_regime_reason(c: &crate::models::pulled_mass::formula::ClosedForm, mu_s: f64) -> String {
+fn pulled_regime_reason(c: &ClosedForm, mu_s: f64) -> String {
     let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
     let two_mu_s = num(2.0 * mu_s);
-    match c.regime.id() {
-        "immediate_continuous_slip" => format!("φ = {phi} > 2μs = {two_mu_s}"),
-        "slip_stick" => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
-        "slip_stick_late" => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
-        _ => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("φ = {phi} > 2μs = {two_mu_s}"),
+        Regime::SlipStick => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
+        Regime::ContinuousSlip => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
     }
 }
 

@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 use super::quantity::Key;
+use crate::engine::IntegrationRegime;
 use crate::results::quantity::{serialize_closed_form, Value};
 
 /// D ≡ μs² + 2μsμd − μd² (dimensionless), §1.3.
@@ -177,9 +178,10 @@ pub fn advance_per_period_late(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f
     Some(g * period * period * sum)
 }
 
-/// Regime of the linearized pulled mass (§1.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+/// Regime of the linearized pulled mass (§1.5), serialized as its [`id`].
+///
+/// [`id`]: Regime::id
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Regime {
     /// φ > 2μs: slips at t = 0 and never sticks.
     ImmediateContinuousSlip,
@@ -192,6 +194,14 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// Every regime, in the order of φ.
+    pub const ALL: [Self; 4] = [
+        Self::SlipStick,
+        Self::SlipStickLate,
+        Self::ContinuousSlip,
+        Self::ImmediateContinuousSlip,
+    ];
+
     /// The identifier used in JSON and reports.
     pub fn id(self) -> &'static str {
         match self {
@@ -200,6 +210,32 @@ impl Regime {
             Self::SlipStickLate => "slip_stick_late",
             Self::ContinuousSlip => "continuous_slip",
         }
+    }
+
+    /// The regime in plain words.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::SlipStick => "a stick within the same period",
+            Self::SlipStickLate => "a stick early in the next period",
+            Self::ContinuousSlip => "continuous slip",
+            Self::ImmediateContinuousSlip => "continuous slip from t = 0",
+        }
+    }
+
+    /// The regime the exact integration of the linearized law shows.
+    pub fn integrated(self) -> IntegrationRegime {
+        match self {
+            Self::SlipStick | Self::SlipStickLate => IntegrationRegime::SingleSlipStick,
+            Self::ContinuousSlip | Self::ImmediateContinuousSlip => {
+                IntegrationRegime::ContinuousSlip
+            }
+        }
+    }
+}
+
+impl Serialize for Regime {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
     }
 }
 
@@ -405,6 +441,26 @@ mod tests {
         close(c.phi_continuous, 0.254_556_168_6, "phi_c");
         assert_eq!(c.regime, Regime::ContinuousSlip);
         assert_eq!(c.tau_stick_late, None);
+    }
+
+    #[test]
+    fn regimes_are_serialized_as_their_ids_and_named_once() {
+        for r in Regime::ALL {
+            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert!(!r.words().is_empty());
+            assert_eq!(Regime::ALL.iter().filter(|q| q.id() == r.id()).count(), 1);
+        }
+        for r in IntegrationRegime::ALL {
+            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert!(!r.words().is_empty());
+            assert_eq!(
+                IntegrationRegime::ALL
+                    .iter()
+                    .filter(|q| q.id() == r.id())
+                    .count(),
+                1
+            );
+        }
     }
 
     /// The §7 `closed_form` keys, in order.

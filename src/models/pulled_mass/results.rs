@@ -140,14 +140,6 @@ fn why_not(regime: Regime, describes: &[Regime]) -> String {
     }
 }
 
-/// The regime the linear integration must show for a closed-form regime.
-fn expected_integration_regime(regime: Regime) -> &'static str {
-    match regime {
-        Regime::SlipStick | Regime::SlipStickLate => "single_slip_stick",
-        Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => "continuous_slip",
-    }
-}
-
 /// Every closed form with a measurable counterpart on the linear run, in the regime where it
 /// describes the motion. A quantity the run should show but does not fails its check.
 fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) -> Vec<Check> {
@@ -223,7 +215,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
     }
     out.push(Check::label(
         Key::Regime,
-        expected_integration_regime(c.regime),
+        c.regime.integrated().id(),
         summary.regime.id(),
     ));
     out.push(Check::label(

@@ -274,15 +274,12 @@ fn halt_name(h: HaltKind) -> &'static str {
 /// Whether an integration regime is the one the closed-form regime predicts.
 fn regime_agrees(closed: OrbitRegime, numeric: IntegrationRegime) -> bool {
     use IntegrationRegime as I;
-    match closed {
-        OrbitRegime::NoSlip => numeric == I::NoSlip,
-        OrbitRegime::DoubleSlipStick => numeric == I::DoubleSlipStick,
-        OrbitRegime::DoubleSlipNoHalt => numeric == I::DoubleSlipNoHalt,
-        OrbitRegime::SingleSlipStick => numeric == I::SingleSlipStick,
-        OrbitRegime::ContinuousOrMultiperiod => {
+    match (closed, closed.integrated()) {
+        (_, Some(integrated)) => numeric == integrated,
+        (OrbitRegime::ContinuousOrMultiperiod, None) => {
             matches!(numeric, I::ContinuousSlip | I::Multiperiod | I::NotPeriodic)
         }
-        OrbitRegime::OutsideClosedFormDomain => false,
+        (_, None) => false,
     }
 }
 
