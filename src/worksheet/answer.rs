@@ -9,12 +9,14 @@ use super::figure::v_figure;
 use super::question::{Kind, Question};
 use super::sample::Case;
 use super::threshold::mu_d_sticking_at_half_period;
-use crate::derivation::{self, Step};
+use crate::derivation::{self, Step, StepKey};
 use crate::engine::Run;
 use crate::error::Result;
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
+use crate::models::pulled_mass::{quantity::Key as P, results as pulled_mass};
+use crate::models::woodpecker::{quantity::Key as W, results as woodpecker};
 use crate::params::{WoodpeckerParams, DEFAULT_PERIODS};
-use crate::results::{rel_diff, Check, CheckValue, TOLERANCE};
+use crate::results::quantity::AnyKey;
+use crate::results::{rel_diff, Check, CheckValue, Checked, TOLERANCE};
 
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
 /// (not so when the speed grows far beyond the first maximum, as in continuous slip).
@@ -96,19 +98,26 @@ pub fn steps(case: &Case) -> Vec<Step> {
 }
 
 /// The step of `key` with a value (its form applies), if any.
-fn applying<'a>(steps: &'a [Step], key: &str) -> Option<&'a Step> {
-    steps
+fn applying(steps: &[Step], key: impl Into<AnyKey>) -> Option<&Step> {
+    let key = StepKey::Quantity(key.into());
+    steps.iter().find(|s| s.key == key && s.value.is_some())
+}
+
+/// The passing check of `key` on the integration, if any.
+fn passing(evaluated: &Evaluated, key: AnyKey) -> Option<&Check> {
+    evaluated
+        .checks
         .iter()
-        .find(|s| s.key.id() == key && s.value.is_some())
+        .find(|c| c.quantity == Checked::Key(key) && c.pass)
 }
 
 /// Whether every closed form the questions need applies to the case (cheap: no integration).
 pub fn closed_forms_apply(steps: &[Step], questions: &[&Question]) -> bool {
     questions.iter().all(|q| match q.kind {
-        Kind::ClosedForm { step, .. }
-        | Kind::Threshold { step }
-        | Kind::ReadFigure { step, .. } => applying(steps, step).is_some(),
-        Kind::Regime => true,
+        Kind::ClosedForm(key) | Kind::Threshold(key) | Kind::ReadFigure(key) => {
+            applying(steps, key).is_some()
+        }
+        Kind::Regime(_) => true,
     })
 }
 
@@ -121,25 +130,25 @@ pub fn answer(
 ) -> Result<Option<Answers>> {
     let reads_figure = questions
         .iter()
-        .any(|q| matches!(q.kind, Kind::ReadFigure { .. }));
+        .any(|q| matches!(q.kind, Kind::ReadFigure(_)));
     let evaluated = evaluate(case, reads_figure)?;
     let mut answers = Vec::with_capacity(questions.len());
     let mut figure = None;
     for &question in questions {
         let answer = match question.kind {
-            Kind::ClosedForm { step, check } => measured(question, steps, &evaluated, step, check),
-            Kind::Threshold { step } => match case {
-                Case::Woodpecker(p) => threshold(question, steps, p, step)?,
+            Kind::ClosedForm(key) => measured(question, steps, &evaluated, key),
+            Kind::Threshold(key) => match case {
+                Case::Woodpecker(p) => threshold(question, steps, p, key)?,
                 Case::PulledMass(_) => None,
             },
-            Kind::Regime => regime(question, case, steps, &evaluated),
-            Kind::ReadFigure { step, check } => {
+            Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
+            Kind::ReadFigure(key) => {
                 let Some(run) = &evaluated.linear else {
                     return Ok(None);
                 };
                 let (svg, spacing) = v_figure(run)?;
                 figure = Some(svg);
-                measured(question, steps, &evaluated, step, check)
+                measured(question, steps, &evaluated, key)
                     .filter(
                         |a| matches!(a.value, Value::Number(v) if 0.5 * spacing <= READABLE * v),
                     )
@@ -157,22 +166,17 @@ pub fn answer(
     Ok(Some(Answers { answers, figure }))
 }
 
-/// A closed form confirmed by the passing check `check` of the integration.
+/// The closed form `key` confirmed by its passing check on the integration.
 fn measured(
     question: &'static Question,
     steps: &[Step],
     evaluated: &Evaluated,
-    step: &str,
-    check: &str,
+    key: AnyKey,
 ) -> Option<Answer> {
-    let check = evaluated
-        .checks
-        .iter()
-        .find(|c| c.quantity.id() == check && c.pass)?;
-    let CheckValue::Number(numeric) = check.numeric else {
+    let CheckValue::Number(numeric) = passing(evaluated, key)?.numeric else {
         return None;
     };
-    confirmed(question, applying(steps, step)?, numeric)
+    confirmed(question, applying(steps, key)?, numeric)
 }
 
 /// The answer of a closed form `step` and the integration's `numeric` value of it, when they
@@ -199,37 +203,33 @@ fn regime(
     case: &Case,
     steps: &[Step],
     evaluated: &Evaluated,
+    key: AnyKey,
 ) -> Option<Answer> {
-    let check = evaluated
-        .checks
-        .iter()
-        .find(|c| c.quantity.id() == "regime" && c.pass)?;
-    let CheckValue::Text(numeric) = &check.numeric else {
+    let CheckValue::Text(numeric) = &passing(evaluated, key)?.numeric else {
         return None;
     };
-    let value = |key: &str| applying(steps, key).and_then(|s| s.value);
+    let value = |key: AnyKey| applying(steps, key).and_then(|s| s.value);
+    let (pm, wp) = (|k: P| value(k.into()), |k: W| value(k.into()));
     let comparisons: Vec<(&'static str, Option<f64>)> = match case {
         Case::PulledMass(p) => vec![
-            (r"\varphi", value("phi")),
-            (r"1/\Theta", value("phi_stick_max")),
-            (r"\varphi_c", value("phi_continuous")),
+            (r"\varphi", pm(P::Phi)),
+            (r"1/\Theta", pm(P::PhiStickMax)),
+            (r"\varphi_c", pm(P::PhiContinuous)),
             (r"2\mu_s", Some(2.0 * p.mu_s)),
         ],
         Case::Woodpecker(p) => vec![
             (
                 r"u_s^{(-)}\eta'",
-                value("u_s_minus")
-                    .zip(value("eta_prime"))
-                    .map(|(u, h)| u * h),
+                wp(W::USMinus).zip(wp(W::EtaPrime)).map(|(u, h)| u * h),
             ),
             (r"\mu_d", Some(p.mu_d)),
-            (r"\mu_{d,HALT}^{(I)}", value("mu_d_halt_1")),
-            (r"\mu_{d,HALT}^{(II)}", value("mu_d_halt_2")),
+            (r"\mu_{d,HALT}^{(I)}", wp(W::MuDHalt1)),
+            (r"\mu_{d,HALT}^{(II)}", wp(W::MuDHalt2)),
         ],
     };
     Some(Answer {
         question,
-        value: Value::Text(case.regime().to_string()),
+        value: Value::Text(case.regime().id().to_string()),
         step: None,
         numeric: Value::Text(numeric.clone()),
         rel_error: None,
@@ -247,9 +247,9 @@ fn threshold(
     question: &'static Question,
     steps: &[Step],
     p: &WoodpeckerParams,
-    step: &str,
+    key: AnyKey,
 ) -> Result<Option<Answer>> {
-    let Some((step, value)) = applying(steps, step).and_then(|s| Some((s, s.value?))) else {
+    let Some((step, value)) = applying(steps, key).and_then(|s| Some((s, s.value?))) else {
         return Ok(None);
     };
     Ok(mu_d_sticking_at_half_period(p, value)?.and_then(|n| confirmed(question, step, n)))

@@ -14,7 +14,7 @@ struct KeyJson<'a> {
     model: &'static str,
     seed: u64,
     regime: &'static str,
-    questions: Vec<&'static str>,
+    questions: Vec<String>,
     students: Vec<StudentJson<'a>>,
 }
 
@@ -30,7 +30,7 @@ struct StudentJson<'a> {
 
 #[derive(Serialize)]
 struct AnswerJson<'a> {
-    key: &'static str,
+    key: String,
     /// Closed-form value (SI) or regime id.
     value: &'a Value,
     unit: &'static str,
@@ -77,15 +77,15 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
         .map(|s| {
             Ok(StudentJson {
                 student: s.number,
-                regime: s.case.regime(),
+                regime: s.case.regime().id(),
                 params: params_json(&s.case)?,
                 answers: s
                     .answers
                     .iter()
                     .map(|a| AnswerJson {
-                        key: a.question.key,
+                        key: a.question.key(),
                         value: &a.value,
-                        unit: a.question.unit,
+                        unit: a.question.unit(),
                         numeric: &a.numeric,
                         rel_error: a.rel_error,
                         tolerance: a.tolerance,
@@ -101,8 +101,8 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
     let json = KeyJson {
         model: w.model.id(),
         seed: w.seed,
-        regime: w.regime,
-        questions: w.questions.iter().map(|q| q.key).collect(),
+        regime: w.regime.id(),
+        questions: w.questions.iter().map(|q| q.key()).collect(),
         students,
     };
     let mut bytes = serde_json::to_vec_pretty(&json).map_err(json_error)?;

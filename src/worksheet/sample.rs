@@ -9,6 +9,7 @@ use crate::models::pulled_mass::formula as pm;
 use crate::models::woodpecker::formula as wp;
 use crate::models::woodpecker::results::linear_inputs;
 use crate::params::{ModelName, PulledMassParams, WoodpeckerParams, G_STANDARD};
+use crate::worksheet::question::Regime;
 
 /// One student's case: the model and its parameters (SI).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -19,10 +20,10 @@ pub enum Case {
 
 impl Case {
     /// The regime of the linearized law from the closed forms (physics.md §1.5, §3.6).
-    pub fn regime(&self) -> &'static str {
+    pub fn regime(&self) -> Regime {
         match self {
-            Case::PulledMass(p) => pm::regime(p.phi(), p.mu_s, p.mu_d).id(),
-            Case::Woodpecker(p) => wp::evaluate(&linear_inputs(p)).regime.id(),
+            Case::PulledMass(p) => Regime::PulledMass(pm::regime(p.phi(), p.mu_s, p.mu_d)),
+            Case::Woodpecker(p) => Regime::Woodpecker(wp::evaluate(&linear_inputs(p)).regime),
         }
     }
 }
@@ -34,7 +35,7 @@ pub fn round3(x: f64) -> f64 {
 
 /// A candidate set for `model`, aimed at `regime` where the draw can be (rounded; the caller
 /// checks the regime of the rounded set).
-pub fn draw(model: ModelName, regime: &str, rng: &mut StdRng) -> Case {
+pub fn draw(model: ModelName, regime: Regime, rng: &mut StdRng) -> Case {
     match model {
         ModelName::PulledMass => Case::PulledMass(pulled_mass(regime, rng)),
         ModelName::Woodpecker => Case::Woodpecker(woodpecker(rng)),
@@ -44,7 +45,7 @@ pub fn draw(model: ModelName, regime: &str, rng: &mut StdRng) -> Case {
 /// μs 0.25–0.8, μd/μs 0.5–1, m 20–200 g, k 10–100 N/m, and F = φW with φ inside the interval of
 /// the regime (§1.5), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
 /// the motion is large enough to see.
-fn pulled_mass(regime: &str, rng: &mut StdRng) -> PulledMassParams {
+fn pulled_mass(regime: Regime, rng: &mut StdRng) -> PulledMassParams {
     let mu_s = rng.gen_range(0.25..0.8);
     let mu_d = mu_s * rng.gen_range(0.5..=1.0);
     let mass = rng.gen_range(0.02..0.2);
@@ -54,8 +55,8 @@ fn pulled_mass(regime: &str, rng: &mut StdRng) -> PulledMassParams {
         pm::phi_continuous(mu_s, mu_d),
     );
     let (lo, hi) = match regime {
-        "slip_stick_late" => (stick, cont),
-        "continuous_slip" => (cont, 2.0 * mu_s),
+        Regime::PulledMass(pm::Regime::SlipStickLate) => (stick, cont),
+        Regime::PulledMass(pm::Regime::ContinuousSlip) => (cont, 2.0 * mu_s),
         _ => (0.3 * stick, stick),
     };
     let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);
@@ -104,14 +105,16 @@ mod tests {
         assert_eq!(format!("{}", round3(0.123_456)), "0.123");
     }
 
+    const SLIP_STICK: Regime = Regime::PulledMass(pm::Regime::SlipStick);
+
     #[test]
     fn draws_are_valid_and_reproducible() {
         for model in [ModelName::PulledMass, ModelName::Woodpecker] {
             let (mut a, mut b) = (StdRng::seed_from_u64(3), StdRng::seed_from_u64(3));
             for _ in 0..200 {
                 let (x, y) = (
-                    draw(model, "slip_stick", &mut a),
-                    draw(model, "slip_stick", &mut b),
+                    draw(model, SLIP_STICK, &mut a),
+                    draw(model, SLIP_STICK, &mut b),
                 );
                 assert_eq!(x, y);
                 match x {
