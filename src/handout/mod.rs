@@ -50,7 +50,7 @@ pub struct MotionLine {
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
 pub struct StepCtx {
-    /// The §7 key of the quantity ("t_slip").
+    /// The §7 key of the quantity ([`crate::derivation::StepKey::id`]).
     pub key: String,
     /// "(13)", "§1.4" …
     pub equation: String,

@@ -389,7 +389,7 @@ mod tests {
     fn worked_set_b_slip_stick() {
         let (mu_s, mu_d, f) = (0.4, 0.35, 0.10);
         let c = evaluate(G, T, f, f / W, mu_s, mu_d);
-        close(c.phi, 0.169_894_665_3, "phi");
+        close(c.phi, 0.169_894_665_3, "φ");
         close(c.tau_slip, 0.393_815_834_2, "tau_SL");
         close(c.t_slip, 0.090_352_965_35, "t_SL");
         close(c.tau_max_speed, 0.621_353_332_4, "tau_M");
@@ -403,7 +403,7 @@ mod tests {
         close(c.mu_min_equal, 0.205_081_002_6, "mu_min");
         close(c.gamma, 0.488_981_670_2, "Gamma");
         close(c.advance_per_period, 0.001_238_224_198, "x_T");
-        close(c.v_avg, 0.005_396_970_576, "v_avg");
+        close(c.v_avg, 0.005_396_970_576, "v̄");
         close(c.power, 5.396_970_576e-4, "P");
         assert_eq!(c.regime, Regime::SlipStick);
         assert_eq!(c.tau_stick_late, None);
@@ -437,7 +437,7 @@ mod tests {
         close(c.v_max, 0.097_842_994_26, "v_M");
         close(c.t_stick, 0.280_548_694_7, "t_ST");
         close(c.gamma, 0.861_047_116_4, "Gamma");
-        close(c.v_avg, 0.055_424_515_16, "v_avg");
+        close(c.v_avg, 0.055_424_515_16, "v̄");
         close(c.phi_continuous, 0.254_556_168_6, "phi_c");
         assert_eq!(c.regime, Regime::ContinuousSlip);
         assert_eq!(c.tau_stick_late, None);

@@ -865,23 +865,22 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         Regime(OrbitRegime),
     }
 
-    /// The computed value for a key of worked-numbers.txt; panics on an unknown key so that no
-    /// worked number is skipped silently.
+    /// The computed value for a key of worked-numbers.txt: a §7 key through the registry, the
+    /// file's own names directly; panics on an unknown key so that no worked number is skipped
+    /// silently.
     fn computed(cf: &WoodpeckerClosedForm, p: &LinearWoodpecker, key: &str) -> Pair {
         let n = Pair::Num;
+        if let Some(k) = Key::from_id(key) {
+            return match cf.value(k) {
+                Value::Number(x) => n(x),
+                Value::Flag(b) => Pair::Flag(b),
+                Value::Label(_) => Pair::Regime(cf.regime),
+            };
+        }
         match key {
-            "zeta0" => n(cf.zeta0),
-            "delta0" => n(cf.delta0),
             "T" => n(Some(p.period())),
             "tau" => n(cf.tau_quarter),
             "W_S" => n(Some(p.w_s)),
-            "u_s_minus" => n(cf.u_s_minus),
-            "u_s_plus" => n(cf.u_s_plus),
-            "u_d_minus" => n(cf.u_d_minus),
-            "u_d_plus" => n(cf.u_d_plus),
-            "eta" => n(cf.eta),
-            "eta_prime" => n(cf.eta_prime),
-            "immediate_slip" => Pair::Flag(cf.immediate_slip),
             "t0_I" => n(cf.t0_1),
             "Delta_I" => n(cf.delta_1),
             "t_SL_I" => n(cf.t_slip_1),
@@ -909,10 +908,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
             "y_II" => n(cf.distance_2),
             "Gamma" => n(cf.gamma),
             "y_T" => n(cf.distance_per_period),
-            "v_avg" => n(cf.v_avg),
             "P_weight" => n(cf.power_weight),
-            "paper_regime_valid" => Pair::Flag(cf.paper_regime_valid),
-            "regime" => Pair::Regime(cf.regime),
             other => panic!("worked number {other} has no counterpart"),
         }
     }
