@@ -3,14 +3,13 @@
 //! Implemented by each model's params struct in `src/models/<name>/present.rs`; the report,
 //! handout, worksheet, sweep and command line reach it through [`crate::models::with_model!`].
 
-use crate::derivation::Step;
+use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::handout::physics::Note;
 use crate::models::Physics;
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::{OutFile, Scene};
-use crate::results::quantity::Quantity;
 use crate::results::Summary;
 
 /// The figures, claims and caption of a user's scenario of this model.
@@ -37,10 +36,10 @@ pub trait Present: Physics {
     fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>>;
     /// The report's tables of a scene of this model.
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx>;
-    /// The worked substitutions of every closed form, and the quantities they are of.
-    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]);
+    /// The worked substitutions of every closed form.
+    fn derivation(&self) -> Vec<Step>;
     /// How the handout explains the step of `key`.
-    fn handout_note(key: &str) -> Option<Note>;
+    fn handout_note(key: StepKey) -> Option<Note>;
     /// The equation of motion, line by line: (formula, its physics).
     fn equation_of_motion() -> &'static [(&'static str, &'static str)];
     /// The laws of an evaluation.

@@ -64,7 +64,7 @@ proptest! {
             prop_assert!(c.pass, "{:?} failed for {:?}: {:?}", c.quantity, p, c);
         }
         // Each regime checks what it should.
-        let has = |q: &str| e.checks.iter().any(|c| c.quantity == q);
+        let has = |q: &str| e.checks.iter().any(|c| c.quantity.id() == q);
         match expected {
             Regime::SlipStick => prop_assert!(has("t_stick") && has("v_avg") && has("power")),
             Regime::SlipStickLate => prop_assert!(has("tau_stick_late") && has("v_avg_late")),

@@ -72,7 +72,7 @@ fn close(a: f64, b: f64, what: &str) {
 fn measured(checks: &[stickslip::results::Check], quantity: &str) -> f64 {
     let c = checks
         .iter()
-        .find(|c| c.quantity == quantity)
+        .find(|c| c.quantity.id() == quantity)
         .unwrap_or_else(|| panic!("no check of {quantity}"));
     assert!(c.pass, "{c:?}");
     match c.numeric {

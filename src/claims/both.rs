@@ -8,8 +8,7 @@
 
 use super::pulled_mass::PeriodicSet;
 use super::{
-    counterpart_name, mm_s, regime_words, rel_diff, run_wood, Claim, Integrated, Numbers, Verdict,
-    BOTH_MODELS,
+    counterpart_name, mm_s, rel_diff, run_wood, Claim, Integrated, Numbers, Verdict, BOTH_MODELS,
 };
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
@@ -25,7 +24,7 @@ const AGREE: f64 = 1e-9;
 /// A regime and a mean speed in words.
 fn motion(r: &Integrated) -> String {
     let v = r.steady.v_avg.map_or("no periodic v̄".to_string(), mm_s);
-    format!("{} ({v})", regime_words(r.steady.regime()))
+    format!("{} ({v})", r.steady.regime().words())
 }
 
 /// Claim 3: the linearization does not affect "too heavily" the numerical results.

@@ -27,9 +27,7 @@ use crate::models::woodpecker::{claims as woodpecker, halt, lever};
 
 use serde::{Deserialize, Serialize};
 
-use crate::engine::{
-    analyse, integrate, Body, EventKind, ForceLaw, IntegrationRegime, Run, RunOptions, Steady,
-};
+use crate::engine::{analyse, integrate, Body, EventKind, ForceLaw, Run, RunOptions, Steady};
 use crate::error::Result;
 use crate::models::param::invalid;
 use crate::models::pulled_mass::PulledMassParams;
@@ -251,21 +249,6 @@ pub(crate) fn counterpart_name(c: Counterpart) -> &'static str {
         Counterpart::Extremes => "extremes",
         Counterpart::Zeros => "zeros",
         Counterpart::Tangent => "tangent",
-    }
-}
-
-/// An integrated regime in plain words, for the findings.
-pub(crate) fn regime_words(r: IntegrationRegime) -> &'static str {
-    match r {
-        IntegrationRegime::NoSlip => "no slip at all",
-        IntegrationRegime::SingleSlipStick => "one slip and one stick per period",
-        IntegrationRegime::DoubleSlipStick => "two slips and two sticks per period",
-        IntegrationRegime::DoubleSlipNoHalt => {
-            "one slip per period that slows down without stopping in between"
-        }
-        IntegrationRegime::ContinuousSlip => "continuous slip, never sticking",
-        IntegrationRegime::Multiperiod => "a motion repeating only after several periods",
-        IntegrationRegime::NotPeriodic => "no periodic motion within the periods integrated",
     }
 }
 

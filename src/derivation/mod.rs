@@ -18,17 +18,71 @@ pub use expr::Expr;
 
 pub use crate::models::pulled_mass::derivation::pulled_mass;
 pub use crate::models::woodpecker::derivation::woodpecker;
-use crate::results::quantity::{find, Quantity};
+use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
+use crate::results::quantity::{AnyKey, Registry};
 use crate::results::Applicability;
+
+/// A derived parameter with a step of its own (W, ω, T, λ): its §7 `params` key, LaTeX symbol,
+/// equation and unit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Param {
+    pub id: &'static str,
+    pub tex: &'static str,
+    pub equation: &'static str,
+    pub unit: &'static str,
+}
+
+/// What a step works out: a derived parameter, or a closed-form quantity of a registry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum StepKey {
+    Param(Param),
+    Quantity(AnyKey),
+}
+
+impl StepKey {
+    /// The §7 key (`closed_form`, or `params` for a derived parameter).
+    pub fn id(self) -> &'static str {
+        match self {
+            StepKey::Param(p) => p.id,
+            StepKey::Quantity(k) => k.id(),
+        }
+    }
+
+    /// The plain-text symbol (a derived parameter: its key).
+    pub fn symbol(self) -> &'static str {
+        match self {
+            StepKey::Param(p) => p.id,
+            StepKey::Quantity(k) => k.quantity().symbol,
+        }
+    }
+}
+
+impl From<Param> for StepKey {
+    fn from(p: Param) -> Self {
+        StepKey::Param(p)
+    }
+}
+
+impl From<pm::Key> for StepKey {
+    fn from(k: pm::Key) -> Self {
+        StepKey::Quantity(k.into())
+    }
+}
+
+impl From<wp::Key> for StepKey {
+    fn from(k: wp::Key) -> Self {
+        StepKey::Quantity(k.into())
+    }
+}
 
 /// One worked step: a closed form, the numbers put in, the result.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Step {
-    /// The §7 `closed_form` key, e.g. "t_slip" (for W, ω, T, λ: the §7 `params` key).
-    pub key: &'static str,
+    /// What the step works out.
+    pub key: StepKey,
     /// LaTeX symbol, e.g. "t_{SL}".
     pub symbol: &'static str,
-    /// The paper's equation number(s), as in [`crate::results::quantity`].
+    /// The paper's equation number(s), as in the registry.
     pub equation: &'static str,
     /// LaTeX: the closed form in symbols (the right-hand side: `symbol = formula`).
     pub formula: String,
@@ -53,10 +107,8 @@ impl Step {
     /// A step of `key` with formula `expr`, the formula function's `value` (`None` when the
     /// expression is undefined) and why the form does not describe the motion, if so.
     pub(crate) fn new(
-        key: &'static str,
-        symbol: &'static str,
-        equation: &'static str,
-        unit: &'static str,
+        key: StepKey,
+        (symbol, equation, unit): (&'static str, &'static str, &'static str),
         expr: Expr,
         value: Option<f64>,
         not_applicable: Option<String>,
@@ -100,12 +152,10 @@ impl Step {
     }
 }
 
-/// Collects the steps of one model in order; each step's symbol and value become a quantity
-/// leaf for the steps after it.
-pub(crate) struct Steps<'a> {
-    table: &'static [Quantity],
-    /// (key, equation, unit) of the §7 `params` keys with a step (W, ω, T, …).
-    params: &'static [(&'static str, &'static str, &'static str)],
+/// Collects the steps of one model (key `K`) in order; each step's symbol and value become a
+/// quantity leaf for the steps after it.
+pub(crate) struct Steps<'a, K> {
+    model: std::marker::PhantomData<K>,
     applicability: &'a [Applicability],
     /// Why no closed form of a key applies when the results' list does not name it (e.g. the
     /// woodpecker outside the closed-form domain); `None`: such keys apply.
@@ -113,51 +163,58 @@ pub(crate) struct Steps<'a> {
     pub(crate) steps: Vec<Step>,
 }
 
-impl<'a> Steps<'a> {
-    pub(crate) fn new(
-        table: &'static [Quantity],
-        params: &'static [(&'static str, &'static str, &'static str)],
-        applicability: &'a [Applicability],
-    ) -> Self {
+impl<'a, K: Registry> Steps<'a, K> {
+    pub(crate) fn new(applicability: &'a [Applicability]) -> Self {
         Steps {
-            table,
-            params,
+            model: std::marker::PhantomData,
             applicability,
             fallback: None,
             steps: Vec::new(),
         }
     }
 
-    /// Adds the step `symbol = expr` of `key` whose formula function gives `value`, and returns
-    /// the quantity leaf of its symbol for later steps (NaN when undefined).
-    pub(crate) fn push(
-        &mut self,
-        key: &'static str,
-        symbol: &'static str,
-        expr: Expr,
-        value: Option<f64>,
-    ) -> Expr {
-        let (equation, unit) = match find(self.table, key) {
-            Some(q) => (q.equation, q.unit),
-            None => self
-                .params
-                .iter()
-                .find(|m| m.0 == key)
-                .map_or(("", ""), |m| (m.1, m.2)),
-        };
-        let not_applicable = match self.applicability.iter().find(|a| a.quantity == key) {
+    /// Adds the step `symbol = expr` of the quantity `key` whose formula function gives
+    /// `value` (symbol, equation and unit from the registry), and returns the quantity leaf of
+    /// its symbol for later steps (NaN when undefined).
+    pub(crate) fn push(&mut self, key: K, expr: Expr, value: Option<f64>) -> Expr {
+        let q = key.quantity();
+        let any: AnyKey = key.into();
+        let not_applicable = match self.applicability.iter().find(|a| a.quantity == any) {
             Some(a) => (!a.applies).then(|| a.reason.clone()),
             None => self.fallback.map(str::to_string),
         };
-        self.steps.push(Step::new(
-            key,
-            symbol,
-            equation,
-            unit,
+        self.add(
+            StepKey::Quantity(any),
+            (q.tex, q.equation, q.unit),
             expr,
             value,
             not_applicable,
-        ));
+        )
+    }
+
+    /// Adds the step of the derived parameter `param`, as [`Steps::push`].
+    pub(crate) fn push_param(&mut self, param: Param, expr: Expr, value: Option<f64>) -> Expr {
+        let not_applicable = self.fallback.map(str::to_string);
+        self.add(
+            StepKey::Param(param),
+            (param.tex, param.equation, param.unit),
+            expr,
+            value,
+            not_applicable,
+        )
+    }
+
+    fn add(
+        &mut self,
+        key: StepKey,
+        shown: (&'static str, &'static str, &'static str),
+        expr: Expr,
+        value: Option<f64>,
+        not_applicable: Option<String>,
+    ) -> Expr {
+        let symbol = shown.0;
+        self.steps
+            .push(Step::new(key, shown, expr, value, not_applicable));
         expr::var(symbol, value.unwrap_or(f64::NAN))
     }
 }

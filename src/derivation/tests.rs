@@ -7,9 +7,13 @@ use proptest::prelude::*;
 use serde_json::Value;
 
 use super::*;
+use crate::models::pulled_mass::derivation::param as pm_param;
 use crate::models::pulled_mass::formula as pm;
+use crate::models::pulled_mass::quantity::Key as P;
 use crate::models::pulled_mass::PulledMassParams;
+use crate::models::woodpecker::derivation::param as wp_param;
 use crate::models::woodpecker::formula::Counterpart;
+use crate::models::woodpecker::quantity::Key as W;
 use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
 use crate::models::{pulled_mass::results as pm_results, woodpecker::results as wp_results};
 use crate::report::math::mathml;
@@ -33,29 +37,26 @@ fn close(a: f64, b: f64) -> bool {
 fn check_steps(steps: &[Step], json: &Value, applies: impl Fn(&str) -> bool) {
     assert!(!steps.is_empty());
     for step in steps {
-        let Some(expected) = section7_value(json, step.key) else {
-            panic!("{}: not a §7 key", step.key);
+        let key = step.key.id();
+        let Some(expected) = section7_value(json, key) else {
+            panic!("{key}: not a §7 key");
         };
         let evaluated = step.expr.eval();
         match expected.as_f64() {
             Some(x) => {
-                assert!(
-                    close(evaluated, x),
-                    "{}: tree {evaluated} vs §7 {x}",
-                    step.key
-                );
-                if applies(step.key) {
-                    assert_eq!(step.value, Some(x), "{}: value is the formula's", step.key);
-                    assert!(step.reason.is_none(), "{}", step.key);
+                assert!(close(evaluated, x), "{key}: tree {evaluated} vs §7 {x}");
+                if applies(key) {
+                    assert_eq!(step.value, Some(x), "{key}: value is the formula's");
+                    assert!(step.reason.is_none(), "{key}");
                 } else {
-                    assert_eq!(step.value, None, "{}", step.key);
+                    assert_eq!(step.value, None, "{key}");
                     assert!(step.reason.as_deref().is_some_and(|r| !r.is_empty()));
                 }
             }
             None => {
-                assert!(expected.is_null(), "{}: {expected}", step.key);
-                assert_eq!(step.value, None, "{}: undefined has no value", step.key);
-                assert!(step.reason.is_some(), "{}", step.key);
+                assert!(expected.is_null(), "{key}: {expected}");
+                assert_eq!(step.value, None, "{key}: undefined has no value");
+                assert!(step.reason.is_some(), "{key}");
             }
         }
     }
@@ -149,7 +150,7 @@ proptest! {
     fn pulled_mass_trees_are_the_closed_forms(p in pulled_params()) {
         let e = pm_results::evaluate(&p, 4).unwrap();
         let json = serde_json::to_value(&e).unwrap();
-        let applies = |key: &str| e.applicability.iter().all(|a| a.quantity != key || a.applies);
+        let applies = |key: &str| e.applicability.iter().all(|a| a.quantity.id() != key || a.applies);
         check_steps(&pulled_mass(&p), &json, applies);
     }
 
@@ -160,13 +161,16 @@ proptest! {
         let phase_key = |key: &str| {
             key.ends_with("_1") || key.ends_with("_2")
         };
-        let applies = |key: &str| match e.applicability.iter().find(|a| a.quantity == key) {
+        let applies = |key: &str| match e.applicability.iter().find(|a| a.quantity.id() == key) {
             Some(a) => a.applies,
             None => e.domain_note.is_none() || !phase_key(key),
         };
         let steps = woodpecker(&p);
         check_steps(&steps, &json, applies);
-        prop_assert_eq!(steps.iter().any(|s| s.key == "lambda"), p.lever.is_none());
+        prop_assert_eq!(
+            steps.iter().any(|s| s.key == wp_param::LAMBDA.into()),
+            p.lever.is_none()
+        );
     }
 
     #[test]
@@ -189,20 +193,21 @@ fn set_b_reads_as_a_worked_example() {
         ..PulledMassParams::default()
     };
     let steps = pulled_mass(&p);
-    let keys: Vec<_> = steps.iter().map(|s| s.key).collect();
+    let keys: Vec<StepKey> = steps.iter().map(|s| s.key).collect();
     for key in [
-        "W",
-        "omega",
-        "T",
-        "phi",
-        "t_slip",
-        "a_slip",
-        "t_max_speed",
-        "v_max",
+        pm_param::W.into(),
+        pm_param::OMEGA.into(),
+        pm_param::T.into(),
+        P::Phi.into(),
+        P::TSlip.into(),
+        P::ASlip.into(),
+        P::TMaxSpeed.into(),
+        P::VMax.into(),
     ] {
-        assert!(keys.contains(&key), "{key}");
+        assert!(keys.contains(&key), "{key:?}");
     }
-    let t_slip = steps.iter().find(|s| s.key == "t_slip").unwrap();
+    let step = |key: P| steps.iter().find(|s| s.key == key.into()).unwrap();
+    let t_slip = step(P::TSlip);
     assert_eq!(t_slip.formula, r"T \tau_{SL}");
     assert_eq!(t_slip.substituted, r"0.2294 \times 0.3938");
     assert!((t_slip.value.unwrap() - 0.090_352_965_35).abs() < 1e-11);
@@ -210,7 +215,7 @@ fn set_b_reads_as_a_worked_example() {
         t_slip.worked_tex(),
         r"t_{SL} = T \tau_{SL} = 0.2294 \times 0.3938 = 0.09035\,\mathrm{s}"
     );
-    let v_max = steps.iter().find(|s| s.key == "v_max").unwrap();
+    let v_max = step(P::VMax);
     assert_eq!(
         v_max.formula,
         r"\frac{g T \varphi^{2} \left(\mu_s^{2} + 2 \mu_s \mu_d - \mu_d^{2}\right)}{16 \mu_s^{2} \mu_d}"
@@ -220,7 +225,7 @@ fn set_b_reads_as_a_worked_example() {
         r"\frac{9.81 \times 0.2294 \times 0.1699^{2} \times \left(0.4^{2} + 2 \times 0.4 \times 0.35 - 0.35^{2}\right)}{16 \times 0.4^{2} \times 0.35}"
     );
     // Set B is slip-stick: the late-stick form does not apply, with the reason.
-    let late = steps.iter().find(|s| s.key == "tau_stick_late").unwrap();
+    let late = step(P::TauStickLate);
     assert_eq!(late.value, None);
     assert!(late
         .reason
@@ -238,35 +243,40 @@ fn set_c_marks_the_same_period_stick_as_not_applying() {
         ..PulledMassParams::default()
     };
     let steps = pulled_mass(&p);
-    let t_stick = steps.iter().find(|s| s.key == "t_stick").unwrap();
+    let step = |key: P| steps.iter().find(|s| s.key == key.into()).unwrap();
+    let t_stick = step(P::TStick);
     assert_eq!(t_stick.value, None);
     assert!(t_stick.reason.as_deref().unwrap().contains("(20) fails"));
     assert!(t_stick.result_tex().is_none());
     assert!(!t_stick.worked_tex().ends_with(r"\,\mathrm{s}"));
-    let late = steps.iter().find(|s| s.key == "tau_stick_late").unwrap();
+    let late = step(P::TauStickLate);
     assert!((late.value.unwrap() - 1.028_831_853).abs() < 1e-8);
 }
 
 #[test]
 fn fig15_phases_read_with_the_papers_symbols() {
     let steps = woodpecker(&WoodpeckerParams::default());
-    let step = |key: &str| steps.iter().find(|s| s.key == key).unwrap();
-    assert!((step("t_slip_1").value.unwrap() - 0.058_242_816_14).abs() < 1e-11);
-    assert!((step("mu_d_min_1").value.unwrap() - 0.236_080_561_4).abs() < 1e-10);
-    assert!((step("mu_d_halt_2").value.unwrap() - 0.298_683_430_3).abs() < 1e-10);
-    assert!((step("v_avg").value.unwrap() - 0.049_658_438_62).abs() < 1e-11);
-    assert_eq!(step("t_slip_1").formula, r"t_0^{(I)} - \Delta^{(I)}");
+    let step = |key: StepKey| steps.iter().find(|s| s.key == key).unwrap();
+    let w = |key: W| step(key.into());
+    assert!((w(W::TSlip1).value.unwrap() - 0.058_242_816_14).abs() < 1e-11);
+    assert!((w(W::MuDMin1).value.unwrap() - 0.236_080_561_4).abs() < 1e-10);
+    assert!((w(W::MuDHalt2).value.unwrap() - 0.298_683_430_3).abs() < 1e-10);
+    assert!((w(W::VAvg).value.unwrap() - 0.049_658_438_62).abs() < 1e-11);
+    assert_eq!(w(W::TSlip1).formula, r"t_0^{(I)} - \Delta^{(I)}");
     assert_eq!(
-        step("mu_d_min_2").formula,
+        w(W::MuDMin2).formula,
         r"\frac{1}{2 \lambda} \frac{{u_s^{(+)}}^{2} \eta' \left(\eta' + 2\right) + 2 u_s^{(+)} - 1}{{u_s^{(+)}}^{2} {\eta'}^{2} + 1}"
     );
-    assert_eq!(step("zeta0").formula, "d_0");
+    assert_eq!(w(W::Zeta0).formula, "d_0");
     assert_eq!(
-        step("delta0").formula,
+        w(W::Delta0).formula,
         r"d_0 \frac{2}{\pi} \arcsin\left(\frac{z_0}{d_0}\right)"
     );
-    assert_eq!(step("lambda").substituted, r"\frac{0.016}{0.007}");
-    assert_eq!(step("T").substituted, r"\frac{2 \pi}{37.80}");
+    assert_eq!(
+        step(wp_param::LAMBDA.into()).substituted,
+        r"\frac{0.016}{0.007}"
+    );
+    assert_eq!(step(wp_param::T.into()).substituted, r"\frac{2 \pi}{37.80}");
 }
 
 #[test]
@@ -277,10 +287,13 @@ fn outside_the_domain_every_phase_step_says_why() {
         ..WoodpeckerParams::default()
     };
     let steps = woodpecker(&p);
-    let t_slip = steps.iter().find(|s| s.key == "t_slip_1").unwrap();
+    let t_slip = steps.iter().find(|s| s.key == W::TSlip1.into()).unwrap();
     assert_eq!(t_slip.value, None);
     assert!(t_slip.reason.as_deref().unwrap().contains("counterpart"));
     assert!(t_slip.substituted.contains(r"\text{undefined}"));
-    let omega = steps.iter().find(|s| s.key == "omega").unwrap();
+    let omega = steps
+        .iter()
+        .find(|s| s.key == wp_param::OMEGA.into())
+        .unwrap();
     assert!(omega.value.is_some());
 }

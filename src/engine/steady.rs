@@ -23,9 +23,10 @@ pub enum OrbitKind {
     NotPeriodic,
 }
 
-/// Regime of an integrated law (physics.md §7 `regime`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+/// Regime of an integrated law (physics.md §7 `regime`), serialized as its [`id`].
+///
+/// [`id`]: IntegrationRegime::id
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum IntegrationRegime {
     NoSlip,
     SingleSlipStick,
@@ -37,6 +38,17 @@ pub enum IntegrationRegime {
 }
 
 impl IntegrationRegime {
+    /// Every regime.
+    pub const ALL: [Self; 7] = [
+        Self::NoSlip,
+        Self::SingleSlipStick,
+        Self::DoubleSlipStick,
+        Self::DoubleSlipNoHalt,
+        Self::ContinuousSlip,
+        Self::Multiperiod,
+        Self::NotPeriodic,
+    ];
+
     /// The identifier used in JSON and reports.
     pub fn id(self) -> &'static str {
         match self {
@@ -48,6 +60,27 @@ impl IntegrationRegime {
             Self::Multiperiod => "multiperiod",
             Self::NotPeriodic => "not_periodic",
         }
+    }
+
+    /// The regime in plain words.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::NoSlip => "no slip at all",
+            Self::SingleSlipStick => "one slip and one stick per period",
+            Self::DoubleSlipStick => "two slips and two sticks per period",
+            Self::DoubleSlipNoHalt => {
+                "one slip per period that slows down without stopping in between"
+            }
+            Self::ContinuousSlip => "continuous slip, never sticking",
+            Self::Multiperiod => "a motion repeating only after several periods",
+            Self::NotPeriodic => "no periodic motion within the periods integrated",
+        }
+    }
+}
+
+impl Serialize for IntegrationRegime {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
     }
 }
 

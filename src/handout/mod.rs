@@ -21,7 +21,6 @@ use crate::present::Present;
 use crate::report::context::{FigureCtx, SceneCtx};
 use crate::report::render::{claim_params, page, scene_context, templates, CSS};
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
-use crate::results::quantity::find;
 use physics::Note;
 
 mod layout;
@@ -51,7 +50,7 @@ pub struct MotionLine {
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
 pub struct StepCtx {
-    /// The §7 key of the quantity ("t_slip").
+    /// The §7 key of the quantity ([`crate::derivation::StepKey::id`]).
     pub key: String,
     /// "(13)", "§1.4" …
     pub equation: String,
@@ -189,7 +188,7 @@ pub fn build(scene: &Scene) -> Result<Handout> {
 /// same reason, and definitions that do not apply, are left out and named in one line per
 /// reason ("t_ST, v̄: why").
 fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
-    let (steps, table) = with_model!(setup, p => p.derivation());
+    let steps = with_model!(setup, p => p.derivation());
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
     let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();
@@ -207,7 +206,7 @@ fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
         };
         if let Some(reason) = step.reason.as_deref() {
             if !matches!(note, Note::Sentence(_)) || in_place.contains(&reason) {
-                let symbol = find(table, step.key).map_or(step.key, |q| q.symbol);
+                let symbol = step.key.symbol();
                 match left_out.iter_mut().find(|(r, _)| *r == reason) {
                     Some((_, symbols)) => symbols.push(symbol),
                     None => left_out.push((reason, vec![symbol])),
@@ -226,7 +225,7 @@ fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
         };
         pieces.extend(step.result_tex().map(|r| format!("= {r}")));
         shown.push(StepCtx {
-            key: step.key.to_string(),
+            key: step.key.id().to_string(),
             equation: step.equation.to_string(),
             pieces: pieces.iter().map(|p| math::mathml(p)).collect(),
             tex: pieces.join(" "),

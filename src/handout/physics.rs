@@ -1,10 +1,14 @@
 //! The words of the handout: the equation of motion of each model in symbols (physics.md §1,
-//! §2–3), and for each step of the chain of formulas (by its §7 key) what it means: a label for
+//! §2–3), and for each step of the chain of formulas (by its key) what it means: a label for
 //! a definition, a sentence of physics for a step of the motion. Keys not named here stay out of
 //! the handout's chain (thresholds such as μd,MIN; the report shows them).
 
+use crate::derivation::StepKey;
+use crate::models::pulled_mass::{derivation::param as pm_param, quantity::Key as P};
+use crate::models::woodpecker::{derivation::param as wp_param, quantity::Key as W};
 use crate::models::{with_model, Model};
 use crate::present::Present;
+use crate::results::quantity::AnyKey;
 
 /// (LaTeX, sentence) lines of the pulled mass: physics.md §1.1–1.2.
 pub(crate) const PULLED_MASS: &[(&str, &str)] = &[
@@ -64,116 +68,132 @@ pub enum Note {
 
 use Note::{Label, Numbers, Sentence};
 
-pub(crate) const PULLED_MASS_STEPS: &[(&str, Note)] = &[
-    ("W", Label("weight of each mass")),
-    ("omega", Label("of the hanging mass")),
-    ("T", Label("period of N(t)")),
-    ("phi", Label("pull in units of W")),
+/// The step of a pulled-mass quantity.
+const fn p(k: P) -> StepKey {
+    StepKey::Quantity(AnyKey::PulledMass(k))
+}
+
+/// The step of a woodpecker quantity.
+const fn w(k: W) -> StepKey {
+    StepKey::Quantity(AnyKey::Woodpecker(k))
+}
+
+pub(crate) const PULLED_MASS_STEPS: &[(StepKey, Note)] = &[
+    (StepKey::Param(pm_param::W), Label("weight of each mass")),
     (
-        "tau_slip",
+        StepKey::Param(pm_param::OMEGA),
+        Label("of the hanging mass"),
+    ),
+    (StepKey::Param(pm_param::T), Label("period of N(t)")),
+    (p(P::Phi), Label("pull in units of W")),
+    (
+        p(P::TauSlip),
         Sentence("slip condition F = μs N, N falling: the slip starts"),
     ),
-    ("t_slip", Label("slip time")),
+    (p(P::TSlip), Label("slip time")),
     (
-        "a_slip",
+        p(P::ASlip),
         Sentence("friction drops from μs N to μd N: a jumps from 0"),
     ),
     (
-        "tau_max_speed",
+        p(P::TauMaxSpeed),
         Sentence("largest speed where a = 0: F = μd N, N rising"),
     ),
-    ("t_max_speed", Label("time of the largest speed")),
+    (p(P::TMaxSpeed), Label("time of the largest speed")),
     (
-        "v_max",
+        p(P::VMax),
         Sentence("area under a(t) from the slip to the maximum"),
     ),
-    ("theta", Label("D = μs² + 2μsμd − μd²")),
+    (p(P::Theta), Label("D = μs² + 2μsμd − μd²")),
     (
-        "tau_stick",
+        p(P::TauStick),
         Sentence("the area under a(t) since the slip is zero again: stick"),
     ),
-    ("t_stick", Label("stick time")),
-    ("slip_duration", Label("duration of the slip")),
+    (p(P::TStick), Label("stick time")),
+    (p(P::SlipDuration), Label("duration of the slip")),
     (
-        "phi_stick_max",
+        p(P::PhiStickMax),
         Label("largest φ that sticks in the same period"),
     ),
     (
-        "phi_continuous",
+        p(P::PhiContinuous),
         Label("above φ_c the mass never sticks again"),
     ),
-    ("mu_min_equal", Label("least μ for (20) when μs = μd")),
-    ("gamma", Label("coefficient 1 before D^3/2 (claim 2)")),
+    (p(P::MuMinEqual), Label("least μ for (20) when μs = μd")),
+    (p(P::Gamma), Label("coefficient 1 before D^3/2 (claim 2)")),
     (
-        "v_avg",
+        p(P::VAvg),
         Sentence("mean speed: area under v(t) over a period, / T"),
     ),
-    ("advance_per_period", Label("advance per period")),
+    (p(P::AdvancePerPeriod), Label("advance per period")),
     (
-        "power",
+        p(P::Power),
         Sentence("work of the pull per time = friction dissipation"),
     ),
     (
-        "tau_stick_late",
+        p(P::TauStickLate),
         Sentence("beyond (20): stops early in the next period, before the next slip"),
     ),
 ];
 
-pub(crate) const WOODPECKER_STEPS: &[(&str, Note)] = &[
-    ("W_S", Label("sleeve weight")),
-    ("T", Label("period of F_e(t)")),
-    ("lambda", Label("torque balance: N = λ|F_e|")),
-    ("tau_quarter", Label("quarter period")),
-    ("zeta0", Label("linear counterpart of d0")),
-    ("delta0", Label("linear counterpart of z0")),
-    ("u_s_minus", Label("F_e > 0")),
-    ("u_s_plus", Label("F_e < 0")),
-    ("u_d_minus", Label("F_e > 0")),
-    ("u_d_plus", Label("F_e < 0")),
-    ("t0_1", Label("F_e = 0, a = g")),
-    ("delta_1", Label("lead of the slip")),
+pub(crate) const WOODPECKER_STEPS: &[(StepKey, Note)] = &[
+    (StepKey::Param(wp_param::W_S), Label("sleeve weight")),
+    (StepKey::Param(wp_param::T), Label("period of F_e(t)")),
     (
-        "t_slip_1",
+        StepKey::Param(wp_param::LAMBDA),
+        Label("torque balance: N = λ|F_e|"),
+    ),
+    (w(W::TauQuarter), Label("quarter period")),
+    (w(W::Zeta0), Label("linear counterpart of d0")),
+    (w(W::Delta0), Label("linear counterpart of z0")),
+    (w(W::USMinus), Label("F_e > 0")),
+    (w(W::USPlus), Label("F_e < 0")),
+    (w(W::UDMinus), Label("F_e > 0")),
+    (w(W::UDPlus), Label("F_e < 0")),
+    (w(W::T01), Label("F_e = 0, a = g")),
+    (w(W::Delta1), Label("lead of the slip")),
+    (
+        w(W::TSlip1),
         Sentence("slip condition W_S + F_e = 2λμs|F_e|, F_e falling"),
     ),
     (
-        "t_max_speed_1",
+        w(W::TMaxSpeed1),
         Sentence("largest speed where a = 0, after F_e = 0"),
     ),
     (
-        "v_max_1",
+        w(W::VMax1),
         Sentence("area under a(t) from the slip to the maximum"),
     ),
-    ("s_1", Label("shorthand of (49)")),
+    (w(W::S1), Label("shorthand of (49)")),
     (
-        "t_stick_1",
+        w(W::TStick1),
         Sentence("the area under a(t) since the slip is zero again: stick"),
     ),
-    ("gamma_1", Label("shorthand of (55)")),
-    ("distance_1", Sentence("distance slid in phase I")),
-    ("t0_2", Numbers),
-    ("delta_2", Numbers),
-    ("t_slip_2", Numbers),
-    ("t_max_speed_2", Numbers),
-    ("v_max_2", Numbers),
-    ("t_stick_2", Numbers),
-    ("distance_2", Numbers),
-    ("gamma", Label("both phases")),
+    (w(W::Gamma1), Label("shorthand of (55)")),
+    (w(W::Distance1), Sentence("distance slid in phase I")),
+    (w(W::T02), Numbers),
+    (w(W::Delta2), Numbers),
+    (w(W::TSlip2), Numbers),
+    (w(W::TMaxSpeed2), Numbers),
+    (w(W::VMax2), Numbers),
+    (w(W::TStick2), Numbers),
+    (w(W::Distance2), Numbers),
+    (w(W::Gamma), Label("both phases")),
     (
-        "v_avg",
+        w(W::VAvg),
         Sentence("mean speed y_S(T)/T; independent of δ0 (claim 6)"),
     ),
     (
-        "power_weight",
+        w(W::PowerWeight),
         Sentence("power of the weight, ∝ W_S³; not the dissipation (claim 7)"),
     ),
 ];
 
 /// Headings before the step of a key: the woodpecker's two phases.
-const HEADINGS: &[(&str, &str)] = &[
-    ("t0_1", "Phase I: F_e falls through zero (0 ≤ t ≤ T/2)"),
+const HEADINGS: &[(StepKey, &str)] = &[
+    (w(W::T01), "Phase I: F_e falls through zero (0 ≤ t ≤ T/2)"),
     (
-        "t0_2",
+        w(W::T02),
         "Phase II: F_e rises through zero (T/2 ≤ t ≤ T); the formulas of phase I with \
          u^(−) ↔ u^(+), η ↔ η', the numbers",
     ),
@@ -181,8 +201,8 @@ const HEADINGS: &[(&str, &str)] = &[
 
 /// How the step of `key` is shown in the chain of `setup`'s model, and the heading before it;
 /// `None`: not in the chain.
-pub fn note(setup: &Model, key: &str) -> Option<(Note, Option<&'static str>)> {
-    fn note_of<M: Present>(_: &M, key: &str) -> Option<Note> {
+pub fn note(setup: &Model, key: StepKey) -> Option<(Note, Option<&'static str>)> {
+    fn note_of<M: Present>(_: &M, key: StepKey) -> Option<Note> {
         M::handout_note(key)
     }
     let heading = HEADINGS.iter().find(|(k, _)| *k == key).map(|(_, h)| *h);

@@ -4,9 +4,9 @@
 use std::fmt::Write;
 
 use super::format::{rel, sig};
-use crate::models::pulled_mass::results::Evaluation;
-use crate::models::woodpecker::results as woodpecker;
-use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
+use crate::models::pulled_mass::{formula::Regime, quantity as pm, results::Evaluation};
+use crate::models::woodpecker::{quantity as wp, results as woodpecker};
+use crate::results::quantity::Registry;
 use crate::results::{Check, CheckValue, Summary};
 
 const DIGITS: usize = 10;
@@ -36,9 +36,8 @@ pub fn pulled_mass(e: &Evaluation) -> String {
         c.regime.id(),
         regime_reason(e)
     );
-    let values = serde_json::to_value(c).unwrap_or_default();
-    closed_form_table(&mut out, PULLED_MASS, &values);
-    checks_table(&mut out, &e.checks, PULLED_MASS);
+    closed_form_table(&mut out, |k: pm::Key| c.get(k));
+    checks_table(&mut out, &e.checks);
     laws_table(&mut out, &e.harmonic, Some(&e.linear));
     out
 }
@@ -76,24 +75,23 @@ pub fn woodpecker(e: &woodpecker::Evaluation) -> String {
     let _ = writeln!(
         out,
         "\nregime (linearized law, §3.6): {}; paper's standard regime valid: {}; immediate slip (38): {}",
-        woodpecker::orbit_regime_id(c.regime),
+        c.regime.id(),
         c.paper_regime_valid,
         c.immediate_slip
     );
     if let Some(note) = &e.domain_note {
         let _ = writeln!(out, "closed forms do not apply: {note}");
     }
-    let values = serde_json::to_value(c).unwrap_or_default();
-    closed_form_table(&mut out, WOODPECKER, &values);
+    closed_form_table(&mut out, |k: wp::Key| c.get(k));
     let not_applying: Vec<_> = e.applicability.iter().filter(|a| !a.applies).collect();
     if !not_applying.is_empty() && e.domain_note.is_none() {
         let _ = writeln!(out, "\nformulas that do not describe this motion");
         for a in not_applying {
-            let symbol = find(WOODPECKER, a.quantity).map_or(a.quantity, |q| q.symbol);
+            let symbol = a.quantity.quantity().symbol;
             let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
         }
     }
-    checks_table(&mut out, &e.checks, WOODPECKER);
+    checks_table(&mut out, &e.checks);
     laws_table(&mut out, &e.harmonic, e.linear.as_ref());
     out
 }
@@ -106,23 +104,24 @@ fn regime_reason(e: &Evaluation) -> String {
         sig(Some(c.phi_stick_max), 6),
         sig(Some(c.phi_continuous), 6),
     );
-    match c.regime.id() {
-        "immediate_continuous_slip" => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
-        "slip_stick" => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
-        "slip_stick_late" => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
-        _ => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
+        Regime::SlipStick => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
+        Regime::ContinuousSlip => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
     }
 }
 
-fn closed_form_table(out: &mut String, table: &[Quantity], values: &serde_json::Value) {
+/// The numbers of the closed forms of model `K` with their symbols, units and equations.
+fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f64>) {
     let _ = writeln!(out, "\nclosed forms (linearized law)");
     let _ = writeln!(
         out,
         "  {:<14} {:>18}  {:<6} {:<11} tag",
         "symbol", "value", "unit", "eq."
     );
-    for q in table {
-        let v = values.get(q.key).and_then(serde_json::Value::as_f64);
+    for e in K::numbers() {
+        let (q, v) = (&e.quantity, get(e.key));
         let _ = writeln!(
             out,
             "  {:<14} {:>18}  {:<6} {:<11} {}",
@@ -135,7 +134,7 @@ fn closed_form_table(out: &mut String, table: &[Quantity], values: &serde_json::
     }
 }
 
-fn checks_table(out: &mut String, checks: &[Check], table: &'static [Quantity]) {
+fn checks_table(out: &mut String, checks: &[Check]) {
     let passed = checks.iter().filter(|c| c.pass).count();
     let _ = writeln!(
         out,
@@ -149,7 +148,10 @@ fn checks_table(out: &mut String, checks: &[Check], table: &'static [Quantity]) 
         "quantity", "eq.", "closed form", "numeric", "rel.err"
     );
     for c in checks {
-        let symbol = find(table, &c.quantity).map_or(c.quantity.as_str(), |q| q.symbol);
+        let symbol = c
+            .quantity
+            .quantity()
+            .map_or(c.quantity.id(), |q| q.symbol.into());
         let _ = writeln!(
             out,
             "  {:<24} {:<18} {:>18} {:>18} {:>9}  {}",

@@ -4,19 +4,20 @@
 use serde::Serialize;
 
 use crate::error::Result;
+use crate::models::pulled_mass::formula::{ClosedForm, Regime};
 use crate::models::pulled_mass::PulledMassParams;
+use crate::models::pulled_mass::{quantity as pm, results as pulled_mass};
 use crate::models::with_model;
 use crate::models::woodpecker::formula::Counterpart;
-use crate::models::woodpecker::results::orbit_regime_id;
 use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
+use crate::models::woodpecker::{quantity as wp, results as woodpecker};
 use crate::output::format::{rel, sig};
 use crate::present::Present;
 use crate::report::math::mathml;
 use crate::report::scene::Scene;
 use crate::report::writer::OutFile;
-use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
-use crate::results::{Applicability, Check, CheckValue, Summary};
+use crate::results::quantity::{Quantity, Registry};
+use crate::results::{Applicability, Check, CheckValue, Checked, Summary};
 
 /// Significant digits of the tables.
 const DIGITS: usize = 8;
@@ -251,8 +252,7 @@ pub(crate) fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<Scene
         integration_regime("linearized law, exact integration", &e.linear),
         integration_regime("harmonic law, exact integration", &e.harmonic),
     ];
-    let values = serde_json::to_value(c).unwrap_or_default();
-    fill_checks(&mut ctx, PULLED_MASS, &values, &e.checks, &e.applicability);
+    fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
     ctx.linearization = laws_table(
         &[
             ("harmonic", Some(&e.harmonic)),
@@ -264,14 +264,14 @@ pub(crate) fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<Scene
 }
 
 /// The §1.5 inequality that decides the pulled-mass regime, with numbers.
-fn pulled_regime_reason(c: &crate::models::pulled_mass::formula::ClosedForm, mu_s: f64) -> String {
+fn pulled_regime_reason(c: &ClosedForm, mu_s: f64) -> String {
     let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
     let two_mu_s = num(2.0 * mu_s);
-    match c.regime.id() {
-        "immediate_continuous_slip" => format!("φ = {phi} > 2μs = {two_mu_s}"),
-        "slip_stick" => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
-        "slip_stick_late" => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
-        _ => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("φ = {phi} > 2μs = {two_mu_s}"),
+        Regime::SlipStick => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
+        Regime::ContinuousSlip => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
     }
 }
 
@@ -329,7 +329,7 @@ pub(crate) fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<S
     let c = &e.closed_form;
     ctx.regimes = vec![RegimeRow {
         law: "linearized law, closed forms (§3.6)".to_string(),
-        regime: orbit_regime_id(c.regime).to_string(),
+        regime: c.regime.id().to_string(),
         why: format!(
             "paper's standard regime (both sticks within their half periods): {}; immediate \
              slip (38): {}",
@@ -348,8 +348,7 @@ pub(crate) fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<S
         &e.harmonic,
     ));
     ctx.domain_note = e.domain_note.clone().unwrap_or_default();
-    let values = serde_json::to_value(c).unwrap_or_default();
-    fill_checks(&mut ctx, WOODPECKER, &values, &e.checks, &e.applicability);
+    fill_checks(&mut ctx, |k: wp::Key| c.get(k), &e.checks, &e.applicability);
     // Harmonic against each linear counterpart.
     let mut columns: Vec<(String, Option<Summary>)> = vec![("harmonic".into(), Some(e.harmonic))];
     for cp in [
@@ -372,30 +371,31 @@ pub(crate) fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<S
     Ok(ctx)
 }
 
-/// The verification rows: every closed form with its check (or why it has none), then the
-/// checks of quantities outside the table (orbit, regime).
-fn fill_checks(
+/// The verification rows: every closed form of model `K` with its check (or why it has none),
+/// then the checks of quantities outside the table (orbit, regime).
+fn fill_checks<K: Registry>(
     ctx: &mut SceneCtx,
-    table: &'static [Quantity],
-    values: &serde_json::Value,
+    get: impl Fn(K) -> Option<f64>,
     checks: &[Check],
     applicability: &[Applicability],
 ) {
     let mut rows = Vec::new();
-    for q in table {
-        let closed = values.get(q.key).and_then(serde_json::Value::as_f64);
-        let check = checks.iter().find(|c| c.quantity == q.key);
+    for e in K::numbers() {
+        let q = &e.quantity;
+        let closed = get(e.key);
+        let check = checks
+            .iter()
+            .find(|c| c.quantity == Checked::Key(e.key.into()));
         let note = applicability
             .iter()
-            .find(|a| a.quantity == q.key && !a.applies)
+            .find(|a| a.quantity == e.key.into() && !a.applies)
             .map(|a| a.reason.clone());
         rows.push(match (check, note) {
             (Some(c), _) => check_row(q, c),
             (None, Some(note)) => plain_row(q, closed, "n/a", "na", note),
             (None, None) => {
-                let via_time = q.key.strip_prefix("tau_").map(|rest| format!("t_{rest}"));
-                let note = match via_time {
-                    Some(t) if checks.iter().any(|c| c.quantity == t) => {
+                let note = match e.key.time() {
+                    Some(t) if checks.iter().any(|c| c.quantity == Checked::Key(t.into())) => {
                         "checked as t = T·τ (row below)"
                     }
                     _ => "no direct counterpart in the integration",
@@ -406,19 +406,21 @@ fn fill_checks(
     }
     for c in checks
         .iter()
-        .filter(|c| !table.iter().any(|q| q.key == c.quantity))
+        .filter(|c| !K::numbers().any(|e| c.quantity == Checked::Key(e.key.into())))
     {
-        let q = find(table, &c.quantity).copied().unwrap_or(Quantity {
-            key: "",
+        let q = c.quantity.quantity().copied().unwrap_or(Quantity {
+            id: "",
             symbol: "",
+            tex: "",
             unit: "",
             equation: "§3.6",
             tag: "[D]",
             latex: "",
+            words: "",
         });
         let mut r = check_row(&q, c);
         if r.symbol.is_empty() {
-            r.symbol = c.quantity.replace('_', " ");
+            r.symbol = c.quantity.id().replace('_', " ");
         }
         rows.push(r);
     }
@@ -444,7 +446,7 @@ fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
             mathml(q.latex)
         },
         formula_tex: q.latex.to_string(),
-        equation: c.equation.clone(),
+        equation: c.equation.to_string(),
         tag: q.tag.to_string(),
         closed_form: value(&c.closed_form),
         numeric: value(&c.numeric),

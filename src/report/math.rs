@@ -25,14 +25,21 @@ pub fn escape(text: &str) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::results::quantity::{PULLED_MASS, WOODPECKER};
+    use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
+    use crate::results::quantity::Registry;
 
     #[test]
-    fn every_formula_of_the_tables_renders_to_mathml() {
-        for q in PULLED_MASS.iter().chain(WOODPECKER) {
-            let m = mathml(q.latex);
-            assert!(m.starts_with("<math"), "{}: {m}", q.key);
-            assert!(!m.contains("merror"), "{}: {m}", q.key);
+    fn every_formula_and_symbol_of_the_registries_renders_to_mathml() {
+        let quantities = pm::Key::ENTRIES
+            .iter()
+            .map(|e| &e.quantity)
+            .chain(wp::Key::ENTRIES.iter().map(|e| &e.quantity));
+        for q in quantities {
+            for tex in [q.latex, q.tex] {
+                let m = mathml(tex);
+                assert!(m.starts_with("<math"), "{}: {m}", q.id);
+                assert!(!m.contains("merror"), "{}: {m}", q.id);
+            }
         }
     }
 }

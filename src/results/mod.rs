@@ -5,14 +5,14 @@ pub mod checks;
 pub mod quantity;
 pub mod summary;
 
-pub use checks::{rel_diff, Check, CheckValue, TOLERANCE};
+pub use checks::{rel_diff, Check, CheckValue, Checked, TOLERANCE};
 pub use summary::{Power, Summary};
 
 /// Whether a paper formula describes the computed motion, and why not.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Applicability {
-    /// The closed_form key.
-    pub quantity: &'static str,
+    /// The quantity (serialized as its §7 key).
+    pub quantity: quantity::AnyKey,
     pub applies: bool,
     /// Why not (empty when it applies).
     pub reason: String,
@@ -20,9 +20,9 @@ pub struct Applicability {
 
 impl Applicability {
     /// An entry that applies when `reason` is `None`.
-    pub fn new(quantity: &'static str, reason: Option<String>) -> Self {
+    pub fn new(quantity: impl Into<quantity::AnyKey>, reason: Option<String>) -> Self {
         Self {
-            quantity,
+            quantity: quantity.into(),
             applies: reason.is_none(),
             reason: reason.unwrap_or_default(),
         }

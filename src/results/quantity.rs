@@ -1,13 +1,27 @@
-//! Display metadata of the closed-form quantities: symbol, unit, equation and tag, and the
-//! formula in LaTeX, keyed by the §7 `closed_form` key.
+//! The closed-form quantities, described once. Each model keeps its registry in its own folder
+//! (`src/models/<model>/quantity.rs`: a `Key` enum with one variant per quantity and the table of
+//! entries), beside the closed forms it describes, so that a model brings its quantities with it
+//! and the two tables never share a key type. This module holds what both registries share: the
+//! shape of an entry ([`Entry`], [`Quantity`]), the trait of a model's key ([`Registry`]), and
+//! [`AnyKey`], a key of either model, for the data both models share (checks, applicability,
+//! derivation steps, worksheet questions).
+//!
+//! The §7 JSON key of a quantity is written in its entry only: the `closed_form` object is
+//! serialized through the registry, and every other place names the quantity by its typed key.
 
-/// How a closed-form quantity is shown.
+use serde::Serialize;
+
+use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
+
+/// How a closed-form quantity is shown, and what it means.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Quantity {
-    /// The §7 key.
-    pub key: &'static str,
+    /// The §7 key (JSON).
+    pub id: &'static str,
     /// Plain-text symbol.
     pub symbol: &'static str,
+    /// The symbol in LaTeX (the left-hand side of a worked step).
+    pub tex: &'static str,
     /// SI unit ("" for dimensionless).
     pub unit: &'static str,
     /// Paper's equation number, or the physics.md section of a derived result.
@@ -16,522 +30,218 @@ pub struct Quantity {
     pub tag: &'static str,
     /// The formula in LaTeX.
     pub latex: &'static str,
+    /// What it is, in one plain line.
+    pub words: &'static str,
 }
 
-const fn q(
-    key: &'static str,
-    symbol: &'static str,
-    unit: &'static str,
-    equation: &'static str,
-    tag: &'static str,
-    latex: &'static str,
-) -> Quantity {
-    Quantity {
-        key,
-        symbol,
-        unit,
-        equation,
-        tag,
-        latex,
+/// What kind of value a quantity has, and where it appears.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A number of the §7 `closed_form` object, shown in the closed-form tables.
+    Number,
+    /// A flag or the regime id of the §7 `closed_form` object (checked as a label).
+    Label,
+    /// A number checked against the integration that is not a key of the §7 `closed_form`
+    /// object.
+    Checked,
+}
+
+/// One quantity of a model's registry: its key, how it is shown, what kind of value it has, and
+/// where it describes the motion (`R`: the model's regimes, or its own notion of them).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Entry<K: 'static, R: 'static> {
+    pub key: K,
+    pub kind: Kind,
+    pub quantity: Quantity,
+    /// Where the quantity describes the motion.
+    pub regimes: R,
+}
+
+/// The typed key of a model's quantities, and the model's registry.
+pub trait Registry: Copy + Eq + std::fmt::Debug + Into<AnyKey> + 'static {
+    /// Where a quantity of this model describes the motion.
+    type Regimes: Copy + 'static;
+    /// Every quantity of the model, in the order of the §7 `closed_form` object and of the
+    /// tables; the entry of a key is at the key's [`Registry::index`].
+    const ENTRIES: &'static [Entry<Self, Self::Regimes>];
+
+    /// The position of the key's entry in [`Registry::ENTRIES`].
+    fn index(self) -> usize;
+
+    /// The time t = T·τ of a time fraction τ, checked in its place (`None` for the others).
+    fn time(self) -> Option<Self> {
+        None
+    }
+
+    /// The key's entry.
+    fn entry(self) -> &'static Entry<Self, Self::Regimes> {
+        &Self::ENTRIES[self.index()]
+    }
+
+    /// How the quantity is shown.
+    fn quantity(self) -> &'static Quantity {
+        &self.entry().quantity
+    }
+
+    /// The §7 key.
+    fn id(self) -> &'static str {
+        self.quantity().id
+    }
+
+    /// The key whose §7 key is `id`.
+    fn from_id(id: &str) -> Option<Self> {
+        Self::ENTRIES
+            .iter()
+            .find(|e| e.quantity.id == id)
+            .map(|e| e.key)
+    }
+
+    /// The numbers of the §7 `closed_form` object, in the order of the tables.
+    fn numbers() -> impl Iterator<Item = &'static Entry<Self, Self::Regimes>> {
+        Self::ENTRIES.iter().filter(|e| e.kind == Kind::Number)
     }
 }
 
-/// The pulled-mass closed forms (physics.md §1.3–1.4), in the order they are shown.
-pub const PULLED_MASS: &[Quantity] = &[
-    q("phi", "φ", "", "—", "[P]", r"\varphi = F/W"),
-    q(
-        "tau_slip",
-        "τ_SL",
-        "",
-        "(13),(25)",
-        "[P]",
-        r"\tau_{SL} = \tfrac12\left(1 - \frac{\varphi}{2\mu_s}\right)",
-    ),
-    q(
-        "t_slip",
-        "t_SL",
-        "s",
-        "(13),(25)",
-        "[P]",
-        r"t_{SL} = T\,\tau_{SL}",
-    ),
-    q(
-        "a_slip",
-        "a_SL",
-        "m/s²",
-        "§1.3",
-        "[D]",
-        r"a_{SL} = \frac{g\varphi}{2}\left(1 - \frac{\mu_d}{\mu_s}\right)",
-    ),
-    q(
-        "tau_max_speed",
-        "τ_M",
-        "",
-        "(17)",
-        "[P]",
-        r"\tau_M = \tfrac12\left(1 + \frac{\varphi}{2\mu_d}\right)",
-    ),
-    q("t_max_speed", "t_M", "s", "(17)", "[P]", r"t_M = T\,\tau_M"),
-    q(
-        "v_max",
-        "v_M",
-        "m/s",
-        "(26)",
-        "[P]",
-        r"v_M = \frac{g T \varphi^2 D}{16 \mu_s^2 \mu_d}",
-    ),
-    q(
-        "tau_stick",
-        "τ_ST",
-        "",
-        "(18),(25)",
-        "[P]",
-        r"\tau_{ST} = \tfrac12 (1 + \varphi\Theta)",
-    ),
-    q(
-        "t_stick",
-        "t_ST",
-        "s",
-        "(18),(25)",
-        "[P]",
-        r"t_{ST} = T\,\tau_{ST}",
-    ),
-    q(
-        "slip_duration",
-        "t_ST − t_SL",
-        "s",
-        "(21)",
-        "[P]",
-        r"t_{ST} - t_{SL} = \frac{T\varphi}{2}\,\frac{\mu_s + \mu_d + \sqrt{D}}{2\mu_s\mu_d}",
-    ),
-    q(
-        "theta",
-        "Θ",
-        "",
-        "(18)",
-        "[P]",
-        r"\Theta = \frac{\mu_s + \sqrt{D}}{2\mu_s\mu_d},\quad D = \mu_s^2 + 2\mu_s\mu_d - \mu_d^2",
-    ),
-    q(
-        "phi_stick_max",
-        "1/Θ",
-        "",
-        "(20)",
-        "[P]",
-        r"\varphi \le 1/\Theta = \frac{2\mu_s\mu_d}{\mu_s + \sqrt{D}}",
-    ),
-    q(
-        "phi_continuous",
-        "φ_c",
-        "",
-        "§1.4",
-        "[D]",
-        r"\varphi_c = \frac{4\mu_s\mu_d}{2\mu_s + \sqrt{2D}}",
-    ),
-    q(
-        "mu_min_equal",
-        "μ_MIN",
-        "",
-        "(22)",
-        "[P]",
-        r"\mu_{MIN} = \frac{(1+\sqrt2)\,\varphi}{2}",
-    ),
-    q(
-        "gamma",
-        "Γ",
-        "",
-        "(28)",
-        "[P*]",
-        r"\Gamma = \frac{D^{3/2} + \mu_s^3 + 3\mu_s^2\mu_d - \mu_d^3}{96\,\mu_s^3\mu_d^2}",
-    ),
-    q(
-        "v_avg",
-        "v̄",
-        "m/s",
-        "(27)",
-        "[P]",
-        r"\bar v = g T \varphi^3 \Gamma",
-    ),
-    q(
-        "advance_per_period",
-        "x_T",
-        "m",
-        "(30)",
-        "[P]",
-        r"x_T = g T^2 \varphi^3 \Gamma",
-    ),
-    q(
-        "power",
-        "P",
-        "W",
-        "(29)",
-        "[P]",
-        r"P = F\bar v = \frac{gT}{W^3}\,\Gamma F^4",
-    ),
-    q(
-        "tau_stick_late",
-        "τ_ST,late",
-        "",
-        "§1.4",
-        "[D]",
-        r"\tau_{ST,late} = 1 + \tau'_M - \sqrt{2\tau_M'^2 - \frac{v_M}{gT\mu_d}}",
-    ),
-    q(
-        "advance_per_period_late",
-        "x_T,late",
-        "m",
-        "§1.4",
-        "[D]",
-        r"x_{T,late} = gT^2\,[F_1]_{\tau_{SL}}^{1/2} + [F_2]_{1/2}^{1} + [F_3]_{1}^{\tau_{ST,late}}",
-    ),
-    q(
-        "v_avg_late",
-        "v̄_late",
-        "m/s",
-        "§1.4",
-        "[D]",
-        r"\bar v_{late} = x_{T,late}/T",
-    ),
-];
+/// A closed-form quantity of either model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AnyKey {
+    PulledMass(pm::Key),
+    Woodpecker(wp::Key),
+}
 
-/// Checked quantities that are not §7 closed-form keys, shown with the checks.
-pub const EXTRA_CHECKED: &[Quantity] = &[
-    q(
-        "power_late",
-        "P_late",
-        "W",
-        "(29)",
-        "[D]",
-        r"P_{late} = F\,\bar v_{late}",
-    ),
-    q(
-        "immediate_slip",
-        "immediate slip",
-        "",
-        "(38)",
-        "[P]",
-        r"\text{immediate slip}",
-    ),
-    q(
-        "regime",
-        "regime",
-        "",
-        "§1.5, §3.6",
-        "[D]",
-        r"\text{regime}",
-    ),
-];
+impl AnyKey {
+    /// How the quantity is shown.
+    pub fn quantity(self) -> &'static Quantity {
+        match self {
+            AnyKey::PulledMass(k) => k.quantity(),
+            AnyKey::Woodpecker(k) => k.quantity(),
+        }
+    }
 
-/// The woodpecker closed forms (physics.md §3), in the order they are shown.
-pub const WOODPECKER: &[Quantity] = &[
-    q(
-        "zeta0",
-        "ζ0",
-        "m",
-        "§3.1",
-        "[D]",
-        r"\zeta_0 \quad \text{(counterpart of } d_0)",
-    ),
-    q(
-        "delta0",
-        "δ0",
-        "m",
-        "§3.1",
-        "[D]",
-        r"\delta_0 \quad \text{(counterpart of } z_0)",
-    ),
-    q("tau_quarter", "τ = T/4", "s", "§3.1", "[P]", r"\tau = T/4"),
-    q(
-        "u_s_minus",
-        "u_s^(−)",
-        "",
-        "(44)",
-        "[G]",
-        r"u_s^{(-)} = 2\lambda\mu_s - 1",
-    ),
-    q(
-        "u_s_plus",
-        "u_s^(+)",
-        "",
-        "(44)",
-        "[G]",
-        r"u_s^{(+)} = 2\lambda\mu_s + 1",
-    ),
-    q(
-        "u_d_minus",
-        "u_d^(−)",
-        "",
-        "(44)",
-        "[G]",
-        r"u_d^{(-)} = 2\lambda\mu_d - 1",
-    ),
-    q(
-        "u_d_plus",
-        "u_d^(+)",
-        "",
-        "(44)",
-        "[G]",
-        r"u_d^{(+)} = 2\lambda\mu_d + 1",
-    ),
-    q(
-        "eta",
-        "η",
-        "",
-        "§3.1",
-        "[D]",
-        r"\eta = k(\zeta_0 - \delta_0)/W_S",
-    ),
-    q(
-        "eta_prime",
-        "η'",
-        "",
-        "§3.1",
-        "[D]",
-        r"\eta' = k(\zeta_0 + \delta_0)/W_S",
-    ),
-    q(
-        "t0_1",
-        "t0^(I)",
-        "s",
-        "(40)",
-        "[P]",
-        r"t_0^{(I)} = \tau\,(1 + \delta_0/\zeta_0)",
-    ),
-    q(
-        "delta_1",
-        "Δ^(I)",
-        "s",
-        "(42)",
-        "[G]",
-        r"\Delta^{(I)} = \frac{\tau W_S}{k\zeta_0 u_s^{(-)}}",
-    ),
-    q(
-        "t_slip_1",
-        "t_SL^(I)",
-        "s",
-        "(41)",
-        "[P]",
-        r"t_{SL}^{(I)} = t_0^{(I)} - \Delta^{(I)}",
-    ),
-    q(
-        "a_slip_1",
-        "a_SL^(I)",
-        "m/s²",
-        "(45)",
-        "[G]",
-        r"a_{SL}^{(I)} = g\,\frac{u_s^{(-)} - u_d^{(-)}}{u_s^{(-)}}",
-    ),
-    q(
-        "t_max_speed_1",
-        "t_M^(I)",
-        "s",
-        "(46)",
-        "[G]",
-        r"t_M^{(I)} = t_0^{(I)} + \Delta^{(I)} u_s^{(-)}/u_d^{(+)}",
-    ),
-    q(
-        "v_max_1",
-        "v_M^(I)",
-        "m/s",
-        "(48)",
-        "[G]",
-        r"v_M^{(I)} = \frac{g\Delta^{(I)}}{2}\,\frac{u_d^{(+)}(2u_s^{(-)} - u_d^{(-)}) + u_s^{(-)2}}{u_s^{(-)} u_d^{(+)}}",
-    ),
-    q(
-        "s_1",
-        "S^(I)",
-        "",
-        "(50)",
-        "[G]",
-        r"S^{(I)} = \frac{u_s^{(-)} + \sqrt{u_s^{(-)2} + 2u_s^{(-)}u_d^{(+)} - u_d^{(-)}u_d^{(+)}}}{u_d^{(+)}}",
-    ),
-    q(
-        "t_stick_1",
-        "t_ST^(I)",
-        "s",
-        "(49)",
-        "[G]",
-        r"t_{ST}^{(I)} = t_0^{(I)} + \Delta^{(I)} S^{(I)}",
-    ),
-    q(
-        "mu_d_min_1",
-        "μd,MIN^(I)",
-        "",
-        "(51)",
-        "[G]",
-        r"\mu_{d,MIN}^{(I)} = \frac{1}{2\lambda}\,\frac{u_s^{(-)2}\eta(2-\eta) + 2u_s^{(-)} + 1}{u_s^{(-)2}\eta^2 + 1}",
-    ),
-    q(
-        "mu_d_halt_1",
-        "μd,HALT^(I)",
-        "",
-        "§3.6",
-        "[D]",
-        r"\mu_{d,HALT}^{(I)} = \frac{\max(x_+, 1/\eta) - 1}{2\lambda}",
-    ),
-    q(
-        "gamma_1",
-        "Γ^(I)",
-        "",
-        "(54)",
-        "[P*]",
-        r"\Gamma^{(I)} = \frac{3u_s^{(-)}(S+1)^2 - u_d^{(+)}S^3 - 3u_d^{(-)}S - 2u_d^{(-)}}{u_s^{(-)3}}",
-    ),
-    q(
-        "distance_1",
-        "y^(I)",
-        "m",
-        "(55)",
-        "[P]",
-        r"y^{(I)} = \frac{g\tau^2 W_S^2\,\Gamma^{(I)}}{6\zeta_0^2 k^2}",
-    ),
-    q(
-        "t0_2",
-        "t0^(II)",
-        "s",
-        "(57)",
-        "[P]",
-        r"t_0^{(II)} = \tau\,(3 - \delta_0/\zeta_0)",
-    ),
-    q(
-        "delta_2",
-        "Δ^(II)",
-        "s",
-        "(59)",
-        "[G]",
-        r"\Delta^{(II)} = \frac{\tau W_S}{k\zeta_0 u_s^{(+)}}",
-    ),
-    q(
-        "t_slip_2",
-        "t_SL^(II)",
-        "s",
-        "(58)",
-        "[P]",
-        r"t_{SL}^{(II)} = t_0^{(II)} - \Delta^{(II)}",
-    ),
-    q(
-        "a_slip_2",
-        "a_SL^(II)",
-        "m/s²",
-        "(64)",
-        "[G]",
-        r"a_{SL}^{(II)} = g\,\frac{u_s^{(+)} - u_d^{(+)}}{u_s^{(+)}}",
-    ),
-    q(
-        "t_max_speed_2",
-        "t_M^(II)",
-        "s",
-        "(62)",
-        "[G]",
-        r"t_M^{(II)} = t_0^{(II)} + \Delta^{(II)} u_s^{(+)}/u_d^{(-)}",
-    ),
-    q(
-        "v_max_2",
-        "v_M^(II)",
-        "m/s",
-        "(63)",
-        "[G]",
-        r"v_M^{(II)} = \frac{g\Delta^{(II)}}{2}\,\frac{u_d^{(-)}(2u_s^{(+)} - u_d^{(+)}) + u_s^{(+)2}}{u_s^{(+)} u_d^{(-)}}",
-    ),
-    q(
-        "s_2",
-        "S^(II)",
-        "",
-        "(61)",
-        "[G]",
-        r"S^{(II)} = \frac{u_s^{(+)} + \sqrt{u_s^{(+)2} + 2u_s^{(+)}u_d^{(-)} - u_d^{(+)}u_d^{(-)}}}{u_d^{(-)}}",
-    ),
-    q(
-        "t_stick_2",
-        "t_ST^(II)",
-        "s",
-        "(60)",
-        "[G]",
-        r"t_{ST}^{(II)} = t_0^{(II)} + \Delta^{(II)} S^{(II)}",
-    ),
-    q(
-        "mu_d_min_2",
-        "μd,MIN^(II)",
-        "",
-        "(65)",
-        "[G]",
-        r"\mu_{d,MIN}^{(II)} = \frac{1}{2\lambda}\,\frac{u_s^{(+)2}\eta'(\eta'+2) + 2u_s^{(+)} - 1}{u_s^{(+)2}\eta'^2 + 1}",
-    ),
-    q(
-        "mu_d_halt_2",
-        "μd,HALT^(II)",
-        "",
-        "§3.6",
-        "[D]",
-        r"\mu_{d,HALT}^{(II)} = \frac{\max(x'_+, 1/\eta') + 1}{2\lambda}",
-    ),
-    q(
-        "gamma_2",
-        "Γ^(II)",
-        "",
-        "(70)",
-        "[P*]",
-        r"\Gamma^{(II)} = \frac{3u_s^{(+)}(S+1)^2 - u_d^{(-)}S^3 - 3u_d^{(+)}S - 2u_d^{(+)}}{u_s^{(+)3}}",
-    ),
-    q(
-        "distance_2",
-        "y^(II)",
-        "m",
-        "(68)",
-        "[P]",
-        r"y^{(II)} = \frac{g\tau^2 W_S^2\,\Gamma^{(II)}}{6\zeta_0^2 k^2}",
-    ),
-    q(
-        "gamma",
-        "Γ",
-        "",
-        "(69)",
-        "[P]",
-        r"\Gamma = \Gamma^{(I)} + \Gamma^{(II)}",
-    ),
-    q(
-        "distance_per_period",
-        "y_S(T)",
-        "m",
-        "(68),(69)",
-        "[P]",
-        r"y_S(T) = \frac{g\tau^2 W_S^2\,\Gamma}{6\zeta_0^2 k^2}",
-    ),
-    q(
-        "v_avg",
-        "v̄",
-        "m/s",
-        "(71)",
-        "[P]",
-        r"\bar v = \frac{g\tau W_S^2\,\Gamma}{24\zeta_0^2 k^2}",
-    ),
-    q(
-        "power_weight",
-        "P_W",
-        "W",
-        "§3.5",
-        "[P]",
-        r"P_W = W_S\,\bar v",
-    ),
-    q(
-        "orbit_v_avg",
-        "v̄ (orbit)",
-        "m/s",
-        "§3.6",
-        "[D]",
-        r"\bar v = y_{orbit}/T",
-    ),
-    q(
-        "orbit_distance_per_period",
-        "y_T (orbit)",
-        "m",
-        "§3.6",
-        "[D]",
-        r"y_{orbit} \quad \text{(lobe engine)}",
-    ),
-];
+    /// The §7 key.
+    pub fn id(self) -> &'static str {
+        self.quantity().id
+    }
+}
 
-/// The metadata of `key` in `table`, or among the extra checked quantities.
-pub fn find(table: &'static [Quantity], key: &str) -> Option<&'static Quantity> {
-    table.iter().chain(EXTRA_CHECKED).find(|q| q.key == key)
+impl From<pm::Key> for AnyKey {
+    fn from(k: pm::Key) -> Self {
+        AnyKey::PulledMass(k)
+    }
+}
+
+impl From<wp::Key> for AnyKey {
+    fn from(k: wp::Key) -> Self {
+        AnyKey::Woodpecker(k)
+    }
+}
+
+impl Serialize for AnyKey {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
+    }
+}
+
+/// The value of a quantity of the §7 `closed_form` object, as serialized.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Value {
+    /// A number; `None` (null) where the expression is undefined.
+    Number(Option<f64>),
+    Flag(bool),
+    /// A regime id.
+    Label(&'static str),
+}
+
+impl Value {
+    /// The number, if the value is one and is defined (finite: what JSON shows as a number).
+    pub fn number(self) -> Option<f64> {
+        match self {
+            Value::Number(x) => x.filter(|x| x.is_finite()),
+            Value::Flag(_) | Value::Label(_) => None,
+        }
+    }
+}
+
+impl From<f64> for Value {
+    fn from(x: f64) -> Self {
+        Value::Number(Some(x))
+    }
+}
+
+impl From<Option<f64>> for Value {
+    fn from(x: Option<f64>) -> Self {
+        Value::Number(x)
+    }
+}
+
+impl From<bool> for Value {
+    fn from(b: bool) -> Self {
+        Value::Flag(b)
+    }
+}
+
+impl Serialize for Value {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match *self {
+            Value::Number(x) => x.serialize(s),
+            Value::Flag(b) => s.serialize_bool(b),
+            Value::Label(id) => s.serialize_str(id),
+        }
+    }
+}
+
+/// Serializes the §7 `closed_form` object of a model: every entry of its registry that is a key
+/// of the object, in registry order, with `value` of it.
+pub fn serialize_closed_form<K: Registry, S: serde::Serializer>(
+    s: S,
+    value: impl Fn(K) -> Value,
+) -> Result<S::Ok, S::Error> {
+    use serde::ser::SerializeMap;
+    let entries = K::ENTRIES.iter().filter(|e| e.kind != Kind::Checked);
+    let mut map = s.serialize_map(Some(entries.clone().count()))?;
+    for e in entries {
+        map.serialize_entry(e.quantity.id, &value(e.key))?;
+    }
+    map.end()
+}
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use super::*;
+
+    /// Every entry sits at its key's index, ids are unique, and every key has an entry.
+    pub(crate) fn registry_is_consistent<K: Registry>(all: &[K]) {
+        assert_eq!(all.len(), K::ENTRIES.len());
+        for (i, e) in K::ENTRIES.iter().enumerate() {
+            assert_eq!(e.key.index(), i, "{:?}", e.key);
+            assert_eq!(all[i], e.key);
+            let q = &e.quantity;
+            assert!(!q.id.is_empty() && !q.symbol.is_empty() && !q.tex.is_empty());
+            assert!(!q.equation.is_empty() && !q.tag.is_empty() && !q.latex.is_empty());
+            assert!(!q.words.is_empty(), "{}", q.id);
+            // The tag is shown beside the equation; an equation that carries it prints it twice.
+            assert!(!q.equation.contains('['), "{}: {}", q.id, q.equation);
+            let twins = K::ENTRIES.iter().filter(|f| f.quantity.id == q.id).count();
+            assert_eq!(twins, 1, "{}", q.id);
+        }
+    }
+
+    /// The §7 `closed_form` object has exactly the registry's keys of the object, in order.
+    pub(crate) fn serialized_keys_are_the_registry<K: Registry>(object: &serde_json::Value) {
+        let keys: Vec<&str> = object
+            .as_object()
+            .expect("closed_form is an object")
+            .keys()
+            .map(String::as_str)
+            .collect();
+        let mut want: Vec<&str> = K::ENTRIES
+            .iter()
+            .filter(|e| e.kind != Kind::Checked)
+            .map(|e| e.quantity.id)
+            .collect();
+        want.sort_unstable();
+        let mut keys = keys;
+        keys.sort_unstable();
+        assert_eq!(keys, want);
+    }
 }

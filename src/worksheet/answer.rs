@@ -8,13 +8,14 @@ use serde::Serialize;
 use super::exercise::Exercise;
 use super::figure::v_figure;
 use super::question::{Kind, Question};
-use crate::derivation::Step;
+use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
 use crate::error::Result;
 use crate::models::{with_model, Model};
 use crate::params::DEFAULT_PERIODS;
 use crate::present::Present;
-use crate::results::{rel_diff, Check, CheckValue, TOLERANCE};
+use crate::results::quantity::AnyKey;
+use crate::results::{rel_diff, Check, CheckValue, Checked, TOLERANCE};
 
 /// A figure is readable when its reading tolerance is at most this fraction of the value read
 /// (not so when the speed grows far beyond the first maximum, as in continuous slip).
@@ -76,21 +77,30 @@ fn evaluate(case: &Model, record_segments: bool) -> Result<Evaluated> {
 
 /// The worked steps of a case.
 pub fn steps(case: &Model) -> Vec<Step> {
-    with_model!(case, p => p.derivation().0)
+    with_model!(case, p => p.derivation())
 }
 
 /// The step of `key` with a value (its form applies), if any.
-pub(crate) fn applying<'a>(steps: &'a [Step], key: &str) -> Option<&'a Step> {
+pub(crate) fn applying(steps: &[Step], key: impl Into<AnyKey>) -> Option<&Step> {
+    let key = StepKey::Quantity(key.into());
     steps.iter().find(|s| s.key == key && s.value.is_some())
+}
+
+/// The passing check of `key` on the integration, if any.
+fn passing(evaluated: &Evaluated, key: AnyKey) -> Option<&Check> {
+    evaluated
+        .checks
+        .iter()
+        .find(|c| c.quantity == Checked::Key(key) && c.pass)
 }
 
 /// Whether every closed form the questions need applies to the case (cheap: no integration).
 pub fn closed_forms_apply(steps: &[Step], questions: &[&Question]) -> bool {
     questions.iter().all(|q| match q.kind {
-        Kind::ClosedForm { step, .. }
-        | Kind::Threshold { step }
-        | Kind::ReadFigure { step, .. } => applying(steps, step).is_some(),
-        Kind::Regime => true,
+        Kind::ClosedForm(key) | Kind::Threshold(key) | Kind::ReadFigure(key) => {
+            applying(steps, key).is_some()
+        }
+        Kind::Regime(_) => true,
     })
 }
 
@@ -103,24 +113,24 @@ pub fn answer(
 ) -> Result<Option<Answers>> {
     let reads_figure = questions
         .iter()
-        .any(|q| matches!(q.kind, Kind::ReadFigure { .. }));
+        .any(|q| matches!(q.kind, Kind::ReadFigure(_)));
     let evaluated = evaluate(case, reads_figure)?;
     let mut answers = Vec::with_capacity(questions.len());
     let mut figure = None;
     for &question in questions {
         let answer = match question.kind {
-            Kind::ClosedForm { step, check } => measured(question, steps, &evaluated, step, check),
-            Kind::Threshold { step } => {
-                with_model!(case, p => p.threshold(question, steps, step)?)
+            Kind::ClosedForm(key) => measured(question, steps, &evaluated, key),
+            Kind::Threshold(key) => {
+                with_model!(case, p => p.threshold(question, steps, key)?)
             }
-            Kind::Regime => regime(question, case, steps, &evaluated),
-            Kind::ReadFigure { step, check } => {
+            Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
+            Kind::ReadFigure(key) => {
                 let Some(run) = &evaluated.linear else {
                     return Ok(None);
                 };
                 let (svg, spacing) = v_figure(run)?;
                 figure = Some(svg);
-                measured(question, steps, &evaluated, step, check)
+                measured(question, steps, &evaluated, key)
                     .filter(
                         |a| matches!(a.value, Value::Number(v) if 0.5 * spacing <= READABLE * v),
                     )
@@ -138,22 +148,17 @@ pub fn answer(
     Ok(Some(Answers { answers, figure }))
 }
 
-/// A closed form confirmed by the passing check `check` of the integration.
+/// The closed form `key` confirmed by its passing check on the integration.
 fn measured(
     question: &'static Question,
     steps: &[Step],
     evaluated: &Evaluated,
-    step: &str,
-    check: &str,
+    key: AnyKey,
 ) -> Option<Answer> {
-    let check = evaluated
-        .checks
-        .iter()
-        .find(|c| c.quantity == check && c.pass)?;
-    let CheckValue::Number(numeric) = check.numeric else {
+    let CheckValue::Number(numeric) = passing(evaluated, key)?.numeric else {
         return None;
     };
-    confirmed(question, applying(steps, step)?, numeric)
+    confirmed(question, applying(steps, key)?, numeric)
 }
 
 /// The answer of a closed form `step` and the integration's `numeric` value of it, when they
@@ -180,15 +185,12 @@ fn regime(
     case: &Model,
     steps: &[Step],
     evaluated: &Evaluated,
+    key: AnyKey,
 ) -> Option<Answer> {
-    let check = evaluated
-        .checks
-        .iter()
-        .find(|c| c.quantity == "regime" && c.pass)?;
-    let CheckValue::Text(numeric) = &check.numeric else {
+    let CheckValue::Text(numeric) = &passing(evaluated, key)?.numeric else {
         return None;
     };
-    let value = |key: &str| applying(steps, key).and_then(|s| s.value);
+    let value = |key: AnyKey| applying(steps, key).and_then(|s| s.value);
     let comparisons = with_model!(case, p => p.regime_comparisons(&value));
     Some(Answer {
         question,

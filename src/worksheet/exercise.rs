@@ -5,11 +5,12 @@
 use rand::rngs::StdRng;
 
 use super::answer::Answer;
-use super::question::Question;
+use super::question::{Question, Regime};
 use crate::derivation::Step;
 use crate::engine::Run;
 use crate::error::Result;
 use crate::present::Present;
+use crate::results::quantity::AnyKey;
 use crate::results::Check;
 
 /// The worksheet side of a model.
@@ -20,17 +21,17 @@ pub trait Exercise: Present {
     const INTRO: &'static str;
     /// Every question the model's sheets can ask.
     fn catalogue() -> &'static [Question];
-    /// Regimes a worksheet can ask for (closed-form ids), the default first.
-    fn regimes() -> &'static [&'static str];
-    /// The rules that decide the regime, as (regime id, condition in LaTeX).
-    fn regime_rules() -> &'static [(&'static str, &'static str)];
+    /// Regimes a worksheet can ask for (closed-form regimes), the default first.
+    fn regimes() -> &'static [Regime];
+    /// The rules that decide the regime, as (regime, condition in LaTeX).
+    fn regime_rules() -> &'static [(Regime, &'static str)];
     /// A candidate parameter set aimed at `regime`, every value rounded as typed.
-    fn draw(regime: &str, rng: &mut StdRng) -> Self;
+    fn draw(regime: Regime, rng: &mut StdRng) -> Self;
     /// The values the regime's inequalities compare, as (LaTeX symbol, value); `value` gives
     /// the value of a worked step.
     fn regime_comparisons(
         &self,
-        value: &dyn Fn(&str) -> Option<f64>,
+        value: &dyn Fn(AnyKey) -> Option<f64>,
     ) -> Vec<(&'static str, Option<f64>)>;
     /// The answer to a threshold question (a parameter value found by bisection on the
     /// engine); `None` where the model has none.
@@ -38,7 +39,7 @@ pub trait Exercise: Present {
         &self,
         _question: &'static Question,
         _steps: &[Step],
-        _step: &str,
+        _step: AnyKey,
     ) -> Result<Option<Answer>> {
         Ok(None)
     }

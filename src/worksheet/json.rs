@@ -14,7 +14,7 @@ struct KeyJson<'a> {
     model: &'static str,
     seed: u64,
     regime: &'static str,
-    questions: Vec<&'static str>,
+    questions: Vec<String>,
     students: Vec<StudentJson<'a>>,
 }
 
@@ -30,7 +30,7 @@ struct StudentJson<'a> {
 
 #[derive(Serialize)]
 struct AnswerJson<'a> {
-    key: &'static str,
+    key: String,
     /// Closed-form value (SI) or regime id.
     value: &'a Value,
     unit: &'static str,
@@ -79,9 +79,9 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
                     .answers
                     .iter()
                     .map(|a| AnswerJson {
-                        key: a.question.key,
+                        key: a.question.key(),
                         value: &a.value,
-                        unit: a.question.unit,
+                        unit: a.question.unit(),
                         numeric: &a.numeric,
                         rel_error: a.rel_error,
                         tolerance: a.tolerance,
@@ -97,8 +97,8 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
     let json = KeyJson {
         model: w.model.id(),
         seed: w.seed,
-        regime: w.regime,
-        questions: w.questions.iter().map(|q| q.key).collect(),
+        regime: w.regime.id(),
+        questions: w.questions.iter().map(|q| q.key()).collect(),
         students,
     };
     let mut bytes = serde_json::to_vec_pretty(&json).map_err(json_error)?;

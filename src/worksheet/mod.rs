@@ -24,7 +24,7 @@ use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 
 pub use answer::{Answer, Comparison, Value};
-pub use question::{Kind, Question};
+pub use question::{Kind, Question, Regime};
 pub use render::render;
 
 use crate::error::{Error, Result};
@@ -64,31 +64,33 @@ pub struct Student {
 pub struct Worksheets {
     pub model: Model,
     pub seed: u64,
-    pub regime: &'static str,
+    pub regime: Regime,
     pub questions: Vec<&'static Question>,
     pub students: Vec<Student>,
 }
 
 /// The regime and the questions of `req`, checked against the model's catalogue.
-pub fn resolve(req: &Request) -> Result<(&'static str, Vec<&'static Question>)> {
+pub fn resolve(req: &Request) -> Result<(Regime, Vec<&'static Question>)> {
     let regimes = question::regimes(req.model);
     let regime = match &req.regime {
         None => regimes[0],
-        Some(r) => {
-            regimes
-                .iter()
-                .copied()
-                .find(|id| id == r)
-                .ok_or_else(|| Error::InvalidChoice {
-                    flag: "--regime",
-                    value: r.clone(),
-                    valid: format!(
-                        "valid values for {} are {}",
-                        req.model.id(),
-                        regimes.join(", ")
-                    ),
-                })?
-        }
+        Some(r) => regimes
+            .iter()
+            .copied()
+            .find(|regime| regime.id() == r)
+            .ok_or_else(|| Error::InvalidChoice {
+                flag: "--regime",
+                value: r.clone(),
+                valid: format!(
+                    "valid values for {} are {}",
+                    req.model.id(),
+                    regimes
+                        .iter()
+                        .map(|r| r.id())
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                ),
+            })?,
     };
     let catalogue = question::catalogue(req.model);
     let in_regime: Vec<&'static Question> = catalogue
@@ -99,12 +101,13 @@ pub fn resolve(req: &Request) -> Result<(&'static str, Vec<&'static Question>)> 
         return Ok((regime, in_regime));
     };
     for key in keys {
-        let valid = if catalogue.iter().any(|q| q.key == key) {
-            if in_regime.iter().any(|q| q.key == key) {
+        let valid = if catalogue.iter().any(|q| q.key() == *key) {
+            if in_regime.iter().any(|q| q.key() == *key) {
                 continue;
             }
             format!(
-                "in regime {regime} the valid values are {}",
+                "in regime {} the valid values are {}",
+                regime.id(),
                 names(&in_regime)
             )
         } else {
@@ -122,7 +125,7 @@ pub fn resolve(req: &Request) -> Result<(&'static str, Vec<&'static Question>)> 
         regime,
         in_regime
             .into_iter()
-            .filter(|q| keys.iter().any(|k| k == q.key))
+            .filter(|q| keys.iter().any(|k| *k == q.key()))
             .collect(),
     ))
 }
@@ -130,7 +133,7 @@ pub fn resolve(req: &Request) -> Result<(&'static str, Vec<&'static Question>)> 
 fn names(questions: &[&Question]) -> String {
     questions
         .iter()
-        .map(|q| q.key)
+        .map(|q| q.key())
         .collect::<Vec<_>>()
         .join(", ")
 }
@@ -164,7 +167,7 @@ pub fn generate(req: &Request) -> Result<Worksheets> {
 /// draws of the generator seeded with `seed`.
 pub fn student(
     model: Model,
-    regime: &'static str,
+    regime: Regime,
     questions: &[&'static Question],
     number: u32,
     seed: u64,
@@ -173,7 +176,7 @@ pub fn student(
     let mut rng = StdRng::seed_from_u64(seed);
     for _ in 0..attempts {
         let case = sample::draw(model, regime, &mut rng);
-        if case.closed_form_regime() != regime {
+        if case.closed_form_regime() != regime.id() {
             continue;
         }
         let steps = answer::steps(&case);
@@ -190,7 +193,7 @@ pub fn student(
         }
     }
     Err(Error::Unreachable {
-        regime: regime.to_string(),
+        regime: regime.id().to_string(),
         attempts,
     })
 }
@@ -198,6 +201,8 @@ pub fn student(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::pulled_mass::formula::Regime as PulledRegime;
+    use crate::models::woodpecker::formula::OrbitRegime;
 
     fn request(model: Model, regime: Option<&str>, questions: Option<&[&str]>) -> Request {
         Request {
@@ -209,19 +214,19 @@ mod tests {
         }
     }
 
-    fn keys(questions: &[&Question]) -> Vec<&'static str> {
-        questions.iter().map(|q| q.key).collect()
+    fn keys(questions: &[&Question]) -> Vec<String> {
+        questions.iter().map(|q| q.key()).collect()
     }
 
     #[test]
     fn defaults_are_the_standard_regime_and_every_question_it_allows() {
         let (regime, qs) =
             resolve(&request(Model::PulledMass(Default::default()), None, None)).unwrap();
-        assert_eq!(regime, "slip_stick");
+        assert_eq!(regime, Regime::PulledMass(PulledRegime::SlipStick));
         assert_eq!(qs.len(), question::PULLED_MASS.len());
         let (regime, qs) =
             resolve(&request(Model::Woodpecker(Default::default()), None, None)).unwrap();
-        assert_eq!(regime, "double_slip_stick");
+        assert_eq!(regime, Regime::Woodpecker(OrbitRegime::DoubleSlipStick));
         assert_eq!(qs.len(), question::WOODPECKER.len());
         let late = request(
             Model::PulledMass(Default::default()),

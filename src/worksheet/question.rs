@@ -1,142 +1,162 @@
-//! The questions a worksheet can ask, per model: what is asked, the derivation step that
-//! answers it, the check of the exact integration that confirms it, the unit expected and the
-//! regimes in which its closed form can describe the motion. Also the regimes a teacher can ask
-//! for and the inequalities that decide them.
+//! The questions a worksheet can ask, per model: the quantity asked for (whose derivation step
+//! answers it, whose check of the exact integration confirms it, and whose symbol and unit the
+//! registry gives), what is asked, and the regimes in which its closed form can describe the
+//! motion. Also the regimes a teacher can ask for and the inequalities that decide them.
 
 use super::exercise::Exercise;
+use crate::models::pulled_mass::{formula::Regime as PulledRegime, quantity::Key as P};
+use crate::models::woodpecker::{formula::OrbitRegime, quantity::Key as W};
 use crate::models::{with_model, Model};
+use crate::results::quantity::AnyKey;
 
-/// How a question is answered.
+/// A regime a worksheet can ask for: a closed-form regime of either model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Regime {
+    PulledMass(PulledRegime),
+    Woodpecker(OrbitRegime),
+}
+
+impl Regime {
+    /// The id (`--regime`, answer-key.json).
+    pub fn id(self) -> &'static str {
+        match self {
+            Regime::PulledMass(r) => r.id(),
+            Regime::Woodpecker(r) => r.id(),
+        }
+    }
+}
+
+impl std::fmt::Display for Regime {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.id())
+    }
+}
+
+/// How a question is answered; each names the quantity it asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
-    /// Compute a closed form: the derivation step `step`, confirmed by the check `check` of
-    /// the exact integration of the linearized law.
-    ClosedForm {
-        step: &'static str,
-        check: &'static str,
-    },
-    /// Compute the least μd for a stick before T/2 (derivation step `step`), confirmed by
+    /// Compute a closed form: its derivation step, confirmed by its check of the exact
+    /// integration of the linearized law.
+    ClosedForm(AnyKey),
+    /// Compute the least μd for a stick before T/2 (its derivation step), confirmed by
     /// searching that μd on the exact integration.
-    Threshold { step: &'static str },
-    /// Decide the regime from the inequalities.
-    Regime,
+    Threshold(AnyKey),
+    /// Decide the regime from the inequalities, confirmed by the check of the regime.
+    Regime(AnyKey),
     /// Read the first speed maximum off the student's v(t) figure (the step and check of the
     /// closed form that gives it).
-    ReadFigure {
-        step: &'static str,
-        check: &'static str,
-    },
+    ReadFigure(AnyKey),
+}
+
+impl Kind {
+    /// The quantity asked for.
+    pub fn quantity(self) -> AnyKey {
+        match self {
+            Kind::ClosedForm(k) | Kind::Threshold(k) | Kind::Regime(k) | Kind::ReadFigure(k) => k,
+        }
+    }
 }
 
 /// One question of the catalogue.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Question {
-    /// Key used by `--questions` and in answer-key.json.
-    pub key: &'static str,
     pub kind: Kind,
     /// What the student is asked (plain text).
     pub prompt: &'static str,
-    /// LaTeX symbol of the answer ("" for the regime).
-    pub symbol: &'static str,
-    /// SI unit expected ("" when dimensionless or a name).
-    pub unit: &'static str,
-    /// Regimes (closed-form ids) in which the answer can exist.
-    pub regimes: &'static [&'static str],
+    /// Regimes in which the answer can exist.
+    pub regimes: &'static [Regime],
 }
 
-pub(crate) const PULLED_REGIMES: &[&str] = &["slip_stick", "slip_stick_late", "continuous_slip"];
-const SAME_PERIOD: &[&str] = &["slip_stick"];
-pub(crate) const WOODPECKER_REGIMES: &[&str] = &[
-    "double_slip_stick",
-    "double_slip_no_halt",
-    "single_slip_stick",
-    "continuous_or_multiperiod",
+impl Question {
+    /// Key used by `--questions` and in answer-key.json: the §7 key of the quantity, `read_`
+    /// before it for the figure.
+    pub fn key(&self) -> String {
+        match self.kind {
+            Kind::ReadFigure(k) => format!("read_{}", k.id()),
+            kind => kind.quantity().id().to_string(),
+        }
+    }
+
+    /// LaTeX symbol of the answer ("" for the regime).
+    pub fn symbol(&self) -> &'static str {
+        match self.kind {
+            Kind::Regime(_) => "",
+            kind => kind.quantity().quantity().tex,
+        }
+    }
+
+    /// SI unit expected ("" when dimensionless or a name).
+    pub fn unit(&self) -> &'static str {
+        self.kind.quantity().quantity().unit
+    }
+}
+
+const fn p(k: P) -> AnyKey {
+    AnyKey::PulledMass(k)
+}
+
+const fn w(k: W) -> AnyKey {
+    AnyKey::Woodpecker(k)
+}
+
+pub(crate) const PULLED_REGIMES: &[Regime] = &[
+    Regime::PulledMass(PulledRegime::SlipStick),
+    Regime::PulledMass(PulledRegime::SlipStickLate),
+    Regime::PulledMass(PulledRegime::ContinuousSlip),
 ];
-const STANDARD: &[&str] = &["double_slip_stick"];
+const SAME_PERIOD: &[Regime] = &[Regime::PulledMass(PulledRegime::SlipStick)];
+pub(crate) const WOODPECKER_REGIMES: &[Regime] = &[
+    Regime::Woodpecker(OrbitRegime::DoubleSlipStick),
+    Regime::Woodpecker(OrbitRegime::DoubleSlipNoHalt),
+    Regime::Woodpecker(OrbitRegime::SingleSlipStick),
+    Regime::Woodpecker(OrbitRegime::ContinuousOrMultiperiod),
+];
+const STANDARD: &[Regime] = &[Regime::Woodpecker(OrbitRegime::DoubleSlipStick)];
 /// Where the first slip's speed peaks in the lobe after the zero of F_e, as (46)–(48) assume:
 /// not with a single speed maximum (u_B h_B ≤ 1, no deceleration there). μd,MIN^(I) (51) is
 /// left out there too: its threshold is then mostly 1/η, not (51), and the sets on which the
 /// integration confirms it are too rare to draw together with t_SL^(I).
-const PEAK_IN_LOBE_B: &[&str] = &[
-    "double_slip_stick",
-    "double_slip_no_halt",
-    "continuous_or_multiperiod",
+const PEAK_IN_LOBE_B: &[Regime] = &[
+    Regime::Woodpecker(OrbitRegime::DoubleSlipStick),
+    Regime::Woodpecker(OrbitRegime::DoubleSlipNoHalt),
+    Regime::Woodpecker(OrbitRegime::ContinuousOrMultiperiod),
 ];
 
 /// The pulled-mass questions (physics.md §1.3, §1.5), in sheet order.
 pub const PULLED_MASS: &[Question] = &[
     Question {
-        key: "t_slip",
-        kind: Kind::ClosedForm {
-            step: "t_slip",
-            check: "t_slip",
-        },
+        kind: Kind::ClosedForm(p(P::TSlip)),
         prompt: "At what time does the block first start to slip? (eqs. 13, 25)",
-        symbol: r"t_{SL}",
-        unit: "s",
         regimes: PULLED_REGIMES,
     },
     Question {
-        key: "t_stick",
-        kind: Kind::ClosedForm {
-            step: "t_stick",
-            check: "t_stick",
-        },
+        kind: Kind::ClosedForm(p(P::TStick)),
         prompt: "At what time does it stick again? (eqs. 18, 25)",
-        symbol: r"t_{ST}",
-        unit: "s",
         regimes: SAME_PERIOD,
     },
     Question {
-        key: "v_max",
-        kind: Kind::ClosedForm {
-            step: "v_max",
-            check: "v_max",
-        },
+        kind: Kind::ClosedForm(p(P::VMax)),
         prompt: "What is the largest speed of the first slip? (eq. 26)",
-        symbol: r"v_M",
-        unit: "m/s",
         regimes: PULLED_REGIMES,
     },
     Question {
-        key: "v_avg",
-        kind: Kind::ClosedForm {
-            step: "v_avg",
-            check: "v_avg",
-        },
+        kind: Kind::ClosedForm(p(P::VAvg)),
         prompt: "What is the mean speed of the block over a period? (eqs. 27, 28)",
-        symbol: r"\bar v",
-        unit: "m/s",
         regimes: SAME_PERIOD,
     },
     Question {
-        key: "power",
-        kind: Kind::ClosedForm {
-            step: "power",
-            check: "power",
-        },
+        kind: Kind::ClosedForm(p(P::Power)),
         prompt: "What power does friction dissipate on average? (eq. 29)",
-        symbol: "P",
-        unit: "W",
         regimes: SAME_PERIOD,
     },
     Question {
-        key: "regime",
-        kind: Kind::Regime,
+        kind: Kind::Regime(p(P::Regime)),
         prompt: "Which regime is the block in? Decide from the inequalities below.",
-        symbol: "",
-        unit: "",
         regimes: PULLED_REGIMES,
     },
     Question {
-        key: "read_v_max",
-        kind: Kind::ReadFigure {
-            step: "v_max",
-            check: "v_max",
-        },
+        kind: Kind::ReadFigure(p(P::VMax)),
         prompt: "Read the first speed maximum off Figure 1.",
-        symbol: r"v_M",
-        unit: "m/s",
         regimes: PULLED_REGIMES,
     },
 ];
@@ -144,75 +164,39 @@ pub const PULLED_MASS: &[Question] = &[
 /// The woodpecker questions (physics.md §3.3–3.6), in sheet order.
 pub const WOODPECKER: &[Question] = &[
     Question {
-        key: "t_slip_1",
-        kind: Kind::ClosedForm {
-            step: "t_slip_1",
-            check: "t_slip_1",
-        },
+        kind: Kind::ClosedForm(w(W::TSlip1)),
         prompt: "At what time does the sleeve first start to slip (phase I)? (eqs. 40–42)",
-        symbol: r"t_{SL}^{(I)}",
-        unit: "s",
         regimes: WOODPECKER_REGIMES,
     },
     Question {
-        key: "t_stick_1",
-        kind: Kind::ClosedForm {
-            step: "t_stick_1",
-            check: "t_stick_1",
-        },
+        kind: Kind::ClosedForm(w(W::TStick1)),
         prompt: "At what time does it stick again in phase I? (eqs. 49, 50)",
-        symbol: r"t_{ST}^{(I)}",
-        unit: "s",
         regimes: STANDARD,
     },
     Question {
-        key: "v_max_1",
-        kind: Kind::ClosedForm {
-            step: "v_max_1",
-            check: "v_max_1",
-        },
+        kind: Kind::ClosedForm(w(W::VMax1)),
         prompt: "What is the largest speed of the phase-I slip? (eq. 48)",
-        symbol: r"v_M^{(I)}",
-        unit: "m/s",
         regimes: PEAK_IN_LOBE_B,
     },
     Question {
-        key: "mu_d_min_1",
-        kind: Kind::Threshold { step: "mu_d_min_1" },
+        kind: Kind::Threshold(w(W::MuDMin1)),
         prompt: "What is the least dynamic coefficient for which the sleeve sticks before \
                  t = T/2? (eq. 51)",
-        symbol: r"\mu_{d,MIN}^{(I)}",
-        unit: "",
         regimes: PEAK_IN_LOBE_B,
     },
     Question {
-        key: "v_avg",
-        kind: Kind::ClosedForm {
-            step: "v_avg",
-            check: "v_avg",
-        },
+        kind: Kind::ClosedForm(w(W::VAvg)),
         prompt: "What is the mean speed of the sleeve? (eqs. 54, 69–71)",
-        symbol: r"\bar v",
-        unit: "m/s",
         regimes: STANDARD,
     },
     Question {
-        key: "regime",
-        kind: Kind::Regime,
+        kind: Kind::Regime(w(W::Regime)),
         prompt: "Which regime is the sleeve in? Decide from the inequalities below.",
-        symbol: "",
-        unit: "",
         regimes: WOODPECKER_REGIMES,
     },
     Question {
-        key: "read_v_max_1",
-        kind: Kind::ReadFigure {
-            step: "v_max_1",
-            check: "v_max_1",
-        },
+        kind: Kind::ReadFigure(w(W::VMax1)),
         prompt: "Read the first speed maximum off Figure 1.",
-        symbol: r"v_M^{(I)}",
-        unit: "m/s",
         regimes: PEAK_IN_LOBE_B,
     },
 ];
@@ -225,19 +209,19 @@ pub fn catalogue(model: Model) -> &'static [Question] {
     with_model!(&model, p => of(p))
 }
 
-/// Regimes a worksheet can ask for (closed-form ids), the default first. The others
+/// Regimes a worksheet can ask for (closed-form regimes), the default first. The others
 /// (immediate slip, no slip, outside the closed-form domain) leave no closed form to compute.
-pub fn regimes(model: Model) -> &'static [&'static str] {
-    fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
+pub fn regimes(model: Model) -> &'static [Regime] {
+    fn of<M: Exercise>(_: &M) -> &'static [Regime] {
         M::regimes()
     }
     with_model!(&model, p => of(p))
 }
 
-/// The rules that decide the regime, as (regime id, condition in LaTeX), shown with the regime
+/// The rules that decide the regime, as (regime, condition in LaTeX), shown with the regime
 /// question (physics.md §1.5, §3.2, §3.6).
-pub fn regime_rules(model: Model) -> &'static [(&'static str, &'static str)] {
-    fn of<M: Exercise>(_: &M) -> &'static [(&'static str, &'static str)] {
+pub fn regime_rules(model: Model) -> &'static [(Regime, &'static str)] {
+    fn of<M: Exercise>(_: &M) -> &'static [(Regime, &'static str)] {
         M::regime_rules()
     }
     with_model!(&model, p => of(p))

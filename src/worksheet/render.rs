@@ -163,13 +163,13 @@ fn questions_ctx(model: Model, questions: &[&Question]) -> Vec<QuestionCtx> {
         .map(|(i, q)| QuestionCtx {
             number: i + 1,
             prompt: q.prompt,
-            symbol: (!q.symbol.is_empty()).then(|| math(q.symbol)),
-            unit: q.unit,
+            symbol: (!q.symbol().is_empty()).then(|| math(q.symbol())),
+            unit: q.unit(),
             rules: match q.kind {
-                Kind::Regime => question::regime_rules(model)
+                Kind::Regime(_) => question::regime_rules(model)
                     .iter()
                     .map(|&(regime, condition)| RuleCtx {
-                        regime,
+                        regime: regime.id(),
                         condition: math(condition),
                     })
                     .collect(),
@@ -220,7 +220,7 @@ fn comparisons_tex(c: &[Comparison]) -> String {
 fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
     let q = a.question;
     let worked = match (&a.step, q.kind) {
-        (_, Kind::Regime) => Some(math(&comparisons_tex(&a.comparisons))),
+        (_, Kind::Regime(_)) => Some(math(&comparisons_tex(&a.comparisons))),
         (Some(step), _) => Some(math(&step.worked_tex())),
         (None, _) => None,
     };
@@ -228,12 +228,12 @@ fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
         number: i + 1,
         prompt: q.prompt,
         worked,
-        result: number(&a.value, ANSWER_DIGITS, q.unit),
-        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit),
+        result: number(&a.value, ANSWER_DIGITS, q.unit()),
+        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit()),
         rel_error: a.rel_error.map_or(String::new(), |e| rel(Some(e))),
         tolerance: a
             .tolerance
-            .map_or(String::new(), |t| with_unit(sig(Some(t), 2), q.unit)),
+            .map_or(String::new(), |t| with_unit(sig(Some(t), 2), q.unit())),
     }
 }
 
@@ -257,7 +257,7 @@ pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
     let mut ctx = tera::Context::new();
     ctx.insert("title", title(w.model));
     ctx.insert("intro", intro(w.model));
-    ctx.insert("regime", w.regime);
+    ctx.insert("regime", w.regime.id());
     ctx.insert("seed", &w.seed);
     ctx.insert("count", &w.students.len());
     ctx.insert("css", &format!("{CSS}{WORKSHEET_CSS}"));
@@ -295,7 +295,7 @@ mod tests {
             let texts = question::regime_rules(model)
                 .iter()
                 .map(|r| r.1)
-                .chain(question::catalogue(model).iter().map(|q| q.symbol))
+                .chain(question::catalogue(model).iter().map(|q| q.symbol()))
                 .filter(|t| !t.is_empty());
             for tex in texts {
                 let m = mathml(tex);

@@ -5,6 +5,7 @@
 use rand::rngs::StdRng;
 
 use super::exercise::Exercise;
+use super::question::Regime;
 use crate::models::{with_model, Model};
 
 /// `x` to three significant figures, as the nearest f64 of the shortest decimal (0.437, 45.2).
@@ -14,8 +15,8 @@ pub fn round3(x: f64) -> f64 {
 
 /// A candidate set for `model`, aimed at `regime` where the draw can be (rounded; the caller
 /// checks the regime of the rounded set).
-pub fn draw(model: Model, regime: &str, rng: &mut StdRng) -> Model {
-    fn draw_as<M: Exercise>(_: &M, regime: &str, rng: &mut StdRng) -> Model {
+pub fn draw(model: Model, regime: Regime, rng: &mut StdRng) -> Model {
+    fn draw_as<M: Exercise>(_: &M, regime: Regime, rng: &mut StdRng) -> Model {
         M::draw(regime, rng).into_model()
     }
     with_model!(&model, p => draw_as(p, regime, rng))
@@ -24,6 +25,7 @@ pub fn draw(model: Model, regime: &str, rng: &mut StdRng) -> Model {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::worksheet::question;
     use rand::SeedableRng;
 
     #[test]
@@ -38,12 +40,10 @@ mod tests {
     #[test]
     fn draws_are_valid_and_reproducible() {
         for model in Model::defaults() {
+            let regime = question::regimes(model)[0];
             let (mut a, mut b) = (StdRng::seed_from_u64(3), StdRng::seed_from_u64(3));
             for _ in 0..200 {
-                let (x, y) = (
-                    draw(model, "slip_stick", &mut a),
-                    draw(model, "slip_stick", &mut b),
-                );
+                let (x, y) = (draw(model, regime, &mut a), draw(model, regime, &mut b));
                 assert_eq!(x, y);
                 assert_eq!(x.id(), model.id());
                 x.validate().unwrap();

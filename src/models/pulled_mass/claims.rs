@@ -120,7 +120,7 @@ pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
          within the same period. Of {} random sets in the \"non-stick\" area of Fig. 9 (μs in \
          [0.1, 1], μd/μs in [0.05, 1], φ uniform between 1/Θ and 2μs), {} ({:.1} %) stick early \
          in the next period{}.",
-        regime_words(regime),
+        regime.words(),
         stick_words(tau_stick.filter(|_| sticks), late_closed),
         result.size,
         result.counterexamples,
@@ -144,16 +144,6 @@ pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         numbers: n.take(),
         sample: Some(result),
     })
-}
-
-/// The closed-form regime of the pulled mass in plain words.
-fn regime_words(r: cf::Regime) -> &'static str {
-    match r {
-        cf::Regime::SlipStick => "a stick within the same period",
-        cf::Regime::SlipStickLate => "a stick early in the next period",
-        cf::Regime::ContinuousSlip => "continuous slip",
-        cf::Regime::ImmediateContinuousSlip => "continuous slip from t = 0",
-    }
 }
 
 /// What the integration with μs = μd = μ shows, beside the late-stick closed form.

@@ -5,16 +5,36 @@
 use crate::derivation::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::pulled_mass::formula as cf;
+use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::applicability;
 use crate::models::pulled_mass::PulledMassParams;
-use crate::results::quantity::PULLED_MASS;
 
-/// Equation and unit of the §7 `params` keys with a step.
-const PARAMS: &[(&str, &str, &str)] = &[
-    ("W", "(6)", "N"),
-    ("omega", "(6)", "rad/s"),
-    ("T", "(7)", "s"),
-];
+/// The derived parameters with a step (§7 `params` keys).
+pub mod param {
+    use crate::derivation::Param;
+
+    /// W = m g.
+    pub const W: Param = Param {
+        id: "W",
+        tex: "W",
+        equation: "(6)",
+        unit: "N",
+    };
+    /// ω = √(k/m').
+    pub const OMEGA: Param = Param {
+        id: "omega",
+        tex: r"\omega",
+        equation: "(6)",
+        unit: "rad/s",
+    };
+    /// T = 2π/ω.
+    pub const T: Param = Param {
+        id: "T",
+        tex: "T",
+        equation: "(7)",
+        unit: "s",
+    };
+}
 
 /// D ≡ μs² + 2μsμd − μd² (§1.3), written out wherever it appears.
 fn big_d(mu_s: &Expr, mu_d: &Expr) -> Expr {
@@ -26,7 +46,7 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
     let (period, phi_value) = (p.period(), p.phi());
     let c = cf::evaluate(p.g, period, p.force, phi_value, p.mu_s, p.mu_d);
     let notes = applicability(&c);
-    let mut s = Steps::new(PULLED_MASS, PARAMS, &notes);
+    let mut s = Steps::<Key>::new(&notes);
     let (m, g, k, f) = (
         given("m", p.mass),
         given("g", p.g),
@@ -36,83 +56,67 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
     let (mu_s, mu_d) = (given(r"\mu_s", p.mu_s), given(r"\mu_d", p.mu_d));
     let d = || big_d(&mu_s, &mu_d);
 
-    let w = s.push("W", "W", m.clone() * g.clone(), Some(p.weight()));
-    let omega = s.push("omega", r"\omega", sqrt(k / m), Some(p.omega()));
-    let t = s.push("T", "T", int(2) * pi() / omega, Some(period));
-    let phi = s.push("phi", r"\varphi", f.clone() / w, Some(c.phi));
+    let w = s.push_param(param::W, m.clone() * g.clone(), Some(p.weight()));
+    let omega = s.push_param(param::OMEGA, sqrt(k / m), Some(p.omega()));
+    let t = s.push_param(param::T, int(2) * pi() / omega, Some(period));
+    let phi = s.push(Key::Phi, f.clone() / w, Some(c.phi));
     let tau_sl = s.push(
-        "tau_slip",
-        r"\tau_{SL}",
+        Key::TauSlip,
         half() * (int(1) - phi.clone() / (int(2) * mu_s.clone())),
         Some(c.tau_slip),
     );
-    s.push("t_slip", r"t_{SL}", t.clone() * tau_sl, Some(c.t_slip));
+    s.push(Key::TSlip, t.clone() * tau_sl, Some(c.t_slip));
     s.push(
-        "a_slip",
-        r"a_{SL}",
+        Key::ASlip,
         g.clone() * phi.clone() / int(2) * (int(1) - mu_d.clone() / mu_s.clone()),
         Some(c.a_slip),
     );
     let tau_m = s.push(
-        "tau_max_speed",
-        r"\tau_M",
+        Key::TauMaxSpeed,
         half() * (int(1) + phi.clone() / (int(2) * mu_d.clone())),
         Some(c.tau_max_speed),
     );
     s.push(
-        "t_max_speed",
-        r"t_M",
+        Key::TMaxSpeed,
         t.clone() * tau_m.clone(),
         Some(c.t_max_speed),
     );
     let v_m = s.push(
-        "v_max",
-        r"v_M",
+        Key::VMax,
         g.clone() * t.clone() * pow(phi.clone(), 2) * d()
             / (int(16) * pow(mu_s.clone(), 2) * mu_d.clone()),
         Some(c.v_max),
     );
     let theta = s.push(
-        "theta",
-        r"\Theta",
+        Key::Theta,
         (mu_s.clone() + sqrt(d())) / (int(2) * mu_s.clone() * mu_d.clone()),
         Some(c.theta),
     );
     let tau_st = s.push(
-        "tau_stick",
-        r"\tau_{ST}",
+        Key::TauStick,
         half() * (int(1) + phi.clone() * theta.clone()),
         Some(c.tau_stick),
     );
-    s.push("t_stick", r"t_{ST}", t.clone() * tau_st, Some(c.t_stick));
+    s.push(Key::TStick, t.clone() * tau_st, Some(c.t_stick));
     s.push(
-        "slip_duration",
-        r"t_{ST} - t_{SL}",
+        Key::SlipDuration,
         t.clone() * phi.clone() / int(2)
             * ((mu_s.clone() + mu_d.clone() + sqrt(d())) / (int(2) * mu_s.clone() * mu_d.clone())),
         Some(c.slip_duration),
     );
+    s.push(Key::PhiStickMax, int(1) / theta, Some(c.phi_stick_max));
     s.push(
-        "phi_stick_max",
-        r"1/\Theta",
-        int(1) / theta,
-        Some(c.phi_stick_max),
-    );
-    s.push(
-        "phi_continuous",
-        r"\varphi_c",
+        Key::PhiContinuous,
         int(4) * mu_s.clone() * mu_d.clone() / (int(2) * mu_s.clone() + sqrt(int(2) * d())),
         Some(c.phi_continuous),
     );
     s.push(
-        "mu_min_equal",
-        r"\mu_{MIN}",
+        Key::MuMinEqual,
         (int(1) + sqrt(int(2))) * phi.clone() / int(2),
         Some(c.mu_min_equal),
     );
     let gamma = s.push(
-        "gamma",
-        r"\Gamma",
+        Key::Gamma,
         (pow_ratio(d(), 3, 2)
             + pow(mu_s.clone(), 3)
             + int(3) * pow(mu_s.clone(), 2) * mu_d.clone()
@@ -121,22 +125,19 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
         Some(c.gamma),
     );
     let v_avg = s.push(
-        "v_avg",
-        r"\bar v",
+        Key::VAvg,
         g.clone() * t.clone() * pow(phi.clone(), 3) * gamma.clone(),
         Some(c.v_avg),
     );
     s.push(
-        "advance_per_period",
-        r"x_T",
+        Key::AdvancePerPeriod,
         g.clone() * pow(t.clone(), 2) * pow(phi.clone(), 3) * gamma,
         Some(c.advance_per_period),
     );
-    s.push("power", "P", f * v_avg, Some(c.power));
+    s.push(Key::Power, f * v_avg, Some(c.power));
     // 1 + τ'_M − √(2τ'_M² − v_M/(gTμd)) with τ'_M = 1 − τ_M, the other zero of a (§1.4).
     s.push(
-        "tau_stick_late",
-        r"\tau_{ST,late}",
+        Key::TauStickLate,
         int(2) - tau_m.clone() - sqrt(int(2) * pow(int(1) - tau_m, 2) - v_m / (g * t * mu_d)),
         c.tau_stick_late,
     );

@@ -5,13 +5,16 @@ use rand::rngs::StdRng;
 use rand::Rng;
 
 use super::formula as pm;
+use super::formula::Regime as PulledRegime;
+use super::quantity::Key;
 use super::{results, PulledMassParams};
 use crate::engine::Run;
 use crate::error::Result;
 use crate::params::G_STANDARD;
+use crate::results::quantity::AnyKey;
 use crate::results::Check;
 use crate::worksheet::exercise::Exercise;
-use crate::worksheet::question::{self, Question};
+use crate::worksheet::question::{self, Question, Regime};
 use crate::worksheet::sample::round3;
 
 impl Exercise for PulledMassParams {
@@ -26,31 +29,43 @@ impl Exercise for PulledMassParams {
         question::PULLED_MASS
     }
 
-    fn regimes() -> &'static [&'static str] {
+    fn regimes() -> &'static [Regime] {
         question::PULLED_REGIMES
     }
 
-    fn regime_rules() -> &'static [(&'static str, &'static str)] {
+    fn regime_rules() -> &'static [(Regime, &'static str)] {
         &[
-            ("immediate_continuous_slip", r"\varphi > 2\mu_s"),
-            ("slip_stick", r"\varphi \le 1/\Theta"),
-            ("slip_stick_late", r"1/\Theta < \varphi \le \varphi_c"),
-            ("continuous_slip", r"\varphi_c < \varphi \le 2\mu_s"),
+            (
+                Regime::PulledMass(PulledRegime::ImmediateContinuousSlip),
+                r"\varphi > 2\mu_s",
+            ),
+            (
+                Regime::PulledMass(PulledRegime::SlipStick),
+                r"\varphi \le 1/\Theta",
+            ),
+            (
+                Regime::PulledMass(PulledRegime::SlipStickLate),
+                r"1/\Theta < \varphi \le \varphi_c",
+            ),
+            (
+                Regime::PulledMass(PulledRegime::ContinuousSlip),
+                r"\varphi_c < \varphi \le 2\mu_s",
+            ),
         ]
     }
 
-    fn draw(regime: &str, rng: &mut StdRng) -> Self {
+    fn draw(regime: Regime, rng: &mut StdRng) -> Self {
         draw_set(regime, rng)
     }
 
     fn regime_comparisons(
         &self,
-        value: &dyn Fn(&str) -> Option<f64>,
+        value: &dyn Fn(AnyKey) -> Option<f64>,
     ) -> Vec<(&'static str, Option<f64>)> {
         vec![
-            (r"\varphi", value("phi")),
-            (r"1/\Theta", value("phi_stick_max")),
-            (r"\varphi_c", value("phi_continuous")),
+            (r"\varphi", value(Key::Phi.into())),
+            (r"1/\Theta", value(Key::PhiStickMax.into())),
+            (r"\varphi_c", value(Key::PhiContinuous.into())),
             (r"2\mu_s", Some(2.0 * self.mu_s)),
         ]
     }
@@ -68,7 +83,7 @@ impl Exercise for PulledMassParams {
 /// μs 0.25–0.8, μd/μs 0.5–1, m 20–200 g, k 10–100 N/m, and F = φW with φ inside the interval of
 /// the regime (§1.5), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
 /// the motion is large enough to see.
-fn draw_set(regime: &str, rng: &mut StdRng) -> PulledMassParams {
+fn draw_set(regime: Regime, rng: &mut StdRng) -> PulledMassParams {
     let mu_s = rng.gen_range(0.25..0.8);
     let mu_d = mu_s * rng.gen_range(0.5..=1.0);
     let mass = rng.gen_range(0.02..0.2);
@@ -78,8 +93,8 @@ fn draw_set(regime: &str, rng: &mut StdRng) -> PulledMassParams {
         pm::phi_continuous(mu_s, mu_d),
     );
     let (lo, hi) = match regime {
-        "slip_stick_late" => (stick, cont),
-        "continuous_slip" => (cont, 2.0 * mu_s),
+        Regime::PulledMass(PulledRegime::SlipStickLate) => (stick, cont),
+        Regime::PulledMass(PulledRegime::ContinuousSlip) => (cont, 2.0 * mu_s),
         _ => (0.3 * stick, stick),
     };
     let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);

@@ -7,6 +7,10 @@
 
 use serde::Serialize;
 
+use super::quantity::Key;
+use crate::engine::IntegrationRegime;
+use crate::results::quantity::{serialize_closed_form, Value};
+
 /// D ≡ μs² + 2μsμd − μd² (dimensionless), §1.3.
 pub fn big_d(mu_s: f64, mu_d: f64) -> f64 {
     mu_s * mu_s + 2.0 * mu_s * mu_d - mu_d * mu_d
@@ -174,9 +178,10 @@ pub fn advance_per_period_late(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f
     Some(g * period * period * sum)
 }
 
-/// Regime of the linearized pulled mass (§1.5).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
+/// Regime of the linearized pulled mass (§1.5), serialized as its [`id`].
+///
+/// [`id`]: Regime::id
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Regime {
     /// φ > 2μs: slips at t = 0 and never sticks.
     ImmediateContinuousSlip,
@@ -189,6 +194,14 @@ pub enum Regime {
 }
 
 impl Regime {
+    /// Every regime, in the order of φ.
+    pub const ALL: [Self; 4] = [
+        Self::SlipStick,
+        Self::SlipStickLate,
+        Self::ContinuousSlip,
+        Self::ImmediateContinuousSlip,
+    ];
+
     /// The identifier used in JSON and reports.
     pub fn id(self) -> &'static str {
         match self {
@@ -197,6 +210,32 @@ impl Regime {
             Self::SlipStickLate => "slip_stick_late",
             Self::ContinuousSlip => "continuous_slip",
         }
+    }
+
+    /// The regime in plain words.
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::SlipStick => "a stick within the same period",
+            Self::SlipStickLate => "a stick early in the next period",
+            Self::ContinuousSlip => "continuous slip",
+            Self::ImmediateContinuousSlip => "continuous slip from t = 0",
+        }
+    }
+
+    /// The regime the exact integration of the linearized law shows.
+    pub fn integrated(self) -> IntegrationRegime {
+        match self {
+            Self::SlipStick | Self::SlipStickLate => IntegrationRegime::SingleSlipStick,
+            Self::ContinuousSlip | Self::ImmediateContinuousSlip => {
+                IntegrationRegime::ContinuousSlip
+            }
+        }
+    }
+}
+
+impl Serialize for Regime {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
     }
 }
 
@@ -213,8 +252,9 @@ pub fn regime(phi: f64, mu_s: f64, mu_d: f64) -> Regime {
     }
 }
 
-/// Every closed form of §1.3–1.5 for one parameter set; keys as physics.md §7.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// Every closed form of §1.3–1.5 for one parameter set. Serialized as the §7 `closed_form`
+/// object through the registry ([`super::quantity`]), which names every field.
+#[derive(Clone, Debug, PartialEq)]
 pub struct ClosedForm {
     pub phi: f64,
     pub tau_slip: f64,
@@ -242,6 +282,52 @@ pub struct ClosedForm {
     pub immediate_slip: bool,
     /// The same-period formulas (18)–(30) describe the motion (regime slip_stick).
     pub same_period_valid: bool,
+    /// P_late = F v̄_late, the power of the late-stick orbit (checked; not a §7 key).
+    pub power_late: Option<f64>,
+}
+
+impl ClosedForm {
+    /// The value of the quantity `key`.
+    pub fn value(&self, key: Key) -> Value {
+        match key {
+            Key::Phi => self.phi.into(),
+            Key::TauSlip => self.tau_slip.into(),
+            Key::TSlip => self.t_slip.into(),
+            Key::ASlip => self.a_slip.into(),
+            Key::TauMaxSpeed => self.tau_max_speed.into(),
+            Key::TMaxSpeed => self.t_max_speed.into(),
+            Key::VMax => self.v_max.into(),
+            Key::TauStick => self.tau_stick.into(),
+            Key::TStick => self.t_stick.into(),
+            Key::SlipDuration => self.slip_duration.into(),
+            Key::Theta => self.theta.into(),
+            Key::PhiStickMax => self.phi_stick_max.into(),
+            Key::PhiContinuous => self.phi_continuous.into(),
+            Key::MuMinEqual => self.mu_min_equal.into(),
+            Key::Gamma => self.gamma.into(),
+            Key::VAvg => self.v_avg.into(),
+            Key::AdvancePerPeriod => self.advance_per_period.into(),
+            Key::Power => self.power.into(),
+            Key::TauStickLate => self.tau_stick_late.into(),
+            Key::AdvancePerPeriodLate => self.advance_per_period_late.into(),
+            Key::VAvgLate => self.v_avg_late.into(),
+            Key::Regime => Value::Label(self.regime.id()),
+            Key::ImmediateSlip => self.immediate_slip.into(),
+            Key::SamePeriodValid => self.same_period_valid.into(),
+            Key::PowerLate => self.power_late.into(),
+        }
+    }
+
+    /// The number of the quantity `key` (`None` for a label or where it is undefined).
+    pub fn get(&self, key: Key) -> Option<f64> {
+        self.value(key).number()
+    }
+}
+
+impl Serialize for ClosedForm {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        serialize_closed_form(s, |key| self.value(key))
+    }
 }
 
 /// Evaluates every closed form for φ = F/W, μs, μd, g (m/s²), T (s) and F (N).
@@ -277,12 +363,15 @@ pub fn evaluate(g: f64, period: f64, force: f64, phi: f64, mu_s: f64, mu_d: f64)
         regime,
         immediate_slip: phi > 2.0 * mu_s,
         same_period_valid: regime == Regime::SlipStick,
+        power_late: advance_late.map(|x| power(force, x / period)),
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::results::quantity::tests::serialized_keys_are_the_registry;
+    use crate::results::quantity::{Kind, Registry};
 
     const G: f64 = 9.81;
     const T: f64 = 0.229_429_488_381_819_04;
@@ -300,7 +389,7 @@ mod tests {
     fn worked_set_b_slip_stick() {
         let (mu_s, mu_d, f) = (0.4, 0.35, 0.10);
         let c = evaluate(G, T, f, f / W, mu_s, mu_d);
-        close(c.phi, 0.169_894_665_3, "phi");
+        close(c.phi, 0.169_894_665_3, "φ");
         close(c.tau_slip, 0.393_815_834_2, "tau_SL");
         close(c.t_slip, 0.090_352_965_35, "t_SL");
         close(c.tau_max_speed, 0.621_353_332_4, "tau_M");
@@ -314,7 +403,7 @@ mod tests {
         close(c.mu_min_equal, 0.205_081_002_6, "mu_min");
         close(c.gamma, 0.488_981_670_2, "Gamma");
         close(c.advance_per_period, 0.001_238_224_198, "x_T");
-        close(c.v_avg, 0.005_396_970_576, "v_avg");
+        close(c.v_avg, 0.005_396_970_576, "v̄");
         close(c.power, 5.396_970_576e-4, "P");
         assert_eq!(c.regime, Regime::SlipStick);
         assert_eq!(c.tau_stick_late, None);
@@ -348,10 +437,56 @@ mod tests {
         close(c.v_max, 0.097_842_994_26, "v_M");
         close(c.t_stick, 0.280_548_694_7, "t_ST");
         close(c.gamma, 0.861_047_116_4, "Gamma");
-        close(c.v_avg, 0.055_424_515_16, "v_avg");
+        close(c.v_avg, 0.055_424_515_16, "v̄");
         close(c.phi_continuous, 0.254_556_168_6, "phi_c");
         assert_eq!(c.regime, Regime::ContinuousSlip);
         assert_eq!(c.tau_stick_late, None);
+    }
+
+    #[test]
+    fn regimes_are_serialized_as_their_ids_and_named_once() {
+        for r in Regime::ALL {
+            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert!(!r.words().is_empty());
+            assert_eq!(Regime::ALL.iter().filter(|q| q.id() == r.id()).count(), 1);
+        }
+        for r in IntegrationRegime::ALL {
+            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert!(!r.words().is_empty());
+            assert_eq!(
+                IntegrationRegime::ALL
+                    .iter()
+                    .filter(|q| q.id() == r.id())
+                    .count(),
+                1
+            );
+        }
+    }
+
+    /// The §7 `closed_form` keys, in order.
+    const SECTION_7_KEYS: &str = "phi, tau_slip, t_slip, a_slip, tau_max_speed, t_max_speed, v_max, tau_stick, t_stick, slip_duration, theta, phi_stick_max, phi_continuous, mu_min_equal, gamma, v_avg, advance_per_period, power, tau_stick_late, advance_per_period_late, v_avg_late, regime, immediate_slip, same_period_valid";
+
+    #[test]
+    fn json_has_exactly_the_section_7_keys_in_order() {
+        let (mu_s, mu_d, f) = (0.4, 0.35, 0.10);
+        let c = evaluate(G, T, f, f / W, mu_s, mu_d);
+        let json = serde_json::to_value(&c).unwrap();
+        serialized_keys_are_the_registry::<Key>(&json);
+        let want: Vec<&str> = SECTION_7_KEYS.split(", ").collect();
+        let registry: Vec<&str> = Key::ENTRIES
+            .iter()
+            .filter(|e| e.kind != Kind::Checked)
+            .map(|e| e.quantity.id)
+            .collect();
+        assert_eq!(registry, want);
+        let text = serde_json::to_string(&c).unwrap();
+        let positions: Vec<usize> = want
+            .iter()
+            .map(|k| text.find(&format!("\"{k}\":")).unwrap())
+            .collect();
+        assert!(positions.windows(2).all(|w| w[0] < w[1]), "{text}");
+        assert_eq!(json["regime"], "slip_stick");
+        assert!(json["tau_stick_late"].is_null() && json.get("power_late").is_none());
     }
 
     #[test]

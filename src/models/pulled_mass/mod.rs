@@ -5,6 +5,7 @@
 //! ```text
 //! body.rs        the body and the force laws (harmonic, linearized) for the engine
 //! formula.rs     the closed forms of §1.3–1.5, one pure function per quantity
+//! quantity.rs    the registry of the quantities: key, symbol, unit, equation, regimes
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! claims.rs      the paper's claims about this model (claims 1, 2)
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
@@ -21,6 +22,7 @@ pub mod formula;
 pub mod params;
 #[cfg(feature = "cli")]
 mod present;
+pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;

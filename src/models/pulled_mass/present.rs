@@ -1,7 +1,7 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
 use super::{derivation, results, scene, PulledMassParams};
-use crate::derivation::Step;
+use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::{self, Note};
@@ -9,7 +9,6 @@ use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::{self, SceneCtx};
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::{OutFile, Scene};
-use crate::results::quantity::{Quantity, PULLED_MASS};
 
 impl Present for PulledMassParams {
     fn standard_scene(&self) -> StandardScene {
@@ -33,11 +32,11 @@ impl Present for PulledMassParams {
         context::pulled_tables(scene, self)
     }
 
-    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]) {
-        (derivation::pulled_mass(self), PULLED_MASS)
+    fn derivation(&self) -> Vec<Step> {
+        derivation::pulled_mass(self)
     }
 
-    fn handout_note(key: &str) -> Option<Note> {
+    fn handout_note(key: StepKey) -> Option<Note> {
         physics::PULLED_MASS_STEPS
             .iter()
             .find(|(k, _)| *k == key)

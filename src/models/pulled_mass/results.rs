@@ -6,10 +6,12 @@ use serde::Serialize;
 use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
+use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::{pulled_mass, LawKind};
 use crate::params::validate_periods;
 use crate::results::checks::Check;
+use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
 
@@ -102,58 +104,42 @@ pub fn evaluate_with_runs(
     Ok((evaluation, runs))
 }
 
-/// Which closed forms of §1.3–1.4 describe the motion in the regime of `c`.
+/// Which closed forms of §1.3–1.4 describe the motion in the regime of `c`: those whose
+/// registry entry names the regime, less the speed maximum of (17) when it falls outside the
+/// first period.
 pub fn applicability(c: &ClosedForm) -> Vec<Applicability> {
-    let same_period = [
-        "tau_stick",
-        "t_stick",
-        "slip_duration",
-        "v_avg",
-        "advance_per_period",
-        "power",
-    ];
-    let late = ["tau_stick_late", "advance_per_period_late", "v_avg_late"];
-    let onset = ["tau_slip", "t_slip", "a_slip"];
-    let maximum = ["tau_max_speed", "t_max_speed", "v_max"];
-    let reason = |key: &str| -> Option<String> {
-        let immediate = "immediate slip (φ > 2μs): the mass slips from t = 0 and never sticks";
-        match c.regime {
-            Regime::ImmediateContinuousSlip
-                if onset.contains(&key) || maximum.contains(&key) || same_period.contains(&key) =>
-            {
-                Some(immediate.to_string())
-            }
-            _ if maximum.contains(&key) && c.tau_max_speed >= 1.0 => Some(
-                "τ_M ≥ 1 (φ ≥ 2μd): the speed maximum of (17) falls outside the first period"
-                    .to_string(),
-            ),
-            Regime::SlipStick if late.contains(&key) => {
-                Some("the mass sticks within the period (20): no late stick".to_string())
-            }
-            Regime::SlipStickLate if same_period.contains(&key) => Some(
-                "(20) fails (φ > 1/Θ): the mass sticks early in the next period; the late-stick \
-                 forms of §1.4 apply"
-                    .to_string(),
-            ),
-            Regime::ContinuousSlip | Regime::ImmediateContinuousSlip
-                if same_period.contains(&key) || late.contains(&key) =>
-            {
-                Some("continuous slip (φ > φ_c): the mass never sticks again".to_string())
-            }
-            _ => None,
-        }
-    };
-    crate::results::quantity::PULLED_MASS
-        .iter()
-        .map(|q| Applicability::new(q.key, reason(q.key)))
+    let maximum = [Key::TauMaxSpeed, Key::TMaxSpeed, Key::VMax];
+    Key::numbers()
+        .map(|e| {
+            let reason = if !e.key.describes(c.regime) {
+                Some(why_not(c.regime, e.regimes))
+            } else if maximum.contains(&e.key) && c.tau_max_speed >= 1.0 {
+                Some(
+                    "τ_M ≥ 1 (φ ≥ 2μd): the speed maximum of (17) falls outside the first period"
+                        .to_string(),
+                )
+            } else {
+                None
+            };
+            Applicability::new(e.key, reason)
+        })
         .collect()
 }
 
-/// The regime the linear integration must show for a closed-form regime.
-fn expected_integration_regime(regime: Regime) -> &'static str {
+/// Why a form that describes the motion in `describes` does not in `regime`.
+fn why_not(regime: Regime, describes: &[Regime]) -> String {
     match regime {
-        Regime::SlipStick | Regime::SlipStickLate => "single_slip_stick",
-        Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => "continuous_slip",
+        // The forms of the slip from rest and of the same-period stick need a slip onset.
+        Regime::ImmediateContinuousSlip if describes.contains(&Regime::SlipStick) => {
+            "immediate slip (φ > 2μs): the mass slips from t = 0 and never sticks".to_string()
+        }
+        Regime::ImmediateContinuousSlip | Regime::ContinuousSlip => {
+            "continuous slip (φ > φ_c): the mass never sticks again".to_string()
+        }
+        Regime::SlipStick => "the mass sticks within the period (20): no late stick".to_string(),
+        Regime::SlipStickLate => "(20) fails (φ > 1/Θ): the mass sticks early in the next period; \
+                                  the late-stick forms of §1.4 apply"
+            .to_string(),
     }
 }
 
@@ -164,12 +150,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
     let t_of = |e: Option<Event>| e.map(|e| e.t);
     let mut out = Vec::new();
     if !c.immediate_slip {
-        out.push(Check::measured(
-            "t_slip",
-            "(13),(25)",
-            c.t_slip,
-            t_of(first.slip),
-        ));
+        out.push(Check::measured(Key::TSlip, c.t_slip, t_of(first.slip)));
         // a just after the onset, from the force law at the located slip time.
         let body = pulled_mass::body(p);
         let a_at = |t: f64| {
@@ -178,24 +159,16 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 .map(|law| body.slip_acceleration(law.drive(t), law.normal(t), 1.0))
         };
         let a = t_of(first.slip).and_then(a_at);
-        out.push(Check::measured_on_scale(
-            "a_slip",
-            "§1.3 [D]",
-            c.a_slip,
-            a,
-            p.g,
-        ));
+        out.push(Check::measured_on_scale(Key::ASlip, c.a_slip, a, p.g));
         // τ_M < 1: the first maximum is the (17) one, in every non-immediate regime.
         if c.tau_max_speed < 1.0 {
             out.push(Check::measured(
-                "t_max_speed",
-                "(17)",
+                Key::TMaxSpeed,
                 c.t_max_speed,
                 t_of(first.maximum),
             ));
             out.push(Check::measured(
-                "v_max",
-                "(26)",
+                Key::VMax,
                 c.v_max,
                 first.maximum.map(|e| e.v),
             ));
@@ -205,69 +178,64 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
         Regime::SlipStick => {
             let stick = t_of(first.stick);
             let duration = stick.zip(t_of(first.slip)).map(|(st, sl)| st - sl);
-            out.push(Check::measured("t_stick", "(18),(25)", c.t_stick, stick));
+            out.push(Check::measured(Key::TStick, c.t_stick, stick));
             out.push(Check::measured(
-                "slip_duration",
-                "(21)",
+                Key::SlipDuration,
                 c.slip_duration,
                 duration,
             ));
             push_steady(
                 &mut out,
                 summary,
-                p.force,
-                c.v_avg,
-                c.advance_per_period,
-                "",
+                [
+                    (Key::VAvg, c.v_avg),
+                    (Key::AdvancePerPeriod, c.advance_per_period),
+                    (Key::Power, c.power),
+                ],
             );
         }
         Regime::SlipStickLate => {
-            if let (Some(late), Some(v), Some(x)) =
-                (c.tau_stick_late, c.v_avg_late, c.advance_per_period_late)
-            {
+            if let (Some(late), Some(v), Some(x), Some(power)) = (
+                c.tau_stick_late,
+                c.v_avg_late,
+                c.advance_per_period_late,
+                c.power_late,
+            ) {
                 let tau = t_of(first.stick).map(|t| t / run.period);
-                out.push(Check::measured("tau_stick_late", "§1.4", late, tau));
-                push_steady(&mut out, summary, p.force, v, x, "_late");
+                out.push(Check::measured(Key::TauStickLate, late, tau));
+                push_steady(
+                    &mut out,
+                    summary,
+                    [
+                        (Key::VAvgLate, v),
+                        (Key::AdvancePerPeriodLate, x),
+                        (Key::PowerLate, power),
+                    ],
+                );
             }
         }
         Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => {}
     }
     out.push(Check::label(
-        "regime",
-        "§1.5",
-        expected_integration_regime(c.regime),
+        Key::Regime,
+        c.regime.integrated().id(),
         summary.regime.id(),
     ));
     out.push(Check::label(
-        "immediate_slip",
-        "φ > 2μs",
+        Key::ImmediateSlip,
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
     ));
     out
 }
 
-/// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation).
-fn push_steady(out: &mut Vec<Check>, s: &Summary, force: f64, v: f64, x: f64, suffix: &str) {
+/// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation): the keys and
+/// their closed-form values, same-period or late.
+fn push_steady(out: &mut Vec<Check>, s: &Summary, [v, x, power]: [(Key, f64); 3]) {
     let dissipated = s.power.friction;
-    let (eq_v, eq_x, eq_p) = if suffix.is_empty() {
-        ("(27)", "(30)", "(29)")
-    } else {
-        ("§1.4", "§1.4", "(29) with v̄_late")
-    };
-    out.push(Check::measured(&format!("v_avg{suffix}"), eq_v, v, s.v_avg));
-    out.push(Check::measured(
-        &format!("advance_per_period{suffix}"),
-        eq_x,
-        x,
-        s.advance_per_period,
-    ));
-    out.push(Check::measured(
-        &format!("power{suffix}"),
-        eq_p,
-        force * v,
-        dissipated,
-    ));
+    out.push(Check::measured(v.0, v.1, s.v_avg));
+    out.push(Check::measured(x.0, x.1, s.advance_per_period));
+    out.push(Check::measured(power.0, power.1, dissipated));
 }
 
 /// The first slip of a run from rest: its onset, first speed maximum and stick.

@@ -6,86 +6,83 @@
 use crate::derivation::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
 use crate::derivation::{Step, Steps};
 use crate::models::woodpecker::formula::{self as cf, Counterpart, Groups, PhaseClosedForm};
+use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
 use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
-use crate::results::quantity::WOODPECKER;
 
-/// Equation and unit of the §7 `params` keys with a step.
-const PARAMS: &[(&str, &str, &str)] = &[
-    ("W_S", "§2", "N"),
-    ("omega", "§2", "rad/s"),
-    ("T", "§2", "s"),
-    ("lambda", "§2", ""),
-];
+/// The derived parameters with a step (§7 `params` keys).
+pub mod param {
+    use crate::derivation::Param;
 
-/// Keys and LaTeX symbols of one phase, in the order of its steps.
+    /// W_S = m_S g.
+    pub const W_S: Param = Param {
+        id: "W_S",
+        tex: "W_S",
+        equation: "§2",
+        unit: "N",
+    };
+    /// ω of the `--omega` mode.
+    pub const OMEGA: Param = Param {
+        id: "omega",
+        tex: r"\omega",
+        equation: "§2",
+        unit: "rad/s",
+    };
+    /// T = 2π/ω.
+    pub const T: Param = Param {
+        id: "T",
+        tex: "T",
+        equation: "§2",
+        unit: "s",
+    };
+    /// λ = l/h.
+    pub const LAMBDA: Param = Param {
+        id: "lambda",
+        tex: r"\lambda",
+        equation: "§2",
+        unit: "",
+    };
+}
+
+/// The keys of one phase, in the order of its steps.
 struct PhaseNames {
-    keys: [&'static str; 12],
-    symbols: [&'static str; 12],
+    keys: [Key; 12],
     /// The ±1 of u_B = 2λμd ± 1: +1 in phase I, −1 in phase II.
     sigma: i64,
 }
 
 const PHASE_I: PhaseNames = PhaseNames {
     keys: [
-        "t0_1",
-        "delta_1",
-        "t_slip_1",
-        "a_slip_1",
-        "t_max_speed_1",
-        "v_max_1",
-        "s_1",
-        "t_stick_1",
-        "mu_d_min_1",
-        "mu_d_halt_1",
-        "gamma_1",
-        "distance_1",
-    ],
-    symbols: [
-        r"t_0^{(I)}",
-        r"\Delta^{(I)}",
-        r"t_{SL}^{(I)}",
-        r"a_{SL}^{(I)}",
-        r"t_M^{(I)}",
-        r"v_M^{(I)}",
-        r"S^{(I)}",
-        r"t_{ST}^{(I)}",
-        r"\mu_{d,MIN}^{(I)}",
-        r"\mu_{d,HALT}^{(I)}",
-        r"\Gamma^{(I)}",
-        r"y^{(I)}",
+        Key::T01,
+        Key::Delta1,
+        Key::TSlip1,
+        Key::ASlip1,
+        Key::TMaxSpeed1,
+        Key::VMax1,
+        Key::S1,
+        Key::TStick1,
+        Key::MuDMin1,
+        Key::MuDHalt1,
+        Key::Gamma1,
+        Key::Distance1,
     ],
     sigma: 1,
 };
 
 const PHASE_II: PhaseNames = PhaseNames {
     keys: [
-        "t0_2",
-        "delta_2",
-        "t_slip_2",
-        "a_slip_2",
-        "t_max_speed_2",
-        "v_max_2",
-        "s_2",
-        "t_stick_2",
-        "mu_d_min_2",
-        "mu_d_halt_2",
-        "gamma_2",
-        "distance_2",
-    ],
-    symbols: [
-        r"t_0^{(II)}",
-        r"\Delta^{(II)}",
-        r"t_{SL}^{(II)}",
-        r"a_{SL}^{(II)}",
-        r"t_M^{(II)}",
-        r"v_M^{(II)}",
-        r"S^{(II)}",
-        r"t_{ST}^{(II)}",
-        r"\mu_{d,MIN}^{(II)}",
-        r"\mu_{d,HALT}^{(II)}",
-        r"\Gamma^{(II)}",
-        r"y^{(II)}",
+        Key::T02,
+        Key::Delta2,
+        Key::TSlip2,
+        Key::ASlip2,
+        Key::TMaxSpeed2,
+        Key::VMax2,
+        Key::S2,
+        Key::TStick2,
+        Key::MuDMin2,
+        Key::MuDHalt2,
+        Key::Gamma2,
+        Key::Distance2,
     ],
     sigma: -1,
 };
@@ -115,81 +112,53 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
     let c = cf::evaluate(&lw);
     let note = domain_note(p, &c);
     let notes = applicability(&c, note.as_deref());
-    let mut s = Steps::new(WOODPECKER, PARAMS, &notes);
+    let mut s = Steps::<Key>::new(&notes);
     let (g, k) = (given("g", p.g), given("k", p.k));
     let (m_s, m_w) = (given("m_S", p.m_sleeve), given("m_W", p.m_bird));
     let (z0, d0) = (given("z_0", p.z0), given("d_0", p.d0));
     let (mu_s, mu_d) = (given(r"\mu_s", p.mu_s), given(r"\mu_d", p.mu_d));
 
-    let w_s = s.push(
-        "W_S",
-        "W_S",
-        m_s.clone() * g.clone(),
-        Some(p.sleeve_weight()),
-    );
+    let w_s = s.push_param(param::W_S, m_s.clone() * g.clone(), Some(p.sleeve_weight()));
     let omega_expr = match p.omega {
         OmegaMode::Bird => sqrt(k.clone() / m_w),
         OmegaMode::Reduced => sqrt(k.clone() * (m_s.clone() + m_w.clone()) / (m_s * m_w)),
         OmegaMode::Total => sqrt(k.clone() / (m_s + m_w)),
     };
-    let omega = s.push("omega", r"\omega", omega_expr, Some(p.omega()));
-    let t = s.push("T", "T", int(2) * pi() / omega, Some(p.period()));
+    let omega = s.push_param(param::OMEGA, omega_expr, Some(p.omega()));
+    let t = s.push_param(param::T, int(2) * pi() / omega, Some(p.period()));
     let lambda = match p.lever {
-        None => s.push(
-            "lambda",
-            r"\lambda",
+        None => s.push_param(
+            param::LAMBDA,
             given("l", p.l) / given("h", p.h),
             Some(p.lambda()),
         ),
         Some(lever) => given(r"\lambda", lever),
     };
-    let tau = s.push("tau_quarter", r"\tau", t / int(4), c.tau_quarter);
+    let tau = s.push(Key::TauQuarter, t / int(4), c.tau_quarter);
     let two_over_pi = || int(2) / pi();
     let zeta0_expr = match p.counterpart {
         Counterpart::Extremes | Counterpart::Zeros => d0.clone(),
         Counterpart::Tangent => pi() / int(2) * sqrt(pow(d0.clone(), 2) - pow(z0.clone(), 2)),
     };
-    let zeta0 = s.push("zeta0", r"\zeta_0", zeta0_expr, c.zeta0);
+    let zeta0 = s.push(Key::Zeta0, zeta0_expr, c.zeta0);
     let delta0_expr = match p.counterpart {
         Counterpart::Extremes => z0,
         Counterpart::Zeros => d0.clone() * two_over_pi() * arcsin(z0 / d0),
         Counterpart::Tangent => zeta0.clone() * two_over_pi() * arcsin(z0 / d0),
     };
-    let delta0 = s.push("delta0", r"\delta_0", delta0_expr, c.delta0);
+    let delta0 = s.push(Key::Delta0, delta0_expr, c.delta0);
     let two_lambda = |mu: &Expr| int(2) * lambda.clone() * mu.clone();
-    let u_s_minus = s.push(
-        "u_s_minus",
-        r"u_s^{(-)}",
-        two_lambda(&mu_s) - int(1),
-        c.u_s_minus,
-    );
-    let u_s_plus = s.push(
-        "u_s_plus",
-        r"u_s^{(+)}",
-        two_lambda(&mu_s) + int(1),
-        c.u_s_plus,
-    );
-    let u_d_minus = s.push(
-        "u_d_minus",
-        r"u_d^{(-)}",
-        two_lambda(&mu_d) - int(1),
-        c.u_d_minus,
-    );
-    let u_d_plus = s.push(
-        "u_d_plus",
-        r"u_d^{(+)}",
-        two_lambda(&mu_d) + int(1),
-        c.u_d_plus,
-    );
+    let u_s_minus = s.push(Key::USMinus, two_lambda(&mu_s) - int(1), c.u_s_minus);
+    let u_s_plus = s.push(Key::USPlus, two_lambda(&mu_s) + int(1), c.u_s_plus);
+    let u_d_minus = s.push(Key::UDMinus, two_lambda(&mu_d) - int(1), c.u_d_minus);
+    let u_d_plus = s.push(Key::UDPlus, two_lambda(&mu_d) + int(1), c.u_d_plus);
     let eta = s.push(
-        "eta",
-        r"\eta",
+        Key::Eta,
         k.clone() * (zeta0.clone() - delta0.clone()) / w_s.clone(),
         c.eta,
     );
     let eta_prime = s.push(
-        "eta_prime",
-        r"\eta'",
+        Key::EtaPrime,
         k.clone() * (zeta0.clone() + delta0.clone()) / w_s.clone(),
         c.eta_prime,
     );
@@ -241,28 +210,26 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
         zeta0,
         ..
     } = common;
-    let gamma = s.push("gamma", r"\Gamma", gamma_1 + gamma_2, c.gamma);
+    let gamma = s.push(Key::Gamma, gamma_1 + gamma_2, c.gamma);
     let lengths = || pow(zeta0.clone(), 2) * pow(k.clone(), 2);
     s.push(
-        "distance_per_period",
-        r"y_S(T)",
+        Key::DistancePerPeriod,
         g.clone() * pow(tau.clone(), 2) * pow(w_s.clone(), 2) * gamma.clone()
             / (int(6) * lengths()),
         c.distance_per_period,
     );
     let v_avg = s.push(
-        "v_avg",
-        r"\bar v",
+        Key::VAvg,
         g * tau * pow(w_s.clone(), 2) * gamma / (int(24) * lengths()),
         c.v_avg,
     );
-    s.push("power_weight", r"P_W", w_s * v_avg, c.power_weight);
+    s.push(Key::PowerWeight, w_s * v_avg, c.power_weight);
     s.steps
 }
 
 /// The steps of one phase (§3.3, or §3.4 by the swap); returns the leaf of its Γ.
 fn phase(
-    s: &mut Steps,
+    s: &mut Steps<Key>,
     names: &PhaseNames,
     c: &Common,
     f: &Factors,
@@ -270,32 +237,26 @@ fn phase(
     v: &PhaseClosedForm,
 ) -> Expr {
     let [k_t0, k_delta, k_sl, k_a, k_tm, k_vm, k_s, k_st, k_min, k_halt, k_gamma, k_y] = names.keys;
-    let [s_t0, s_delta, s_sl, s_a, s_tm, s_vm, s_s, s_st, s_min, s_halt, s_gamma, s_y] =
-        names.symbols;
     let (u, u_a, u_b, h) = (&f.u, &f.u_a, &f.u_b, &f.h_b);
-    let t0 = s.push(k_t0, s_t0, t0_expr, v.t0);
+    let t0 = s.push(k_t0, t0_expr, v.t0);
     let delta = s.push(
         k_delta,
-        s_delta,
         c.tau.clone() * c.w_s.clone() / (c.k.clone() * c.zeta0.clone() * u.clone()),
         v.delta,
     );
-    s.push(k_sl, s_sl, t0.clone() - delta.clone(), v.t_slip);
+    s.push(k_sl, t0.clone() - delta.clone(), v.t_slip);
     s.push(
         k_a,
-        s_a,
         c.g.clone() * ((u.clone() - u_a.clone()) / u.clone()),
         v.a_slip,
     );
     s.push(
         k_tm,
-        s_tm,
         t0.clone() + delta.clone() * u.clone() / u_b.clone(),
         v.t_max_speed,
     );
     s.push(
         k_vm,
-        s_vm,
         c.g.clone() * delta.clone() / int(2)
             * ((u_b.clone() * (int(2) * u.clone() - u_a.clone()) + pow(u.clone(), 2))
                 / (u.clone() * u_b.clone())),
@@ -303,7 +264,6 @@ fn phase(
     );
     let s_factor = s.push(
         k_s,
-        s_s,
         (u.clone()
             + sqrt(
                 pow(u.clone(), 2) + int(2) * u.clone() * u_b.clone() - u_a.clone() * u_b.clone(),
@@ -311,7 +271,7 @@ fn phase(
             / u_b.clone(),
         v.s,
     );
-    s.push(k_st, s_st, t0 + delta * s_factor.clone(), v.t_stick);
+    s.push(k_st, t0 + delta * s_factor.clone(), v.t_stick);
     let sigma = |e: Expr| match names.sigma {
         1 => e + int(1),
         _ => e - int(1),
@@ -325,7 +285,6 @@ fn phase(
     let two_lambda = || int(2) * c.lambda.clone();
     s.push(
         k_min,
-        s_min,
         int(1) / two_lambda() * (numerator / (pow(u.clone(), 2) * pow(h.clone(), 2) + int(1))),
         v.mu_d_min,
     );
@@ -344,11 +303,10 @@ fn phase(
         1 => threshold - int(1),
         _ => threshold + int(1),
     };
-    s.push(k_halt, s_halt, threshold / two_lambda(), v.mu_d_halt);
+    s.push(k_halt, threshold / two_lambda(), v.mu_d_halt);
     let s1 = || s_factor.clone() + int(1);
     let gamma = s.push(
         k_gamma,
-        s_gamma,
         (int(3) * u.clone() * pow(s1(), 2)
             - u_b.clone() * pow(s_factor.clone(), 3)
             - int(3) * u_a.clone() * s_factor.clone()
@@ -358,7 +316,6 @@ fn phase(
     );
     s.push(
         k_y,
-        s_y,
         c.g.clone() * pow(c.tau.clone(), 2) * pow(c.w_s.clone(), 2) * gamma.clone()
             / (int(6) * pow(c.zeta0.clone(), 2) * pow(c.k.clone(), 2)),
         v.distance,

@@ -4,16 +4,19 @@
 use rand::rngs::StdRng;
 use rand::Rng;
 
+use super::formula::OrbitRegime;
+use super::quantity::Key;
 use super::threshold::mu_d_sticking_at_half_period;
 use super::{results, WoodpeckerParams};
 use crate::derivation::Step;
 use crate::engine::Run;
 use crate::error::Result;
 use crate::params::G_STANDARD;
+use crate::results::quantity::AnyKey;
 use crate::results::Check;
 use crate::worksheet::answer::{applying, confirmed, Answer};
 use crate::worksheet::exercise::Exercise;
-use crate::worksheet::question::{self, Question};
+use crate::worksheet::question::{self, Question, Regime};
 use crate::worksheet::sample::round3;
 
 impl Exercise for WoodpeckerParams {
@@ -28,49 +31,49 @@ impl Exercise for WoodpeckerParams {
         question::WOODPECKER
     }
 
-    fn regimes() -> &'static [&'static str] {
+    fn regimes() -> &'static [Regime] {
         question::WOODPECKER_REGIMES
     }
 
-    fn regime_rules() -> &'static [(&'static str, &'static str)] {
+    fn regime_rules() -> &'static [(Regime, &'static str)] {
         &[
             (
-                "double_slip_stick",
+                Regime::Woodpecker(OrbitRegime::DoubleSlipStick),
                 r"u_s^{(-)}\eta' \ge 1,\quad \mu_d \ge \mu_{d,HALT}^{(I)},\quad \mu_d \ge \mu_{d,HALT}^{(II)}",
             ),
             (
-                "double_slip_no_halt",
+                Regime::Woodpecker(OrbitRegime::DoubleSlipNoHalt),
                 r"\text{one slip per period, two speed maxima}",
             ),
             (
-                "single_slip_stick",
+                Regime::Woodpecker(OrbitRegime::SingleSlipStick),
                 r"\text{one slip per period, one speed maximum}",
             ),
             (
-                "continuous_or_multiperiod",
+                Regime::Woodpecker(OrbitRegime::ContinuousOrMultiperiod),
                 r"\text{the sleeve never halts}",
             ),
         ]
     }
 
-    fn draw(_regime: &str, rng: &mut StdRng) -> Self {
+    fn draw(_regime: Regime, rng: &mut StdRng) -> Self {
         draw_set(rng)
     }
 
     fn regime_comparisons(
         &self,
-        value: &dyn Fn(&str) -> Option<f64>,
+        value: &dyn Fn(AnyKey) -> Option<f64>,
     ) -> Vec<(&'static str, Option<f64>)> {
         vec![
             (
                 r"u_s^{(-)}\eta'",
-                value("u_s_minus")
-                    .zip(value("eta_prime"))
+                value(Key::USMinus.into())
+                    .zip(value(Key::EtaPrime.into()))
                     .map(|(u, h)| u * h),
             ),
             (r"\mu_d", Some(self.mu_d)),
-            (r"\mu_{d,HALT}^{(I)}", value("mu_d_halt_1")),
-            (r"\mu_{d,HALT}^{(II)}", value("mu_d_halt_2")),
+            (r"\mu_{d,HALT}^{(I)}", value(Key::MuDHalt1.into())),
+            (r"\mu_{d,HALT}^{(II)}", value(Key::MuDHalt2.into())),
         ]
     }
 
@@ -78,7 +81,7 @@ impl Exercise for WoodpeckerParams {
         &self,
         question: &'static Question,
         steps: &[Step],
-        step: &str,
+        step: AnyKey,
     ) -> Result<Option<Answer>> {
         let Some((step, value)) = applying(steps, step).and_then(|s| Some((s, s.value?))) else {
             return Ok(None);

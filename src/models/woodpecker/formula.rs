@@ -29,6 +29,8 @@ use std::f64::consts::FRAC_2_PI;
 
 use super::lobe::{self, PhaseLobes};
 pub use super::lobe::{halt_threshold, mu_d_halt, HaltKind, Orbit, OrbitRegime, OrbitSlip, Phase};
+use super::quantity::Key;
+use crate::results::quantity::{serialize_closed_form, Value};
 
 // ---------------------------------------------------------------------------------------------
 // Counterpart of the harmonic law (§3.1)
@@ -527,10 +529,11 @@ pub fn phase_closed_form(p: &LinearWoodpecker, gr: &Groups, t0: Option<f64>) -> 
     }
 }
 
-/// The closed forms of the linearized woodpecker, keyed as `closed_form` of physics.md §7.
-/// Suffix `_1` = phase I, `_2` = phase II. `None` (JSON null) where the expression is undefined;
-/// formulas are evaluated even outside the regime in which they describe the motion.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// The closed forms of the linearized woodpecker, serialized as the §7 `closed_form` object
+/// through the registry ([`super::quantity`]), which names every field. Suffix `_1` = phase I,
+/// `_2` = phase II. `None` (JSON null) where the expression is undefined; formulas are evaluated
+/// even outside the regime in which they describe the motion.
+#[derive(Clone, Debug, PartialEq)]
 pub struct WoodpeckerClosedForm {
     pub zeta0: Option<f64>,
     pub delta0: Option<f64>,
@@ -576,19 +579,75 @@ pub struct WoodpeckerClosedForm {
     pub orbit_v_avg: Option<f64>,
     pub orbit_distance_per_period: Option<f64>,
     /// Mean speed of slip I (53) and its phase-II analogue (m/s); not a §7 key.
-    #[serde(skip)]
     pub v_avg_slip_1: Option<f64>,
-    #[serde(skip)]
     pub v_avg_slip_2: Option<f64>,
     /// Where the lobe engine of each phase halts (`None`: no halt, or the slip cannot start from
     /// rest in that phase); not a §7 key.
-    #[serde(skip)]
     pub halt_1: Option<HaltKind>,
-    #[serde(skip)]
     pub halt_2: Option<HaltKind>,
     /// The periodic orbit (SI) for checks against the integrator; not a §7 key.
-    #[serde(skip)]
     pub orbit: Option<Orbit>,
+}
+
+impl WoodpeckerClosedForm {
+    /// The value of the quantity `key`.
+    pub fn value(&self, key: Key) -> Value {
+        match key {
+            Key::Zeta0 => self.zeta0.into(),
+            Key::Delta0 => self.delta0.into(),
+            Key::TauQuarter => self.tau_quarter.into(),
+            Key::USMinus => self.u_s_minus.into(),
+            Key::USPlus => self.u_s_plus.into(),
+            Key::UDMinus => self.u_d_minus.into(),
+            Key::UDPlus => self.u_d_plus.into(),
+            Key::Eta => self.eta.into(),
+            Key::EtaPrime => self.eta_prime.into(),
+            Key::ImmediateSlip => self.immediate_slip.into(),
+            Key::T01 => self.t0_1.into(),
+            Key::Delta1 => self.delta_1.into(),
+            Key::TSlip1 => self.t_slip_1.into(),
+            Key::ASlip1 => self.a_slip_1.into(),
+            Key::TMaxSpeed1 => self.t_max_speed_1.into(),
+            Key::VMax1 => self.v_max_1.into(),
+            Key::S1 => self.s_1.into(),
+            Key::TStick1 => self.t_stick_1.into(),
+            Key::MuDMin1 => self.mu_d_min_1.into(),
+            Key::MuDHalt1 => self.mu_d_halt_1.into(),
+            Key::Gamma1 => self.gamma_1.into(),
+            Key::Distance1 => self.distance_1.into(),
+            Key::T02 => self.t0_2.into(),
+            Key::Delta2 => self.delta_2.into(),
+            Key::TSlip2 => self.t_slip_2.into(),
+            Key::ASlip2 => self.a_slip_2.into(),
+            Key::TMaxSpeed2 => self.t_max_speed_2.into(),
+            Key::VMax2 => self.v_max_2.into(),
+            Key::S2 => self.s_2.into(),
+            Key::TStick2 => self.t_stick_2.into(),
+            Key::MuDMin2 => self.mu_d_min_2.into(),
+            Key::MuDHalt2 => self.mu_d_halt_2.into(),
+            Key::Gamma2 => self.gamma_2.into(),
+            Key::Distance2 => self.distance_2.into(),
+            Key::Gamma => self.gamma.into(),
+            Key::DistancePerPeriod => self.distance_per_period.into(),
+            Key::VAvg => self.v_avg.into(),
+            Key::PowerWeight => self.power_weight.into(),
+            Key::PaperRegimeValid => self.paper_regime_valid.into(),
+            Key::Regime => Value::Label(self.regime.id()),
+            Key::OrbitVAvg => self.orbit_v_avg.into(),
+            Key::OrbitDistancePerPeriod => self.orbit_distance_per_period.into(),
+        }
+    }
+
+    /// The number of the quantity `key` (`None` for a label or where it is undefined).
+    pub fn get(&self, key: Key) -> Option<f64> {
+        self.value(key).number()
+    }
+}
+
+impl Serialize for WoodpeckerClosedForm {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        serialize_closed_form(s, |key| self.value(key))
+    }
 }
 
 /// Evaluates every closed form of §3.2–3.6 for `p`.
@@ -738,6 +797,8 @@ fn steady_orbit(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::results::quantity::tests::serialized_keys_are_the_registry;
+    use crate::results::quantity::{Kind, Registry};
     use approx::assert_relative_eq;
     use proptest::prelude::*;
     use std::f64::consts::PI;
@@ -823,23 +884,22 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         Regime(OrbitRegime),
     }
 
-    /// The computed value for a key of worked-numbers.txt; panics on an unknown key so that no
-    /// worked number is skipped silently.
+    /// The computed value for a key of worked-numbers.txt: a §7 key through the registry, the
+    /// file's own names directly; panics on an unknown key so that no worked number is skipped
+    /// silently.
     fn computed(cf: &WoodpeckerClosedForm, p: &LinearWoodpecker, key: &str) -> Pair {
         let n = Pair::Num;
+        if let Some(k) = Key::from_id(key) {
+            return match cf.value(k) {
+                Value::Number(x) => n(x),
+                Value::Flag(b) => Pair::Flag(b),
+                Value::Label(_) => Pair::Regime(cf.regime),
+            };
+        }
         match key {
-            "zeta0" => n(cf.zeta0),
-            "delta0" => n(cf.delta0),
             "T" => n(Some(p.period())),
             "tau" => n(cf.tau_quarter),
             "W_S" => n(Some(p.w_s)),
-            "u_s_minus" => n(cf.u_s_minus),
-            "u_s_plus" => n(cf.u_s_plus),
-            "u_d_minus" => n(cf.u_d_minus),
-            "u_d_plus" => n(cf.u_d_plus),
-            "eta" => n(cf.eta),
-            "eta_prime" => n(cf.eta_prime),
-            "immediate_slip" => Pair::Flag(cf.immediate_slip),
             "t0_I" => n(cf.t0_1),
             "Delta_I" => n(cf.delta_1),
             "t_SL_I" => n(cf.t_slip_1),
@@ -867,10 +927,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
             "y_II" => n(cf.distance_2),
             "Gamma" => n(cf.gamma),
             "y_T" => n(cf.distance_per_period),
-            "v_avg" => n(cf.v_avg),
             "P_weight" => n(cf.power_weight),
-            "paper_regime_valid" => Pair::Flag(cf.paper_regime_valid),
-            "regime" => Pair::Regime(cf.regime),
             other => panic!("worked number {other} has no counterpart"),
         }
     }
@@ -1344,6 +1401,20 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         assert!(object["v_max_2"].is_null() && object["orbit_v_avg"].is_null());
         assert_eq!(object["regime"], "continuous_or_multiperiod");
         assert_eq!(object["immediate_slip"], false);
+        // The object is written in the registry's order, which is the order of §7.
+        serialized_keys_are_the_registry::<Key>(&json);
+        let registry: Vec<&str> = Key::ENTRIES
+            .iter()
+            .filter(|e| e.kind != Kind::Checked)
+            .map(|e| e.quantity.id)
+            .collect();
+        assert_eq!(registry, want);
+        let text = serde_json::to_string(&cf).unwrap();
+        let positions: Vec<usize> = want
+            .iter()
+            .map(|k| text.find(&format!("\"{k}\":")).unwrap())
+            .collect();
+        assert!(positions.windows(2).all(|w| w[0] < w[1]), "{text}");
     }
 
     /// Every numeric §7 value (for the no-NaN check).

@@ -8,9 +8,7 @@
 //!                and one stick per period (no intermediate halt)
 //! ```
 
-use crate::claims::{
-    mm_s, or_none, regime_words, run_wood, Claim, ClaimNumber, Integrated, Numbers, Verdict,
-};
+use crate::claims::{mm_s, or_none, run_wood, Claim, ClaimNumber, Integrated, Numbers, Verdict};
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
 use crate::models::woodpecker::WoodpeckerParams;
@@ -189,9 +187,9 @@ impl Evidence {
              set {printed} in {DEFAULT_PERIODS} periods ({}); with λ = l/h = {:.3} it shows {}, \
              {lever_v}. {threshold} The Fig. 26 set (μd 0.332, k 20.3 N/m, d0 9.5 mm) moves at \
              v̄ = {}, {} the quoted 20 mm/s.",
-            regime_words(self.printed.steady.regime()),
+            self.printed.steady.regime().words(),
             self.geometric.lambda(),
-            regime_words(self.lever.steady.regime()),
+            self.lever.steady.regime().words(),
             or_none(self.fig26_v, mm_s),
             (self.fig26_diff()).map_or("n/a".to_string(), |d| format!(
                 "{:+.1} % against",

@@ -20,6 +20,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::engine::IntegrationRegime;
+
 /// The flank on which a slip of the lobe engine halts (§3.6 steps 2–5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum HaltKind {
@@ -266,9 +268,11 @@ impl Phase {
     }
 }
 
-/// Regime of the periodic orbit of the linear model (§3.6, orbit selection).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(rename_all = "snake_case")]
+/// Regime of the periodic orbit of the linear model (§3.6, orbit selection), serialized as its
+/// [`id`].
+///
+/// [`id`]: OrbitRegime::id
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum OrbitRegime {
     /// (39): the sleeve never slips.
     NoSlip,
@@ -282,6 +286,57 @@ pub enum OrbitRegime {
     ContinuousOrMultiperiod,
     /// δ0 ≥ ζ0 (or δ0 < 0), u_s^(−) ≤ 0, μd > μs, or degenerate k, W_S, ζ0, τ.
     OutsideClosedFormDomain,
+}
+
+impl OrbitRegime {
+    /// Every regime.
+    pub const ALL: [Self; 6] = [
+        OrbitRegime::NoSlip,
+        OrbitRegime::DoubleSlipStick,
+        OrbitRegime::DoubleSlipNoHalt,
+        OrbitRegime::SingleSlipStick,
+        OrbitRegime::ContinuousOrMultiperiod,
+        OrbitRegime::OutsideClosedFormDomain,
+    ];
+
+    /// The regime of the integration that shows this orbit, when it has one: the orbit of the
+    /// lobe engine is then the periodic motion of that name.
+    pub fn integrated(self) -> Option<IntegrationRegime> {
+        match self {
+            OrbitRegime::NoSlip => Some(IntegrationRegime::NoSlip),
+            OrbitRegime::DoubleSlipStick => Some(IntegrationRegime::DoubleSlipStick),
+            OrbitRegime::DoubleSlipNoHalt => Some(IntegrationRegime::DoubleSlipNoHalt),
+            OrbitRegime::SingleSlipStick => Some(IntegrationRegime::SingleSlipStick),
+            OrbitRegime::ContinuousOrMultiperiod | OrbitRegime::OutsideClosedFormDomain => None,
+        }
+    }
+
+    /// The identifier used in JSON and reports (physics.md §3.6): that of the integrated
+    /// regime when the orbit is one.
+    pub fn id(self) -> &'static str {
+        match (self, self.integrated()) {
+            (_, Some(integrated)) => integrated.id(),
+            (OrbitRegime::ContinuousOrMultiperiod, None) => "continuous_or_multiperiod",
+            (_, None) => "outside_closed_form_domain",
+        }
+    }
+
+    /// The regime in plain words.
+    pub fn words(self) -> &'static str {
+        match (self, self.integrated()) {
+            (_, Some(integrated)) => integrated.words(),
+            (OrbitRegime::ContinuousOrMultiperiod, None) => {
+                "no halt: continuous slip, or a motion repeating only after several periods"
+            }
+            (_, None) => "outside the domain of the closed forms",
+        }
+    }
+}
+
+impl Serialize for OrbitRegime {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
+    }
 }
 
 /// One slip of the periodic orbit (SI). Times are measured from the start of the period in which
@@ -416,6 +471,22 @@ fn periodic_slips(slips: &[Option<OrbitSlip>; 2], first: Phase) -> Option<Vec<Or
 mod tests {
     use super::*;
     use approx::assert_relative_eq;
+
+    #[test]
+    fn orbit_regimes_are_serialized_as_their_ids_and_named_once() {
+        for r in OrbitRegime::ALL {
+            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert!(!r.words().is_empty());
+            assert_eq!(
+                OrbitRegime::ALL.iter().filter(|q| q.id() == r.id()).count(),
+                1
+            );
+            // An orbit the integration names has the integration's id and words.
+            if let Some(i) = r.integrated() {
+                assert_eq!((r.id(), r.words()), (i.id(), i.words()));
+            }
+        }
+    }
 
     /// Speed on a rising flank from the engine's own formulas (for checks).
     fn rising_speed(v: f64, u: f64, psi: f64) -> f64 {

@@ -6,6 +6,7 @@
 //! body.rs        the sleeve as a body and the force laws (harmonic, linearized) for the engine
 //! formula.rs     the closed forms of §3, one pure function per quantity
 //! lobe.rs        the lobe engine: the periodic orbit of the linearized law in every regime
+//! quantity.rs    the registry of the quantities: key, symbol, unit, equation, scope
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! claims.rs      the paper's claims about this model (claims 4, 6); halt.rs claim 5, lever.rs claim 8
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
@@ -25,6 +26,7 @@ pub mod lobe;
 pub mod params;
 #[cfg(feature = "cli")]
 mod present;
+pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
@@ -71,6 +73,6 @@ impl Physics for WoodpeckerParams {
     }
 
     fn closed_form_regime(&self) -> &'static str {
-        results::orbit_regime_id(formula::evaluate(&results::linear_inputs(self)).regime)
+        formula::evaluate(&results::linear_inputs(self)).regime.id()
     }
 }

@@ -1,7 +1,7 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
 use super::{derivation, results, scene, spring_coordinate, WoodpeckerParams};
-use crate::derivation::Step;
+use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::{self, Note};
@@ -10,7 +10,6 @@ use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::{self, SceneCtx};
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::{OutFile, Scene};
-use crate::results::quantity::{Quantity, WOODPECKER};
 
 impl Present for WoodpeckerParams {
     fn standard_scene(&self) -> StandardScene {
@@ -34,11 +33,11 @@ impl Present for WoodpeckerParams {
         context::woodpecker_tables(scene, self)
     }
 
-    fn derivation(&self) -> (Vec<Step>, &'static [Quantity]) {
-        (derivation::woodpecker(self), WOODPECKER)
+    fn derivation(&self) -> Vec<Step> {
+        derivation::woodpecker(self)
     }
 
-    fn handout_note(key: &str) -> Option<Note> {
+    fn handout_note(key: StepKey) -> Option<Note> {
         physics::WOODPECKER_STEPS
             .iter()
             .find(|(k, _)| *k == key)
@@ -53,7 +52,7 @@ impl Present for WoodpeckerParams {
         Laws {
             harmonic: &e.harmonic,
             linear: e.linear.as_ref(),
-            closed_form_regime: results::orbit_regime_id(e.closed_form.regime),
+            closed_form_regime: e.closed_form.regime.id(),
         }
     }
 

@@ -9,10 +9,12 @@ use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
 };
 use crate::models::woodpecker::lobe::HaltKind;
+use crate::models::woodpecker::quantity::{Key, OrbitQuantity, Scope};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
 use crate::params::validate_periods;
 use crate::results::checks::Check;
+use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
 
@@ -164,33 +166,35 @@ pub fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<Str
     })
 }
 
-const PHASE_KEYS: [[&str; 8]; 2] = [
+/// The quantities of a phase's slip from rest ([`Scope::Slip`]), in the order of their
+/// applicability and checks.
+const PHASE_KEYS: [[Key; 8]; 2] = [
     [
-        "t_slip_1",
-        "a_slip_1",
-        "t_max_speed_1",
-        "v_max_1",
-        "t_stick_1",
-        "s_1",
-        "gamma_1",
-        "distance_1",
+        Key::TSlip1,
+        Key::ASlip1,
+        Key::TMaxSpeed1,
+        Key::VMax1,
+        Key::TStick1,
+        Key::S1,
+        Key::Gamma1,
+        Key::Distance1,
     ],
     [
-        "t_slip_2",
-        "a_slip_2",
-        "t_max_speed_2",
-        "v_max_2",
-        "t_stick_2",
-        "s_2",
-        "gamma_2",
-        "distance_2",
+        Key::TSlip2,
+        Key::ASlip2,
+        Key::TMaxSpeed2,
+        Key::VMax2,
+        Key::TStick2,
+        Key::S2,
+        Key::Gamma2,
+        Key::Distance2,
     ],
 ];
 
 /// For each paper formula of the phases and of the whole period: does it describe the motion?
 pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec<Applicability> {
     let mut out = Vec::new();
-    let mut push = |quantity: &'static str, reason: Option<String>| {
+    let mut push = |quantity: Key, reason: Option<String>| {
         out.push(Applicability::new(quantity, reason));
     };
     let orbit_slips: &[OrbitSlip] = c.orbit.as_ref().map_or(&[], |o| &o.slips);
@@ -215,7 +219,7 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                 (Some(note), _) => Some(note.to_string()),
                 (None, None) => Some(format!(
                     "no slip starts from rest in phase {name} on the periodic orbit ({})",
-                    orbit_regime_id(c.regime)
+                    c.regime.id()
                 )),
                 (None, Some(halt)) => match (j, halt) {
                     (0 | 1, _) => None,
@@ -247,8 +251,11 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                 .to_string(),
         )
     };
-    for key in ["gamma", "distance_per_period", "v_avg", "power_weight"] {
-        push(key, period_reason.clone());
+    for e in Key::ENTRIES
+        .iter()
+        .filter(|e| e.regimes == Scope::PaperRegime)
+    {
+        push(e.key, period_reason.clone());
     }
     out
 }
@@ -267,30 +274,15 @@ fn halt_name(h: HaltKind) -> &'static str {
     }
 }
 
-/// The §7 identifier of a closed-form regime.
-pub fn orbit_regime_id(r: OrbitRegime) -> &'static str {
-    match r {
-        OrbitRegime::NoSlip => "no_slip",
-        OrbitRegime::DoubleSlipStick => "double_slip_stick",
-        OrbitRegime::DoubleSlipNoHalt => "double_slip_no_halt",
-        OrbitRegime::SingleSlipStick => "single_slip_stick",
-        OrbitRegime::ContinuousOrMultiperiod => "continuous_or_multiperiod",
-        OrbitRegime::OutsideClosedFormDomain => "outside_closed_form_domain",
-    }
-}
-
 /// Whether an integration regime is the one the closed-form regime predicts.
 fn regime_agrees(closed: OrbitRegime, numeric: IntegrationRegime) -> bool {
     use IntegrationRegime as I;
-    match closed {
-        OrbitRegime::NoSlip => numeric == I::NoSlip,
-        OrbitRegime::DoubleSlipStick => numeric == I::DoubleSlipStick,
-        OrbitRegime::DoubleSlipNoHalt => numeric == I::DoubleSlipNoHalt,
-        OrbitRegime::SingleSlipStick => numeric == I::SingleSlipStick,
-        OrbitRegime::ContinuousOrMultiperiod => {
+    match (closed, closed.integrated()) {
+        (_, Some(integrated)) => numeric == integrated,
+        (OrbitRegime::ContinuousOrMultiperiod, None) => {
             matches!(numeric, I::ContinuousSlip | I::Multiperiod | I::NotPeriodic)
         }
-        OrbitRegime::OutsideClosedFormDomain => false,
+        (_, None) => false,
     }
 }
 
@@ -336,7 +328,11 @@ fn checks(
     run: &Run,
     summary: &Summary,
 ) -> Vec<Check> {
-    let applies = |key: &str| applicability.iter().any(|a| a.quantity == key && a.applies);
+    let applies = |key: Key| {
+        applicability
+            .iter()
+            .any(|a| a.quantity == key.into() && a.applies)
+    };
     let mut out = Vec::new();
     // A period of the settled orbit whose slips halt before the run ends (halts come < 2T
     // after the period start).
@@ -382,8 +378,7 @@ fn checks(
         for (j, value) in measured {
             if let (true, Some(closed)) = (applies(keys[j]), phase_values[j]) {
                 let scale = if j == 1 { p.g } else { 0.0 };
-                let eq = equation(keys[j]);
-                out.push(Check::measured_on_scale(keys[j], eq, closed, value, scale));
+                out.push(Check::measured_on_scale(keys[j], closed, value, scale));
             }
         }
         if let Some(slip) = orbit_slip {
@@ -393,18 +388,16 @@ fn checks(
         }
     }
     if let Some(orbit) = &c.orbit {
-        push_period_checks(&mut out, c, orbit, summary, applies("v_avg"));
+        push_period_checks(&mut out, c, orbit, summary, applies(Key::VAvg));
     }
     out.push(Check::label_agreeing(
-        "regime",
-        "§3.6",
-        orbit_regime_id(c.regime),
+        Key::Regime,
+        c.regime.id(),
         summary.regime.id(),
         regime_agrees(c.regime, summary.regime),
     ));
     out.push(Check::label(
-        "immediate_slip",
-        "(38)",
+        Key::ImmediateSlip,
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
     ));
@@ -437,25 +430,6 @@ fn phase_values(c: &WoodpeckerClosedForm, phase: Phase) -> [Option<f64>; 8] {
     }
 }
 
-/// The paper's equation of a phase key.
-fn equation(key: &str) -> &'static str {
-    match key {
-        "t_slip_1" => "(41)",
-        "a_slip_1" => "(45)",
-        "t_max_speed_1" => "(46)",
-        "v_max_1" => "(48)",
-        "t_stick_1" => "(49)",
-        "distance_1" => "(55)",
-        "t_slip_2" => "(58)",
-        "a_slip_2" => "(64)",
-        "t_max_speed_2" => "(62)",
-        "v_max_2" => "(63)",
-        "t_stick_2" => "(60)",
-        "distance_2" => "(68)",
-        _ => "§3.6",
-    }
-}
-
 /// Orbit checks of one slip: its halt time, every speed maximum and its distance (§3.6), less
 /// those a paper formula already checks (`covered`: stick, first maximum, distance).
 fn push_orbit_checks(
@@ -470,8 +444,7 @@ fn push_orbit_checks(
     if !stick_covered {
         let stick = m.and_then(|m| m.stick);
         out.push(Check::measured(
-            &format!("orbit_t_stick_{k}"),
-            "§3.6",
+            OrbitQuantity::TStick { slip: k },
             slip.t_halt,
             stick.map(|e| e.t - start),
         ));
@@ -482,14 +455,18 @@ fn push_orbit_checks(
         }
         let measured = m.and_then(|m| m.maxima.get(j));
         out.push(Check::measured(
-            &format!("orbit_t_max_speed_{k}_{}", j + 1),
-            "§3.6",
+            OrbitQuantity::TMaxSpeed {
+                slip: k,
+                maximum: j + 1,
+            },
             t,
             measured.map(|e| e.t - start),
         ));
         out.push(Check::measured(
-            &format!("orbit_v_max_{k}_{}", j + 1),
-            "§3.6",
+            OrbitQuantity::VMax {
+                slip: k,
+                maximum: j + 1,
+            },
             v,
             measured.map(|e| e.v),
         ));
@@ -497,8 +474,7 @@ fn push_orbit_checks(
     if !distance_covered {
         let distance = m.and_then(|m| m.stick.map(|st| st.x - m.slip.x));
         out.push(Check::measured(
-            &format!("orbit_distance_{k}"),
-            "§3.6",
+            OrbitQuantity::Distance { slip: k },
             slip.distance,
             distance,
         ));
@@ -516,19 +492,17 @@ fn push_period_checks(
     if paper_applies {
         if let (Some(y), Some(v)) = (c.distance_per_period, c.v_avg) {
             out.push(Check::measured(
-                "distance_per_period",
-                "(68),(69)",
+                Key::DistancePerPeriod,
                 y,
                 s.advance_per_period,
             ));
-            out.push(Check::measured("v_avg", "(71)", v, s.v_avg));
+            out.push(Check::measured(Key::VAvg, v, s.v_avg));
         }
     }
     out.push(Check::measured(
-        "orbit_distance_per_period",
-        "§3.6",
+        Key::OrbitDistancePerPeriod,
         orbit.distance_per_period,
         s.advance_per_period,
     ));
-    out.push(Check::measured("orbit_v_avg", "§3.6", orbit.v_avg, s.v_avg));
+    out.push(Check::measured(Key::OrbitVAvg, orbit.v_avg, s.v_avg));
 }

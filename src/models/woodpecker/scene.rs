@@ -9,13 +9,14 @@
 
 use rayon::prelude::*;
 
-use crate::engine::{analyse, integrate, EventKind, Run, RunOptions};
+use crate::engine::{analyse, integrate, EventKind, IntegrationRegime, Run, RunOptions};
 use crate::error::{Error, Result};
 use crate::models::param::invalid;
 use crate::models::woodpecker::formula::{
-    self as cf, counterpart, in_closed_form_domain, Counterpart, Phase, WoodpeckerClosedForm,
+    self as cf, counterpart, in_closed_form_domain, Counterpart, OrbitRegime, Phase,
+    WoodpeckerClosedForm,
 };
-use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs, orbit_regime_id};
+use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
@@ -44,19 +45,73 @@ const BOUNDARY_POINTS: usize = 400;
 /// Factors of μd,MIN in the μd sweep.
 const SWEEP: [f64; 3] = [0.8, 1.0, 1.2];
 
-/// Regime ids of both maps: legend label and fill. The same regime has the same fill on both
-/// maps (and continuous motion the same fill, whichever id names it).
-const REGIMES: [(&str, &str, usize); 10] = [
-    ("double_slip_stick", "2 slips, 2 sticks", 2),
-    ("double_slip_no_halt", "1 slip, 2 maxima", 4),
-    ("single_slip_stick", "1 slip, 1 maximum", 5),
-    ("continuous_or_multiperiod", "no halt (continuous)", 3),
-    ("continuous_slip", "continuous slip", 3),
-    ("multiperiod", "multi-period orbit", 1),
-    ("not_periodic", "not periodic", 7),
-    ("no_slip", "never slips", 6),
-    ("outside_closed_form_domain", "no closed form", 7),
-    ("failed", "integration failed", 0),
+/// A category of the regime maps: a regime of the integration (an orbit of the closed forms that
+/// is one takes its category, so that the same regime is one category on both maps), an orbit
+/// regime the integration has no name for, or a failed integration.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Category {
+    Integrated(IntegrationRegime),
+    Orbit(OrbitRegime),
+    Failed,
+}
+
+impl Category {
+    /// The category of a closed-form orbit regime.
+    fn orbit(r: OrbitRegime) -> Self {
+        r.integrated()
+            .map_or(Category::Orbit(r), Category::Integrated)
+    }
+}
+
+/// The categories of both maps, in legend order: legend label and fill. The same regime has the
+/// same fill on both maps (and continuous motion the same fill, whichever regime names it).
+const REGIMES: [(Category, &str, usize); 10] = [
+    (
+        Category::Integrated(IntegrationRegime::DoubleSlipStick),
+        "2 slips, 2 sticks",
+        2,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::DoubleSlipNoHalt),
+        "1 slip, 2 maxima",
+        4,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::SingleSlipStick),
+        "1 slip, 1 maximum",
+        5,
+    ),
+    (
+        Category::Orbit(OrbitRegime::ContinuousOrMultiperiod),
+        "no halt (continuous)",
+        3,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::ContinuousSlip),
+        "continuous slip",
+        3,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::Multiperiod),
+        "multi-period orbit",
+        1,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::NotPeriodic),
+        "not periodic",
+        7,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::NoSlip),
+        "never slips",
+        6,
+    ),
+    (
+        Category::Orbit(OrbitRegime::OutsideClosedFormDomain),
+        "no closed form",
+        7,
+    ),
+    (Category::Failed, "integration failed", 0),
 ];
 
 /// The figures of one kind for the woodpecker `p` (other models' kinds give none).
@@ -396,7 +451,7 @@ fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
              and {} by the closed forms. Vertical lines: {about_markers}.",
             counterpart_name(p.counterpart),
             s.regime.id(),
-            orbit_regime_id(c.regime)
+            c.regime.id()
         ),
         (Some(s), Some(note)) => format!(
             "The linear law with the {} counterpart (dashed) is in the regime {} by integration; \
@@ -613,7 +668,7 @@ fn phase_chart(p: &WoodpeckerParams, phase: Phase) -> Result<(LineChart, String)
             "The parameters are outside the paper's standard regime (the closed forms find the \
              orbit {}): where a marker and the curve disagree, the formula does not describe \
              this motion.",
-            orbit_regime_id(c.regime)
+            c.regime.id()
         )
     };
     let caption = format!(
@@ -819,11 +874,11 @@ fn positions(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
 // ---------------------------------------------------------------------------------------------
 // Regime maps in the (μd, z0) plane
 
-/// Index of a regime id in [`REGIMES`] (unknown ids count as failed).
-fn regime_index(id: &str) -> u8 {
+/// Index of a category in [`REGIMES`] (one not listed counts as failed).
+fn regime_index(category: Category) -> u8 {
     let i = REGIMES
         .iter()
-        .position(|r| r.0 == id)
+        .position(|r| r.0 == category)
         .unwrap_or(REGIMES.len() - 1);
     i as u8
 }
@@ -831,7 +886,7 @@ fn regime_index(id: &str) -> u8 {
 /// Regime of the linear orbit from the closed forms (§3.6).
 fn linear_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64) -> u8 {
     let q = WoodpeckerParams { mu_d, z0, ..*p };
-    regime_index(orbit_regime_id(closed_form(&q).regime))
+    regime_index(Category::orbit(closed_form(&q).regime))
 }
 
 /// Regime of the harmonic law by exact integration over `periods` periods.
@@ -844,8 +899,8 @@ fn harmonic_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64, periods: u32) -> u8 {
     let run = woodpecker::force_law(&q, LawKind::Harmonic)
         .and_then(|law| integrate(&woodpecker::body(&q), &law, &opts));
     match run {
-        Ok(run) => regime_index(analyse(&run).regime().id()),
-        Err(_) => regime_index("failed"),
+        Ok(run) => regime_index(Category::Integrated(analyse(&run).regime())),
+        Err(_) => regime_index(Category::Failed),
     }
 }
 
@@ -1197,7 +1252,8 @@ mod tests {
                 Drawing::Chart(_) => panic!("{} is a map", f.id),
             })
             .collect();
-        let dss = REGIMES[usize::from(regime_index("double_slip_stick"))].1;
+        let dss =
+            REGIMES[usize::from(regime_index(Category::orbit(OrbitRegime::DoubleSlipStick)))].1;
         for map in &maps {
             assert!(map.cells.len() >= 200 && map.cells.iter().all(|r| r.len() >= 200));
             assert!(map
