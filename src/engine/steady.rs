@@ -50,7 +50,7 @@ impl IntegrationRegime {
     ];
 
     /// The identifier used in JSON and reports.
-    pub fn id(self) -> &'static str {
+    pub const fn id(self) -> &'static str {
         match self {
             Self::NoSlip => "no_slip",
             Self::SingleSlipStick => "single_slip_stick",

@@ -8,7 +8,6 @@ use crate::models::pulled_mass::{derivation::param as pm_param, quantity::Key as
 use crate::models::woodpecker::{derivation::param as wp_param, quantity::Key as W};
 use crate::models::{with_model, Model};
 use crate::present::Present;
-use crate::results::quantity::AnyKey;
 
 /// (LaTeX, sentence) lines of the pulled mass: physics.md §1.1–1.2.
 pub(crate) const PULLED_MASS: &[(&str, &str)] = &[
@@ -70,12 +69,12 @@ use Note::{Label, Numbers, Sentence};
 
 /// The step of a pulled-mass quantity.
 const fn p(k: P) -> StepKey {
-    StepKey::Quantity(AnyKey::PulledMass(k))
+    StepKey::Quantity(crate::models::pulled_mass::quantity::any(k))
 }
 
 /// The step of a woodpecker quantity.
 const fn w(k: W) -> StepKey {
-    StepKey::Quantity(AnyKey::Woodpecker(k))
+    StepKey::Quantity(crate::models::woodpecker::quantity::any(k))
 }
 
 pub(crate) const PULLED_MASS_STEPS: &[(StepKey, Note)] = &[

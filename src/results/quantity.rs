@@ -3,15 +3,13 @@
 //! entries), beside the closed forms it describes, so that a model brings its quantities with it
 //! and the two tables never share a key type. This module holds what both registries share: the
 //! shape of an entry ([`Entry`], [`Quantity`]), the trait of a model's key ([`Registry`]), and
-//! [`AnyKey`], a key of either model, for the data both models share (checks, applicability,
+//! [`AnyKey`], a key of any model, for the data both models share (checks, applicability,
 //! derivation steps, worksheet questions).
 //!
 //! The §7 JSON key of a quantity is written in its entry only: the `closed_form` object is
 //! serialized through the registry, and every other place names the quantity by its typed key.
 
 use serde::Serialize;
-
-use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
 
 /// How a closed-form quantity is shown, and what it means.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -58,7 +56,7 @@ pub struct Entry<K: 'static, R: 'static> {
 }
 
 /// The typed key of a model's quantities, and the model's registry.
-pub trait Registry: Copy + Eq + std::fmt::Debug + Into<AnyKey> + 'static {
+pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
     /// Where a quantity of this model describes the motion.
     type Regimes: Copy + 'static;
     /// Every quantity of the model, in the order of the §7 `closed_form` object and of the
@@ -102,37 +100,34 @@ pub trait Registry: Copy + Eq + std::fmt::Debug + Into<AnyKey> + 'static {
     }
 }
 
-/// A closed-form quantity of either model.
+/// A closed-form quantity of any model: a reference to its registry entry's [`Quantity`].
+/// Keys compare by the whole entry (symbol, equation, formula …), not by address: registry
+/// tables are constants, which have no unique address; two models' quantities that share a
+/// §7 key differ in their equation and formula.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum AnyKey {
-    PulledMass(pm::Key),
-    Woodpecker(wp::Key),
-}
+pub struct AnyKey(&'static Quantity);
 
 impl AnyKey {
+    /// The key of a registry entry's quantity (each model's `quantity::any` makes one in const
+    /// context).
+    pub const fn new(quantity: &'static Quantity) -> Self {
+        Self(quantity)
+    }
+
     /// How the quantity is shown.
     pub fn quantity(self) -> &'static Quantity {
-        match self {
-            AnyKey::PulledMass(k) => k.quantity(),
-            AnyKey::Woodpecker(k) => k.quantity(),
-        }
+        self.0
     }
 
     /// The §7 key.
     pub fn id(self) -> &'static str {
-        self.quantity().id
+        self.0.id
     }
 }
 
-impl From<pm::Key> for AnyKey {
-    fn from(k: pm::Key) -> Self {
-        AnyKey::PulledMass(k)
-    }
-}
-
-impl From<wp::Key> for AnyKey {
-    fn from(k: wp::Key) -> Self {
-        AnyKey::Woodpecker(k)
+impl<K: Registry> From<K> for AnyKey {
+    fn from(k: K) -> Self {
+        Self(k.quantity())
     }
 }
 
@@ -208,6 +203,20 @@ pub fn serialize_closed_form<K: Registry, S: serde::Serializer>(
 #[cfg(test)]
 pub(crate) mod tests {
     use super::*;
+    use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
+
+    #[test]
+    fn any_keys_equal_their_own_key_and_no_other_models() {
+        for &p in &pm::ALL {
+            assert_eq!(pm::any(p), AnyKey::from(p), "{p:?}");
+            for &w in &wp::ALL {
+                assert_ne!(AnyKey::from(p), AnyKey::from(w), "{p:?} {w:?}");
+            }
+        }
+        for &w in &wp::ALL {
+            assert_eq!(wp::any(w), AnyKey::from(w), "{w:?}");
+        }
+    }
 
     /// Every entry sits at its key's index, ids are unique, and every key has an entry.
     pub(crate) fn registry_is_consistent<K: Registry>(all: &[K]) {

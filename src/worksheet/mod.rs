@@ -222,11 +222,11 @@ mod tests {
     fn defaults_are_the_standard_regime_and_every_question_it_allows() {
         let (regime, qs) =
             resolve(&request(Model::PulledMass(Default::default()), None, None)).unwrap();
-        assert_eq!(regime, Regime::PulledMass(PulledRegime::SlipStick));
+        assert_eq!(regime, Regime::new(PulledRegime::SlipStick.id()));
         assert_eq!(qs.len(), question::PULLED_MASS.len());
         let (regime, qs) =
             resolve(&request(Model::Woodpecker(Default::default()), None, None)).unwrap();
-        assert_eq!(regime, Regime::Woodpecker(OrbitRegime::DoubleSlipStick));
+        assert_eq!(regime, Regime::new(OrbitRegime::DoubleSlipStick.id()));
         assert_eq!(qs.len(), question::WOODPECKER.len());
         let late = request(
             Model::PulledMass(Default::default()),

@@ -17,6 +17,26 @@ use crate::worksheet::exercise::Exercise;
 use crate::worksheet::question::{self, Question, Regime};
 use crate::worksheet::sample::round3;
 
+/// The rules that decide the regime, as (regime, condition in LaTeX).
+const REGIME_RULES: &[(Regime, &str)] = &[
+    (
+        Regime::new(PulledRegime::ImmediateContinuousSlip.id()),
+        r"\varphi > 2\mu_s",
+    ),
+    (
+        Regime::new(PulledRegime::SlipStick.id()),
+        r"\varphi \le 1/\Theta",
+    ),
+    (
+        Regime::new(PulledRegime::SlipStickLate.id()),
+        r"1/\Theta < \varphi \le \varphi_c",
+    ),
+    (
+        Regime::new(PulledRegime::ContinuousSlip.id()),
+        r"\varphi_c < \varphi \le 2\mu_s",
+    ),
+];
+
 impl Exercise for PulledMassParams {
     const TITLE: &'static str = "the pulled mass";
     const INTRO: &'static str = "A block of mass m lies on a table and is pulled by a constant \
@@ -34,24 +54,7 @@ impl Exercise for PulledMassParams {
     }
 
     fn regime_rules() -> &'static [(Regime, &'static str)] {
-        &[
-            (
-                Regime::PulledMass(PulledRegime::ImmediateContinuousSlip),
-                r"\varphi > 2\mu_s",
-            ),
-            (
-                Regime::PulledMass(PulledRegime::SlipStick),
-                r"\varphi \le 1/\Theta",
-            ),
-            (
-                Regime::PulledMass(PulledRegime::SlipStickLate),
-                r"1/\Theta < \varphi \le \varphi_c",
-            ),
-            (
-                Regime::PulledMass(PulledRegime::ContinuousSlip),
-                r"\varphi_c < \varphi \le 2\mu_s",
-            ),
-        ]
+        REGIME_RULES
     }
 
     fn draw(regime: Regime, rng: &mut StdRng) -> Self {
@@ -92,9 +95,11 @@ fn draw_set(regime: Regime, rng: &mut StdRng) -> PulledMassParams {
         pm::phi_stick_max(mu_s, mu_d),
         pm::phi_continuous(mu_s, mu_d),
     );
+    let late = Regime::new(PulledRegime::SlipStickLate.id());
+    let continuous = Regime::new(PulledRegime::ContinuousSlip.id());
     let (lo, hi) = match regime {
-        Regime::PulledMass(PulledRegime::SlipStickLate) => (stick, cont),
-        Regime::PulledMass(PulledRegime::ContinuousSlip) => (cont, 2.0 * mu_s),
+        r if r == late => (stick, cont),
+        r if r == continuous => (cont, 2.0 * mu_s),
         _ => (0.3 * stick, stick),
     };
     let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);

@@ -203,7 +203,7 @@ impl Regime {
     ];
 
     /// The identifier used in JSON and reports.
-    pub fn id(self) -> &'static str {
+    pub const fn id(self) -> &'static str {
         match self {
             Self::ImmediateContinuousSlip => "immediate_continuous_slip",
             Self::SlipStick => "slip_stick",

@@ -3,7 +3,7 @@
 //! describes the motion. The §7 keys are written here and nowhere else.
 
 use crate::models::pulled_mass::formula::Regime;
-use crate::results::quantity::{Entry, Kind, Quantity, Registry};
+use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
 
 /// A quantity of the pulled mass, in the order of the §7 `closed_form` object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -468,6 +468,12 @@ impl Key {
     pub fn describes(self, regime: Regime) -> bool {
         self.entry().regimes.contains(&regime)
     }
+}
+
+/// The model-independent key of `k`, in const context (the entries are in the order of the
+/// key's variants, see [`Registry::index`]).
+pub const fn any(k: Key) -> AnyKey {
+    AnyKey::new(&ENTRIES[k as usize].quantity)
 }
 
 #[cfg(test)]

@@ -76,7 +76,7 @@ pub fn evaluate_with_runs(
     };
     let summary_of = |run: &Run| {
         Summary::new(run, &analyse(run), |v_avg, friction| Power {
-            key: "power",
+            key: Key::Power.id(),
             symbol: "F v̄",
             driving: v_avg.map(|v| p.force * v),
             friction,

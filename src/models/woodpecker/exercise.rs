@@ -19,6 +19,26 @@ use crate::worksheet::exercise::Exercise;
 use crate::worksheet::question::{self, Question, Regime};
 use crate::worksheet::sample::round3;
 
+/// The rules that decide the regime, as (regime, condition in LaTeX).
+const REGIME_RULES: &[(Regime, &str)] = &[
+    (
+        Regime::new(OrbitRegime::DoubleSlipStick.id()),
+        r"u_s^{(-)}\eta' \ge 1,\quad \mu_d \ge \mu_{d,HALT}^{(I)},\quad \mu_d \ge \mu_{d,HALT}^{(II)}",
+    ),
+    (
+        Regime::new(OrbitRegime::DoubleSlipNoHalt.id()),
+        r"\text{one slip per period, two speed maxima}",
+    ),
+    (
+        Regime::new(OrbitRegime::SingleSlipStick.id()),
+        r"\text{one slip per period, one speed maximum}",
+    ),
+    (
+        Regime::new(OrbitRegime::ContinuousOrMultiperiod.id()),
+        r"\text{the sleeve never halts}",
+    ),
+];
+
 impl Exercise for WoodpeckerParams {
     const TITLE: &'static str = "the falling woodpecker";
     const INTRO: &'static str = "The sleeve of the woodpecker toy (mass m_S) slides down the \
@@ -36,24 +56,7 @@ impl Exercise for WoodpeckerParams {
     }
 
     fn regime_rules() -> &'static [(Regime, &'static str)] {
-        &[
-            (
-                Regime::Woodpecker(OrbitRegime::DoubleSlipStick),
-                r"u_s^{(-)}\eta' \ge 1,\quad \mu_d \ge \mu_{d,HALT}^{(I)},\quad \mu_d \ge \mu_{d,HALT}^{(II)}",
-            ),
-            (
-                Regime::Woodpecker(OrbitRegime::DoubleSlipNoHalt),
-                r"\text{one slip per period, two speed maxima}",
-            ),
-            (
-                Regime::Woodpecker(OrbitRegime::SingleSlipStick),
-                r"\text{one slip per period, one speed maximum}",
-            ),
-            (
-                Regime::Woodpecker(OrbitRegime::ContinuousOrMultiperiod),
-                r"\text{the sleeve never halts}",
-            ),
-        ]
+        REGIME_RULES
     }
 
     fn draw(_regime: Regime, rng: &mut StdRng) -> Self {

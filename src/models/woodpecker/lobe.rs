@@ -301,7 +301,7 @@ impl OrbitRegime {
 
     /// The regime of the integration that shows this orbit, when it has one: the orbit of the
     /// lobe engine is then the periodic motion of that name.
-    pub fn integrated(self) -> Option<IntegrationRegime> {
+    pub const fn integrated(self) -> Option<IntegrationRegime> {
         match self {
             OrbitRegime::NoSlip => Some(IntegrationRegime::NoSlip),
             OrbitRegime::DoubleSlipStick => Some(IntegrationRegime::DoubleSlipStick),
@@ -313,7 +313,7 @@ impl OrbitRegime {
 
     /// The identifier used in JSON and reports (physics.md §3.6): that of the integrated
     /// regime when the orbit is one.
-    pub fn id(self) -> &'static str {
+    pub const fn id(self) -> &'static str {
         match (self, self.integrated()) {
             (_, Some(integrated)) => integrated.id(),
             (OrbitRegime::ContinuousOrMultiperiod, None) => "continuous_or_multiperiod",

@@ -4,7 +4,7 @@
 //! lobe engine, numbered by slip at run time, are named by [`OrbitQuantity`].
 
 use crate::models::woodpecker::lobe::Phase;
-use crate::results::quantity::{Entry, Kind, Quantity, Registry};
+use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
 
 /// The section of the lobe engine (§3.6): the equation of its orbit quantities and regimes.
 pub const ORBIT: &str = "§3.6";
@@ -751,6 +751,12 @@ impl OrbitQuantity {
             OrbitQuantity::Distance { slip } => format!("orbit_distance_{slip}"),
         }
     }
+}
+
+/// The model-independent key of `k`, in const context (the entries are in the order of the
+/// key's variants, see [`Registry::index`]).
+pub const fn any(k: Key) -> AnyKey {
+    AnyKey::new(&ENTRIES[k as usize].quantity)
 }
 
 #[cfg(test)]

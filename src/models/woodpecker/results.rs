@@ -103,7 +103,7 @@ pub fn evaluate_with_runs(
     let w_s = p.sleeve_weight();
     let summary_of = |run: &Run| {
         Summary::new(run, &analyse(run), |v_avg, friction| Power {
-            key: "power_weight",
+            key: Key::PowerWeight.id(),
             symbol: "W_S v̄",
             driving: v_avg.map(|v| w_s * v),
             friction,
