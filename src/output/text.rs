@@ -4,116 +4,13 @@
 use std::fmt::Write;
 
 use super::format::{rel, sig};
-use crate::models::pulled_mass::{formula::Regime, quantity as pm, results::Evaluation};
-use crate::models::woodpecker::{quantity as wp, results as woodpecker};
 use crate::results::quantity::Registry;
 use crate::results::{Check, CheckValue, Summary};
 
-const DIGITS: usize = 10;
-
-/// Renders a pulled-mass evaluation as plain-text tables.
-pub fn pulled_mass(e: &Evaluation) -> String {
-    let p = &e.params;
-    let c = &e.closed_form;
-    let mut out = String::new();
-    let _ = writeln!(out, "stickslip eval pulled-mass");
-    let _ = writeln!(
-        out,
-        "parameters: mu_s = {}, mu_d = {}, m = {} kg, k = {} N/m, F = {} N, g = {} m/s², periods = {}",
-        p.input.mu_s, p.input.mu_d, p.input.mass, p.input.k, p.input.force, p.input.g, p.periods
-    );
-    let _ = writeln!(
-        out,
-        "derived:    W = m g = {} N, omega = {} rad/s, T = {} s, phi = F/W = {}",
-        sig(Some(p.weight), DIGITS),
-        sig(Some(p.omega), DIGITS),
-        sig(Some(p.period), DIGITS),
-        sig(Some(p.phi), DIGITS)
-    );
-    let _ = writeln!(
-        out,
-        "\nregime (linearized law): {}  [{}]",
-        c.regime.id(),
-        regime_reason(e)
-    );
-    closed_form_table(&mut out, |k: pm::Key| c.get(k));
-    checks_table(&mut out, &e.checks);
-    laws_table(&mut out, &e.harmonic, Some(&e.linear));
-    out
-}
-
-/// Renders a woodpecker evaluation as plain-text tables.
-pub fn woodpecker(e: &woodpecker::Evaluation) -> String {
-    let p = &e.params;
-    let i = &p.input;
-    let c = &e.closed_form;
-    let mut out = String::new();
-    let _ = writeln!(out, "stickslip eval woodpecker");
-    let _ = writeln!(
-        out,
-        "parameters: mu_s = {}, mu_d = {}, k = {} N/m, m_S = {} kg, m_W = {} kg, l = {} m, h = {} m, \
-         z0 = {} m, d0 = {} m, g = {} m/s², periods = {}",
-        i.mu_s, i.mu_d, i.k, i.m_sleeve, i.m_bird, i.l, i.h, i.z0, i.d0, i.g, p.periods
-    );
-    let _ = writeln!(
-        out,
-        "options:    lambda = {} ({}), omega = {:?}, counterpart = {:?}",
-        sig(Some(p.lambda), DIGITS),
-        if i.lever.is_some() { "given" } else { "l/h" },
-        i.omega,
-        i.counterpart
-    );
-    let _ = writeln!(
-        out,
-        "derived:    W_S = m_S g = {} N, omega = {} rad/s, T = {} s, zeta0 = {} m, delta0 = {} m",
-        sig(Some(p.sleeve_weight), DIGITS),
-        sig(Some(p.omega), DIGITS),
-        sig(Some(p.period), DIGITS),
-        sig(p.zeta0, DIGITS),
-        sig(p.delta0, DIGITS)
-    );
-    let _ = writeln!(
-        out,
-        "\nregime (linearized law, §3.6): {}; paper's standard regime valid: {}; immediate slip (38): {}",
-        c.regime.id(),
-        c.paper_regime_valid,
-        c.immediate_slip
-    );
-    if let Some(note) = &e.domain_note {
-        let _ = writeln!(out, "closed forms do not apply: {note}");
-    }
-    closed_form_table(&mut out, |k: wp::Key| c.get(k));
-    let not_applying: Vec<_> = e.applicability.iter().filter(|a| !a.applies).collect();
-    if !not_applying.is_empty() && e.domain_note.is_none() {
-        let _ = writeln!(out, "\nformulas that do not describe this motion");
-        for a in not_applying {
-            let symbol = a.quantity.quantity().symbol;
-            let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
-        }
-    }
-    checks_table(&mut out, &e.checks);
-    laws_table(&mut out, &e.harmonic, e.linear.as_ref());
-    out
-}
-
-/// The inequality of §1.5 that decides the regime, with its numbers.
-fn regime_reason(e: &Evaluation) -> String {
-    let c = &e.closed_form;
-    let (phi, two_mu_s) = (sig(Some(c.phi), 6), sig(Some(2.0 * e.params.input.mu_s), 6));
-    let (stick, cont) = (
-        sig(Some(c.phi_stick_max), 6),
-        sig(Some(c.phi_continuous), 6),
-    );
-    match c.regime {
-        Regime::ImmediateContinuousSlip => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
-        Regime::SlipStick => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
-        Regime::SlipStickLate => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
-        Regime::ContinuousSlip => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
-    }
-}
+pub(crate) const DIGITS: usize = 10;
 
 /// The numbers of the closed forms of model `K` with their symbols, units and equations.
-fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f64>) {
+pub(crate) fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f64>) {
     let _ = writeln!(out, "\nclosed forms (linearized law)");
     let _ = writeln!(
         out,
@@ -134,7 +31,7 @@ fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f6
     }
 }
 
-fn checks_table(out: &mut String, checks: &[Check]) {
+pub(crate) fn checks_table(out: &mut String, checks: &[Check]) {
     let passed = checks.iter().filter(|c| c.pass).count();
     let _ = writeln!(
         out,
@@ -172,7 +69,7 @@ fn value(v: &CheckValue) -> String {
     }
 }
 
-fn laws_table(out: &mut String, harmonic: &Summary, linear: Option<&Summary>) {
+pub(crate) fn laws_table(out: &mut String, harmonic: &Summary, linear: Option<&Summary>) {
     let _ = writeln!(out, "\nexact integration: harmonic law vs linearized law");
     let Some(linear) = linear else {
         let _ = writeln!(out, "  (no linear law: its counterpart is undefined)");

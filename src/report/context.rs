@@ -4,13 +4,7 @@
 use serde::Serialize;
 
 use crate::error::Result;
-use crate::models::pulled_mass::formula::{ClosedForm, Regime};
-use crate::models::pulled_mass::PulledMassParams;
-use crate::models::pulled_mass::{quantity as pm, results as pulled_mass};
 use crate::models::with_model;
-use crate::models::woodpecker::formula::Counterpart;
-use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::woodpecker::{quantity as wp, results as woodpecker};
 use crate::output::format::{rel, sig};
 use crate::present::Present;
 use crate::report::math::mathml;
@@ -20,7 +14,7 @@ use crate::results::quantity::{Quantity, Registry};
 use crate::results::{Applicability, Check, CheckValue, Checked, Summary};
 
 /// Significant digits of the tables.
-const DIGITS: usize = 8;
+pub(crate) const DIGITS: usize = 8;
 
 /// A row of the parameter table.
 #[derive(Clone, Debug, Serialize)]
@@ -173,16 +167,16 @@ pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
     }
 }
 
-fn num(x: f64) -> String {
+pub(crate) fn num(x: f64) -> String {
     sig(Some(x), DIGITS)
 }
 
-fn opt(x: Option<f64>) -> String {
+pub(crate) fn opt(x: Option<f64>) -> String {
     sig(x, DIGITS)
 }
 
 /// A derived value, to the table's significant digits.
-fn row(name: &str, value: f64, unit: &str) -> ParamRow {
+pub(crate) fn row(name: &str, value: f64, unit: &str) -> ParamRow {
     ParamRow {
         name: name.to_string(),
         value: num(value),
@@ -191,7 +185,7 @@ fn row(name: &str, value: f64, unit: &str) -> ParamRow {
 }
 
 /// An input value, exactly as given (shortest representation).
-fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
+pub(crate) fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
     ParamRow {
         name: name.to_string(),
         value: value.to_string(),
@@ -199,7 +193,7 @@ fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
     }
 }
 
-fn blank(scene: &Scene, model: &str) -> SceneCtx {
+pub(crate) fn blank(scene: &Scene, model: &str) -> SceneCtx {
     SceneCtx {
         id: scene.id.clone(),
         title: scene.title.clone(),
@@ -224,58 +218,7 @@ fn blank(scene: &Scene, model: &str) -> SceneCtx {
     }
 }
 
-pub(crate) fn pulled_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
-    let e = pulled_mass::evaluate(p, scene.periods)?;
-    let mut ctx = blank(scene, "pulled mass");
-    let pp = &e.params;
-    ctx.params = vec![
-        input("μs (static friction)", p.mu_s, ""),
-        input("μd (dynamic friction)", p.mu_d, ""),
-        input("m (block; hanging mass m' = m)", p.mass, "kg"),
-        input("k (spring)", p.k, "N/m"),
-        input("F (pull)", p.force, "N"),
-        input("g", p.g, "m/s²"),
-        row("W = m g", pp.weight, "N"),
-        row("ω = √(k/m')", pp.omega, "rad/s"),
-        row("T = 2π/ω", pp.period, "s"),
-        row("φ = F/W", pp.phi, ""),
-        input("periods integrated", pp.periods, ""),
-    ];
-    let c = &e.closed_form;
-    let why = pulled_regime_reason(c, p.mu_s);
-    ctx.regimes = vec![
-        RegimeRow {
-            law: "linearized law, closed forms (§1.5)".to_string(),
-            regime: c.regime.id().to_string(),
-            why,
-        },
-        integration_regime("linearized law, exact integration", &e.linear),
-        integration_regime("harmonic law, exact integration", &e.harmonic),
-    ];
-    fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
-    ctx.linearization = laws_table(
-        &[
-            ("harmonic", Some(&e.harmonic)),
-            ("linearized", Some(&e.linear)),
-        ],
-        pp.period,
-    );
-    Ok(ctx)
-}
-
-/// The §1.5 inequality that decides the pulled-mass regime, with numbers.
-fn pulled_regime_reason(c: &ClosedForm, mu_s: f64) -> String {
-    let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
-    let two_mu_s = num(2.0 * mu_s);
-    match c.regime {
-        Regime::ImmediateContinuousSlip => format!("φ = {phi} > 2μs = {two_mu_s}"),
-        Regime::SlipStick => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
-        Regime::SlipStickLate => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
-        Regime::ContinuousSlip => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
-    }
-}
-
-fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
+pub(crate) fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
     let slips = format!(
         "{} slip(s) and {} stick(s) in the last period, period multiplicity {}",
         s.slips_per_period,
@@ -295,85 +238,9 @@ fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
     }
 }
 
-pub(crate) fn woodpecker_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
-    let e = woodpecker::evaluate(p, scene.periods)?;
-    let mut ctx = blank(scene, "woodpecker");
-    let pp = &e.params;
-    ctx.params = vec![
-        input("μs (static friction)", p.mu_s, ""),
-        input("μd (dynamic friction)", p.mu_d, ""),
-        input("k (spring)", p.k, "N/m"),
-        input("m_S (sleeve)", p.m_sleeve, "kg"),
-        input("m_W (woodpecker)", p.m_bird, "kg"),
-        input("l (lever arm of the spring force)", p.l, "m"),
-        input("h (distance of the two contacts)", p.h, "m"),
-        input("z0 (spring offset)", p.z0, "m"),
-        input("d0 (spring amplitude)", p.d0, "m"),
-        input("g", p.g, "m/s²"),
-        row("λ (lever ratio)", pp.lambda, ""),
-        row("W_S = m_S g", pp.sleeve_weight, "N"),
-        row("ω", pp.omega, "rad/s"),
-        row("T = 2π/ω", pp.period, "s"),
-        ParamRow {
-            name: "ζ0, δ0 (linear counterpart)".to_string(),
-            value: format!("{}, {}", opt(pp.zeta0), opt(pp.delta0)),
-            unit: "m".to_string(),
-        },
-        ParamRow {
-            name: "options".to_string(),
-            value: format!("ω: {:?}, counterpart: {:?}", p.omega, p.counterpart).to_lowercase(),
-            unit: String::new(),
-        },
-        input("periods integrated", pp.periods, ""),
-    ];
-    let c = &e.closed_form;
-    ctx.regimes = vec![RegimeRow {
-        law: "linearized law, closed forms (§3.6)".to_string(),
-        regime: c.regime.id().to_string(),
-        why: format!(
-            "paper's standard regime (both sticks within their half periods): {}; immediate \
-             slip (38): {}",
-            if c.paper_regime_valid { "yes" } else { "no" },
-            if c.immediate_slip { "yes" } else { "no" }
-        ),
-    }];
-    if let Some(linear) = &e.linear {
-        ctx.regimes.push(integration_regime(
-            "linearized law, exact integration",
-            linear,
-        ));
-    }
-    ctx.regimes.push(integration_regime(
-        "harmonic law, exact integration",
-        &e.harmonic,
-    ));
-    ctx.domain_note = e.domain_note.clone().unwrap_or_default();
-    fill_checks(&mut ctx, |k: wp::Key| c.get(k), &e.checks, &e.applicability);
-    // Harmonic against each linear counterpart.
-    let mut columns: Vec<(String, Option<Summary>)> = vec![("harmonic".into(), Some(e.harmonic))];
-    for cp in [
-        Counterpart::Extremes,
-        Counterpart::Zeros,
-        Counterpart::Tangent,
-    ] {
-        let q = WoodpeckerParams {
-            counterpart: cp,
-            ..*p
-        };
-        let linear = woodpecker::evaluate(&q, scene.periods)?.linear;
-        columns.push((format!("linear, {cp:?}").to_lowercase(), linear));
-    }
-    let cols: Vec<(&str, Option<&Summary>)> = columns
-        .iter()
-        .map(|(n, s)| (n.as_str(), s.as_ref()))
-        .collect();
-    ctx.linearization = laws_table(&cols, pp.period);
-    Ok(ctx)
-}
-
 /// The verification rows: every closed form of model `K` with its check (or why it has none),
 /// then the checks of quantities outside the table (orbit, regime).
-fn fill_checks<K: Registry>(
+pub(crate) fn fill_checks<K: Registry>(
     ctx: &mut SceneCtx,
     get: impl Fn(K) -> Option<f64>,
     checks: &[Check],
@@ -482,7 +349,7 @@ fn plain_row(
 }
 
 /// Harmonic against linear: regime, first slip, steady slip/stick times (mod T), v̄, power.
-fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> Table {
+pub(crate) fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> Table {
     let mut header = vec!["quantity".to_string()];
     header.extend(columns.iter().map(|(n, _)| n.to_string()));
     let cell = |f: &dyn Fn(&Summary) -> String| -> Vec<String> {

@@ -26,6 +26,8 @@ pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
+#[cfg(feature = "cli")]
+mod tables;
 
 pub use body::{body, force_law};
 pub use params::PulledMassParams;

@@ -1,12 +1,12 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, PulledMassParams};
+use super::{derivation, results, scene, tables, PulledMassParams};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::{self, Note};
 use crate::present::{Laws, Present, StandardScene};
-use crate::report::context::{self, SceneCtx};
+use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::{OutFile, Scene};
 
@@ -29,7 +29,7 @@ impl Present for PulledMassParams {
     }
 
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx> {
-        context::pulled_tables(scene, self)
+        tables::scene_tables(scene, self)
     }
 
     fn derivation(&self) -> Vec<Step> {
@@ -56,7 +56,7 @@ impl Present for PulledMassParams {
     }
 
     fn text(e: &results::Evaluation) -> String {
-        crate::output::text::pulled_mass(e)
+        tables::text(e)
     }
 
     fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {

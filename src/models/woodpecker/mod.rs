@@ -30,6 +30,8 @@ pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
+#[cfg(feature = "cli")]
+mod tables;
 pub mod threshold;
 
 pub use body::{body, force_law, linear_amplitudes, spring_coordinate};

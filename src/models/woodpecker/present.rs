@@ -1,13 +1,13 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, spring_coordinate, WoodpeckerParams};
+use super::{derivation, results, scene, spring_coordinate, tables, WoodpeckerParams};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::{self, Note};
 use crate::models::LawKind;
 use crate::present::{Laws, Present, StandardScene};
-use crate::report::context::{self, SceneCtx};
+use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::{OutFile, Scene};
 
@@ -30,7 +30,7 @@ impl Present for WoodpeckerParams {
     }
 
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx> {
-        context::woodpecker_tables(scene, self)
+        tables::scene_tables(scene, self)
     }
 
     fn derivation(&self) -> Vec<Step> {
@@ -57,7 +57,7 @@ impl Present for WoodpeckerParams {
     }
 
     fn text(e: &results::Evaluation) -> String {
-        crate::output::text::woodpecker(e)
+        tables::text(e)
     }
 
     fn evaluate_with_csv(&self, periods: u32) -> Result<(results::Evaluation, Vec<OutFile>)> {

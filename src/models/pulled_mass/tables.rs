@@ -1,0 +1,115 @@
+//! The pulled mass in the report's tables and in the terminal: parameters, regimes with the
+//! inequality that decides them, the closed forms and their checks, the laws side by side.
+
+use std::fmt::Write;
+
+use super::formula::{ClosedForm, Regime};
+use super::results::{self as pulled_mass, Evaluation};
+use super::{quantity as pm, PulledMassParams};
+use crate::error::Result;
+use crate::output::format::sig;
+use crate::output::text::{
+    checks_table, closed_form_table, laws_table as text_laws, DIGITS as TEXT_DIGITS,
+};
+use crate::report::context::{
+    blank, fill_checks, input, integration_regime, laws_table, num, row, RegimeRow, SceneCtx,
+};
+use crate::report::scene::Scene;
+
+pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
+    let e = pulled_mass::evaluate(p, scene.periods)?;
+    let mut ctx = blank(scene, "pulled mass");
+    let pp = &e.params;
+    ctx.params = vec![
+        input("μs (static friction)", p.mu_s, ""),
+        input("μd (dynamic friction)", p.mu_d, ""),
+        input("m (block; hanging mass m' = m)", p.mass, "kg"),
+        input("k (spring)", p.k, "N/m"),
+        input("F (pull)", p.force, "N"),
+        input("g", p.g, "m/s²"),
+        row("W = m g", pp.weight, "N"),
+        row("ω = √(k/m')", pp.omega, "rad/s"),
+        row("T = 2π/ω", pp.period, "s"),
+        row("φ = F/W", pp.phi, ""),
+        input("periods integrated", pp.periods, ""),
+    ];
+    let c = &e.closed_form;
+    let why = pulled_regime_reason(c, p.mu_s);
+    ctx.regimes = vec![
+        RegimeRow {
+            law: "linearized law, closed forms (§1.5)".to_string(),
+            regime: c.regime.id().to_string(),
+            why,
+        },
+        integration_regime("linearized law, exact integration", &e.linear),
+        integration_regime("harmonic law, exact integration", &e.harmonic),
+    ];
+    fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
+    ctx.linearization = laws_table(
+        &[
+            ("harmonic", Some(&e.harmonic)),
+            ("linearized", Some(&e.linear)),
+        ],
+        pp.period,
+    );
+    Ok(ctx)
+}
+
+/// The §1.5 inequality that decides the pulled-mass regime, with numbers.
+fn pulled_regime_reason(c: &ClosedForm, mu_s: f64) -> String {
+    let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
+    let two_mu_s = num(2.0 * mu_s);
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("φ = {phi} > 2μs = {two_mu_s}"),
+        Regime::SlipStick => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
+        Regime::ContinuousSlip => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
+    }
+}
+
+/// Renders a pulled-mass evaluation as plain-text tables.
+pub(crate) fn text(e: &Evaluation) -> String {
+    let p = &e.params;
+    let c = &e.closed_form;
+    let mut out = String::new();
+    let _ = writeln!(out, "stickslip eval pulled-mass");
+    let _ = writeln!(
+        out,
+        "parameters: mu_s = {}, mu_d = {}, m = {} kg, k = {} N/m, F = {} N, g = {} m/s², periods = {}",
+        p.input.mu_s, p.input.mu_d, p.input.mass, p.input.k, p.input.force, p.input.g, p.periods
+    );
+    let _ = writeln!(
+        out,
+        "derived:    W = m g = {} N, omega = {} rad/s, T = {} s, phi = F/W = {}",
+        sig(Some(p.weight), TEXT_DIGITS),
+        sig(Some(p.omega), TEXT_DIGITS),
+        sig(Some(p.period), TEXT_DIGITS),
+        sig(Some(p.phi), TEXT_DIGITS)
+    );
+    let _ = writeln!(
+        out,
+        "\nregime (linearized law): {}  [{}]",
+        c.regime.id(),
+        regime_reason(e)
+    );
+    closed_form_table(&mut out, |k: pm::Key| c.get(k));
+    checks_table(&mut out, &e.checks);
+    text_laws(&mut out, &e.harmonic, Some(&e.linear));
+    out
+}
+
+/// The inequality of §1.5 that decides the regime, with its numbers.
+fn regime_reason(e: &Evaluation) -> String {
+    let c = &e.closed_form;
+    let (phi, two_mu_s) = (sig(Some(c.phi), 6), sig(Some(2.0 * e.params.input.mu_s), 6));
+    let (stick, cont) = (
+        sig(Some(c.phi_stick_max), 6),
+        sig(Some(c.phi_continuous), 6),
+    );
+    match c.regime {
+        Regime::ImmediateContinuousSlip => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),
+        Regime::SlipStick => format!("phi = {phi} <= 1/Theta = {stick} (20)"),
+        Regime::SlipStickLate => format!("1/Theta = {stick} < phi = {phi} <= phi_c = {cont}"),
+        Regime::ContinuousSlip => format!("phi_c = {cont} < phi = {phi} <= 2 mu_s = {two_mu_s}"),
+    }
+}
