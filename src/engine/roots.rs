@@ -57,6 +57,12 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
 /// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `f` returns (f, f', f'')
 /// and the bracket ends come with their values of f. Halley steps (cubic convergence) are
 /// accepted while they stay inside the shrinking bracket, bisection otherwise.
+///
+/// Convergence is a Halley step below a few ulps of t whose Newton step f/f′ is as small: near
+/// a tangency (f′ ≈ 0, e.g. a speed maximum at the end of the bracket) the Halley step
+/// 2ff′/(2f′² − ff″) vanishes with f′ while f does not, and such a point is no root. The test
+/// comes before the bracket test, so a sub-ulp step that lands on a bracket end ends the search
+/// instead of restarting it by bisection.
 pub fn monotone_zero(
     f: impl Fn(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
@@ -90,15 +96,16 @@ pub fn monotone_zero(
             f64::NAN
         };
         let next = t - step;
-        if next > lo && next < hi {
-            // Cubic convergence: a step below a few ulps is the last one.
-            if step.abs() <= 4.0 * f64::EPSILON * t.abs() {
-                return next;
-            }
-            t = next;
-        } else {
-            t = 0.5 * (lo + hi);
+        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0.
+        let tol = 4.0 * f64::EPSILON * t.abs();
+        if step.abs() <= tol && ft.abs() <= tol * d1.abs() {
+            return next.clamp(lo, hi);
         }
+        t = if next > lo && next < hi {
+            next
+        } else {
+            0.5 * (lo + hi)
+        };
     }
     // Out of iterations (not seen in practice): the bracket end with the smaller residual.
     if f(lo).0.abs() < f(hi).0.abs() {
@@ -175,6 +182,50 @@ mod tests {
         let f = |t: f64| (2.0 - t.exp(), -t.exp(), -t.exp());
         let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0).0));
         assert!((t - 2f64.ln()).abs() <= 2.0 * f64::EPSILON);
+    }
+
+    /// f(t) = v_m − (t − 1)² on [1, 1 + 1e-3]: a speed maximum v_m at the left end of the
+    /// bracket, the zero at 1 + √v_m. The secant start lands a few ulps from the maximum, where
+    /// f′ ≈ 0 makes the Halley step sub-ulp although f is not small: that is no convergence.
+    #[test]
+    fn a_tangency_at_the_bracket_end_is_not_a_root() {
+        let v_m = 3.3e-19;
+        let f = |t: f64| (v_m - (t - 1.0).powi(2), -2.0 * (t - 1.0), -2.0);
+        let (lo, hi) = (1.0, 1.0 + 1e-3);
+        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi).0));
+        let root = 1.0 + v_m.sqrt();
+        assert!((t - root).abs() <= 4.0 * f64::EPSILON, "{t} vs {root}");
+    }
+
+    /// Evaluations of f until convergence, for smooth monotone functions whose root the Halley
+    /// steps reach within a few ulps: a sub-ulp last step that lands on a bracket end must end
+    /// the search, not bisect and converge again.
+    #[test]
+    fn a_sub_ulp_step_on_a_bracket_end_ends_the_search() {
+        use std::cell::Cell;
+        let calls = Cell::new(0);
+        // The cube root of 5.50296: Halley lands on it with a step of many ulps, and the next
+        // step is sub-ulp (43 evaluations when that restarted the search by bisection).
+        type WithDerivatives = fn(f64) -> (f64, f64, f64);
+        let cases: [(WithDerivatives, f64, f64); 3] = [
+            (|t| (2.0 - t.exp(), -t.exp(), -t.exp()), 0.0, 2.0),
+            (|t| (t.cos() - t, -t.sin() - 1.0, -t.cos()), 0.0, 1.5),
+            (
+                |t| (1.0 + 616.0 * 0.00731 - t * t * t, -3.0 * t * t, -6.0 * t),
+                0.5,
+                3.0,
+            ),
+        ];
+        for (g, lo, hi) in cases {
+            calls.set(0);
+            let f = |t: f64| {
+                calls.set(calls.get() + 1);
+                g(t)
+            };
+            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi).0));
+            assert!(g(t).0.abs() <= 4.0 * f64::EPSILON, "residual at {t}");
+            assert!(calls.get() <= 6, "{} evaluations", calls.get());
+        }
     }
 
     #[test]
