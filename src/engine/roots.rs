@@ -5,27 +5,63 @@
 //! derivative and a bracket on which the function is monotone: Newton's method safeguarded by
 //! bisection converges in a few steps to the last bit (about 1e-16 relative).
 
-use super::arc::cos_level_crossings;
+use super::arc::cos_level_crossings_dd;
+use super::dd::Dd;
 use super::law::{Affine, Basis};
 
+/// Where a switching function starts to be positive (see [`first_up_crossing`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// Time (s, within the period), in two parts: a located root carries the digits below the
+    /// ulp of its double, which a short slip after it needs.
+    pub t: Dd,
+    /// The basis value b(t) at a located root, where g = 0 exactly; `None` where g is positive
+    /// already at the start of the search (or crossed zero within the resolution before it).
+    pub root_b: Option<Dd>,
+}
+
+impl Crossing {
+    fn at_once(t: f64) -> Crossing {
+        Crossing {
+            t: Dd::from(t),
+            root_b: None,
+        }
+    }
+}
+
 /// Earliest time t in [from, to) at which g(t) = c0 + c1 b(t) is positive just after t, i.e.
-/// g(t) > 0, or g(t) = 0 while increasing. `snap` (s) is the resolution below which a crossing
-/// at `to` belongs to the next piece and a crossing at `from` happens at `from`.
-pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64) -> Option<f64> {
+/// g(t) > 0, or g(t) = 0 while increasing; the coefficients come in two parts (g = s·D − μs·N_f
+/// formed exactly), so that a root is located to better than its ulp. `snap` (s) is the
+/// resolution below which a crossing at `to` belongs to the next piece and a crossing at `from`
+/// happens at `from`.
+pub fn first_up_crossing(
+    basis: Basis,
+    (c0, c1): (Dd, Dd),
+    from: f64,
+    to: f64,
+    snap: f64,
+) -> Option<Crossing> {
+    let g = Affine::new(c0.value(), c1.value());
+    // The basis value where g = 0.
+    let root_b = || -c0 / c1;
     match basis {
         Basis::Linear { t_ref } => {
             let g_from = g.at(from - t_ref);
             if g.c1 > 0.0 {
-                let root = t_ref - g.c0 / g.c1;
-                if root <= from + snap {
-                    Some(from)
-                } else if root < to - snap {
-                    Some(root)
+                let b = root_b();
+                let root = Dd::from(t_ref) + b;
+                if root.value() <= from + snap {
+                    Some(Crossing::at_once(from))
+                } else if root.value() < to - snap {
+                    Some(Crossing {
+                        t: root,
+                        root_b: Some(b),
+                    })
                 } else {
                     None
                 }
             } else if g_from > 0.0 {
-                Some(from)
+                Some(Crossing::at_once(from))
             } else {
                 None
             }
@@ -42,14 +78,26 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
             let curvature = -g.c1 * omega * omega * cos;
             let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
             if g_from > 0.0 || (g_from == 0.0 && rising) {
-                return Some(from);
+                return Some(Crossing::at_once(from));
             }
-            // An up-crossing within snap before `from` happens at `from`.
-            cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
+            if g.c1 == 0.0 {
+                return None;
+            }
+            // cos ωt = −c0/c1; g rises where c1·d(cos ωt)/dt > 0. An up-crossing within snap
+            // before `from` happens at `from`.
+            let b = root_b();
+            let sign: i8 = if g.c1 > 0.0 { 1 } else { -1 };
+            cos_level_crossings_dd(b, omega, from - snap, to - snap)
                 .into_iter()
                 .flatten()
-                .find(|&(_, dir)| dir > 0)
-                .map(|(t, _)| t.max(from))
+                .find(|&(_, dir)| sign * dir > 0)
+                .map(|(t, _)| {
+                    if t.value() < from {
+                        Crossing::at_once(from)
+                    } else {
+                        Crossing { t, root_b: Some(b) }
+                    }
+                })
         }
     }
 }
@@ -140,22 +188,44 @@ pub fn quadratic_roots(alpha: f64, beta: f64, gamma: f64) -> Vec<f64> {
 mod tests {
     use super::*;
 
+    /// g in two parts, from one-part coefficients.
+    fn g(c0: f64, c1: f64) -> (Dd, Dd) {
+        (Dd::from(c0), Dd::from(c1))
+    }
+
+    fn at(c: Option<Crossing>) -> Option<f64> {
+        c.map(|c| c.t.value())
+    }
+
     #[test]
     fn linear_up_crossing_is_exact_and_respects_the_piece() {
         let basis = Basis::Linear { t_ref: 0.0 };
-        let g = Affine::new(-1.0, 4.0);
-        assert_eq!(first_up_crossing(basis, g, 0.0, 1.0, 1e-16), Some(0.25));
-        assert_eq!(first_up_crossing(basis, g, 0.0, 0.25, 1e-16), None);
-        assert_eq!(first_up_crossing(basis, g, 0.25, 1.0, 1e-16), Some(0.25));
-        // Decreasing and positive: slip at once; decreasing and negative: never.
+        let rising = g(-1.0, 4.0);
+        let c = first_up_crossing(basis, rising, 0.0, 1.0, 1e-16).unwrap();
+        assert_eq!(c.t, Dd::from(0.25));
+        assert_eq!(c.root_b, Some(Dd::from(0.25)));
+        assert_eq!(at(first_up_crossing(basis, rising, 0.0, 0.25, 1e-16)), None);
         assert_eq!(
-            first_up_crossing(basis, Affine::new(1.0, -1.0), 0.5, 1.0, 1e-16),
-            Some(0.5)
+            at(first_up_crossing(basis, rising, 0.25, 1.0, 1e-16)),
+            Some(0.25)
         );
+        // Decreasing and positive: slip at once; decreasing and negative: never.
+        let once = first_up_crossing(basis, g(1.0, -1.0), 0.5, 1.0, 1e-16).unwrap();
+        assert_eq!((once.t.value(), once.root_b), (0.5, None));
         assert_eq!(
-            first_up_crossing(basis, Affine::new(-1.0, -1.0), 0.0, 1.0, 1e-16),
+            at(first_up_crossing(basis, g(-1.0, -1.0), 0.0, 1.0, 1e-16)),
             None
         );
+    }
+
+    #[test]
+    fn a_root_carries_the_digits_below_its_ulp() {
+        // g = (t − 0.3) − 0.1: the root 0.3 + 0.1 is not a double; hi + lo holds it exactly.
+        let basis = Basis::Linear { t_ref: 0.3 };
+        let c = first_up_crossing(basis, g(-0.1, 1.0), 0.3, 1.0, 1e-16).unwrap();
+        assert_eq!(c.root_b, Some(Dd::from(0.1)));
+        assert_eq!(c.t, Dd::new(0.3, 0.1));
+        assert!(c.t.lo != 0.0);
     }
 
     #[test]
@@ -163,16 +233,17 @@ mod tests {
         let basis = Basis::Cos { omega: 1.0 };
         let tau = std::f64::consts::TAU;
         // g = −cos t: up-crossing at π/2.
-        let t = first_up_crossing(basis, Affine::new(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
-        assert!((t - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        let c = first_up_crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
+        assert!((c.t.value() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert_eq!(c.root_b, Some(Dd::from(0.0)));
         // g = cos t − 1 ≤ 0 touches zero at 0: never positive.
         assert_eq!(
-            first_up_crossing(basis, Affine::new(-1.0, 1.0), 0.1, tau, 1e-15),
+            at(first_up_crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)),
             None
         );
         // g = cos t, starting at 0 where g > 0: at once.
         assert_eq!(
-            first_up_crossing(basis, Affine::new(0.0, 1.0), 0.0, tau, 1e-15),
+            at(first_up_crossing(basis, g(0.0, 1.0), 0.0, tau, 1e-15)),
             Some(0.0)
         );
     }
