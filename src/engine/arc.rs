@@ -268,15 +268,15 @@ impl Arc {
                 cos_c,
                 ..
             } => {
-                // cos ωt = cos θc − a_c/a1, in two parts.
+                // cos ωt = cos θc − a_c/a1 (in two parts): ωt = θ or 2π − θ.
                 let (hi_part, lo_part) = dd::two_sum(cos_c, -a_c / a1);
-                cos_level_crossings_dd(
-                    Dd::new(hi_part, lo_part),
-                    omega,
-                    f64::NEG_INFINITY,
-                    f64::INFINITY,
-                )
-                .map(|c| c.map(|(t, _)| t.value()))
+                match dd::acos(Dd::new(hi_part, lo_part)) {
+                    Some(theta) => [
+                        Some(theta.value() / omega),
+                        Some((Dd::TAU + -theta).value() / omega),
+                    ],
+                    None => [None, None],
+                }
             }
         };
         zeros.map(|z| z.filter(|&t| t > lo && t < hi))
@@ -419,9 +419,17 @@ pub fn cos_level_crossings(
     if c1 == 0.0 {
         return [None, None];
     }
-    let sign: i8 = if c1 > 0.0 { 1 } else { -1 };
-    cos_level_crossings_dd(Dd::from(-c0).div_f64(c1), omega, lo, hi)
-        .map(|c| c.map(|(t, dir)| (t.value(), sign * dir)))
+    let r = -c0 / c1;
+    if !(r > -1.0 && r < 1.0) {
+        return [None, None];
+    }
+    let theta = r.acos();
+    let period = std::f64::consts::TAU / omega;
+    // d/dt (c1 cos ωt) = −c1 ω sin ωt: sin > 0 on (0, π), < 0 on (π, 2π).
+    let first = theta / omega;
+    let second = period - first;
+    let up_first: i8 = if c1 < 0.0 { 1 } else { -1 };
+    [(first, up_first), (second, -up_first)].map(|(t, dir)| (t >= lo && t < hi).then_some((t, dir)))
 }
 
 /// Solutions t = θ/ω and (2π − θ)/ω in [lo, hi) of cos ωt = r, −1 < r < 1, as double-doubles,

@@ -5,7 +5,7 @@
 //! derivative and a bracket on which the function is monotone: Newton's method safeguarded by
 //! bisection converges in a few steps to the last bit (about 1e-16 relative).
 
-use super::arc::cos_level_crossings_dd;
+use super::arc::{cos_level_crossings, cos_level_crossings_dd};
 use super::dd::Dd;
 use super::law::{Affine, Basis};
 
@@ -30,31 +30,35 @@ impl Crossing {
 }
 
 /// Earliest time t in [from, to) at which g(t) = c0 + c1 b(t) is positive just after t, i.e.
-/// g(t) > 0, or g(t) = 0 while increasing; the coefficients come in two parts (g = s·D − μs·N_f
-/// formed exactly), so that a root is located to better than its ulp. `snap` (s) is the
-/// resolution below which a crossing at `to` belongs to the next piece and a crossing at `from`
-/// happens at `from`.
+/// g(t) > 0, or g(t) = 0 while increasing. `g` is the rounded switching function, on which the
+/// search decides; `exact` gives its coefficients in two parts (g = s·D − μs·N_f formed
+/// exactly), from which a root that is found is located to better than its ulp. `snap` (s) is
+/// the resolution below which a crossing at `to` belongs to the next piece and a crossing at
+/// `from` happens at `from`.
 pub fn first_up_crossing(
     basis: Basis,
-    (c0, c1): (Dd, Dd),
+    g: Affine,
+    exact: impl Fn() -> (Dd, Dd),
     from: f64,
     to: f64,
     snap: f64,
 ) -> Option<Crossing> {
-    let g = Affine::new(c0.value(), c1.value());
-    // The basis value where g = 0.
-    let root_b = || -c0 / c1;
+    // The basis value where g = 0, in two parts.
+    let root_b = || {
+        let (c0, c1) = exact();
+        -c0 / c1
+    };
     match basis {
         Basis::Linear { t_ref } => {
             let g_from = g.at(from - t_ref);
             if g.c1 > 0.0 {
-                let b = root_b();
-                let root = Dd::from(t_ref) + b;
-                if root.value() <= from + snap {
+                let root = t_ref - g.c0 / g.c1;
+                if root <= from + snap {
                     Some(Crossing::at_once(from))
-                } else if root.value() < to - snap {
+                } else if root < to - snap {
+                    let b = root_b();
                     Some(Crossing {
-                        t: root,
+                        t: Dd::from(t_ref) + b,
                         root_b: Some(b),
                     })
                 } else {
@@ -80,24 +84,24 @@ pub fn first_up_crossing(
             if g_from > 0.0 || (g_from == 0.0 && rising) {
                 return Some(Crossing::at_once(from));
             }
-            if g.c1 == 0.0 {
-                return None;
-            }
-            // cos ωt = −c0/c1; g rises where c1·d(cos ωt)/dt > 0. An up-crossing within snap
-            // before `from` happens at `from`.
-            let b = root_b();
-            let sign: i8 = if g.c1 > 0.0 { 1 } else { -1 };
-            cos_level_crossings_dd(b, omega, from - snap, to - snap)
+            // An up-crossing within snap before `from` happens at `from`.
+            let (index, t) = cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
                 .into_iter()
-                .flatten()
-                .find(|&(_, dir)| sign * dir > 0)
-                .map(|(t, _)| {
-                    if t.value() < from {
-                        Crossing::at_once(from)
-                    } else {
-                        Crossing { t, root_b: Some(b) }
-                    }
-                })
+                .enumerate()
+                .find_map(|(i, c)| c.filter(|&(_, dir)| dir > 0).map(|(t, _)| (i, t)))?;
+            if t < from {
+                return Some(Crossing::at_once(from));
+            }
+            // The same crossing (θ/ω or (2π − θ)/ω), in two parts.
+            let b = root_b();
+            let refined = cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY)[index];
+            Some(match refined {
+                Some((t, _)) => Crossing { t, root_b: Some(b) },
+                None => Crossing {
+                    t: Dd::from(t),
+                    root_b: None,
+                },
+            })
         }
     }
 }
@@ -188,9 +192,19 @@ pub fn quadratic_roots(alpha: f64, beta: f64, gamma: f64) -> Vec<f64> {
 mod tests {
     use super::*;
 
-    /// g in two parts, from one-part coefficients.
-    fn g(c0: f64, c1: f64) -> (Dd, Dd) {
-        (Dd::from(c0), Dd::from(c1))
+    /// g rounded, and in two parts from one-part coefficients.
+    fn g(c0: f64, c1: f64) -> (Affine, impl Fn() -> (Dd, Dd)) {
+        (Affine::new(c0, c1), move || (Dd::from(c0), Dd::from(c1)))
+    }
+
+    fn crossing(
+        basis: Basis,
+        (g, exact): (Affine, impl Fn() -> (Dd, Dd)),
+        from: f64,
+        to: f64,
+        snap: f64,
+    ) -> Option<Crossing> {
+        first_up_crossing(basis, g, exact, from, to, snap)
     }
 
     fn at(c: Option<Crossing>) -> Option<f64> {
@@ -200,29 +214,25 @@ mod tests {
     #[test]
     fn linear_up_crossing_is_exact_and_respects_the_piece() {
         let basis = Basis::Linear { t_ref: 0.0 };
-        let rising = g(-1.0, 4.0);
-        let c = first_up_crossing(basis, rising, 0.0, 1.0, 1e-16).unwrap();
+        let c = crossing(basis, g(-1.0, 4.0), 0.0, 1.0, 1e-16).unwrap();
         assert_eq!(c.t, Dd::from(0.25));
         assert_eq!(c.root_b, Some(Dd::from(0.25)));
-        assert_eq!(at(first_up_crossing(basis, rising, 0.0, 0.25, 1e-16)), None);
+        assert_eq!(at(crossing(basis, g(-1.0, 4.0), 0.0, 0.25, 1e-16)), None);
         assert_eq!(
-            at(first_up_crossing(basis, rising, 0.25, 1.0, 1e-16)),
+            at(crossing(basis, g(-1.0, 4.0), 0.25, 1.0, 1e-16)),
             Some(0.25)
         );
         // Decreasing and positive: slip at once; decreasing and negative: never.
-        let once = first_up_crossing(basis, g(1.0, -1.0), 0.5, 1.0, 1e-16).unwrap();
+        let once = crossing(basis, g(1.0, -1.0), 0.5, 1.0, 1e-16).unwrap();
         assert_eq!((once.t.value(), once.root_b), (0.5, None));
-        assert_eq!(
-            at(first_up_crossing(basis, g(-1.0, -1.0), 0.0, 1.0, 1e-16)),
-            None
-        );
+        assert_eq!(at(crossing(basis, g(-1.0, -1.0), 0.0, 1.0, 1e-16)), None);
     }
 
     #[test]
     fn a_root_carries_the_digits_below_its_ulp() {
         // g = (t − 0.3) − 0.1: the root 0.3 + 0.1 is not a double; hi + lo holds it exactly.
         let basis = Basis::Linear { t_ref: 0.3 };
-        let c = first_up_crossing(basis, g(-0.1, 1.0), 0.3, 1.0, 1e-16).unwrap();
+        let c = crossing(basis, g(-0.1, 1.0), 0.3, 1.0, 1e-16).unwrap();
         assert_eq!(c.root_b, Some(Dd::from(0.1)));
         assert_eq!(c.t, Dd::new(0.3, 0.1));
         assert!(c.t.lo != 0.0);
@@ -233,19 +243,13 @@ mod tests {
         let basis = Basis::Cos { omega: 1.0 };
         let tau = std::f64::consts::TAU;
         // g = −cos t: up-crossing at π/2.
-        let c = first_up_crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
+        let c = crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
         assert!((c.t.value() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         assert_eq!(c.root_b, Some(Dd::from(0.0)));
         // g = cos t − 1 ≤ 0 touches zero at 0: never positive.
-        assert_eq!(
-            at(first_up_crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)),
-            None
-        );
+        assert_eq!(at(crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)), None);
         // g = cos t, starting at 0 where g > 0: at once.
-        assert_eq!(
-            at(first_up_crossing(basis, g(0.0, 1.0), 0.0, tau, 1e-15)),
-            Some(0.0)
-        );
+        assert_eq!(at(crossing(basis, g(0.0, 1.0), 0.0, tau, 1e-15)), Some(0.0));
     }
 
     #[test]

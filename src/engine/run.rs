@@ -379,12 +379,15 @@ fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(Cross
         .filter_map(|s| {
             // g > 0 ⇔ the static friction cannot hold the body in direction s.
             let sf = f64::from(s);
-            let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
-            let g = (
-                coefficient(piece.drive.c0, piece.normal.c0),
-                coefficient(piece.drive.c1, piece.normal.c1),
-            );
-            first_up_crossing(piece.basis, g, from, piece.end, snap).map(|c| (c, s))
+            let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+            let exact = || {
+                let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
+                (
+                    coefficient(piece.drive.c0, piece.normal.c0),
+                    coefficient(piece.drive.c1, piece.normal.c1),
+                )
+            };
+            first_up_crossing(piece.basis, g, exact, from, piece.end, snap).map(|c| (c, s))
         })
         .min_by(|a, b| a.0.t.value().total_cmp(&b.0.t.value()))
 }
