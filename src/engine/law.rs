@@ -167,8 +167,9 @@ impl Body {
     /// [`Body::slip_acceleration`] on a piece where D and N_f are affine in b(t): the same
     /// a = (D − s·μd·N_f)/M (m/s²), linear in (D, N_f), formed on the coefficients as
     /// (1/M)·D_i + (−s·μd/M)·N_i. Evaluated at b(t) it agrees with the pointwise form to
-    /// rounding, not bit for bit: the engine's events and the committed reports are computed
-    /// with this order, so it is kept.
+    /// rounding, not bit for bit. The engine takes only its slope c1 from here: an arc starts
+    /// from the pointwise acceleration (or, at a slip onset, from the cancellation-free form of
+    /// run.rs), because A0 + A1·b is a difference of O(μd g) terms.
     #[inline]
     pub fn slip_acceleration_affine(&self, drive: Affine, normal: Affine, s: f64) -> Affine {
         Affine::combine(1.0 / self.mass, drive, -s * self.mu_d / self.mass, normal)

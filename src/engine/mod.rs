@@ -13,6 +13,7 @@
 //! bracketed root finding on monotone intervals ([`roots`]) to about 1e-15 relative.
 
 pub mod arc;
+pub mod dd;
 pub mod law;
 pub mod roots;
 pub mod run;

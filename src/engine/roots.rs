@@ -5,27 +5,67 @@
 //! derivative and a bracket on which the function is monotone: Newton's method safeguarded by
 //! bisection converges in a few steps to the last bit (about 1e-16 relative).
 
-use super::arc::cos_level_crossings;
+use super::arc::{cos_level_crossings, cos_level_crossings_dd};
+use super::dd::Dd;
 use super::law::{Affine, Basis};
 
+/// Where a switching function starts to be positive (see [`first_up_crossing`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Crossing {
+    /// Time (s, within the period), in two parts: a located root carries the digits below the
+    /// ulp of its double, which a short slip after it needs.
+    pub t: Dd,
+    /// The basis value b(t) at a located root, where g = 0 exactly; `None` where g is positive
+    /// already at the start of the search (or crossed zero within the resolution before it).
+    pub root_b: Option<Dd>,
+}
+
+impl Crossing {
+    fn at_once(t: f64) -> Crossing {
+        Crossing {
+            t: Dd::from(t),
+            root_b: None,
+        }
+    }
+}
+
 /// Earliest time t in [from, to) at which g(t) = c0 + c1 b(t) is positive just after t, i.e.
-/// g(t) > 0, or g(t) = 0 while increasing. `snap` (s) is the resolution below which a crossing
-/// at `to` belongs to the next piece and a crossing at `from` happens at `from`.
-pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64) -> Option<f64> {
+/// g(t) > 0, or g(t) = 0 while increasing. `g` is the rounded switching function, on which the
+/// search decides; `exact` gives its coefficients in two parts (g = s·D − μs·N_f formed
+/// exactly), from which a root that is found is located to better than its ulp. `snap` (s) is
+/// the resolution below which a crossing at `to` belongs to the next piece and a crossing at
+/// `from` happens at `from`.
+pub fn first_up_crossing(
+    basis: Basis,
+    g: Affine,
+    exact: impl Fn() -> (Dd, Dd),
+    from: f64,
+    to: f64,
+    snap: f64,
+) -> Option<Crossing> {
+    // The basis value where g = 0, in two parts.
+    let root_b = || {
+        let (c0, c1) = exact();
+        -c0 / c1
+    };
     match basis {
         Basis::Linear { t_ref } => {
             let g_from = g.at(from - t_ref);
             if g.c1 > 0.0 {
                 let root = t_ref - g.c0 / g.c1;
                 if root <= from + snap {
-                    Some(from)
+                    Some(Crossing::at_once(from))
                 } else if root < to - snap {
-                    Some(root)
+                    let b = root_b();
+                    Some(Crossing {
+                        t: Dd::from(t_ref) + b,
+                        root_b: Some(b),
+                    })
                 } else {
                     None
                 }
             } else if g_from > 0.0 {
-                Some(from)
+                Some(Crossing::at_once(from))
             } else {
                 None
             }
@@ -42,14 +82,26 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
             let curvature = -g.c1 * omega * omega * cos;
             let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
             if g_from > 0.0 || (g_from == 0.0 && rising) {
-                return Some(from);
+                return Some(Crossing::at_once(from));
             }
             // An up-crossing within snap before `from` happens at `from`.
-            cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
+            let (index, t) = cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
                 .into_iter()
-                .flatten()
-                .find(|&(_, dir)| dir > 0)
-                .map(|(t, _)| t.max(from))
+                .enumerate()
+                .find_map(|(i, c)| c.filter(|&(_, dir)| dir > 0).map(|(t, _)| (i, t)))?;
+            if t < from {
+                return Some(Crossing::at_once(from));
+            }
+            // The same crossing (θ/ω or (2π − θ)/ω), in two parts.
+            let b = root_b();
+            let refined = cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY)[index];
+            Some(match refined {
+                Some((t, _)) => Crossing { t, root_b: Some(b) },
+                None => Crossing {
+                    t: Dd::from(t),
+                    root_b: None,
+                },
+            })
         }
     }
 }
@@ -57,6 +109,12 @@ pub fn first_up_crossing(basis: Basis, g: Affine, from: f64, to: f64, snap: f64)
 /// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `f` returns (f, f', f'')
 /// and the bracket ends come with their values of f. Halley steps (cubic convergence) are
 /// accepted while they stay inside the shrinking bracket, bisection otherwise.
+///
+/// Convergence is a Halley step below a few ulps of t whose Newton step f/f′ is as small: near
+/// a tangency (f′ ≈ 0, e.g. a speed maximum at the end of the bracket) the Halley step
+/// 2ff′/(2f′² − ff″) vanishes with f′ while f does not, and such a point is no root. The test
+/// comes before the bracket test, so a sub-ulp step that lands on a bracket end ends the search
+/// instead of restarting it by bisection.
 pub fn monotone_zero(
     f: impl Fn(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
@@ -90,15 +148,16 @@ pub fn monotone_zero(
             f64::NAN
         };
         let next = t - step;
-        if next > lo && next < hi {
-            // Cubic convergence: a step below a few ulps is the last one.
-            if step.abs() <= 4.0 * f64::EPSILON * t.abs() {
-                return next;
-            }
-            t = next;
-        } else {
-            t = 0.5 * (lo + hi);
+        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0.
+        let tol = 4.0 * f64::EPSILON * t.abs();
+        if step.abs() <= tol && ft.abs() <= tol * d1.abs() {
+            return next.clamp(lo, hi);
         }
+        t = if next > lo && next < hi {
+            next
+        } else {
+            0.5 * (lo + hi)
+        };
     }
     // Out of iterations (not seen in practice): the bracket end with the smaller residual.
     if f(lo).0.abs() < f(hi).0.abs() {
@@ -133,22 +192,50 @@ pub fn quadratic_roots(alpha: f64, beta: f64, gamma: f64) -> Vec<f64> {
 mod tests {
     use super::*;
 
+    /// g rounded, and in two parts from one-part coefficients.
+    fn g(c0: f64, c1: f64) -> (Affine, impl Fn() -> (Dd, Dd)) {
+        (Affine::new(c0, c1), move || (Dd::from(c0), Dd::from(c1)))
+    }
+
+    fn crossing(
+        basis: Basis,
+        (g, exact): (Affine, impl Fn() -> (Dd, Dd)),
+        from: f64,
+        to: f64,
+        snap: f64,
+    ) -> Option<Crossing> {
+        first_up_crossing(basis, g, exact, from, to, snap)
+    }
+
+    fn at(c: Option<Crossing>) -> Option<f64> {
+        c.map(|c| c.t.value())
+    }
+
     #[test]
     fn linear_up_crossing_is_exact_and_respects_the_piece() {
         let basis = Basis::Linear { t_ref: 0.0 };
-        let g = Affine::new(-1.0, 4.0);
-        assert_eq!(first_up_crossing(basis, g, 0.0, 1.0, 1e-16), Some(0.25));
-        assert_eq!(first_up_crossing(basis, g, 0.0, 0.25, 1e-16), None);
-        assert_eq!(first_up_crossing(basis, g, 0.25, 1.0, 1e-16), Some(0.25));
+        let c = crossing(basis, g(-1.0, 4.0), 0.0, 1.0, 1e-16).unwrap();
+        assert_eq!(c.t, Dd::from(0.25));
+        assert_eq!(c.root_b, Some(Dd::from(0.25)));
+        assert_eq!(at(crossing(basis, g(-1.0, 4.0), 0.0, 0.25, 1e-16)), None);
+        assert_eq!(
+            at(crossing(basis, g(-1.0, 4.0), 0.25, 1.0, 1e-16)),
+            Some(0.25)
+        );
         // Decreasing and positive: slip at once; decreasing and negative: never.
-        assert_eq!(
-            first_up_crossing(basis, Affine::new(1.0, -1.0), 0.5, 1.0, 1e-16),
-            Some(0.5)
-        );
-        assert_eq!(
-            first_up_crossing(basis, Affine::new(-1.0, -1.0), 0.0, 1.0, 1e-16),
-            None
-        );
+        let once = crossing(basis, g(1.0, -1.0), 0.5, 1.0, 1e-16).unwrap();
+        assert_eq!((once.t.value(), once.root_b), (0.5, None));
+        assert_eq!(at(crossing(basis, g(-1.0, -1.0), 0.0, 1.0, 1e-16)), None);
+    }
+
+    #[test]
+    fn a_root_carries_the_digits_below_its_ulp() {
+        // g = (t − 0.3) − 0.1: the root 0.3 + 0.1 is not a double; hi + lo holds it exactly.
+        let basis = Basis::Linear { t_ref: 0.3 };
+        let c = crossing(basis, g(-0.1, 1.0), 0.3, 1.0, 1e-16).unwrap();
+        assert_eq!(c.root_b, Some(Dd::from(0.1)));
+        assert_eq!(c.t, Dd::new(0.3, 0.1));
+        assert!(c.t.lo != 0.0);
     }
 
     #[test]
@@ -156,18 +243,13 @@ mod tests {
         let basis = Basis::Cos { omega: 1.0 };
         let tau = std::f64::consts::TAU;
         // g = −cos t: up-crossing at π/2.
-        let t = first_up_crossing(basis, Affine::new(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
-        assert!((t - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        let c = crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
+        assert!((c.t.value() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
+        assert_eq!(c.root_b, Some(Dd::from(0.0)));
         // g = cos t − 1 ≤ 0 touches zero at 0: never positive.
-        assert_eq!(
-            first_up_crossing(basis, Affine::new(-1.0, 1.0), 0.1, tau, 1e-15),
-            None
-        );
+        assert_eq!(at(crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)), None);
         // g = cos t, starting at 0 where g > 0: at once.
-        assert_eq!(
-            first_up_crossing(basis, Affine::new(0.0, 1.0), 0.0, tau, 1e-15),
-            Some(0.0)
-        );
+        assert_eq!(at(crossing(basis, g(0.0, 1.0), 0.0, tau, 1e-15)), Some(0.0));
     }
 
     #[test]
@@ -175,6 +257,50 @@ mod tests {
         let f = |t: f64| (2.0 - t.exp(), -t.exp(), -t.exp());
         let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0).0));
         assert!((t - 2f64.ln()).abs() <= 2.0 * f64::EPSILON);
+    }
+
+    /// f(t) = v_m − (t − 1)² on [1, 1 + 1e-3]: a speed maximum v_m at the left end of the
+    /// bracket, the zero at 1 + √v_m. The secant start lands a few ulps from the maximum, where
+    /// f′ ≈ 0 makes the Halley step sub-ulp although f is not small: that is no convergence.
+    #[test]
+    fn a_tangency_at_the_bracket_end_is_not_a_root() {
+        let v_m = 3.3e-19;
+        let f = |t: f64| (v_m - (t - 1.0).powi(2), -2.0 * (t - 1.0), -2.0);
+        let (lo, hi) = (1.0, 1.0 + 1e-3);
+        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi).0));
+        let root = 1.0 + v_m.sqrt();
+        assert!((t - root).abs() <= 4.0 * f64::EPSILON, "{t} vs {root}");
+    }
+
+    /// Evaluations of f until convergence, for smooth monotone functions whose root the Halley
+    /// steps reach within a few ulps: a sub-ulp last step that lands on a bracket end must end
+    /// the search, not bisect and converge again.
+    #[test]
+    fn a_sub_ulp_step_on_a_bracket_end_ends_the_search() {
+        use std::cell::Cell;
+        let calls = Cell::new(0);
+        // The cube root of 5.50296: Halley lands on it with a step of many ulps, and the next
+        // step is sub-ulp (43 evaluations when that restarted the search by bisection).
+        type WithDerivatives = fn(f64) -> (f64, f64, f64);
+        let cases: [(WithDerivatives, f64, f64); 3] = [
+            (|t| (2.0 - t.exp(), -t.exp(), -t.exp()), 0.0, 2.0),
+            (|t| (t.cos() - t, -t.sin() - 1.0, -t.cos()), 0.0, 1.5),
+            (
+                |t| (1.0 + 616.0 * 0.00731 - t * t * t, -3.0 * t * t, -6.0 * t),
+                0.5,
+                3.0,
+            ),
+        ];
+        for (g, lo, hi) in cases {
+            calls.set(0);
+            let f = |t: f64| {
+                calls.set(calls.get() + 1);
+                g(t)
+            };
+            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi).0));
+            assert!(g(t).0.abs() <= 4.0 * f64::EPSILON, "residual at {t}");
+            assert!(calls.get() <= 6, "{} evaluations", calls.get());
+        }
     }
 
     #[test]

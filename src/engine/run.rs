@@ -2,9 +2,10 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and
 //! friction dissipation.
 
-use super::arc::Arc;
+use super::arc::{Arc, Start};
+use super::dd::Dd;
 use super::law::{Affine, Body, ForceLaw, Piece};
-use super::roots::{first_up_crossing, monotone_zero};
+use super::roots::{first_up_crossing, monotone_zero, Crossing};
 use crate::error::{Error, Result};
 
 /// Events of the first `KEEP_FIRST` and the last `KEEP_LAST` periods are kept; that is all the
@@ -228,6 +229,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut dir: i8 = 0;
     // Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
     let mut accel_sign: i8 = 0;
+    // The start (t, a, N_f) of the slip that begins at a located onset, for the next arc.
+    let mut onset_start: Option<(Dd, f64, f64)> = None;
 
     for n in 0..periods {
         let period_start = f64::from(n) * period;
@@ -253,6 +256,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         x_at_period_start.push(x);
         v_at_period_start.push(v);
         let mut normal_work = 0.0;
+        // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
+        // the next piece of the same period.
+        let mut carried: Option<(&Piece, f64, f64)> = None;
         for piece in &law.pieces {
             let mut t = piece.start;
             let mut transitions = 0;
@@ -266,21 +272,57 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 }
                 if dir == 0 {
                     let onset = slip_onset(body, piece, t, snap);
-                    let t_end = onset.map_or(piece.end, |(t_slip, _)| t_slip);
+                    let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     record(t, t_end, Motion::Rest { x });
-                    let Some((t_slip, s)) = onset else { break };
-                    rec.push(n, t_slip, EventKind::Slip { dir: s }, x, 0.0);
+                    let Some((crossing, s)) = onset else { break };
+                    rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, x, 0.0);
                     dir = s;
                     accel_sign = 0;
-                    t = t_slip;
+                    t = crossing.t.hi;
+                    let (a, normal) = onset_acceleration(body, piece, &crossing, f64::from(s));
+                    onset_start = Some((crossing.t, a, normal));
                     continue;
                 }
                 let s = f64::from(dir);
-                let accel = body.slip_acceleration_affine(piece.drive, piece.normal, s);
-                let arc = Arc::new(piece.basis, accel, t, x, v);
-                let slide = slide(&arc, dir, piece, t, &mut accel_sign, |tm| {
-                    rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
-                });
+                // From an onset, or through a piece boundary (and after a reversal) where the
+                // acceleration is Newton's (D − s μd N_f)/M at that instant.
+                let (t_start, a_start, normal_start) = match onset_start.take() {
+                    Some(start) => start,
+                    None => {
+                        let (a, normal) = carried
+                            .take()
+                            .and_then(|(prev, a, normal)| {
+                                carry_over(body, prev, piece, a, normal, s)
+                            })
+                            .unwrap_or_else(|| {
+                                let b = piece.basis.eval(t);
+                                let normal = piece.normal.at(b);
+                                (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
+                            });
+                        (Dd::from(t), a, normal)
+                    }
+                };
+                let start = Start {
+                    t: t_start,
+                    x,
+                    v,
+                    a: a_start,
+                };
+                let slope = body
+                    .slip_acceleration_affine(piece.drive, piece.normal, s)
+                    .c1;
+                let arc = Arc::from_start(piece.basis, slope, start);
+                let slide = slide(
+                    &arc,
+                    dir,
+                    piece,
+                    normal_start,
+                    snap,
+                    &mut accel_sign,
+                    |tm| {
+                        rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
+                    },
+                );
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
                 record(t, t_end, Motion::Slide { arc });
@@ -304,6 +346,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     }
                     None => {
                         v = arc.v(t_end);
+                        let normal_end = normal_start + piece.normal.c1 * arc.db(t_end);
+                        carried = Some((piece, arc.a(t_end), normal_end));
                         break;
                     }
                 }
@@ -326,36 +370,123 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     })
 }
 
-/// Earliest slip onset in [from, piece.end) from rest, with its direction.
-fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(f64, i8)> {
+/// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
+/// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
+/// better than its ulp.
+fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
     [1i8, -1]
         .into_iter()
         .filter_map(|s| {
-            // g = s·D − μs N_f > 0 ⇔ the static friction cannot hold the body in direction s.
-            let g = Affine::combine(f64::from(s), piece.drive, -body.mu_s, piece.normal);
-            first_up_crossing(piece.basis, g, from, piece.end, snap).map(|t| (t, s))
+            // g > 0 ⇔ the static friction cannot hold the body in direction s.
+            let sf = f64::from(s);
+            let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+            let exact = || {
+                let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
+                (
+                    coefficient(piece.drive.c0, piece.normal.c0),
+                    coefficient(piece.drive.c1, piece.normal.c1),
+                )
+            };
+            first_up_crossing(piece.basis, g, exact, from, piece.end, snap).map(|c| (c, s))
         })
-        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .min_by(|a, b| a.0.t.value().total_cmp(&b.0.t.value()))
 }
 
-/// Slides along `arc` from `from` to the end of the piece or to the first stick. The interval
-/// is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is reported
-/// where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of a).
+/// The acceleration (m/s²) and the normal force N_f (N) at a slip onset in direction s, formed
+/// without cancellation. With g = s·D − μs·N_f ≥ 0 at the onset, Newton's a = (D − s μd N_f)/M
+/// is
+///
+/// ```text
+/// a = s [g + (μs − μd) N_f] / M
+/// ```
+///
+/// At a located root g = 0 exactly, so a = s (μs − μd) N_f/M: exactly 0 when μd = μs (not a
+/// rounding-negative difference of O(μd g) terms that would stop the slip where it starts), and
+/// of the right size when the slip is short. N_f there is evaluated from the root's basis value
+/// in two parts, either directly or as s·D/μs, whichever is formed with less cancellation.
+/// Where the body slips at once, g > 0 is evaluated at the instant.
+fn onset_acceleration(body: &Body, piece: &Piece, c: &Crossing, s: f64) -> (f64, f64) {
+    let (g, normal) = match c.root_b {
+        Some(b) => {
+            // (value, sum of the magnitudes of its terms) of an affine function at b.
+            let at = |f: Affine| {
+                (
+                    f.c1.mul_add(b.hi, f.c0) + f.c1 * b.lo,
+                    f.c0.abs() + (f.c1 * b.hi).abs(),
+                )
+            };
+            let (n, n_terms) = at(piece.normal);
+            let (d, d_terms) = at(piece.drive);
+            let from_drive = body.mu_s > 0.0 && d_terms * n.abs() < n_terms * d.abs();
+            (0.0, if from_drive { s * d / body.mu_s } else { n })
+        }
+        None => {
+            let b = piece.basis.eval(c.t.hi);
+            let normal = piece.normal.at(b);
+            let g = s * piece.drive.at(b) - body.mu_s * normal;
+            (g.max(0.0), normal)
+        }
+    };
+    let normal = normal.max(0.0);
+    (
+        s * (g + (body.mu_s - body.mu_d) * normal) / body.mass,
+        normal,
+    )
+}
+
+/// The acceleration and N_f at the start of `next` where the slip goes on from the end of `prev`
+/// with acceleration `a` and normal force `normal` (both formed relative to the slip, see
+/// [`onset_acceleration`]), when the two pieces share the basis and the drive and N_f only
+/// changes the sign of its formula (N_f = 2λ|F_e| at a zero of F_e): N_f there is a tiny number
+/// that the coefficients give only to eps times their size, and the arc before gives to eps of
+/// the slip. Then a' = a − s μd (N_f' − N_f)/M.
+fn carry_over(
+    body: &Body,
+    prev: &Piece,
+    next: &Piece,
+    a: f64,
+    normal: f64,
+    s: f64,
+) -> Option<(f64, f64)> {
+    let flipped = Affine::new(-prev.normal.c0, -prev.normal.c1);
+    if prev.basis != next.basis || prev.drive != next.drive {
+        None
+    } else if next.normal == prev.normal {
+        Some((a, normal))
+    } else if next.normal == flipped {
+        Some((a + 2.0 * s * body.mu_d * normal / body.mass, -normal))
+    } else {
+        None
+    }
+}
+
+/// Slides along `arc` from its start to the end of the piece or to the first stick. The
+/// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
+/// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
+/// a). `normal_start` is N_f at the start of the arc (for the friction work).
 fn slide(
     arc: &Arc,
     dir: i8,
     piece: &Piece,
-    from: f64,
+    normal_start: f64,
+    snap: f64,
     accel_sign: &mut i8,
     mut on_max: impl FnMut(f64),
 ) -> Slide {
     let s = f64::from(dir);
+    let from = arc.t_start();
     let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
-    // progress instead of sticking where it started.
+    // progress instead of sticking where it started. From rest, a zero within `snap` of the
+    // start is the onset itself (μd = μs: a = 0 there).
+    let after = if arc.v_start() == 0.0 {
+        from + snap
+    } else {
+        from
+    };
     let mut bounds = [piece.end; 3];
     let mut count = 0;
-    for zero in arc.accel_zeros(from, piece.end).into_iter().flatten() {
+    for zero in arc.accel_zeros(after, piece.end).into_iter().flatten() {
         bounds[count] = zero;
         count += 1;
     }
@@ -363,10 +494,17 @@ fn slide(
     let bounds = &bounds[..=count];
     let mut p = from;
     // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
-    let mut speed_p = Some(speed(from));
+    let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
     for (i, &q) in bounds.iter().enumerate() {
-        let sign = (s * arc.a(0.5 * (p + q))).signum() as i8;
+        // The sign of a on (p, q) at its midpoint; on the first part measured from the arc's
+        // exact start (its time has a low part), so that a sub-ulp part is not misjudged.
+        let w_mid = if i == 0 {
+            0.5 * arc.w(q)
+        } else {
+            arc.w(0.5 * (p + q))
+        };
+        let sign = (s * arc.a_at(w_mid)).signum() as i8;
         if *accel_sign > 0 && sign < 0 {
             on_max(p);
         }
@@ -402,6 +540,6 @@ fn slide(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        normal_work: arc.integrate_normal_times_speed(piece.normal, from, end),
+        normal_work: arc.integrate_normal_times_speed(normal_start, piece.normal.c1, end),
     }
 }
