@@ -38,8 +38,8 @@ pub trait Present: Physics {
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx>;
     /// The worked substitutions of every closed form.
     fn derivation(&self) -> Vec<Step>;
-    /// How the handout explains the step of `key`.
-    fn handout_note(key: StepKey) -> Option<Note>;
+    /// How the handout explains the step of `key`, and the heading before it.
+    fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)>;
     /// The equation of motion, line by line: (formula, its physics).
     fn equation_of_motion() -> &'static [(&'static str, &'static str)];
     /// The laws of an evaluation.

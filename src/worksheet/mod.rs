@@ -223,11 +223,17 @@ mod tests {
         let (regime, qs) =
             resolve(&request(Model::PulledMass(Default::default()), None, None)).unwrap();
         assert_eq!(regime, Regime::new(PulledRegime::SlipStick.id()));
-        assert_eq!(qs.len(), question::PULLED_MASS.len());
+        assert_eq!(
+            qs.len(),
+            question::catalogue(Model::PulledMass(Default::default())).len()
+        );
         let (regime, qs) =
             resolve(&request(Model::Woodpecker(Default::default()), None, None)).unwrap();
         assert_eq!(regime, Regime::new(OrbitRegime::DoubleSlipStick.id()));
-        assert_eq!(qs.len(), question::WOODPECKER.len());
+        assert_eq!(
+            qs.len(),
+            question::catalogue(Model::Woodpecker(Default::default())).len()
+        );
         let late = request(
             Model::PulledMass(Default::default()),
             Some("slip_stick_late"),

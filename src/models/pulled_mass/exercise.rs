@@ -6,7 +6,7 @@ use rand::Rng;
 
 use super::formula as pm;
 use super::formula::Regime as PulledRegime;
-use super::quantity::Key;
+use super::quantity::{any, Key, Key as P};
 use super::{results, PulledMassParams};
 use crate::engine::Run;
 use crate::error::Result;
@@ -14,8 +14,60 @@ use crate::params::G_STANDARD;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
 use crate::worksheet::exercise::Exercise;
-use crate::worksheet::question::{self, Question, Regime};
+use crate::worksheet::question::{Kind, Question, Regime};
 use crate::worksheet::sample::round3;
+
+/// The regimes a pulled-mass worksheet can ask for, the default first.
+pub(crate) const REGIMES: &[Regime] = &[
+    Regime::new(PulledRegime::SlipStick.id()),
+    Regime::new(PulledRegime::SlipStickLate.id()),
+    Regime::new(PulledRegime::ContinuousSlip.id()),
+];
+const SAME_PERIOD: &[Regime] = &[Regime::new(PulledRegime::SlipStick.id())];
+
+/// The question of a pulled-mass quantity.
+const fn p(k: P) -> AnyKey {
+    any(k)
+}
+
+/// The pulled-mass questions (physics.md §1.3, §1.5), in sheet order.
+pub const QUESTIONS: &[Question] = &[
+    Question {
+        kind: Kind::ClosedForm(p(P::TSlip)),
+        prompt: "At what time does the block first start to slip? (eqs. 13, 25)",
+        regimes: REGIMES,
+    },
+    Question {
+        kind: Kind::ClosedForm(p(P::TStick)),
+        prompt: "At what time does it stick again? (eqs. 18, 25)",
+        regimes: SAME_PERIOD,
+    },
+    Question {
+        kind: Kind::ClosedForm(p(P::VMax)),
+        prompt: "What is the largest speed of the first slip? (eq. 26)",
+        regimes: REGIMES,
+    },
+    Question {
+        kind: Kind::ClosedForm(p(P::VAvg)),
+        prompt: "What is the mean speed of the block over a period? (eqs. 27, 28)",
+        regimes: SAME_PERIOD,
+    },
+    Question {
+        kind: Kind::ClosedForm(p(P::Power)),
+        prompt: "What power does friction dissipate on average? (eq. 29)",
+        regimes: SAME_PERIOD,
+    },
+    Question {
+        kind: Kind::Regime(p(P::Regime)),
+        prompt: "Which regime is the block in? Decide from the inequalities below.",
+        regimes: REGIMES,
+    },
+    Question {
+        kind: Kind::ReadFigure(p(P::VMax)),
+        prompt: "Read the first speed maximum off Figure 1.",
+        regimes: REGIMES,
+    },
+];
 
 /// The rules that decide the regime, as (regime, condition in LaTeX).
 const REGIME_RULES: &[(Regime, &str)] = &[
@@ -46,11 +98,11 @@ impl Exercise for PulledMassParams {
          period, W = mg. At t = 0 the block is at rest.";
 
     fn catalogue() -> &'static [Question] {
-        question::PULLED_MASS
+        QUESTIONS
     }
 
     fn regimes() -> &'static [Regime] {
-        question::PULLED_REGIMES
+        REGIMES
     }
 
     fn regime_rules() -> &'static [(Regime, &'static str)] {

@@ -28,6 +28,8 @@ pub mod results;
 pub mod scene;
 #[cfg(feature = "cli")]
 mod tables;
+#[cfg(feature = "cli")]
+mod teaching;
 
 pub use body::{body, force_law};
 pub use params::PulledMassParams;

@@ -1,10 +1,10 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, tables, PulledMassParams};
+use super::{derivation, results, scene, tables, teaching, PulledMassParams};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
-use crate::handout::physics::{self, Note};
+use crate::handout::physics::Note;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
@@ -36,15 +36,16 @@ impl Present for PulledMassParams {
         derivation::pulled_mass(self)
     }
 
-    fn handout_note(key: StepKey) -> Option<Note> {
-        physics::PULLED_MASS_STEPS
+    fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
+        let heading = None;
+        teaching::STEPS
             .iter()
             .find(|(k, _)| *k == key)
-            .map(|(_, n)| *n)
+            .map(|(_, n)| (*n, heading))
     }
 
     fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
-        physics::PULLED_MASS
+        teaching::EQUATION_OF_MOTION
     }
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {

@@ -32,6 +32,8 @@ pub mod results;
 pub mod scene;
 #[cfg(feature = "cli")]
 mod tables;
+#[cfg(feature = "cli")]
+mod teaching;
 pub mod threshold;
 
 pub use body::{body, force_law, linear_amplitudes, spring_coordinate};

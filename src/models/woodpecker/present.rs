@@ -1,10 +1,10 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, spring_coordinate, tables, WoodpeckerParams};
+use super::{derivation, results, scene, spring_coordinate, tables, teaching, WoodpeckerParams};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
-use crate::handout::physics::{self, Note};
+use crate::handout::physics::Note;
 use crate::models::LawKind;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
@@ -37,15 +37,19 @@ impl Present for WoodpeckerParams {
         derivation::woodpecker(self)
     }
 
-    fn handout_note(key: StepKey) -> Option<Note> {
-        physics::WOODPECKER_STEPS
+    fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
+        let heading = teaching::HEADINGS
             .iter()
             .find(|(k, _)| *k == key)
-            .map(|(_, n)| *n)
+            .map(|(_, h)| *h);
+        teaching::STEPS
+            .iter()
+            .find(|(k, _)| *k == key)
+            .map(|(_, n)| (*n, heading))
     }
 
     fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
-        physics::WOODPECKER
+        teaching::EQUATION_OF_MOTION
     }
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {
