@@ -18,7 +18,6 @@ pub use expr::Expr;
 
 pub use crate::models::pulled_mass::derivation::pulled_mass;
 pub use crate::models::woodpecker::derivation::woodpecker;
-use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
 use crate::results::quantity::{AnyKey, Registry};
 use crate::results::Applicability;
 
@@ -63,14 +62,8 @@ impl From<Param> for StepKey {
     }
 }
 
-impl From<pm::Key> for StepKey {
-    fn from(k: pm::Key) -> Self {
-        StepKey::Quantity(k.into())
-    }
-}
-
-impl From<wp::Key> for StepKey {
-    fn from(k: wp::Key) -> Self {
+impl<K: Registry> From<K> for StepKey {
+    fn from(k: K) -> Self {
         StepKey::Quantity(k.into())
     }
 }

@@ -5,8 +5,8 @@ use std::fmt;
 
 use serde::Serialize;
 
-use crate::models::{pulled_mass::quantity as pm, woodpecker::quantity as wp};
-use crate::results::quantity::{AnyKey, Quantity};
+use crate::models::woodpecker::quantity as wp;
+use crate::results::quantity::{AnyKey, Quantity, Registry};
 
 /// Relative tolerance of every numeric check (physics.md §4: observed ≤ 4e-13).
 pub const TOLERANCE: f64 = 1e-9;
@@ -70,14 +70,8 @@ impl From<AnyKey> for Checked {
     }
 }
 
-impl From<pm::Key> for Checked {
-    fn from(k: pm::Key) -> Self {
-        Checked::Key(k.into())
-    }
-}
-
-impl From<wp::Key> for Checked {
-    fn from(k: wp::Key) -> Self {
+impl<K: Registry> From<K> for Checked {
+    fn from(k: K) -> Self {
         Checked::Key(k.into())
     }
 }
@@ -188,7 +182,7 @@ impl Check {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::results::quantity::Registry;
+    use crate::models::pulled_mass::quantity as pm;
 
     #[test]
     fn relative_error_and_verdict() {
