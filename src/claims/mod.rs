@@ -121,10 +121,15 @@ pub struct Claims {
 /// The parameter pair the claims are computed on when one model's set is given: that set for
 /// its model, the paper's default set for the other.
 pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {
-    match *model {
-        Model::PulledMass(p) => (p, WoodpeckerParams::default()),
-        Model::Woodpecker(p) => (PulledMassParams::default(), p),
+    // The claims are about these two models; any other model leaves both at the paper's sets.
+    let mut pair = (PulledMassParams::default(), WoodpeckerParams::default());
+    if let Model::PulledMass(p) = *model {
+        pair.0 = p;
     }
+    if let Model::Woodpecker(p) = *model {
+        pair.1 = p;
+    }
+    pair
 }
 
 pub fn evaluate(

@@ -16,8 +16,6 @@ pub mod expr;
 
 pub use expr::Expr;
 
-pub use crate::models::pulled_mass::derivation::pulled_mass;
-pub use crate::models::woodpecker::derivation::woodpecker;
 use crate::results::quantity::{AnyKey, Registry};
 use crate::results::Applicability;
 

@@ -8,10 +8,12 @@ use serde_json::Value;
 
 use super::*;
 use crate::models::pulled_mass::derivation::param as pm_param;
+use crate::models::pulled_mass::derivation::pulled_mass;
 use crate::models::pulled_mass::formula as pm;
 use crate::models::pulled_mass::quantity::Key as P;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::derivation::param as wp_param;
+use crate::models::woodpecker::derivation::woodpecker;
 use crate::models::woodpecker::formula::Counterpart;
 use crate::models::woodpecker::quantity::Key as W;
 use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
