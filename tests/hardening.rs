@@ -1,0 +1,83 @@
+//! Adversarial input (the hardening issue): no hang, no partial output, one-line messages with
+//! control bytes escaped, Markdown escaped. Each test reproduces a defect found before the fix.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use assert_cmd::Command;
+
+fn stickslip() -> Command {
+    let mut cmd = Command::cargo_bin("stickslip").unwrap();
+    // A hang is a failure, not a stuck test run.
+    cmd.timeout(Duration::from_secs(60));
+    cmd
+}
+
+/// Every file under `dir`, relative, sorted.
+fn tree(dir: &Path) -> Vec<PathBuf> {
+    fn walk(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            out.push(p.strip_prefix(root).unwrap().to_path_buf());
+            if p.is_dir() {
+                walk(root, &p, out);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    if dir.exists() {
+        walk(dir, dir, &mut out);
+    }
+    out.sort();
+    out
+}
+
+/// stderr of a run that must fail with `code`: one line of at most 300 characters, no panic,
+/// no raw control byte.
+fn one_line_error(cmd: &mut Command, code: i32) -> String {
+    let started = Instant::now();
+    let output = cmd.assert().code(code).get_output().clone();
+    assert!(
+        started.elapsed() < Duration::from_secs(30),
+        "took {:?}",
+        started.elapsed()
+    );
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    let line = stderr.strip_suffix('\n').unwrap_or(&stderr);
+    assert!(!line.contains('\n'), "one line: {stderr:?}");
+    assert!(
+        line.chars().count() <= 300,
+        "{} chars: {line}",
+        line.chars().count()
+    );
+    assert!(
+        !line.chars().any(char::is_control),
+        "control bytes: {line:?}"
+    );
+    assert!(!line.contains("panicked"), "{line}");
+    line.to_string()
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn a_file_in_the_way_of_the_figures_folder_leaves_the_output_untouched() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    write(&out, "figures", "not a folder");
+    let msg = one_line_error(
+        stickslip()
+            .args(["report", "scenarios/set-b-slip-stick.toml", "--out"])
+            .arg(&out),
+        2,
+    );
+    assert!(msg.contains("figures is a file, not a folder"), "{msg}");
+    assert_eq!(tree(&out), [PathBuf::from("figures")]);
+}
