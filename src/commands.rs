@@ -194,10 +194,7 @@ fn report(args: &ReportArgs) -> Result<()> {
     let scenes = if args.scenarios.is_empty() {
         report::builtin_scenes()?
     } else {
-        args.scenarios
-            .iter()
-            .map(|path| report::Scene::from_file(path))
-            .collect::<crate::error::Result<Vec<_>>>()?
+        report::Scene::from_files(&args.scenarios)?
     };
     let files = report::render(&scenes, &args.format)?;
     let written = report::write_all(&args.out, &files)?;

@@ -81,3 +81,44 @@ fn a_file_in_the_way_of_the_figures_folder_leaves_the_output_untouched() {
     assert!(msg.contains("figures is a file, not a folder"), "{msg}");
     assert_eq!(tree(&out), [PathBuf::from("figures")]);
 }
+
+fn scenario(title: &str) -> String {
+    format!("model = \"pulled-mass\"\ntitle = \"{title}\"\n")
+}
+
+#[test]
+fn scenarios_whose_pages_collide_are_refused_naming_both_files() {
+    let dir = tempfile::tempdir().unwrap();
+    for sub in ["a", "b"] {
+        std::fs::create_dir(dir.path().join(sub)).unwrap();
+    }
+    let first = write(&dir.path().join("a"), "set.toml", &scenario("first"));
+    let second = write(&dir.path().join("b"), "Set.toml", &scenario("second"));
+    let index = write(dir.path(), "index.toml", &scenario("index"));
+    let all = write(dir.path(), "all-scenes.toml", &scenario("all"));
+    let out = dir.path().join("out");
+    let msg = one_line_error(
+        stickslip()
+            .arg("report")
+            .args([&first, &second])
+            .arg("--out")
+            .arg(&out),
+        2,
+    );
+    assert!(
+        msg.contains("b/Set.toml") && msg.contains("a/set.toml") && msg.contains("same pages"),
+        "{msg}"
+    );
+    for reserved in [&index, &all] {
+        let msg = one_line_error(
+            stickslip()
+                .arg("report")
+                .args([&first, reserved])
+                .arg("--out")
+                .arg(&out),
+            2,
+        );
+        assert!(msg.contains("would replace the report's own"), "{msg}");
+    }
+    assert!(!out.exists());
+}
