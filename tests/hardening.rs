@@ -122,3 +122,74 @@ fn scenarios_whose_pages_collide_are_refused_naming_both_files() {
     }
     assert!(!out.exists());
 }
+
+#[test]
+fn a_stray_quote_in_tracked_data_gives_a_short_message() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,y\n0,1\n0.01,2\n0.02,\"5\n");
+    for i in 3..100_000 {
+        text.push_str(&format!("{},{}\n", f64::from(i) / 100.0, i));
+    }
+    let file = write(dir.path(), "quote.csv", &text);
+    let msg = one_line_error(
+        stickslip()
+            .arg("fit")
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.path().join("out")),
+        2,
+    );
+    assert!(
+        msg.contains("line 4, column y") && msg.contains("is not a number"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn control_bytes_and_newlines_from_files_are_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,y\n");
+    for i in 0..20 {
+        text.push_str(&format!("{i},{}\n", 100 - i));
+    }
+    text.push_str("21,\u{1b}[31mred\u{7}\n");
+    let file = write(dir.path(), "ctl.csv", &text);
+    let msg = one_line_error(
+        stickslip()
+            .arg("fit")
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.path().join("out")),
+        2,
+    );
+    assert!(
+        msg.contains(r"'\u{1b}[31mred\u{7}' is not a number"),
+        "{msg}"
+    );
+    let key = write(
+        dir.path(),
+        "key.toml",
+        "model = \"pulled-mass\"\ntitle = \"x\"\n[params]\n\"mu\\nx\\u001b[2J\" = 3\n",
+    );
+    let msg = one_line_error(
+        stickslip()
+            .args(["eval", "pulled-mass", "--scenario"])
+            .arg(&key),
+        2,
+    );
+    assert!(msg.contains(r"unknown field `mu\nx\u{1b}[2J`"), "{msg}");
+}
+
+#[test]
+fn huge_parameters_are_printed_short() {
+    let output = stickslip()
+        .args(["eval", "pulled-mass", "--force", "1e308"])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    let longest = stdout.lines().map(|l| l.chars().count()).max().unwrap();
+    assert!(longest <= 200, "{longest} characters");
+    assert!(stdout.contains("F = 1e308 N"), "{stdout}");
+}

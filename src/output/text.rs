@@ -4,6 +4,8 @@
 use std::fmt::Write;
 
 use super::format::{rel, sig};
+// Parameters as given, but never the 300 digits `{}` writes for 1e300.
+use crate::models::param::num;
 use crate::models::pulled_mass::results::Evaluation;
 use crate::models::woodpecker::results as woodpecker;
 use crate::results::quantity::{find, Quantity, PULLED_MASS, WOODPECKER};
@@ -20,7 +22,13 @@ pub fn pulled_mass(e: &Evaluation) -> String {
     let _ = writeln!(
         out,
         "parameters: mu_s = {}, mu_d = {}, m = {} kg, k = {} N/m, F = {} N, g = {} m/s², periods = {}",
-        p.input.mu_s, p.input.mu_d, p.input.mass, p.input.k, p.input.force, p.input.g, p.periods
+        num(p.input.mu_s),
+        num(p.input.mu_d),
+        num(p.input.mass),
+        num(p.input.k),
+        num(p.input.force),
+        num(p.input.g),
+        p.periods
     );
     let _ = writeln!(
         out,
@@ -54,7 +62,17 @@ pub fn woodpecker(e: &woodpecker::Evaluation) -> String {
         out,
         "parameters: mu_s = {}, mu_d = {}, k = {} N/m, m_S = {} kg, m_W = {} kg, l = {} m, h = {} m, \
          z0 = {} m, d0 = {} m, g = {} m/s², periods = {}",
-        i.mu_s, i.mu_d, i.k, i.m_sleeve, i.m_bird, i.l, i.h, i.z0, i.d0, i.g, p.periods
+        num(i.mu_s),
+        num(i.mu_d),
+        num(i.k),
+        num(i.m_sleeve),
+        num(i.m_bird),
+        num(i.l),
+        num(i.h),
+        num(i.z0),
+        num(i.d0),
+        num(i.g),
+        p.periods
     );
     let _ = writeln!(
         out,
