@@ -181,6 +181,43 @@ fn control_bytes_and_newlines_from_files_are_escaped() {
 }
 
 #[test]
+fn a_negative_count_names_its_flag() {
+    for (args, flag) in [
+        (
+            &["worksheet", "--model", "woodpecker", "--students", "-1"][..],
+            "--students",
+        ),
+        (
+            &["worksheet", "--model", "woodpecker", "--seed", "-3"][..],
+            "--seed",
+        ),
+        (
+            &["claims", "--samples", "-5", "pulled-mass"][..],
+            "--samples",
+        ),
+        (
+            &[
+                "sweep",
+                "pulled-mass",
+                "--param",
+                "k",
+                "--from",
+                "1",
+                "--to",
+                "2",
+                "--steps",
+                "-4",
+            ][..],
+            "--steps",
+        ),
+        (&["bench", "--repeats", "-1"][..], "--repeats"),
+    ] {
+        let msg = one_line_error(stickslip().args(args), 2);
+        assert!(msg.contains(flag), "{msg}");
+    }
+}
+
+#[test]
 fn huge_parameters_are_printed_short() {
     let output = stickslip()
         .args(["eval", "pulled-mass", "--force", "1e308"])
