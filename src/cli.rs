@@ -38,10 +38,10 @@ pub enum Command {
     /// model keeps the paper's default set) and on a seeded random sample.
     Claims {
         /// Seed of the random sample.
-        #[arg(long, default_value_t = 2017)]
+        #[arg(long, default_value_t = 2017, allow_negative_numbers = true)]
         seed: u64,
         /// Random parameter sets per sampled claim (1 to 1000000).
-        #[arg(long, default_value_t = 2000)]
+        #[arg(long, default_value_t = 2000, allow_negative_numbers = true)]
         samples: usize,
         #[command(subcommand)]
         model: ModelCommand<NoArgs>,
@@ -101,11 +101,11 @@ pub struct WorksheetArgs {
     #[arg(long, value_parser = model_parser())]
     pub model: Model,
     /// Students, one sheet each (1 to 500).
-    #[arg(long, default_value_t = 30,
+    #[arg(long, default_value_t = 30, allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(1..=i64::from(crate::worksheet::MAX_STUDENTS)))]
     pub students: u32,
     /// Seed of the parameter draw: the same seed gives the same sheets.
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     pub seed: u64,
     /// Regime of every student's case [default: slip_stick for the pulled mass,
     /// double_slip_stick for the woodpecker].
@@ -135,7 +135,7 @@ pub struct SweepArgs {
     #[arg(long, allow_hyphen_values = true, value_name = "B")]
     pub to: f64,
     /// Grid points, both ends included (2 to 100000).
-    #[arg(long, value_name = "N",
+    #[arg(long, value_name = "N", allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(2..=100_000))]
     pub steps: u32,
     /// Output folder (sweep.csv, sweep.svg).
@@ -156,7 +156,7 @@ pub struct BenchArgs {
     #[arg(long, value_enum)]
     pub peer: Option<crate::bench::PeerChoice>,
     /// Timed runs per setting, after one warm-up (1 to 1000).
-    #[arg(long, default_value_t = crate::bench::DEFAULT_REPEATS,
+    #[arg(long, default_value_t = crate::bench::DEFAULT_REPEATS, allow_negative_numbers = true,
           value_parser = clap::value_parser!(u32).range(1..=1000))]
     pub repeats: u32,
 }

@@ -136,7 +136,7 @@ fn fit(args: &FitArgs) -> Result<()> {
             reason: format!(
                 "{} (results in {} are flagged \"converged\": false)",
                 fit.termination,
-                args.out.display()
+                shown(&args.out)
             ),
         }
         .into());
@@ -162,7 +162,7 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         sheets.students.len(),
         args.model.id(),
         sheets.regime,
-        args.out.display()
+        shown(&args.out)
     ))
 }
 
@@ -185,7 +185,7 @@ fn bench(args: &BenchArgs) -> Result<()> {
     print_stdout(&format!(
         "wrote {} files to {}\n",
         written.len(),
-        args.out.display()
+        shown(&args.out)
     ))
 }
 
@@ -194,10 +194,7 @@ fn report(args: &ReportArgs) -> Result<()> {
     let scenes = if args.scenarios.is_empty() {
         report::builtin_scenes()?
     } else {
-        args.scenarios
-            .iter()
-            .map(|path| report::Scene::from_file(path))
-            .collect::<crate::error::Result<Vec<_>>>()?
+        report::Scene::from_files(&args.scenarios)?
     };
     let files = report::render(&scenes, &args.format)?;
     let written = report::write_all(&args.out, &files)?;
@@ -205,7 +202,7 @@ fn report(args: &ReportArgs) -> Result<()> {
         "wrote {} files for {} scenes to {}\n",
         written.len(),
         scenes.len(),
-        args.out.display()
+        shown(&args.out)
     ))
 }
 
@@ -224,7 +221,7 @@ fn handout(args: &HandoutArgs) -> Result<()> {
         "wrote {} files for {} to {}\n",
         written.len(),
         scene.id,
-        args.out.display()
+        shown(&args.out)
     ))
 }
 
@@ -257,6 +254,11 @@ fn reject_flag(command: &str, flag: &str, given: bool) -> Result<()> {
         anyhow::bail!("{flag} does not apply to `stickslip {command}`");
     }
     Ok(())
+}
+
+/// A path the user gave, for a line on the terminal: control bytes escaped, bounded.
+fn shown(path: &std::path::Path) -> String {
+    crate::error::excerpt_path(&path.display().to_string())
 }
 
 /// Prints to standard output; a closed pipe (`| head`) is not an error of ours.

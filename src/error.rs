@@ -1,36 +1,65 @@
 //! Error types of the library: invalid parameters, engine failures, scenario files, tracked
 //! data and fits.
+//!
+//! Every message is one line: the text that comes from the user (paths, scenario keys, CSV
+//! cells, header names) goes through [`excerpt`], which escapes control characters and cuts it
+//! to a bounded length, and numbers are written short ([`short`]).
 
 use thiserror::Error;
+
+/// Longest excerpt of a path, a reason, a value or a name in a message (characters).
+const PATH_CHARS: usize = 70;
+const REASON_CHARS: usize = 150;
+const VALUE_CHARS: usize = 40;
 
 /// Everything the library can refuse or fail at. Each variant carries the data needed for a
 /// one-line message naming the parameter, its value and the valid range.
 #[derive(Debug, Error, Clone, PartialEq)]
 pub enum Error {
     /// A parameter outside its valid range.
-    #[error("invalid parameter {name} = {value}: must satisfy {rule}")]
+    #[error(
+        "invalid parameter {name} = {}: must satisfy {}",
+        excerpt(value, VALUE_CHARS),
+        excerpt(rule, REASON_CHARS)
+    )]
     InvalidParam {
         name: &'static str,
         value: String,
         rule: String,
     },
     /// A force law that does not tile its period with finite pieces.
-    #[error("invalid force law: {0}")]
+    #[error("invalid force law: {}", excerpt(.0, REASON_CHARS))]
     InvalidLaw(String),
     /// The engine could not advance (should not happen for valid laws).
-    #[error("integration stalled at t = {t} s: {reason}")]
+    #[error("integration stalled at t = {} s: {reason}", short(*t))]
     Stalled { t: f64, reason: &'static str },
     /// A figure that could not be drawn.
-    #[error("figure {id}: {reason}")]
+    #[error(
+        "figure {}: {}",
+        excerpt(id, PATH_CHARS),
+        excerpt(reason, REASON_CHARS)
+    )]
     Figure { id: String, reason: String },
     /// A report template that failed to render (a bug in a template).
-    #[error("template {name}: {reason}")]
+    #[error(
+        "template {}: {}",
+        excerpt(name, PATH_CHARS),
+        excerpt(reason, REASON_CHARS)
+    )]
     Template { name: String, reason: String },
     /// An output file or folder that cannot be written.
-    #[error("cannot write {path}: {reason}")]
+    #[error(
+        "cannot write {}: {}",
+        excerpt_path(path),
+        excerpt(reason, REASON_CHARS)
+    )]
     Output { path: String, reason: String },
     /// A choice outside the valid values of a command-line option.
-    #[error("invalid value '{value}' for {flag}: {valid}")]
+    #[error(
+        "invalid value '{}' for {flag}: {}",
+        excerpt(value, VALUE_CHARS),
+        excerpt(valid, REASON_CHARS)
+    )]
     InvalidChoice {
         flag: &'static str,
         value: String,
@@ -38,30 +67,38 @@ pub enum Error {
     },
     /// No drawn parameter set was in the requested regime with every question answerable.
     #[error(
-        "no parameter set in regime {regime} answers every question after {attempts} draws: \
-         ask fewer questions (--questions) or another --regime"
+        "no parameter set in regime {} answers every question after {attempts} draws: \
+         ask fewer questions (--questions) or another --regime",
+        excerpt(regime, VALUE_CHARS)
     )]
     Unreachable { regime: String, attempts: u32 },
     /// A scenario file that cannot be read or parsed.
-    #[error("scenario {path}: {reason}")]
+    #[error("scenario {}: {}", excerpt_path(path), excerpt(reason, REASON_CHARS))]
     Scenario { path: String, reason: String },
     /// A scene id that is neither a built-in scene nor a scenario file.
     #[error(
-        "unknown scene `{id}`: `stickslip handout --list` shows the built-in scene ids; a \
-         scenario file (.toml) is accepted too"
+        "unknown scene `{}`: `stickslip handout --list` shows the built-in scene ids; a \
+         scenario file (.toml) is accepted too",
+        excerpt(id, PATH_CHARS)
     )]
     UnknownScene { id: String },
     /// `--pdf` without a headless Chromium to print with.
     #[error(
         "--pdf needs headless Chromium: install the `chromium` package or set \
-         STICKSLIP_CHROMIUM{detail}"
+         STICKSLIP_CHROMIUM{}",
+        excerpt(detail, REASON_CHARS)
     )]
     NoChromium {
         /// Empty, or why the browser named by STICKSLIP_CHROMIUM cannot be used.
         detail: String,
     },
     /// Chromium ran but did not print the PDF.
-    #[error("printing {path} to PDF with {browser} failed: {reason}")]
+    #[error(
+        "printing {} to PDF with {} failed: {}",
+        excerpt_path(path),
+        excerpt_path(browser),
+        excerpt(reason, REASON_CHARS - 60)
+    )]
     Pdf {
         path: String,
         browser: String,
@@ -70,7 +107,12 @@ pub enum Error {
     /// A tracked-positions file (`stickslip fit`) that cannot be read or is malformed; `line`
     /// is the line of the file (1-based) and `column` the header name of the cell, when the
     /// problem has a place.
-    #[error("tracked data {path}: {}{reason}", place(*.line, .column.as_deref()))]
+    #[error(
+        "tracked data {}: {}{}",
+        excerpt_path(path),
+        place(*.line, .column.as_deref()),
+        excerpt(reason, REASON_CHARS)
+    )]
     TrackedData {
         path: String,
         line: Option<u64>,
@@ -78,8 +120,80 @@ pub enum Error {
         reason: String,
     },
     /// A fit that ended without converging (results are still reported, flagged).
-    #[error("the fit did not converge: {reason}")]
+    #[error("the fit did not converge: {}", excerpt(reason, REASON_CHARS))]
     NotConverged { reason: String },
+}
+
+/// `text` made safe for a one-line message: control characters, line and paragraph separators
+/// and the bidirectional overrides escaped (`\n`, `\t`, `\u{1b}`), and cut to at most `max`
+/// characters, the last one "…" when something was cut.
+pub fn excerpt(text: &str, max: usize) -> String {
+    let mut out = String::new();
+    let mut count = 0;
+    // Where the text is cut if it turns out too long: the ellipsis must fit too.
+    let mut cut = None;
+    let mut buf = [0u8; 4];
+    for c in text.chars() {
+        let escaped = escape(c);
+        let piece = escaped
+            .as_deref()
+            .unwrap_or_else(|| c.encode_utf8(&mut buf));
+        let len = piece.chars().count();
+        if cut.is_none() && count + len >= max {
+            cut = Some(out.len());
+        }
+        if count + len > max {
+            out.truncate(cut.unwrap_or(0));
+            out.push('…');
+            return out;
+        }
+        out.push_str(piece);
+        count += len;
+    }
+    out
+}
+
+/// A path for a message: escaped like [`excerpt`], and when too long cut in the middle, so
+/// that the start and the file name stay.
+pub fn excerpt_path(path: &str) -> String {
+    let escaped = excerpt(path, usize::MAX);
+    let chars: Vec<char> = escaped.chars().collect();
+    if chars.len() <= PATH_CHARS {
+        return escaped;
+    }
+    let head = PATH_CHARS / 3;
+    let tail = PATH_CHARS - head - 1;
+    let mut out: String = chars[..head].iter().collect();
+    out.push('…');
+    out.extend(&chars[chars.len() - tail..]);
+    out
+}
+
+/// The escape of a character that must not reach a terminal or break a line; `None` for the
+/// others.
+fn escape(c: char) -> Option<String> {
+    match c {
+        '\n' => Some("\\n".to_string()),
+        '\r' => Some("\\r".to_string()),
+        '\t' => Some("\\t".to_string()),
+        c if c.is_control()
+            || matches!(c, '\u{2028}' | '\u{2029}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}') =>
+        {
+            Some(format!("\\u{{{:x}}}", u32::from(c)))
+        }
+        _ => None,
+    }
+}
+
+/// A number as written in messages: plain for ordinary magnitudes, else scientific with at most
+/// 17 significant figures (never the 300 digits of `{}` of 1e300).
+pub fn short(x: f64) -> String {
+    let a = x.abs();
+    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
+        format!("{x:e}")
+    } else {
+        x.to_string()
+    }
 }
 
 impl Error {
@@ -114,6 +228,7 @@ impl Error {
 
 /// "line 17, column y: ", "line 17: " or nothing.
 fn place(line: Option<u64>, column: Option<&str>) -> String {
+    let column = column.map(|c| excerpt(c, VALUE_CHARS));
     match (line, column) {
         (Some(l), Some(c)) => format!("line {l}, column {c}: "),
         (Some(l), None) => format!("line {l}: "),
@@ -131,6 +246,68 @@ mod tests {
 
     fn text(s: &str) -> String {
         s.to_string()
+    }
+
+    #[test]
+    fn excerpts_escape_control_bytes_and_stay_short() {
+        assert_eq!(excerpt("plain", 10), "plain");
+        assert_eq!(
+            excerpt("a\nb\tc\u{1b}[31m\u{7}", 40),
+            "a\\nb\\tc\\u{1b}[31m\\u{7}"
+        );
+        assert_eq!(excerpt("\u{202e}evil", 40), "\\u{202e}evil");
+        assert_eq!(excerpt("abcdefghij", 10), "abcdefghij");
+        assert_eq!(excerpt("abcdefghijk", 10), "abcdefghi…");
+        assert_eq!(excerpt("abcdefgh\n", 9), "abcdefgh…");
+        let long = "x".repeat(2_000_000);
+        assert_eq!(excerpt(&long, 50).chars().count(), 50);
+        let path = format!("/{}/file.csv", "d".repeat(500));
+        let shown = excerpt_path(&path);
+        assert!(shown.ends_with("/file.csv") && shown.chars().count() == PATH_CHARS);
+        assert_eq!(short(1e300), "1e300");
+        assert_eq!(short(0.25), "0.25");
+        assert_eq!(short(-3.5e-9), "-3.5e-9");
+    }
+
+    #[test]
+    fn every_message_is_one_bounded_line() {
+        let nasty = format!("a\nb\u{1b}]0;title\u{7}{}", "z".repeat(5000));
+        let errors = [
+            Error::InvalidParam {
+                name: "k",
+                value: nasty.clone(),
+                rule: nasty.clone(),
+            },
+            Error::Scenario {
+                path: nasty.clone(),
+                reason: nasty.clone(),
+            },
+            Error::TrackedData {
+                path: nasty.clone(),
+                line: Some(3),
+                column: Some(nasty.clone()),
+                reason: nasty.clone(),
+            },
+            Error::Output {
+                path: nasty.clone(),
+                reason: nasty.clone(),
+            },
+            Error::Stalled {
+                t: 1e300,
+                reason: "no progress",
+            },
+            Error::Pdf {
+                path: nasty.clone(),
+                browser: nasty.clone(),
+                reason: nasty.clone(),
+            },
+        ];
+        for e in errors {
+            let msg = e.to_string();
+            // "error: " comes in front.
+            assert!(msg.chars().count() <= 293, "{msg}");
+            assert!(!msg.chars().any(char::is_control), "{msg:?}");
+        }
     }
 
     #[test]

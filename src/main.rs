@@ -11,13 +11,19 @@ use clap::Parser;
 
 use stickslip::cli::Cli;
 use stickslip::commands::run;
-use stickslip::error::Error;
+use stickslip::error::{excerpt, Error};
+
+/// Longest error line (characters, "error: " included).
+const MESSAGE_CHARS: usize = 300;
 
 fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
-            eprintln!("{}", one_line(&e.render().to_string()));
+            eprintln!(
+                "{}",
+                excerpt(&one_line(&e.render().to_string()), MESSAGE_CHARS)
+            );
             return ExitCode::from(2);
         }
         Err(e) => {
@@ -28,7 +34,8 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            // One line, control bytes escaped, bounded (the library's messages already are).
+            eprintln!("{}", excerpt(&format!("error: {e:#}"), MESSAGE_CHARS));
             // The library's errors decide (Error::exit_code); the others are usage refused here.
             ExitCode::from(e.downcast_ref::<Error>().map_or(2, Error::exit_code))
         }

@@ -19,7 +19,10 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::error::{Error, Result};
+use crate::error::{excerpt, short, Error, Result};
+
+/// Longest excerpt of a cell in a message (characters).
+const CELL_CHARS: usize = 40;
 
 /// Fewest data rows a fit accepts.
 pub const MIN_ROWS: usize = 10;
@@ -223,7 +226,7 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
             } else {
                 match number(raw) {
                     Some(x) => return Ok(x),
-                    None => format!("'{raw}' is not a number"),
+                    None => format!("'{}' is not a number", excerpt(raw, CELL_CHARS)),
                 }
             };
             Err(Error::TrackedData {
@@ -240,7 +243,9 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
                 return Err(err(
                     Some(row.line),
                     format!(
-                        "time not strictly increasing: {time} s after {before} s on line {line}"
+                        "time not strictly increasing: {} s after {} s on line {line}",
+                        short(time),
+                        short(before)
                     ),
                 ));
             }

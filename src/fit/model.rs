@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use crate::engine::{integrate, Run, RunOptions};
 use crate::error::{Error, Result};
-use crate::models::param::invalid;
+use crate::models::param::{invalid, num};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
 use crate::params::MAX_PERIODS;
@@ -63,10 +63,11 @@ pub fn track(p: &WoodpeckerParams, shift: f64, dt: &[f64]) -> Result<Track> {
     if !periods.is_finite() || periods > f64::from(MAX_PERIODS) {
         return Err(invalid(
             "periods",
-            periods,
+            num(periods),
             format!(
-                "the tracked span ({span} s) must cover at most {MAX_PERIODS} periods \
-                 (T = {period} s)"
+                "the tracked span ({} s) must cover at most {MAX_PERIODS} periods (T = {} s)",
+                num(span),
+                num(period)
             ),
         ));
     }

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 
 use super::{Axis, Estimate, Fit};
-use crate::error::{Error, Result};
+use crate::error::{excerpt, excerpt_path, Error, Result};
 use crate::export::num;
 use crate::output::format::sig;
 use crate::report::figures::chart::line_chart;
@@ -140,15 +140,16 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     let d = &fit.data;
     let s = &fit.series;
     let mut o = String::new();
-    let _ = writeln!(o, "stickslip fit {}", d.file);
+    // The file name and the header names are the user's: escaped, bounded.
+    let _ = writeln!(o, "stickslip fit {}", excerpt_path(&d.file));
     let _ = writeln!(
         o,
         "data:     {} points, t = {} to {} s; time column {}, position column {} in {}; y axis {}",
         fit.n,
         sig(s.t.first().copied(), 4),
         sig(s.t.last().copied(), 4),
-        d.time_column,
-        d.position_column,
+        excerpt(&d.time_column, 40),
+        excerpt(&d.position_column, 40),
         d.unit.symbol(),
         match fit.axis {
             Axis::Down => "down (grows as the toy falls)",
@@ -243,7 +244,7 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     let _ = writeln!(
         o,
         "wrote {0}/fit.json, {0}/fit.csv, {0}/fit.svg",
-        out.display()
+        excerpt_path(&out.display().to_string())
     );
     o
 }

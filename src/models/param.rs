@@ -136,12 +136,7 @@ pub fn invalid(name: &'static str, value: impl ToString, rule: impl Into<String>
 
 /// A parameter value as written in messages: plain for ordinary magnitudes, else scientific.
 pub fn num(x: f64) -> String {
-    let a = x.abs();
-    if a != 0.0 && a.is_finite() && !(1e-4..1e6).contains(&a) {
-        format!("{x:e}")
-    } else {
-        x.to_string()
-    }
+    crate::error::short(x)
 }
 
 #[cfg(test)]

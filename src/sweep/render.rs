@@ -204,6 +204,6 @@ pub fn summary_line(s: &Sweep, out: &Path) -> String {
         seen(tally(harmonic.iter().copied())),
         seen(linear),
         change_text,
-        out.display()
+        crate::error::excerpt_path(&out.display().to_string())
     )
 }

@@ -7,6 +7,7 @@ use super::formula::{ClosedForm, Regime};
 use super::results::{self as pulled_mass, Evaluation};
 use super::{quantity as pm, PulledMassParams};
 use crate::error::Result;
+use crate::models::param::num as pnum;
 use crate::output::format::sig;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, DIGITS as TEXT_DIGITS,
@@ -76,7 +77,9 @@ pub(crate) fn text(e: &Evaluation) -> String {
     let _ = writeln!(
         out,
         "parameters: mu_s = {}, mu_d = {}, m = {} kg, k = {} N/m, F = {} N, g = {} m/s², periods = {}",
-        p.input.mu_s, p.input.mu_d, p.input.mass, p.input.k, p.input.force, p.input.g, p.periods
+        // Parameters as given, but never the 300 digits `{}` writes for 1e300.
+        pnum(p.input.mu_s), pnum(p.input.mu_d), pnum(p.input.mass), pnum(p.input.k),
+        pnum(p.input.force), pnum(p.input.g), p.periods
     );
     let _ = writeln!(
         out,

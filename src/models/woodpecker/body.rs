@@ -35,7 +35,9 @@ pub fn force_law(p: &WoodpeckerParams, law: LawKind) -> Result<ForceLaw> {
             let (zeta0, delta0) = linear_amplitudes(p).ok_or_else(|| {
                 Error::InvalidLaw(format!(
                     "the {:?} counterpart needs |z0| <= d0 (z0 = {}, d0 = {})",
-                    p.counterpart, p.z0, p.d0
+                    p.counterpart,
+                    crate::error::short(p.z0),
+                    crate::error::short(p.d0)
                 ))
             })?;
             linear(p, zeta0, delta0)

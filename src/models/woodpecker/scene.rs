@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use crate::engine::{analyse, integrate, EventKind, IntegrationRegime, Run, RunOptions};
 use crate::error::{Error, Result};
-use crate::models::param::invalid;
+use crate::models::param::{invalid, num};
 use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, OrbitRegime, Phase,
     WoodpeckerClosedForm,
@@ -400,7 +400,7 @@ fn motion_times(c: &WoodpeckerClosedForm) -> (Vec<(String, f64)>, bool, &'static
 
 fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
     if !(periods.is_finite() && periods > 0.0) {
-        return Err(invalid("periods", periods, "0 < periods < inf"));
+        return Err(invalid("periods", num(periods), "0 < periods < inf"));
     }
     let period = p.period();
     let n = periods.ceil().min(f64::from(u32::MAX)) as u32;

@@ -7,6 +7,7 @@ use super::formula::Counterpart;
 use super::results::{self as woodpecker};
 use super::{quantity as wp, WoodpeckerParams};
 use crate::error::Result;
+use crate::models::param::num as pnum;
 use crate::output::format::sig;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, DIGITS as TEXT_DIGITS,
@@ -105,7 +106,9 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
         out,
         "parameters: mu_s = {}, mu_d = {}, k = {} N/m, m_S = {} kg, m_W = {} kg, l = {} m, h = {} m, \
          z0 = {} m, d0 = {} m, g = {} m/s², periods = {}",
-        i.mu_s, i.mu_d, i.k, i.m_sleeve, i.m_bird, i.l, i.h, i.z0, i.d0, i.g, p.periods
+        // Parameters as given, but never the 300 digits `{}` writes for 1e300.
+        pnum(i.mu_s), pnum(i.mu_d), pnum(i.k), pnum(i.m_sleeve), pnum(i.m_bird), pnum(i.l),
+        pnum(i.h), pnum(i.z0), pnum(i.d0), pnum(i.g), p.periods
     );
     let _ = writeln!(
         out,

@@ -107,7 +107,11 @@ pub enum FigureError {
     #[error("figure: a line chart needs at least one panel")]
     NoPanels,
     /// An axis range that is empty, reversed or not finite.
-    #[error("figure: {axis} range [{lo}, {hi}] must be finite with {axis}0 < {axis}1")]
+    #[error(
+        "figure: {axis} range [{}, {}] must be finite with {axis}0 < {axis}1",
+        crate::error::short(*lo),
+        crate::error::short(*hi)
+    )]
     BadRange {
         axis: &'static str,
         lo: f64,

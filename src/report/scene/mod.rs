@@ -2,7 +2,7 @@
 //! show. The built-in scenes are the default report; a user's scenario file becomes a scene
 //! with the standard figures of its model.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
 use crate::models::{with_model, Model};
@@ -116,6 +116,37 @@ impl Scene {
         Self::from_scenario(id, &scenario, path, caption, figures, claims)
     }
 
+    /// Scenes from the user's scenario files, refused when two would write the same pages (their
+    /// file stems equal, ignoring case as some file systems do) or when one would write a page of
+    /// the report itself ([`RESERVED_PAGES`]).
+    pub fn from_files(paths: &[PathBuf]) -> Result<Vec<Self>> {
+        let mut scenes: Vec<Self> = Vec::with_capacity(paths.len());
+        for path in paths {
+            let scene = Self::from_file(path)?;
+            let key = scene.id.to_lowercase();
+            let clash = |reason: String| Error::Scenario {
+                path: path.display().to_string(),
+                reason,
+            };
+            if RESERVED_PAGES.contains(&key.as_str()) {
+                return Err(clash(format!(
+                    "its pages {0}.html and {0}.md would replace the report's own: rename the file",
+                    scene.id
+                )));
+            }
+            if let Some(j) = scenes.iter().position(|s| s.id.to_lowercase() == key) {
+                return Err(clash(format!(
+                    "would write the same pages ({}.html, {}.md) as {}: rename one of the files",
+                    scene.id,
+                    scene.id,
+                    paths[j].display()
+                )));
+            }
+            scenes.push(scene);
+        }
+        Ok(scenes)
+    }
+
     /// The figures of the scene, built from its parameters.
     pub fn build_figures(&self) -> Result<Vec<Figure>> {
         let mut out = Vec::new();
@@ -126,6 +157,9 @@ impl Scene {
         Ok(out)
     }
 }
+
+/// Page names of the report itself, which no scene may take (compared in lower case).
+pub const RESERVED_PAGES: &[&str] = &["index", "all-scenes"];
 
 /// A built-in scenario file, compiled into the binary.
 struct Builtin {
@@ -358,5 +392,6 @@ mod tests {
         ids.dedup();
         assert_eq!(ids.len(), scenes.len());
         assert!(scenes.iter().all(|s| !s.figures.is_empty()));
+        assert!(ids.iter().all(|id| !RESERVED_PAGES.contains(&id.as_str())));
     }
 }

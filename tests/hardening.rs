@@ -1,0 +1,232 @@
+//! Adversarial input (the hardening issue): no hang, no partial output, one-line messages with
+//! control bytes escaped, Markdown escaped. Each test reproduces a defect found before the fix.
+
+mod common;
+
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
+
+use assert_cmd::Command;
+
+fn stickslip() -> Command {
+    let mut cmd = Command::cargo_bin("stickslip").unwrap();
+    // A hang is a failure, not a stuck test run.
+    cmd.timeout(Duration::from_secs(60));
+    cmd
+}
+
+/// Every file under `dir`, relative, sorted.
+fn tree(dir: &Path) -> Vec<PathBuf> {
+    fn walk(root: &Path, dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in std::fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            out.push(p.strip_prefix(root).unwrap().to_path_buf());
+            if p.is_dir() {
+                walk(root, &p, out);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    if dir.exists() {
+        walk(dir, dir, &mut out);
+    }
+    out.sort();
+    out
+}
+
+/// stderr of a run that must fail with `code`: one line of at most 300 characters, no panic,
+/// no raw control byte.
+fn one_line_error(cmd: &mut Command, code: i32) -> String {
+    let started = Instant::now();
+    let output = cmd.assert().code(code).get_output().clone();
+    assert!(
+        started.elapsed() < Duration::from_secs(30),
+        "took {:?}",
+        started.elapsed()
+    );
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    let line = stderr.strip_suffix('\n').unwrap_or(&stderr);
+    assert!(!line.contains('\n'), "one line: {stderr:?}");
+    assert!(
+        line.chars().count() <= 300,
+        "{} chars: {line}",
+        line.chars().count()
+    );
+    assert!(
+        !line.chars().any(char::is_control),
+        "control bytes: {line:?}"
+    );
+    assert!(!line.contains("panicked"), "{line}");
+    line.to_string()
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn a_file_in_the_way_of_the_figures_folder_leaves_the_output_untouched() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    write(&out, "figures", "not a folder");
+    let msg = one_line_error(
+        stickslip()
+            .args(["report", "scenarios/set-b-slip-stick.toml", "--out"])
+            .arg(&out),
+        2,
+    );
+    assert!(msg.contains("figures is a file, not a folder"), "{msg}");
+    assert_eq!(tree(&out), [PathBuf::from("figures")]);
+}
+
+fn scenario(title: &str) -> String {
+    format!("model = \"pulled-mass\"\ntitle = \"{title}\"\n")
+}
+
+#[test]
+fn scenarios_whose_pages_collide_are_refused_naming_both_files() {
+    let dir = tempfile::tempdir().unwrap();
+    for sub in ["a", "b"] {
+        std::fs::create_dir(dir.path().join(sub)).unwrap();
+    }
+    let first = write(&dir.path().join("a"), "set.toml", &scenario("first"));
+    let second = write(&dir.path().join("b"), "Set.toml", &scenario("second"));
+    let index = write(dir.path(), "index.toml", &scenario("index"));
+    let all = write(dir.path(), "all-scenes.toml", &scenario("all"));
+    let out = dir.path().join("out");
+    let msg = one_line_error(
+        stickslip()
+            .arg("report")
+            .args([&first, &second])
+            .arg("--out")
+            .arg(&out),
+        2,
+    );
+    assert!(
+        msg.contains("b/Set.toml") && msg.contains("a/set.toml") && msg.contains("same pages"),
+        "{msg}"
+    );
+    for reserved in [&index, &all] {
+        let msg = one_line_error(
+            stickslip()
+                .arg("report")
+                .args([&first, reserved])
+                .arg("--out")
+                .arg(&out),
+            2,
+        );
+        assert!(msg.contains("would replace the report's own"), "{msg}");
+    }
+    assert!(!out.exists());
+}
+
+#[test]
+fn a_stray_quote_in_tracked_data_gives_a_short_message() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,y\n0,1\n0.01,2\n0.02,\"5\n");
+    for i in 3..100_000 {
+        text.push_str(&format!("{},{}\n", f64::from(i) / 100.0, i));
+    }
+    let file = write(dir.path(), "quote.csv", &text);
+    let msg = one_line_error(
+        stickslip()
+            .arg("fit")
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.path().join("out")),
+        2,
+    );
+    assert!(
+        msg.contains("line 4, column y") && msg.contains("is not a number"),
+        "{msg}"
+    );
+}
+
+#[test]
+fn control_bytes_and_newlines_from_files_are_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,y\n");
+    for i in 0..20 {
+        text.push_str(&format!("{i},{}\n", 100 - i));
+    }
+    text.push_str("21,\u{1b}[31mred\u{7}\n");
+    let file = write(dir.path(), "ctl.csv", &text);
+    let msg = one_line_error(
+        stickslip()
+            .arg("fit")
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.path().join("out")),
+        2,
+    );
+    assert!(
+        msg.contains(r"'\u{1b}[31mred\u{7}' is not a number"),
+        "{msg}"
+    );
+    let key = write(
+        dir.path(),
+        "key.toml",
+        "model = \"pulled-mass\"\ntitle = \"x\"\n[params]\n\"mu\\nx\\u001b[2J\" = 3\n",
+    );
+    let msg = one_line_error(
+        stickslip()
+            .args(["eval", "pulled-mass", "--scenario"])
+            .arg(&key),
+        2,
+    );
+    assert!(msg.contains(r"unknown field `mu\nx\u{1b}[2J`"), "{msg}");
+}
+
+#[test]
+fn a_negative_count_names_its_flag() {
+    for (args, flag) in [
+        (
+            &["worksheet", "--model", "woodpecker", "--students", "-1"][..],
+            "--students",
+        ),
+        (
+            &["worksheet", "--model", "woodpecker", "--seed", "-3"][..],
+            "--seed",
+        ),
+        (
+            &["claims", "--samples", "-5", "pulled-mass"][..],
+            "--samples",
+        ),
+        (
+            &[
+                "sweep",
+                "pulled-mass",
+                "--param",
+                "k",
+                "--from",
+                "1",
+                "--to",
+                "2",
+                "--steps",
+                "-4",
+            ][..],
+            "--steps",
+        ),
+        (&["bench", "--repeats", "-1"][..], "--repeats"),
+    ] {
+        let msg = one_line_error(stickslip().args(args), 2);
+        assert!(msg.contains(flag), "{msg}");
+    }
+}
+
+#[test]
+fn huge_parameters_are_printed_short() {
+    let output = stickslip()
+        .args(["eval", "pulled-mass", "--force", "1e308"])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    let longest = stdout.lines().map(|l| l.chars().count()).max().unwrap();
+    assert!(longest <= 200, "{longest} characters");
+    assert!(stdout.contains("F = 1e308 N"), "{stdout}");
+}
