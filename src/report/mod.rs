@@ -11,6 +11,7 @@ pub mod figures;
 pub mod math;
 pub mod render;
 pub mod scene;
+pub mod sketch;
 pub mod writer;
 
 pub use render::{render, Format};

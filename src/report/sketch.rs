@@ -1,0 +1,1412 @@
+//! Sketches of the two apparatus, drawn from the parameters: the pulled mass on its table with
+//! the hanging mass under it (paper Sec. 2), and the woodpecker's sleeve on the pole (Sec. 3,
+//! Fig. 13). Pure functions returning a self-contained SVG string: hand-written elements, no
+//! plotters, coordinates rounded to 0.1 px, so the same parameters give the same bytes.
+//!
+//! ```text
+//! params + phase → geometry (px, from m, N, mm) → elements (lines, arrows, labels) → <svg>
+//! ```
+//!
+//! Every sketch has `role="img"`, a `<title>`, a `<desc>` with the key numbers, a `viewBox`
+//! (it fills the width it is given), a generic font and colours that read on white and on a
+//! dark page: outlines and text are `currentColor` (an inline SVG takes the page's text colour;
+//! a standalone file declares `color-scheme: light dark`), bodies are `currentColor` at low
+//! opacity, and the forces use the Okabe–Ito colours of the charts.
+
+use std::fmt::Write as _;
+
+use crate::models::pulled_mass::PulledMassParams;
+use crate::models::woodpecker::WoodpeckerParams;
+
+/// What the body is doing in the sketch: it decides which friction law labels the friction
+/// arrows and whether a velocity arrow is drawn.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Phase {
+    /// At rest, held by static friction: the friction force is whatever balances the drive, up
+    /// to μs N.
+    Stuck,
+    /// Sliding: the friction force is μd N, against the velocity.
+    Slipping,
+}
+
+impl Phase {
+    /// A few words for titles and descriptions.
+    pub fn words(self) -> &'static str {
+        match self {
+            Phase::Stuck => "at rest (sticking)",
+            Phase::Slipping => "slipping",
+        }
+    }
+}
+
+/// Width of every sketch (px of the SVG user space).
+const WIDTH: f64 = 900.0;
+/// Label and small-print font sizes (px).
+const FONT: f64 = 16.0;
+const SMALL: f64 = 13.5;
+/// Arrowhead length and half-width (px).
+const HEAD_LEN: f64 = 11.0;
+const HEAD_HALF: f64 = 5.0;
+
+/// Okabe & Ito colours, as in the charts (`figures::style::PALETTE`).
+const BLUE: &str = "#0072B2"; // pulling force F
+const VERMILLION: &str = "#D55E00"; // friction
+const GREEN: &str = "#009E73"; // normal / contact forces
+const PURPLE: &str = "#CC79A7"; // spring and its force
+const ORANGE: &str = "#E69F00"; // velocity
+const INK: &str = "currentColor"; // outlines, text, weights
+
+/// The pulled mass of Sec. 2: the block m on the table, pulled by F, pressed by the spring k
+/// with the equal mass m' hanging under it through a slot in the table (paper Sec. 2).
+///
+/// The forces on the block are drawn to one scale (a 100 mN bar gives it) at one instant:
+/// [`Phase::Stuck`] at t = 0, where N = 2W and static friction balances F; [`Phase::Slipping`]
+/// at the slip onset, where F = μs N (or t = 0 for an immediate slip, F > 2μs W) and the
+/// friction drops to μd N.
+pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
+    let w = p.weight();
+    let f = p.force;
+    let immediate = f > 2.0 * p.mu_s * w;
+    // The instant drawn: N there, and the friction on the block.
+    let (n, friction, instant) = match phase {
+        Phase::Stuck if immediate => (2.0 * w, p.mu_s * 2.0 * w, "t = 0"),
+        Phase::Stuck => (2.0 * w, f, "t = 0"),
+        Phase::Slipping if immediate => (2.0 * w, p.mu_d * 2.0 * w, "t = 0"),
+        Phase::Slipping => (f / p.mu_s, p.mu_d * f / p.mu_s, "the slip onset"),
+    };
+    let period = p.period();
+
+    // One force scale: the largest force drawn is 190 px.
+    let biggest = [2.0 * w, f, n, friction].into_iter().fold(0.0, f64::max);
+    let scale = 190.0 / biggest;
+    let len = |force: f64| (force * scale).max(HEAD_LEN + 4.0);
+
+    let height = 470.0;
+    let mut s = Svg::new(height);
+    let title = format!(
+        "Pulled mass, {}: block, pulling force, spring and hanging mass",
+        phase.words()
+    );
+    let friction_words = match (phase, immediate) {
+        (Phase::Stuck, false) => format!(
+            "static friction F_f = F = {} balances the pull (it could reach μs N = {})",
+            mn(friction),
+            mn(p.mu_s * n)
+        ),
+        (Phase::Stuck, true) => format!(
+            "the pull exceeds the static capacity μs N = {}: the block cannot stay at rest",
+            mn(friction)
+        ),
+        (Phase::Slipping, _) => format!("dynamic friction F_f = μd N = {}", mn(friction)),
+    };
+    let desc = format!(
+        "A block of mass m = {m} lies on a table and is pulled to the right by a constant force \
+         F = {F}. Under it, through a slot in the table, a spring of stiffness k = {k} carries a \
+         second mass m' = m = {m} that oscillates with period T = {T}, so the normal force \
+         N(t) = W (1 + cos ωt) swings between 0 and 2W = {N2}, with W = mg = {W}. Friction \
+         coefficients μs = {mus}, μd = {mud}. Drawn at {instant}: N = {N}, {friction_words}. \
+         Force arrows to one scale.",
+        m = grams(p.mass),
+        F = mn(f),
+        k = plain(p.k, "N/m"),
+        T = ms(period),
+        N2 = mn(2.0 * w),
+        W = mn(w),
+        mus = num(p.mu_s),
+        mud = num(p.mu_d),
+        N = mn(n),
+    );
+    s.open(&title, &desc);
+
+    // Header.
+    s.text(
+        24.0,
+        32.0,
+        "start",
+        FONT,
+        &format!("Pulled mass, {}: drawn at {instant}", phase.words()),
+    );
+    let rule = match phase {
+        Phase::Stuck => "stuck while F ≤ μ_{s} N(t)",
+        Phase::Slipping => "slips once F > μ_{s} N(t); while sliding, friction is μ_{d} N(t)",
+    };
+    s.text(24.0, 54.0, "start", SMALL, rule);
+
+    // The table: two slabs and the slot between them (the block rides on its edges).
+    let top = 300.0;
+    let slab = 20.0;
+    let (slot_l, slot_r) = (250.0, 640.0);
+    for (x0, x1) in [(40.0, slot_l), (slot_r, 860.0)] {
+        s.rect(x0, top, x1 - x0, slab, 0.18, 1.2);
+    }
+    s.dashed(slot_l, top, slot_r, top, INK, 1.0);
+    s.dashed(slot_l, top + slab, slot_r, top + slab, INK, 1.0);
+    s.text(slot_r - 6.0, top - 8.0, "end", SMALL, "slot in the table");
+
+    // The block.
+    let (bx, bw, bh) = (345.0, 180.0, 80.0);
+    let by = top - bh;
+    let cx = bx + bw / 2.0;
+    s.rect(bx, by, bw, bh, 0.12, 1.6);
+    s.text(
+        cx,
+        by + bh / 2.0 + 6.0,
+        "middle",
+        FONT,
+        &format!("m = {}", grams(p.mass)),
+    );
+
+    // Spring and hanging mass under the block.
+    let spring_top = top;
+    let (hw, hh) = (74.0, 46.0);
+    let hang_y = top + 82.0;
+    s.spring(cx, spring_top, hang_y, 7, 13.0, PURPLE);
+    s.rect(cx - hw / 2.0, hang_y, hw, hh, 0.12, 1.6);
+    s.text(
+        cx + hw / 2.0 + 10.0,
+        hang_y + 20.0,
+        "start",
+        FONT,
+        &format!("m' = m = {}", grams(p.mass)),
+    );
+    s.text(
+        cx + hw / 2.0 + 10.0,
+        hang_y + 40.0,
+        "start",
+        SMALL,
+        &format!("oscillates: T = 2π√(m'/k) = {}", ms(period)),
+    );
+    s.text(
+        cx - 20.0,
+        top + 46.0,
+        "end",
+        FONT,
+        &format!("k = {}", plain(p.k, "N/m")),
+    );
+    // The oscillation, a double arrow left of the hanging mass.
+    let ox = cx - hw / 2.0 - 16.0;
+    s.dimension(
+        None,
+        (ox, hang_y - 2.0),
+        (ox, hang_y + hh + 2.0),
+        PURPLE,
+        2.0,
+    );
+
+    // Pulling force F, on a short rope from the block's right face.
+    let fy = by + bh / 2.0 - 6.0;
+    let f_end = bx + bw + 18.0 + len(f);
+    s.line(bx + bw, fy, bx + bw + 18.0, fy, INK, 1.5);
+    s.arrow(
+        Some("force-f"),
+        (bx + bw + 18.0, fy),
+        (f_end, fy),
+        BLUE,
+        3.0,
+    );
+    s.text(
+        bx + bw + 22.0,
+        fy - 12.0,
+        "start",
+        FONT,
+        &format!("F = {}", mn(f)),
+    );
+
+    // Friction on the block, along the table surface, against the (coming) motion.
+    let ff_y = top - 7.0;
+    s.arrow(
+        Some("force-friction"),
+        (bx, ff_y),
+        (bx - len(friction), ff_y),
+        VERMILLION,
+        3.0,
+    );
+    let ff_label = match (phase, immediate) {
+        (Phase::Stuck, false) => "F_{f} = F ≤ μ_{s} N".to_string(),
+        (Phase::Stuck, true) => format!("F_{{f}} = μ_{{s}} N = {}", mn(friction)),
+        (Phase::Slipping, _) => format!("F_{{f}} = μ_{{d}} N = {}", mn(friction)),
+    };
+    s.text(bx - 8.0, ff_y - 12.0, "end", FONT, &ff_label);
+
+    // Normal force from the table: up, from the contact, in the block's left part; its label
+    // left of the block, level with the tip or with the block's top, whichever is higher.
+    let nx = bx + 40.0;
+    let n_tip = top - len(n);
+    s.arrow(Some("force-n"), (nx, top), (nx, n_tip), GREEN, 3.0);
+    let n_label_y = (n_tip + 12.0).min(by + 16.0);
+    s.text(
+        bx - 12.0,
+        n_label_y,
+        "end",
+        FONT,
+        &format!("N = {} at {instant}", mn(n)),
+    );
+    s.text(
+        bx - 12.0,
+        n_label_y + 20.0,
+        "end",
+        SMALL,
+        "N(t) = W(1 + cos ωt): 0 … 2W",
+    );
+
+    // Weight of the block, down from the block's centre height (right of the spring).
+    let wx = bx + bw - 40.0;
+    let w_tip = by + bh / 2.0 + len(w);
+    s.arrow(Some("force-w"), (wx, by + bh / 2.0), (wx, w_tip), INK, 3.0);
+    s.text(
+        wx + 12.0,
+        w_tip - 2.0,
+        "start",
+        FONT,
+        &format!("W = mg = {}", mn(w)),
+    );
+
+    // Velocity (slipping) or "v = 0" (stuck), above the block.
+    match phase {
+        Phase::Slipping => {
+            s.arrow(
+                None,
+                (cx - 40.0, by - 18.0),
+                (cx + 40.0, by - 18.0),
+                ORANGE,
+                5.0,
+            );
+            s.text(cx - 50.0, by - 12.0, "end", FONT, "v");
+        }
+        Phase::Stuck => s.text(cx, by - 14.0, "middle", FONT, "v = 0"),
+    }
+
+    // Friction coefficients and the force scale, bottom left.
+    s.text(
+        40.0,
+        height - 56.0,
+        "start",
+        FONT,
+        &format!("μ_{{s}} = {}, μ_{{d}} = {}", num(p.mu_s), num(p.mu_d)),
+    );
+    s.text(
+        40.0,
+        height - 34.0,
+        "start",
+        SMALL,
+        &format!("φ = F/W = {}", num(f / w)),
+    );
+    let bar = 0.1 * scale;
+    s.line(40.0, height - 16.0, 40.0 + bar, height - 16.0, INK, 3.0);
+    s.text(
+        48.0 + bar,
+        height - 11.0,
+        "start",
+        SMALL,
+        "100 mN (force scale)",
+    );
+    s.finish()
+}
+
+/// The falling woodpecker of Sec. 3 (paper Fig. 13): the sleeve on the vertical pole, tilted
+/// (greatly exaggerated) so that it touches the pole at two points h apart; the spring hangs
+/// the bird at lever arm l from the pole's axis; its coordinate z = z0 + d0 cos ωt.
+///
+/// Lengths (h, l, z0, d0) are to one scale, 14 px/mm unless that would not fit; the pole's
+/// width and the clearance of the hole are not. The spring force is drawn pushing the sleeve
+/// down (F_e > 0, the spring stretched), so the contacts are top-left and bottom-right.
+pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
+    let mm = 1e3;
+    let (l_mm, h_mm, z0_mm, d0_mm) = (p.l * mm, p.h * mm, p.z0 * mm, p.d0 * mm);
+    let z_lo = (z0_mm - d0_mm.abs()).min(0.0);
+    let z_hi = (z0_mm + d0_mm.abs()).max(0.0);
+    let scale = [14.0, 250.0 / l_mm, 130.0 / h_mm, 260.0 / (z_hi - z_lo)]
+        .into_iter()
+        .filter(|v| v.is_finite() && *v > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let scale = if scale.is_finite() { scale } else { 14.0 };
+    let l_px = (l_mm * scale).max(70.0);
+    let h_px = (h_mm * scale).max(24.0);
+
+    let lambda = p.lambda();
+    let ws = p.sleeve_weight();
+    let fe_max = p.k * (p.z0 + p.d0.abs());
+    let fe_min = p.k * (p.z0 - p.d0.abs());
+    let n_max = lambda * fe_max.abs().max(fe_min.abs());
+    let period = p.period();
+
+    let height = 560.0;
+    let mut s = Svg::new(height);
+    let title = format!(
+        "Falling woodpecker, {}: sleeve on the pole, spring and bird",
+        phase.words()
+    );
+    let friction_words = match phase {
+        Phase::Stuck => "static friction, up to μs N at each contact, holds the sleeve",
+        Phase::Slipping => "dynamic friction μd N at each contact brakes the falling sleeve",
+    };
+    let desc = format!(
+        "A sleeve of mass m_S = {ms} (weight W_S = {ws}) slides down a vertical pole. The \
+         spring (k = {k}) carrying the bird (m_W = {mw}) acts on the sleeve at lever arm \
+         l = {l} from the pole's axis; the sleeve tilts and touches the pole at two contacts \
+         h = {h} apart, each pressing with N = λ|F_e|, λ = l/h = {lambda}. The spring \
+         coordinate z = z0 + d0 cos ωt has offset z0 = {z0} and amplitude d0 = {d0} (period \
+         T = {T}), so the spring force F_e = k z ranges from {femin} to {femax} and N reaches \
+         {nmax}. Friction coefficients μs = {mus}, μd = {mud}: {friction_words}. The tilt is \
+         exaggerated; lengths to scale.",
+        ms = grams(p.m_sleeve),
+        ws = mn(ws),
+        k = plain(p.k, "N/m"),
+        mw = grams(p.m_bird),
+        l = mm_text(l_mm),
+        h = mm_text(h_mm),
+        lambda = num(lambda),
+        z0 = mm_text(z0_mm),
+        d0 = mm_text(d0_mm),
+        T = ms(period),
+        femin = mn(fe_min),
+        femax = mn(fe_max),
+        nmax = mn(n_max),
+        mus = num(p.mu_s),
+        mud = num(p.mu_d),
+    );
+    s.open(&title, &desc);
+    s.text(
+        24.0,
+        32.0,
+        "start",
+        FONT,
+        &format!("Falling woodpecker, {}", phase.words()),
+    );
+    s.text(
+        24.0,
+        54.0,
+        "start",
+        SMALL,
+        "tilt of the sleeve greatly exaggerated",
+    );
+
+    // The sleeve: a hole of half-width a (pole + clearance) and half-height b, walls of
+    // thickness `wall`, tilted clockwise by θ until the hole's top-left and bottom-right inner
+    // corners touch the pole, with the contacts h apart vertically.
+    let px = 250.0;
+    let pole_half = 12.0;
+    let clearance = 2.5;
+    let wall = 14.0;
+    let a = pole_half + clearance;
+    let (theta, b) = sleeve_tilt(a, pole_half, h_px);
+    let (cx, cy) = (px, 210.0);
+    let rot = |dx: f64, dy: f64| {
+        let (sn, cs) = theta.sin_cos();
+        (cx + dx * cs - dy * sn, cy + dx * sn + dy * cs)
+    };
+    let c1 = rot(-a, -b);
+    let c2 = rot(a, b);
+    let arm_half = 6.0;
+    let arm_len = l_px / theta.cos();
+    let arm_end = rot(arm_len, arm_half);
+    // The line of action of F_e: l from the pole's axis.
+    let spring_x = px + l_px;
+
+    // The ring behind the pole, the pole, then the ring's two walls cut open in front.
+    let ring = [
+        rot(-a - wall, -b),
+        rot(a + wall, -b),
+        rot(a + wall, b),
+        rot(-a - wall, b),
+    ];
+    s.polygon(&ring, INK, 0.08, 0.8);
+    s.rect(
+        px - pole_half,
+        74.0,
+        2.0 * pole_half,
+        height - 84.0,
+        0.1,
+        1.2,
+    );
+    s.text(px + pole_half + 8.0, height - 16.0, "start", SMALL, "pole");
+    let left_wall = [
+        rot(-a - wall, -b),
+        rot(-a, -b),
+        rot(-a, b),
+        rot(-a - wall, b),
+    ];
+    let right_wall = [
+        rot(a, -b),
+        rot(a + wall, -b),
+        rot(a + wall, -arm_half),
+        rot(arm_len, -arm_half),
+        rot(arm_len, arm_half),
+        rot(a + wall, arm_half),
+        rot(a + wall, b),
+        rot(a, b),
+    ];
+    s.polygon(&left_wall, INK, 0.25, 1.5);
+    s.polygon(&right_wall, INK, 0.25, 1.5);
+    for c in [c1, c2] {
+        s.circle(c.0, c.1, 3.5, INK);
+    }
+
+    // h, along the pole's axis between the contacts' heights.
+    s.dashed(c1.0, c1.1, px, c1.1, INK, 1.0);
+    s.dashed(c2.0, c2.1, px, c2.1, INK, 1.0);
+    s.dimension(Some("dim-h"), (px, c1.1), (px, c2.1), INK, 1.2);
+    let left_of_sleeve = cx - a - wall - 16.0;
+    s.text(
+        left_of_sleeve,
+        cy + 6.0,
+        "end",
+        FONT,
+        &format!("h = {}", mm_text(h_mm)),
+    );
+    s.text(
+        left_of_sleeve,
+        cy + 24.0,
+        "end",
+        SMALL,
+        "between the contacts",
+    );
+
+    // Contact forces N (horizontal, pushing the sleeve off the pole) and friction (up the pole).
+    let n_len = 62.0;
+    let f_len = 52.0;
+    s.arrow(
+        Some("force-n"),
+        (c1.0, c1.1),
+        (c1.0 - n_len, c1.1),
+        GREEN,
+        3.0,
+    );
+    s.arrow(
+        Some("force-n"),
+        (c2.0, c2.1),
+        (c2.0 + n_len, c2.1),
+        GREEN,
+        3.0,
+    );
+    s.text(c1.0 - n_len - 8.0, c1.1 + 6.0, "end", FONT, "N = λ|F_{e}|");
+    s.text(
+        c2.0 + n_len + 6.0,
+        c2.1 + 26.0,
+        "start",
+        FONT,
+        "N = λ|F_{e}|",
+    );
+    let f_label = match phase {
+        Phase::Stuck => "F_{f} ≤ μ_{s} N",
+        Phase::Slipping => "F_{f} = μ_{d} N",
+    };
+    s.arrow(
+        Some("force-friction"),
+        (c1.0, c1.1),
+        (c1.0, c1.1 - f_len),
+        VERMILLION,
+        3.0,
+    );
+    s.text(c1.0 - 10.0, c1.1 - f_len / 2.0 - 4.0, "end", FONT, f_label);
+    s.arrow(
+        Some("force-friction"),
+        (c2.0, c2.1 + f_len),
+        (c2.0, c2.1),
+        VERMILLION,
+        3.0,
+    );
+    s.text(c2.0 + 8.0, c2.1 + f_len + 18.0, "start", FONT, f_label);
+
+    // Weight of the sleeve, from the left wall.
+    let wx = cx - a - wall / 2.0 - 2.0;
+    let w_top = cy + b * 0.3;
+    s.arrow(Some("force-w"), (wx, w_top), (wx, w_top + 80.0), INK, 3.0);
+    s.text(
+        wx - 10.0,
+        w_top + 78.0,
+        "end",
+        FONT,
+        &format!("W_{{S}} = {}", mn(ws)),
+    );
+
+    // Velocity of the sleeve, or "v = 0".
+    let vx = 150.0;
+    let vy = w_top + 110.0;
+    match phase {
+        Phase::Slipping => {
+            s.arrow(None, (vx, vy), (vx, vy + 70.0), ORANGE, 6.0);
+            s.text(vx - 14.0, vy + 42.0, "end", FONT, "v");
+        }
+        Phase::Stuck => s.text(vx, vy + 42.0, "middle", FONT, "v = 0"),
+    }
+
+    // l: from the pole's axis to the spring's line of action, above the sleeve.
+    let l_y = c1.1 - f_len - 22.0;
+    s.dashed(
+        spring_x,
+        arm_end.1 - 2.0 * arm_half,
+        spring_x,
+        l_y - 6.0,
+        INK,
+        1.0,
+    );
+    s.dimension(Some("lever"), (px, l_y), (spring_x, l_y), INK, 1.2);
+    let l_mid = (px + spring_x) / 2.0;
+    s.text(
+        l_mid,
+        l_y - 8.0,
+        "middle",
+        FONT,
+        &format!("l = {}", mm_text(l_mm)),
+    );
+    s.text(
+        l_mid + 10.0,
+        l_y + 24.0,
+        "middle",
+        SMALL,
+        &format!("λ = l/h = {}", num(lambda)),
+    );
+
+    // The spring: natural length, then the coordinate z; the bird drawn at z = z0, and the band
+    // its centre sweeps, z0 − d0 … z0 + d0.
+    let bird_r = 19.0;
+    let natural = 44.0;
+    let z_zero = arm_end.1 + natural - z_lo.min(0.0) * scale;
+    let y_of = |z_mm: f64| z_zero + z_mm * scale;
+    let bird_y = y_of(z0_mm);
+    let (band_top, band_bot) = (y_of(z0_mm - d0_mm.abs()), y_of(z0_mm + d0_mm.abs()));
+    s.band(
+        spring_x - bird_r - 8.0,
+        band_top,
+        2.0 * bird_r + 16.0,
+        band_bot - band_top,
+        PURPLE,
+    );
+    s.spring(spring_x, arm_end.1, bird_y - bird_r, 8, 11.0, PURPLE);
+    bird(&mut s, spring_x, bird_y, bird_r);
+    s.text(
+        spring_x - bird_r - 16.0,
+        bird_y + 6.0,
+        "end",
+        FONT,
+        &format!("bird m_{{W}} = {}", grams(p.m_bird)),
+    );
+    s.text(
+        spring_x - 22.0,
+        (bird_y - 40.0).max(arm_end.1 + 30.0),
+        "end",
+        FONT,
+        &format!("k = {}", plain(p.k, "N/m")),
+    );
+
+    // The spring force on the sleeve, along its line of action, beside the spring.
+    let fe_x = spring_x + 22.0;
+    s.arrow(
+        Some("force-fe"),
+        (fe_x, arm_end.1 - arm_half),
+        (fe_x, arm_end.1 + 44.0),
+        PURPLE,
+        3.0,
+    );
+    s.text(fe_x + 10.0, arm_end.1 + 24.0, "start", FONT, "F_{e} = k z");
+
+    // z0 and d0 as a chain of dimensions right of the band.
+    let dim_x = spring_x + bird_r + 36.0;
+    let lx = dim_x + 16.0;
+    s.dashed(spring_x + 12.0, y_of(0.0), lx + 190.0, y_of(0.0), INK, 1.0);
+    s.dashed(
+        spring_x + bird_r + 4.0,
+        bird_y,
+        dim_x + 8.0,
+        bird_y,
+        INK,
+        1.0,
+    );
+    s.dashed(
+        spring_x + bird_r + 12.0,
+        band_bot,
+        dim_x + 8.0,
+        band_bot,
+        INK,
+        1.0,
+    );
+    let y0 = y_of(0.0);
+    if z0_mm.abs() * scale > 12.0 {
+        s.dimension(Some("dim-z0"), (dim_x, y0), (dim_x, bird_y), INK, 1.2);
+    }
+    s.dimension(Some("dim-d0"), (dim_x, bird_y), (dim_x, band_bot), INK, 1.2);
+    // The z = 0 line's labels go on its side away from the bird (above it when z0 ≥ 0); the
+    // z0 label at the middle of its dimension, or beside the bird's line when that is short.
+    let bird_above = z0_mm < 0.0;
+    let (formula_y, zero_y) = if bird_above {
+        (y0 + 40.0, y0 + 20.0)
+    } else {
+        (y0 - 28.0, y0 - 8.0)
+    };
+    s.text(
+        lx,
+        formula_y,
+        "start",
+        SMALL,
+        &format!("z = z_{{0}} + d_{{0}} cos ωt, T = {}", ms(period)),
+    );
+    s.text(lx, zero_y, "start", SMALL, "z = 0: spring unstretched");
+    let z0_y = if (y0 - bird_y).abs() >= 34.0 {
+        (y0 + bird_y) / 2.0 + 6.0
+    } else if bird_above {
+        bird_y - 10.0
+    } else {
+        bird_y + 22.0
+    };
+    s.text(
+        lx,
+        z0_y,
+        "start",
+        FONT,
+        &format!("z_{{0}} = {} (offset)", mm_text(z0_mm)),
+    );
+    let d0_from = if bird_above { formula_y + 10.0 } else { bird_y };
+    let d0_y = ((d0_from + band_bot) / 2.0 + 6.0).max(z0_y + 30.0);
+    s.text(
+        lx,
+        d0_y,
+        "start",
+        FONT,
+        &format!("d_{{0}} = {} (amplitude)", mm_text(d0_mm)),
+    );
+    s.text(
+        lx,
+        d0_y + 20.0,
+        "start",
+        SMALL,
+        "shaded: the range of the bird's centre",
+    );
+
+    // The numbers that are not lengths, bottom left.
+    let info = [
+        format!("sleeve m_{{S}} = {}", grams(p.m_sleeve)),
+        format!("μ_{{s}} = {}, μ_{{d}} = {}", num(p.mu_s), num(p.mu_d)),
+        format!("F_{{e}} from {} to {}", mn(fe_min), mn(fe_max)),
+        format!("N up to {}", mn(n_max)),
+    ];
+    for (i, line) in info.iter().enumerate() {
+        s.text(24.0, height - 92.0 + 22.0 * i as f64, "start", SMALL, line);
+    }
+    s.finish()
+}
+
+/// The tilt θ (rad, clockwise) and the hole's half-height b of the sleeve: the hole's top-left
+/// inner corner (−a, −b) lands on the pole's left face (x = −p) and the contacts are `h` apart
+/// vertically. Fixed point on b; converges in a few steps for any a > p.
+fn sleeve_tilt(a: f64, p: f64, h: f64) -> (f64, f64) {
+    let mut b = h / 2.0;
+    let mut theta = 0.0;
+    for _ in 0..50 {
+        // −a cos θ + b sin θ = −p  ⇔  R sin(θ − α) = −p with R = √(a²+b²), α = atan(a/b).
+        let r = a.hypot(b);
+        theta = (a / b).atan() - (p / r).asin();
+        // The contacts' height difference is 2 (a sin θ + b cos θ) = h.
+        b = (h / 2.0 - a * theta.sin()) / theta.cos();
+    }
+    (theta, b)
+}
+
+/// A small woodpecker: body, head with the beak towards the pole, an eye.
+fn bird(s: &mut Svg, x: f64, y: f64, r: f64) {
+    s.raw(&format!(
+        "<ellipse cx=\"{}\" cy=\"{}\" rx=\"{}\" ry=\"{}\" fill=\"{INK}\" fill-opacity=\"0.15\" \
+         stroke=\"{INK}\" stroke-width=\"1.6\"/>",
+        c(x + 4.0),
+        c(y + 4.0),
+        c(r * 1.2),
+        c(r * 0.8)
+    ));
+    let (hx, hy) = (x - r * 0.75, y - r * 0.7);
+    s.circle_styled(hx, hy, r * 0.5, INK, 0.15, 1.6);
+    s.polygon(
+        &[
+            (hx - r * 0.45, hy - 3.0),
+            (hx - r * 1.25, hy + 1.0),
+            (hx - r * 0.45, hy + 4.0),
+        ],
+        INK,
+        0.6,
+        1.2,
+    );
+    s.circle(hx - 2.0, hy - 2.0, 1.8, INK);
+    // A red crest, the toy's colour.
+    s.raw(&format!(
+        "<path d=\"M{} {} q{} {} {} {}\" fill=\"none\" stroke=\"{VERMILLION}\" stroke-width=\"3\"/>",
+        c(hx - 2.0),
+        c(hy - r * 0.5),
+        c(r * 0.4),
+        c(-r * 0.5),
+        c(r * 0.8),
+        c(r * 0.15)
+    ));
+}
+
+/// A coordinate rounded to 0.1 px, without a trailing ".0" and never "-0".
+fn c(v: f64) -> String {
+    let r = (v * 10.0).round() / 10.0;
+    let r = if r == 0.0 { 0.0 } else { r };
+    let t = format!("{r:.1}");
+    t.strip_suffix(".0").map(str::to_string).unwrap_or(t)
+}
+
+/// A number to four significant digits, trailing zeros dropped, with a true minus sign.
+fn num(v: f64) -> String {
+    if !v.is_finite() {
+        return "—".to_string();
+    }
+    if v == 0.0 {
+        return "0".to_string();
+    }
+    let exponent = v.abs().log10().floor() as i32;
+    let decimals = (3 - exponent).clamp(0, 12) as usize;
+    let mut t = format!("{v:.decimals$}");
+    if t.contains('.') {
+        t = t.trim_end_matches('0').trim_end_matches('.').to_string();
+    }
+    if t == "-0" {
+        return "0".to_string();
+    }
+    t.replace('-', "\u{2212}")
+}
+
+/// A value with its unit, separated by a space.
+fn plain(v: f64, unit: &str) -> String {
+    format!("{} {unit}", num(v))
+}
+
+/// A force in N, shown in mN.
+fn mn(newton: f64) -> String {
+    plain(newton * 1e3, "mN")
+}
+
+/// A mass in kg, shown in g.
+fn grams(kg: f64) -> String {
+    plain(kg * 1e3, "g")
+}
+
+/// A time in s, shown in ms.
+fn ms(s: f64) -> String {
+    plain(s * 1e3, "ms")
+}
+
+/// A length already in mm.
+fn mm_text(mm: f64) -> String {
+    plain(mm, "mm")
+}
+
+/// XML escaping of text content and attribute values.
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// A point of the SVG user space (px).
+type Point = (f64, f64);
+
+/// The SVG being written: its height, and the elements so far.
+struct Svg {
+    height: f64,
+    out: String,
+}
+
+impl Svg {
+    fn new(height: f64) -> Self {
+        Self {
+            height,
+            out: String::new(),
+        }
+    }
+
+    /// The root element with its title and description.
+    fn open(&mut self, title: &str, desc: &str) {
+        let _ = write!(
+            self.out,
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} {h}\" width=\"{w}\" \
+             height=\"{h}\" preserveAspectRatio=\"xMidYMid meet\" role=\"img\" \
+             style=\"max-width:100%;height:auto;color-scheme:light dark\" \
+             font-family=\"sans-serif\" fill=\"{INK}\">\n<title>{title}</title>\n<desc>{desc}</desc>\n",
+            w = c(WIDTH),
+            h = c(self.height),
+            title = escape(title),
+            desc = escape(desc),
+        );
+    }
+
+    fn finish(mut self) -> String {
+        self.out.push_str("</svg>\n");
+        self.out
+    }
+
+    fn raw(&mut self, element: &str) {
+        self.out.push_str(element);
+        self.out.push('\n');
+    }
+
+    fn line(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
+        let _ = writeln!(
+            self.out,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{stroke}\" stroke-width=\"{}\"/>",
+            c(x1),
+            c(y1),
+            c(x2),
+            c(y2),
+            c(width)
+        );
+    }
+
+    fn dashed(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
+        let _ = writeln!(
+            self.out,
+            "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{stroke}\" stroke-width=\"{}\" \
+             stroke-dasharray=\"5 4\" stroke-opacity=\"0.7\"/>",
+            c(x1),
+            c(y1),
+            c(x2),
+            c(y2),
+            c(width)
+        );
+    }
+
+    /// A body: outlined and filled in the ink at low opacity.
+    fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, opacity: f64, stroke: f64) {
+        let _ = writeln!(
+            self.out,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{INK}\" fill-opacity=\"{}\" \
+             stroke=\"{INK}\" stroke-width=\"{}\"/>",
+            c(x),
+            c(y),
+            c(w),
+            c(h),
+            opacity,
+            c(stroke)
+        );
+    }
+
+    /// A translucent band without outline (a range of positions).
+    fn band(&mut self, x: f64, y: f64, w: f64, h: f64, fill: &str) {
+        let _ = writeln!(
+            self.out,
+            "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{fill}\" fill-opacity=\"0.22\"/>",
+            c(x),
+            c(y),
+            c(w),
+            c(h)
+        );
+    }
+
+    fn polygon(&mut self, points: &[(f64, f64)], ink: &str, opacity: f64, stroke: f64) {
+        let pts: Vec<String> = points
+            .iter()
+            .map(|(x, y)| format!("{},{}", c(*x), c(*y)))
+            .collect();
+        let _ = writeln!(
+            self.out,
+            "<polygon points=\"{}\" fill=\"{ink}\" fill-opacity=\"{}\" stroke=\"{ink}\" \
+             stroke-width=\"{}\" stroke-linejoin=\"round\"/>",
+            pts.join(" "),
+            opacity,
+            c(stroke)
+        );
+    }
+
+    fn circle(&mut self, x: f64, y: f64, r: f64, fill: &str) {
+        let _ = writeln!(
+            self.out,
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\"/>",
+            c(x),
+            c(y),
+            c(r)
+        );
+    }
+
+    fn circle_styled(&mut self, x: f64, y: f64, r: f64, ink: &str, opacity: f64, stroke: f64) {
+        let _ = writeln!(
+            self.out,
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{ink}\" fill-opacity=\"{}\" \
+             stroke=\"{ink}\" stroke-width=\"{}\"/>",
+            c(x),
+            c(y),
+            c(r),
+            opacity,
+            c(stroke)
+        );
+    }
+
+    /// An arrow from `from` to its head at `to`: a shaft and a filled head; in a
+    /// `<g class="…">` when given a class, so that tests and stylesheets can find it.
+    fn arrow(&mut self, class: Option<&str>, from: Point, to: Point, color: &str, width: f64) {
+        let ((x1, y1), (x2, y2)) = (from, to);
+        let (dx, dy) = (x2 - x1, y2 - y1);
+        let len = dx.hypot(dy);
+        if len == 0.0 {
+            return;
+        }
+        let (ux, uy) = (dx / len, dy / len);
+        let head = (HEAD_LEN + width).min(len);
+        let half = HEAD_HALF + width / 2.0;
+        let (bx, by) = (x2 - ux * head, y2 - uy * head);
+        if let Some(class) = class {
+            let _ = writeln!(self.out, "<g class=\"{class}\">");
+        }
+        self.line(x1, y1, bx + ux * 0.5, by + uy * 0.5, color, width);
+        self.head(to, (bx, by), half, color);
+        if class.is_some() {
+            self.out.push_str("</g>\n");
+        }
+    }
+
+    /// A filled triangular head with its tip at `tip` and its base centred on `base`.
+    fn head(&mut self, tip: Point, base: Point, half: f64, color: &str) {
+        let len = (tip.0 - base.0).hypot(tip.1 - base.1);
+        let (ux, uy) = ((tip.0 - base.0) / len, (tip.1 - base.1) / len);
+        let _ = writeln!(
+            self.out,
+            "<polygon points=\"{},{} {},{} {},{}\" fill=\"{color}\"/>",
+            c(tip.0),
+            c(tip.1),
+            c(base.0 - uy * half),
+            c(base.1 + ux * half),
+            c(base.0 + uy * half),
+            c(base.1 - ux * half)
+        );
+    }
+
+    /// A dimension line: thin, a head at each end, in a `<g>` (class `dimension` unless
+    /// given) whose `data-length` is the distance measured (px).
+    fn dimension(&mut self, class: Option<&str>, from: Point, to: Point, color: &str, width: f64) {
+        let ((x1, y1), (x2, y2)) = (from, to);
+        let (dx, dy) = (x2 - x1, y2 - y1);
+        let len = dx.hypot(dy);
+        if len == 0.0 {
+            return;
+        }
+        let (ux, uy) = (dx / len, dy / len);
+        let head = 8.0_f64.min(len / 2.0);
+        let _ = writeln!(
+            self.out,
+            "<g class=\"{}\" data-length=\"{}\">",
+            class.unwrap_or("dimension"),
+            c(len)
+        );
+        self.line(
+            x1 + ux * head,
+            y1 + uy * head,
+            x2 - ux * head,
+            y2 - uy * head,
+            color,
+            width,
+        );
+        self.head(from, (x1 + ux * head, y1 + uy * head), 3.5, color);
+        self.head(to, (x2 - ux * head, y2 - uy * head), 3.5, color);
+        self.out.push_str("</g>\n");
+    }
+
+    /// A vertical coil spring from y1 down to y2: straight ends, `coils` zigzags.
+    fn spring(&mut self, x: f64, y1: f64, y2: f64, coils: usize, half: f64, color: &str) {
+        let end = 10.0_f64.min((y2 - y1) / 4.0);
+        let (a, b) = (y1 + end, y2 - end);
+        let n = 2 * coils.max(1);
+        let step = (b - a) / n as f64;
+        let mut pts = vec![(x, y1), (x, a)];
+        for i in 0..n {
+            let side = if i % 2 == 0 { -half } else { half };
+            pts.push((x + side, a + step * (i as f64 + 0.5)));
+        }
+        pts.push((x, b));
+        pts.push((x, y2));
+        let pts: Vec<String> = pts
+            .iter()
+            .map(|(x, y)| format!("{},{}", c(*x), c(*y)))
+            .collect();
+        let _ = writeln!(
+            self.out,
+            "<polyline class=\"spring\" points=\"{}\" fill=\"none\" stroke=\"{color}\" \
+             stroke-width=\"2.2\" stroke-linejoin=\"round\"/>",
+            pts.join(" ")
+        );
+    }
+
+    /// A text label. `_{…}` writes a subscript.
+    fn text(&mut self, x: f64, y: f64, anchor: &str, size: f64, label: &str) {
+        let _ = write!(
+            self.out,
+            "<text x=\"{}\" y=\"{}\" text-anchor=\"{anchor}\" font-size=\"{}\" xml:space=\"preserve\">",
+            c(x),
+            c(y),
+            c(size)
+        );
+        let shift = c(size * 0.3);
+        let mut rest = label;
+        let mut lowered = false;
+        while !rest.is_empty() {
+            match rest.find("_{") {
+                Some(i) => {
+                    let (before, after) = rest.split_at(i);
+                    push_run(&mut self.out, before, &mut lowered, false, &shift);
+                    let close = after.find('}').unwrap_or(after.len());
+                    push_run(&mut self.out, &after[2..close], &mut lowered, true, &shift);
+                    rest = after.get(close + 1..).unwrap_or("");
+                }
+                None => {
+                    push_run(&mut self.out, rest, &mut lowered, false, &shift);
+                    rest = "";
+                }
+            }
+        }
+        self.out.push_str("</text>\n");
+    }
+}
+
+/// Writes one run of a label: plain, or a subscript (smaller, lowered); the baseline comes back
+/// with the first plain run after a subscript.
+fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &str) {
+    if run.is_empty() {
+        return;
+    }
+    let text = escape(run);
+    match (sub, *lowered) {
+        (true, false) => {
+            let _ = write!(
+                out,
+                "<tspan dy=\"{shift}\" font-size=\"75%\">{text}</tspan>"
+            );
+            *lowered = true;
+        }
+        (true, true) => {
+            let _ = write!(out, "<tspan font-size=\"75%\">{text}</tspan>");
+        }
+        (false, true) => {
+            let _ = write!(out, "<tspan dy=\"-{shift}\">{text}</tspan>");
+            *lowered = false;
+        }
+        (false, false) => out.push_str(&text),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn both_models(phase: Phase) -> [String; 2] {
+        [
+            pulled_mass(&PulledMassParams::default(), phase),
+            woodpecker(&WoodpeckerParams::default(), phase),
+        ]
+    }
+
+    /// The text of an element and its descendants, tspans joined.
+    fn text_of(node: roxmltree::Node) -> String {
+        node.descendants()
+            .filter(|n| n.is_text())
+            .filter_map(|n| n.text())
+            .collect()
+    }
+
+    /// Every `<text>` of the sketch, as read.
+    fn texts(svg: &str) -> Vec<String> {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        doc.descendants()
+            .filter(|n| n.has_tag_name("text"))
+            .map(text_of)
+            .collect()
+    }
+
+    fn child_text(svg: &str, tag: &str) -> String {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        let node = doc.root_element().children().find(|n| n.has_tag_name(tag));
+        node.map(text_of).unwrap_or_default()
+    }
+
+    /// Length of the first arrow shaft in `<g class="{class}">`, plus its head.
+    fn arrow_length(svg: &str, class: &str) -> f64 {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        let g = doc
+            .descendants()
+            .find(|n| n.attribute("class") == Some(class))
+            .unwrap_or_else(|| panic!("no {class}"));
+        let line = g.children().find(|n| n.has_tag_name("line")).unwrap();
+        let head = g.children().find(|n| n.has_tag_name("polygon")).unwrap();
+        let num = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
+        let tip: Vec<f64> = head
+            .attribute("points")
+            .unwrap()
+            .split([' ', ','])
+            .take(2)
+            .map(|v| v.parse().unwrap())
+            .collect();
+        (tip[0] - num(line, "x1")).hypot(tip[1] - num(line, "y1"))
+    }
+
+    fn dimension_length(svg: &str, class: &str) -> f64 {
+        let doc = roxmltree::Document::parse(svg).unwrap();
+        let g = doc
+            .descendants()
+            .find(|n| n.attribute("class") == Some(class))
+            .unwrap_or_else(|| panic!("no {class}"));
+        g.attribute("data-length").unwrap().parse().unwrap()
+    }
+
+    #[test]
+    fn sketches_are_well_formed_accessible_and_responsive() {
+        let odd = WoodpeckerParams {
+            l: 0.025,
+            h: 0.004,
+            z0: -0.002,
+            d0: 0.012,
+            ..Default::default()
+        };
+        let immediate = PulledMassParams {
+            force: 0.6,
+            ..Default::default()
+        };
+        for phase in [Phase::Stuck, Phase::Slipping] {
+            let mut all = both_models(phase).to_vec();
+            all.push(woodpecker(&odd, phase));
+            all.push(pulled_mass(&immediate, phase));
+            for svg in all {
+                let doc = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{e}\n{svg}"));
+                let root = doc.root_element();
+                assert!(root.has_tag_name("svg"));
+                assert_eq!(root.attribute("role"), Some("img"));
+                assert_eq!(root.attribute("font-family"), Some("sans-serif"));
+                assert!(root.attribute("viewBox").unwrap().starts_with("0 0 900 "));
+                assert!(root.attribute("style").unwrap().contains("max-width:100%"));
+                // <title> and <desc> come first, so that readers find them.
+                let first: Vec<&str> = root
+                    .children()
+                    .filter(|n| n.is_element())
+                    .take(2)
+                    .map(|n| n.tag_name().name())
+                    .collect();
+                assert_eq!(first, ["title", "desc"]);
+                assert!(!svg.contains("NaN") && !svg.contains("inf"), "{svg}");
+            }
+        }
+    }
+
+    #[test]
+    fn coordinates_are_rounded_to_a_tenth_of_a_pixel() {
+        for svg in both_models(Phase::Slipping) {
+            let doc = roxmltree::Document::parse(&svg).unwrap();
+            for node in doc.descendants().filter(|n| n.is_element()) {
+                for attr in node.attributes() {
+                    let coordinate = matches!(
+                        attr.name(),
+                        "x" | "y"
+                            | "x1"
+                            | "y1"
+                            | "x2"
+                            | "y2"
+                            | "cx"
+                            | "cy"
+                            | "r"
+                            | "rx"
+                            | "ry"
+                            | "width"
+                            | "height"
+                            | "points"
+                            | "d"
+                            | "dy"
+                            | "data-length"
+                    );
+                    if !coordinate {
+                        continue;
+                    }
+                    for token in attr
+                        .value()
+                        .split(|ch: char| !(ch.is_ascii_digit() || ch == '.'))
+                        .filter(|t| !t.is_empty())
+                    {
+                        let decimals = token.split('.').nth(1).map_or(0, str::len);
+                        assert!(decimals <= 1, "{}={}", attr.name(), attr.value());
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn title_and_description_carry_the_parameters() {
+        let [pulled, wood] = both_models(Phase::Slipping);
+        let desc = child_text(&pulled, "desc");
+        for value in [
+            "m = 60 g",
+            "F = 180 mN",
+            "k = 45 N/m",
+            "T = 229.4 ms",
+            "μs = 0.4",
+            "μd = 0.25",
+        ] {
+            assert!(desc.contains(value), "{value}: {desc}");
+        }
+        // At the slip onset N = F/μs = 450 mN and the friction is μd N = 112.5 mN.
+        assert!(desc.contains("N = 450 mN"), "{desc}");
+        assert!(desc.contains("μd N = 112.5 mN"), "{desc}");
+        assert!(child_text(&pulled, "title").contains("Pulled mass, slipping"));
+
+        let desc = child_text(&wood, "desc");
+        for value in [
+            "m_S = 6 g",
+            "W_S = 58.86 mN",
+            "k = 20 N/m",
+            "m_W = 14 g",
+            "l = 16 mm",
+            "h = 7 mm",
+            "λ = l/h = 2.286",
+            "z0 = 7 mm",
+            "d0 = 9 mm",
+            "from −40 mN to 320 mN",
+            "N reaches 731.4 mN",
+            "μs = 0.65",
+            "μd = 0.32",
+        ] {
+            assert!(desc.contains(value), "{value}: {desc}");
+        }
+        assert!(child_text(&wood, "title").contains("Falling woodpecker, slipping"));
+    }
+
+    #[test]
+    fn the_phase_decides_the_friction_law_on_the_labels() {
+        for (phase, want, not) in [
+            (Phase::Stuck, "≤ μs N", "= μd N"),
+            (Phase::Slipping, "= μd N", "≤ μs N"),
+        ] {
+            for svg in both_models(phase) {
+                let labels = texts(&svg);
+                assert!(
+                    labels.iter().any(|t| t.contains(want)),
+                    "{phase:?}: {labels:?}"
+                );
+                assert!(
+                    !labels.iter().any(|t| t.contains(not)),
+                    "{phase:?}: {labels:?}"
+                );
+                let v0 = labels.iter().any(|t| t == "v = 0");
+                assert_eq!(v0, phase == Phase::Stuck);
+            }
+        }
+    }
+
+    #[test]
+    fn labels_show_subscripts_and_units_people_think_in() {
+        let [pulled, wood] = both_models(Phase::Stuck);
+        let labels = texts(&pulled);
+        for want in [
+            "m = 60 g",
+            "F = 180 mN",
+            "k = 45 N/m",
+            "W = mg = 588.6 mN",
+            "N = 1177 mN at t = 0",
+        ] {
+            assert!(labels.iter().any(|t| t == want), "{want}: {labels:?}");
+        }
+        let labels = texts(&wood);
+        for want in [
+            "l = 16 mm",
+            "h = 7 mm",
+            "z0 = 7 mm (offset)",
+            "d0 = 9 mm (amplitude)",
+            "WS = 58.86 mN",
+        ] {
+            assert!(labels.iter().any(|t| t == want), "{want}: {labels:?}");
+        }
+        // The subscript is a lowered, smaller tspan, and the baseline comes back after it.
+        assert!(
+            wood.contains("W<tspan dy=\"4.8\" font-size=\"75%\">S</tspan><tspan dy=\"-4.8\"> = ")
+        );
+    }
+
+    #[test]
+    fn the_same_parameters_give_the_same_bytes() {
+        for phase in [Phase::Stuck, Phase::Slipping] {
+            assert_eq!(both_models(phase), both_models(phase));
+        }
+    }
+
+    #[test]
+    fn drawings_scale_with_the_parameters() {
+        let short = WoodpeckerParams {
+            l: 0.012,
+            ..Default::default()
+        };
+        let base = woodpecker(&WoodpeckerParams::default(), Phase::Stuck);
+        let lever = |svg: &str| dimension_length(svg, "lever");
+        assert!(lever(&base) > lever(&woodpecker(&short, Phase::Stuck)) + 40.0);
+        // 14 px/mm: l = 16 mm is 224 px, h = 7 mm is 98 px.
+        assert!((lever(&base) - 224.0).abs() < 0.11, "{}", lever(&base));
+        assert!((dimension_length(&base, "dim-h") - 98.0).abs() < 0.2);
+        let taller = WoodpeckerParams {
+            h: 0.009,
+            ..Default::default()
+        };
+        let taller = woodpecker(&taller, Phase::Stuck);
+        assert!(dimension_length(&taller, "dim-h") > dimension_length(&base, "dim-h") + 20.0);
+        let wider = WoodpeckerParams {
+            d0: 0.011,
+            ..Default::default()
+        };
+        let d0 = |svg: &str| dimension_length(svg, "dim-d0");
+        assert!(d0(&woodpecker(&wider, Phase::Stuck)) > d0(&base));
+
+        // The pulled mass: forces to one scale, so twice the pull is a longer arrow, and N at
+        // t = 0 (2W) is twice W.
+        let pulled = pulled_mass(&PulledMassParams::default(), Phase::Stuck);
+        let harder = PulledMassParams {
+            force: 0.36,
+            ..Default::default()
+        };
+        let harder = pulled_mass(&harder, Phase::Stuck);
+        let f = |svg: &str| arrow_length(svg, "force-f");
+        assert!((f(&harder) / f(&pulled) - 2.0).abs() < 0.02);
+        let ratio = arrow_length(&pulled, "force-n") / arrow_length(&pulled, "force-w");
+        assert!((ratio - 2.0).abs() < 0.01, "{ratio}");
+    }
+
+    #[test]
+    fn the_sleeve_touches_the_pole_at_two_points_h_apart() {
+        for (a, p, h) in [(14.5, 12.0, 98.0), (14.5, 12.0, 24.0), (14.5, 12.0, 40.0)] {
+            let (theta, b) = sleeve_tilt(a, p, h);
+            let (sn, cs) = theta.sin_cos();
+            assert!(theta > 0.0 && theta < 0.5, "{theta}");
+            // Top-left inner corner on the pole's left face; contacts h apart vertically.
+            assert!((-a * cs + b * sn + p).abs() < 1e-9);
+            assert!((2.0 * (a * sn + b * cs) - h).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn numbers_are_short_and_use_a_true_minus() {
+        assert_eq!(num(0.18 * 1e3), "180");
+        assert_eq!(num(588.6), "588.6");
+        assert_eq!(num(1177.2), "1177");
+        assert_eq!(num(16.0 / 7.0), "2.286");
+        assert_eq!(num(-40.000_000_000_01), "−40");
+        assert_eq!(num(0.0), "0");
+        assert_eq!(c(-0.04), "0");
+        assert_eq!(c(12.34), "12.3");
+        assert_eq!(c(12.0), "12");
+        assert_eq!(mn(0.05886), "58.86 mN");
+    }
+
+    #[test]
+    fn default_pulled_mass_snapshot() {
+        insta::assert_snapshot!(
+            "pulled_mass_stuck",
+            pulled_mass(&PulledMassParams::default(), Phase::Stuck)
+        );
+        insta::assert_snapshot!(
+            "pulled_mass_slipping",
+            pulled_mass(&PulledMassParams::default(), Phase::Slipping)
+        );
+    }
+
+    #[test]
+    fn default_woodpecker_snapshot() {
+        insta::assert_snapshot!(
+            "woodpecker_stuck",
+            woodpecker(&WoodpeckerParams::default(), Phase::Stuck)
+        );
+        insta::assert_snapshot!(
+            "woodpecker_slipping",
+            woodpecker(&WoodpeckerParams::default(), Phase::Slipping)
+        );
+    }
+}
