@@ -103,6 +103,57 @@ impl<P> ParamSpec<P> {
     }
 }
 
+/// The static friction coefficient μs, shared by every model with dry friction.
+pub const fn static_friction<P>(get: fn(&P) -> Option<f64>, set: fn(&mut P, f64)) -> ParamSpec<P> {
+    ParamSpec {
+        key: "mu_s",
+        symbol: "μs",
+        tex: r"\mu_s",
+        what: "static friction",
+        unit: "",
+        display: ("", 1.0),
+        rule: Rule::StaticFriction,
+        help: "Static friction coefficient μs",
+        unset: "",
+        get,
+        set,
+    }
+}
+
+/// The dynamic friction coefficient μd (at most μs).
+pub const fn dynamic_friction<P>(get: fn(&P) -> Option<f64>, set: fn(&mut P, f64)) -> ParamSpec<P> {
+    ParamSpec {
+        key: "mu_d",
+        symbol: "μd",
+        tex: r"\mu_d",
+        what: "dynamic friction",
+        unit: "",
+        display: ("", 1.0),
+        rule: Rule::DynamicFriction,
+        help: "Dynamic friction coefficient μd, 0 < μd ≤ μs",
+        unset: "",
+        get,
+        set,
+    }
+}
+
+/// The gravitational acceleration g.
+pub const fn gravity<P>(get: fn(&P) -> Option<f64>, set: fn(&mut P, f64)) -> ParamSpec<P> {
+    ParamSpec {
+        key: "g",
+        symbol: "g",
+        tex: "g",
+        what: "",
+        unit: "m/s²",
+        display: ("m/s²", 1.0),
+        rule: Rule::Positive,
+        help: "Gravitational acceleration g in m/s²",
+        unset: "",
+        get,
+        set,
+    }
+}
+
 /// A parameter that takes one of a few named values (the woodpecker's ω and counterpart).
 pub struct ChoiceSpec<P> {
     /// Key in scenario files and the flag without dashes.

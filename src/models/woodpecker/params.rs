@@ -4,7 +4,9 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
-use crate::models::param::{validate_all, ChoiceSpec, ParamSpec, Rule};
+use crate::models::param::{
+    dynamic_friction, gravity, static_friction, validate_all, ChoiceSpec, ParamSpec, Rule,
+};
 use crate::models::woodpecker::formula::Counterpart;
 use crate::params::G_STANDARD;
 
@@ -139,32 +141,8 @@ const fn mass(
 
 /// Every numeric parameter of the woodpecker, in the order of flags, tables and validation.
 pub const PARAMS: &[ParamSpec<WoodpeckerParams>] = &[
-    ParamSpec {
-        key: "mu_s",
-        symbol: "μs",
-        tex: r"\mu_s",
-        what: "static friction",
-        unit: "",
-        display: ("", 1.0),
-        rule: Rule::StaticFriction,
-        help: "Static friction coefficient μs",
-        unset: "",
-        get: |p| Some(p.mu_s),
-        set: |p, v| p.mu_s = v,
-    },
-    ParamSpec {
-        key: "mu_d",
-        symbol: "μd",
-        tex: r"\mu_d",
-        what: "dynamic friction",
-        unit: "",
-        display: ("", 1.0),
-        rule: Rule::DynamicFriction,
-        help: "Dynamic friction coefficient μd, 0 < μd ≤ μs",
-        unset: "",
-        get: |p| Some(p.mu_d),
-        set: |p, v| p.mu_d = v,
-    },
+    static_friction(|p| Some(p.mu_s), |p, v| p.mu_s = v),
+    dynamic_friction(|p| Some(p.mu_d), |p, v| p.mu_d = v),
     ParamSpec {
         key: "k",
         symbol: "k",
@@ -233,19 +211,7 @@ pub const PARAMS: &[ParamSpec<WoodpeckerParams>] = &[
         |p| Some(p.d0),
         |p, v| p.d0 = v,
     ),
-    ParamSpec {
-        key: "g",
-        symbol: "g",
-        tex: "g",
-        what: "",
-        unit: "m/s²",
-        display: ("m/s²", 1.0),
-        rule: Rule::Positive,
-        help: "Gravitational acceleration g in m/s²",
-        unset: "",
-        get: |p| Some(p.g),
-        set: |p, v| p.g = v,
-    },
+    gravity(|p| Some(p.g), |p, v| p.g = v),
     ParamSpec {
         key: "lever",
         symbol: "λ",
