@@ -29,6 +29,22 @@ pub fn validate_periods(periods: u32) -> Result<()> {
     }
 }
 
+/// `text` on one line: runs of white space (line breaks included) become one space, other
+/// control characters are dropped.
+pub fn one_line(text: &str) -> String {
+    without_controls(text)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// `text` without control characters other than line breaks and tabs.
+fn without_controls(text: &str) -> String {
+    text.chars()
+        .filter(|c| !c.is_control() || matches!(c, '\n' | '\t'))
+        .collect()
+}
+
 /// A scenario file: a model, a title, optionally the number of periods, and the parameters
 /// (missing ones take the model's defaults).
 #[derive(Clone, Debug, PartialEq, Deserialize)]
@@ -56,8 +72,13 @@ impl Scenario {
     }
 
     /// Parses scenario text; `path` only names the file in errors.
+    /// The title becomes one line and both texts lose their control characters (a NUL or an
+    /// escape sequence must not reach a page or a terminal).
     pub fn parse(text: &str, path: &Path) -> Result<Self> {
-        toml::from_str(text).map_err(|e| toml_error(&e, text, path))
+        let mut scenario: Self = toml::from_str(text).map_err(|e| toml_error(&e, text, path))?;
+        scenario.title = one_line(&scenario.title);
+        scenario.description = without_controls(&scenario.description);
+        Ok(scenario)
     }
 
     /// The model with the file's parameters (defaults for keys not given).

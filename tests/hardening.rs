@@ -230,3 +230,54 @@ fn huge_parameters_are_printed_short() {
     assert!(longest <= 200, "{longest} characters");
     assert!(stdout.contains("F = 1e308 N"), "{stdout}");
 }
+
+#[test]
+fn scenario_text_reaches_markdown_as_literal_text_on_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let title =
+        r#"<script>alert(1)</script> \"><img src=x onerror=alert(2)> *x* | y\nz\u0007\u0000"#;
+    let text = format!(
+        "model = \"pulled-mass\"\ntitle = \"{title}\"\ndescription = \"[link](javascript:x) \\u001b[31m red\"\n"
+    );
+    let file = write(dir.path(), "my set |<b>.toml", &text);
+    let out = dir.path().join("out");
+    stickslip()
+        .arg("report")
+        .arg(&file)
+        .args(["--format", "html,md", "--out"])
+        .arg(&out)
+        .assert()
+        .success();
+    // The page name keeps letters and digits only.
+    let page = out.join("my-set---b-.md");
+    let scene = std::fs::read_to_string(&page).unwrap();
+    let index = std::fs::read_to_string(out.join("index.md")).unwrap();
+    let html = std::fs::read_to_string(out.join("my-set---b-.html")).unwrap();
+    for (name, text) in [("scene", &scene), ("index", &index), ("html", &html)] {
+        for raw in ["<script", "<img", "\u{7}", "\u{0}", "\u{1b}"] {
+            assert!(!text.contains(raw), "{name} holds {raw:?}");
+        }
+    }
+    assert!(
+        scene.starts_with("# &lt;script&gt;alert(1)&lt;/script&gt;"),
+        "{scene}"
+    );
+    assert!(
+        scene.contains(r"\*x\* \| y z"),
+        "the title on one line, markup escaped"
+    );
+    assert!(
+        scene.contains(r"\[link\](javascript:x)"),
+        "no link from a description"
+    );
+    // The index row keeps its five cells: the title's pipe is escaped.
+    let row = index
+        .lines()
+        .find(|l| l.contains("my-set---b-.md"))
+        .unwrap();
+    assert_eq!(
+        row.matches('|').count() - row.matches(r"\|").count(),
+        6,
+        "{row}"
+    );
+}

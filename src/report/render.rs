@@ -73,13 +73,54 @@ pub(crate) fn markdown_cell(
     value: &tera::Value,
     _: &std::collections::HashMap<String, tera::Value>,
 ) -> tera::Result<tera::Value> {
-    let text = match value {
+    Ok(tera::Value::String(
+        filter_text(value).replace('|', "\\|").replace('\n', " "),
+    ))
+}
+
+/// Tera filter `md`: text from the user (a scenario's title or description, a file name)
+/// shown as literal text in Markdown: [`markdown_literal`].
+pub(crate) fn markdown_text(
+    value: &tera::Value,
+    _: &std::collections::HashMap<String, tera::Value>,
+) -> tera::Result<tera::Value> {
+    Ok(tera::Value::String(markdown_literal(&filter_text(value))))
+}
+
+/// The text of a template value: a string as it is, anything else as JSON.
+fn filter_text(value: &tera::Value) -> String {
+    match value {
         tera::Value::String(s) => s.clone(),
         other => other.to_string(),
-    };
-    Ok(tera::Value::String(
-        text.replace('|', "\\|").replace('\n', " "),
-    ))
+    }
+}
+
+/// `text` as literal Markdown on one line: HTML's `<`, `>` and `&` as entities (GitHub would
+/// otherwise keep raw HTML such as `<img onerror=…>`), the characters that make inline markup
+/// (emphasis, code, links, strike-through, table cells) backslash-escaped, as is a first
+/// character that would start a heading or a list; line breaks become spaces and other
+/// control characters are dropped.
+pub fn markdown_literal(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for (i, c) in text.chars().enumerate() {
+        match c {
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            '\\' | '`' | '*' | '_' | '[' | ']' | '|' | '~' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '#' | '-' | '+' | '=' if i == 0 => {
+                out.push('\\');
+                out.push(c);
+            }
+            '\n' | '\r' | '\t' | '\u{2028}' | '\u{2029}' => out.push(' '),
+            c if c.is_control() => {}
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 /// The report's templates and partials plus `extra` ones (name, source).
@@ -87,6 +128,7 @@ pub(crate) fn templates(extra: &[(&str, &str)]) -> Result<Tera> {
     let mut tera = Tera::default();
     tera.autoescape_on(vec![".html"]);
     tera.register_filter("cell", markdown_cell);
+    tera.register_filter("md", markdown_text);
     tera.add_raw_templates(TEMPLATES.iter().chain(extra).copied())
         .map_err(|e| template_error("(all)", &e))?;
     Ok(tera)

@@ -105,7 +105,7 @@ impl Scene {
         let scenario = Scenario::load(path)?;
         let id = path
             .file_stem()
-            .and_then(|s| s.to_str())
+            .map(|s| page_name(&s.to_string_lossy()))
             .filter(|s| !s.is_empty())
             .ok_or_else(|| Error::Scenario {
                 path: path.display().to_string(),
@@ -113,7 +113,7 @@ impl Scene {
             })?;
         let standard = with_model!(&scenario.model, p => p.standard_scene());
         let (figures, claims, caption) = (standard.figures, standard.claims, standard.caption);
-        Self::from_scenario(id, &scenario, path, caption, figures, claims)
+        Self::from_scenario(&id, &scenario, path, caption, figures, claims)
     }
 
     /// Scenes from the user's scenario files, refused when two would write the same pages (their
@@ -156,6 +156,21 @@ impl Scene {
         }
         Ok(out)
     }
+}
+
+/// The page name of a scenario file's stem: letters, digits, `-`, `_` and `.` kept, any other
+/// character (space, `|`, `<`, `#`, `%`, a control character…) as `-`, so that the name is
+/// safe in a file name, a URL and a Markdown link.
+pub fn page_name(stem: &str) -> String {
+    stem.chars()
+        .map(|c| {
+            if c.is_alphanumeric() || matches!(c, '-' | '_' | '.') {
+                c
+            } else {
+                '-'
+            }
+        })
+        .collect()
 }
 
 /// Page names of the report itself, which no scene may take (compared in lower case).
