@@ -61,7 +61,7 @@ proptest! {
         let e = evaluate(&p, 8).unwrap();
         prop_assert_eq!(e.closed_form.regime, expected);
         for c in &e.checks {
-            prop_assert!(c.pass, "{:?} failed for {:?}: {:?}", c.quantity, p, c);
+            prop_assert!(c.passed(), "{:?} failed for {:?}: {:?}", c.quantity, p, c);
         }
         // Each regime checks what it should.
         let has = |q: &str| e.checks.iter().any(|c| c.quantity.id() == q);

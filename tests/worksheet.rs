@@ -74,7 +74,7 @@ fn measured(checks: &[stickslip::results::Check], quantity: &str) -> f64 {
         .iter()
         .find(|c| c.quantity.id() == quantity)
         .unwrap_or_else(|| panic!("no check of {quantity}"));
-    assert!(c.pass, "{c:?}");
+    assert!(c.passed(), "{c:?}");
     match c.numeric {
         CheckValue::Number(x) => x,
         CheckValue::Text(ref t) => panic!("{quantity}: {t}"),

@@ -5,11 +5,30 @@ use std::fmt;
 
 use serde::Serialize;
 
+use crate::engine::IntegrationRegime;
 use crate::models::woodpecker::quantity as wp;
+use crate::params::DEFAULT_PERIODS;
 use crate::results::quantity::{AnyKey, Quantity, Registry};
+use crate::results::summary::Summary;
 
 /// Relative tolerance of every numeric check (physics.md §4: observed ≤ 4e-13).
 pub const TOLERANCE: f64 = 1e-9;
+
+/// Relative width of the band around a regime boundary in which the closed form and the
+/// integration may tell the regime apart by rounding alone (a stick at φ_c is a tangency,
+/// classified correctly down to ~1e-13).
+pub const BOUNDARY_BAND: f64 = 1e-11;
+
+/// Why the steady state of a run of `periods` cannot be seen: no periodic motion found in a
+/// run shorter than the standard one ([`DEFAULT_PERIODS`]).
+pub fn unsettled(periods: u32, summary: &Summary) -> Option<String> {
+    (summary.regime == IntegrationRegime::NotPeriodic && periods < DEFAULT_PERIODS).then(|| {
+        format!(
+            "{periods} period(s) integrated: too few to see the motion settle \
+             (--periods {DEFAULT_PERIODS} or more)"
+        )
+    })
+}
 
 /// |a − b| / max(|a|, |b|) (0 when both vanish).
 pub fn rel_diff(a: f64, b: f64) -> f64 {
@@ -104,10 +123,17 @@ pub struct Check {
     pub equation: &'static str,
     pub closed_form: CheckValue,
     pub numeric: CheckValue,
-    /// |closed − numeric| / max(|closed|, |numeric|); null for labels.
+    /// |closed − numeric| / max(|closed|, |numeric|, scale); null for labels.
     pub rel_error: Option<f64>,
+    /// [`TOLERANCE`], or the accuracy double precision allows for this measurement when that is
+    /// coarser (the note says why).
     pub tolerance: f64,
-    pub pass: bool,
+    /// `true` or `false`; `null` when the run cannot show the quantity (too few periods, a
+    /// regime boundary within rounding): the note says why.
+    pub pass: Option<bool>,
+    /// Why the check is not observable, or why its tolerance is coarser than [`TOLERANCE`].
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
 }
 
 impl Check {
@@ -122,8 +148,9 @@ impl Check {
     }
 
     /// As [`Check::measured`], with the error taken relative to at least `scale`: for a
-    /// quantity that can vanish while its measurement carries the rounding of larger terms (the
-    /// acceleration at slip onset is (μs − μd) N/M, measured as D − μd N: scale g).
+    /// quantity that can vanish while its measurement carries the rounding of larger terms (an
+    /// event time is measured as a fraction of the period; the acceleration at slip onset as a
+    /// fraction of the forces whose difference it is).
     pub fn measured_on_scale(
         quantity: impl Into<Checked>,
         closed_form: f64,
@@ -149,7 +176,52 @@ impl Check {
             ),
             rel_error,
             tolerance: TOLERANCE,
-            pass: rel_error.is_some_and(|e| e <= TOLERANCE),
+            pass: Some(rel_error.is_some_and(|e| e <= TOLERANCE)),
+            note: None,
+        }
+    }
+
+    /// The check with its tolerance widened to `floor` when that is coarser than
+    /// [`TOLERANCE`]: `floor` is the relative accuracy that double precision allows for this
+    /// measurement (a small difference of large terms, a root of double multiplicity), `why`
+    /// says which.
+    pub fn conditioned(mut self, floor: f64, why: &str) -> Self {
+        if floor > self.tolerance {
+            self.tolerance = floor;
+            self.pass = Some(self.rel_error.is_some_and(|e| e <= floor));
+            self.note = Some(format!(
+                "tolerance {floor:.0e} = the attainable accuracy: {why}"
+            ));
+        }
+        self
+    }
+
+    /// The check marked not observable when it has not passed and `reason` is `Some`: what the
+    /// run cannot show is no failure of the formula.
+    pub fn unobservable_if(mut self, reason: Option<String>) -> Self {
+        if let (false, Some(reason)) = (self.passed(), reason) {
+            self.pass = None;
+            self.note = Some(reason);
+        }
+        self
+    }
+
+    /// Whether the check passed.
+    pub fn passed(&self) -> bool {
+        self.pass == Some(true)
+    }
+
+    /// Whether the check failed (a not-observable check has not).
+    pub fn failed(&self) -> bool {
+        self.pass == Some(false)
+    }
+
+    /// The verdict in words: "pass", "FAIL" or "not observable".
+    pub fn verdict(&self) -> &'static str {
+        match self.pass {
+            Some(true) => "pass",
+            Some(false) => "FAIL",
+            None => "not observable",
         }
     }
 
@@ -174,7 +246,8 @@ impl Check {
             numeric: CheckValue::Text(numeric.to_string()),
             rel_error: None,
             tolerance: TOLERANCE,
-            pass: agree,
+            pass: Some(agree),
+            note: None,
         }
     }
 }
@@ -187,10 +260,37 @@ mod tests {
     #[test]
     fn relative_error_and_verdict() {
         let c = Check::number(pm::Key::VMax, 2.0, 2.0 * (1.0 + 2e-9));
-        assert!(!c.pass);
+        assert!(c.failed());
         assert!((c.rel_error.unwrap() - 2e-9).abs() < 1e-15);
-        assert!(Check::number(pm::Key::Phi, 0.0, 0.0).pass);
-        assert!(!Check::label(pm::Key::Regime, "a", "b").pass);
+        assert!(Check::number(pm::Key::Phi, 0.0, 0.0).passed());
+        assert!(Check::label(pm::Key::Regime, "a", "b").failed());
+    }
+
+    #[test]
+    fn a_coarser_floor_widens_the_tolerance_and_says_why() {
+        let c = Check::number(pm::Key::VMax, 2.0, 2.0 * (1.0 + 2e-9));
+        let widened = c.clone().conditioned(1e-8, "small slip");
+        assert!(widened.passed());
+        assert_eq!(widened.tolerance, 1e-8);
+        assert!(widened.note.as_deref().unwrap().contains("small slip"));
+        // A floor finer than the standard tolerance changes nothing.
+        assert_eq!(c.clone().conditioned(1e-12, "x"), c);
+    }
+
+    #[test]
+    fn a_check_the_run_cannot_show_is_not_observable_not_failed() {
+        let missing = Check::measured(pm::Key::VAvg, 1.0, None);
+        assert!(missing.failed());
+        let short = missing.unobservable_if(Some("1 period".to_string()));
+        assert_eq!((short.pass, short.verdict()), (None, "not observable"));
+        let json = serde_json::to_value(&short).unwrap();
+        assert!(json["pass"].is_null() && json["note"] == "1 period");
+        // A passing check stays passed, and a reason of None changes nothing.
+        let ok = Check::number(pm::Key::VAvg, 1.0, 1.0);
+        assert!(ok.clone().unobservable_if(Some("x".into())).passed());
+        assert!(Check::measured(pm::Key::VAvg, 1.0, None)
+            .unobservable_if(None)
+            .failed());
     }
 
     #[test]

@@ -91,7 +91,7 @@ fn passing(evaluated: &Evaluated, key: AnyKey) -> Option<&Check> {
     evaluated
         .checks
         .iter()
-        .find(|c| c.quantity == Checked::Key(key) && c.pass)
+        .find(|c| c.quantity == Checked::Key(key) && c.passed())
 }
 
 /// Whether every closed form the questions need applies to the case (cheap: no integration).

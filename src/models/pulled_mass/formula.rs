@@ -153,7 +153,7 @@ pub fn tau_stick_late(phi: f64, mu_s: f64, mu_d: f64) -> Option<f64> {
 }
 
 /// v_M/(gT), the maximum speed in units of gT.
-fn v_max_reduced(phi: f64, mu_s: f64, mu_d: f64) -> f64 {
+pub(crate) fn v_max_reduced(phi: f64, mu_s: f64, mu_d: f64) -> f64 {
     phi * phi * big_d(mu_s, mu_d) / (16.0 * mu_s * mu_s * mu_d)
 }
 

@@ -10,7 +10,7 @@ use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::{pulled_mass, LawKind};
 use crate::params::validate_periods;
-use crate::results::checks::Check;
+use crate::results::checks::{unsettled, Check, BOUNDARY_BAND};
 use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
@@ -144,14 +144,21 @@ fn why_not(regime: Regime, describes: &[Regime]) -> String {
 }
 
 /// Every closed form with a measurable counterpart on the linear run, in the regime where it
-/// describes the motion. A quantity the run should show but does not fails its check.
+/// describes the motion. A quantity the run should show but does not fails its check, unless
+/// the run is too short to show it or the parameters sit on a regime boundary within rounding
+/// (then it is not observable). Event times are compared as fractions of the period.
 fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) -> Vec<Check> {
     let first = FirstCycle::of(run);
     let t_of = |e: Option<Event>| e.map(|e| e.t);
+    let time = |key: Key, closed: f64, numeric: Option<f64>| {
+        Check::measured_on_scale(key, closed, numeric, run.period)
+    };
+    let small_slip = small_slip_floor(c, p);
     let mut out = Vec::new();
     if !c.immediate_slip {
-        out.push(Check::measured(Key::TSlip, c.t_slip, t_of(first.slip)));
-        // a just after the onset, from the force law at the located slip time.
+        out.push(time(Key::TSlip, c.t_slip, t_of(first.slip)));
+        // a just after the onset, from the force law at the located slip time, relative to
+        // g: the force law's amplitude per unit mass (the slip time carries its rounding).
         let body = pulled_mass::body(p);
         let a_at = |t: f64| {
             pulled_mass::force_law(p, LawKind::Linear)
@@ -162,28 +169,20 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
         out.push(Check::measured_on_scale(Key::ASlip, c.a_slip, a, p.g));
         // τ_M < 1: the first maximum is the (17) one, in every non-immediate regime.
         if c.tau_max_speed < 1.0 {
-            out.push(Check::measured(
-                Key::TMaxSpeed,
-                c.t_max_speed,
-                t_of(first.maximum),
-            ));
-            out.push(Check::measured(
-                Key::VMax,
-                c.v_max,
-                first.maximum.map(|e| e.v),
-            ));
+            out.push(time(Key::TMaxSpeed, c.t_max_speed, t_of(first.maximum)));
+            out.push(
+                Check::measured(Key::VMax, c.v_max, first.maximum.map(|e| e.v))
+                    .conditioned(small_slip.0, &small_slip.1),
+            );
         }
     }
+    let unsettled = unsettled(run.periods, summary);
     match c.regime {
         Regime::SlipStick => {
             let stick = t_of(first.stick);
             let duration = stick.zip(t_of(first.slip)).map(|(st, sl)| st - sl);
-            out.push(Check::measured(Key::TStick, c.t_stick, stick));
-            out.push(Check::measured(
-                Key::SlipDuration,
-                c.slip_duration,
-                duration,
-            ));
+            out.push(time(Key::TStick, c.t_stick, stick));
+            out.push(time(Key::SlipDuration, c.slip_duration, duration));
             push_steady(
                 &mut out,
                 summary,
@@ -192,6 +191,8 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                     (Key::AdvancePerPeriod, c.advance_per_period),
                     (Key::Power, c.power),
                 ],
+                &small_slip,
+                &unsettled,
             );
         }
         Regime::SlipStickLate => {
@@ -202,7 +203,14 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                 c.power_late,
             ) {
                 let tau = t_of(first.stick).map(|t| t / run.period);
-                out.push(Check::measured(Key::TauStickLate, late, tau));
+                out.push(
+                    Check::measured_on_scale(Key::TauStickLate, late, tau, 1.0)
+                        .conditioned(
+                            late_stick_floor(p),
+                            "near φ_c the late stick is a double root of v(t)",
+                        )
+                        .unobservable_if(unsettled.clone()),
+                );
                 push_steady(
                     &mut out,
                     summary,
@@ -211,31 +219,88 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
                         (Key::AdvancePerPeriodLate, x),
                         (Key::PowerLate, power),
                     ],
+                    &small_slip,
+                    &unsettled,
                 );
             }
         }
         Regime::ContinuousSlip | Regime::ImmediateContinuousSlip => {}
     }
-    out.push(Check::label(
-        Key::Regime,
-        c.regime.integrated().id(),
-        summary.regime.id(),
-    ));
-    out.push(Check::label(
-        Key::ImmediateSlip,
-        &c.immediate_slip.to_string(),
-        &run.immediate_slip.to_string(),
-    ));
+    // Labels: undecidable on a regime boundary, and the regime needs a settled motion.
+    let boundary = on_boundary(p, c.regime);
+    out.push(
+        Check::label(Key::Regime, c.regime.integrated().id(), summary.regime.id())
+            .unobservable_if(unsettled.or_else(|| boundary.clone())),
+    );
+    out.push(
+        Check::label(
+            Key::ImmediateSlip,
+            &c.immediate_slip.to_string(),
+            &run.immediate_slip.to_string(),
+        )
+        .unobservable_if(boundary),
+    );
     out
 }
 
+/// Why the regime is undecidable: φ within [`BOUNDARY_BAND`] of a boundary of §1.5.
+fn on_boundary(p: &PulledMassParams, regime: Regime) -> Option<String> {
+    let phi = p.phi();
+    [1.0 - BOUNDARY_BAND, 1.0 + BOUNDARY_BAND]
+        .into_iter()
+        .any(|f| cf::regime(phi * f, p.mu_s, p.mu_d) != regime)
+        .then(|| {
+            format!(
+                "φ is within {BOUNDARY_BAND:e} of a regime boundary (2μs, 1/Θ or φ_c): \
+                 rounding decides the regime"
+            )
+        })
+}
+
+/// The relative accuracy of a speed measured on a slip of relative size φ: the engine forms
+/// it from forces μs/φ times larger, so it carries eps·μs/φ (4× for the rounding of the
+/// event times), with the reason.
+fn small_slip_floor(c: &ClosedForm, p: &PulledMassParams) -> (f64, String) {
+    let floor = 4.0 * f64::EPSILON * p.mu_s / c.phi;
+    let why = format!(
+        "the slip (φ = {:.1e}) is a difference of forces μs/φ times larger",
+        c.phi
+    );
+    (floor, why)
+}
+
+/// The relative accuracy of τ_ST,late: the root of v = 0 late in the next period is a double
+/// root at φ_c, where 2τ'_M² − v_M/(gTμd) = A vanishes: rounding ε·2τ'_M² in A moves the root
+/// by ε·τ'_M²/√A, capped at √ε·τ'_M where A is within rounding of 0.
+fn late_stick_floor(p: &PulledMassParams) -> f64 {
+    let phi = p.phi();
+    let tp = cf::tau_accel_zero_falling(phi, p.mu_d);
+    let a = 2.0 * tp * tp - cf::v_max_reduced(phi, p.mu_s, p.mu_d) / p.mu_d;
+    let eps = f64::EPSILON;
+    16.0 * eps * tp * tp / a.max(0.0).sqrt().max(eps.sqrt() * tp.abs())
+}
+
 /// Checks of v̄, x_T and P = F v̄ (against the measured friction dissipation): the keys and
-/// their closed-form values, same-period or late.
-fn push_steady(out: &mut Vec<Check>, s: &Summary, [v, x, power]: [(Key, f64); 3]) {
+/// their closed-form values, same-period or late; not observable when the run is `unsettled`.
+fn push_steady(
+    out: &mut Vec<Check>,
+    s: &Summary,
+    [v, x, power]: [(Key, f64); 3],
+    (floor, why): &(f64, String),
+    unsettled: &Option<String>,
+) {
     let dissipated = s.power.friction;
-    out.push(Check::measured(v.0, v.1, s.v_avg));
-    out.push(Check::measured(x.0, x.1, s.advance_per_period));
-    out.push(Check::measured(power.0, power.1, dissipated));
+    for (key, closed, numeric) in [
+        (v.0, v.1, s.v_avg),
+        (x.0, x.1, s.advance_per_period),
+        (power.0, power.1, dissipated),
+    ] {
+        out.push(
+            Check::measured(key, closed, numeric)
+                .conditioned(*floor, why)
+                .unobservable_if(unsettled.clone()),
+        );
+    }
 }
 
 /// The first slip of a run from rest: its onset, first speed maximum and stick.

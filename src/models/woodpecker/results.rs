@@ -9,11 +9,12 @@ use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
 };
 use crate::models::woodpecker::lobe::HaltKind;
+use crate::models::woodpecker::params::PARAMS;
 use crate::models::woodpecker::quantity::{Key, OrbitQuantity, Scope};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
 use crate::params::validate_periods;
-use crate::results::checks::Check;
+use crate::results::checks::{unsettled, Check, BOUNDARY_BAND};
 use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::Applicability;
@@ -339,10 +340,23 @@ fn checks(
     let n = run.periods.saturating_sub(3);
     let law = woodpecker::force_law(p, LawKind::Linear).ok();
     let body = woodpecker::body(p);
+    // The acceleration at a slip onset, measured relative to the largest force per unit mass
+    // over the period (k·d0 can dwarf the weight: the slip time's rounding then moves a_SL
+    // by ε·T times the slope of forces that large).
+    let force_scale = law.as_ref().map_or(p.g, |l| {
+        (0..16)
+            .map(|i| {
+                let t = run.period * f64::from(i) / 16.0;
+                (l.drive(t).abs() + p.mu_d * l.normal(t).abs()) / body.mass
+            })
+            .fold(p.g, f64::max)
+    });
     let accel_at = |t: f64| {
         law.as_ref()
             .map(|l| body.slip_acceleration(l.drive(t), l.normal(t), 1.0))
     };
+    let time = |key, closed, numeric| Check::measured_on_scale(key, closed, numeric, run.period);
+    let unsettled = unsettled(run.periods, summary);
     // The slips to measure: the orbit's, from a settled period; or, in continuous slip, the
     // first slip from rest in the first period.
     let slips: Vec<(Phase, f64, u32, Option<&OrbitSlip>)> = match &c.orbit {
@@ -367,41 +381,89 @@ fn checks(
         let first_max = m.as_ref().and_then(|m| m.maxima.first().copied());
         let stick = m.as_ref().and_then(|m| m.stick);
         // Measured counterparts, by index into PHASE_KEYS (S and Γ have none).
+        let accel = t_slip.and_then(|t| accel_at(t + start));
+        // Measured counterparts, by index into PHASE_KEYS (S and Γ have none), with the
+        // scale of their error: event times as fractions of the period.
         let measured = [
-            (0, t_slip),
-            (1, t_slip.and_then(|t| accel_at(t + start))),
-            (2, first_max.map(|e| e.t - start)),
-            (3, first_max.map(|e| e.v)),
-            (4, stick.map(|e| e.t - start)),
-            (7, stick.zip(m.as_ref()).map(|(st, m)| st.x - m.slip.x)),
+            (0, t_slip, run.period),
+            (1, accel, force_scale),
+            (2, first_max.map(|e| e.t - start), run.period),
+            (3, first_max.map(|e| e.v), 0.0),
+            (4, stick.map(|e| e.t - start), run.period),
+            (7, stick.zip(m.as_ref()).map(|(st, m)| st.x - m.slip.x), 0.0),
         ];
-        for (j, value) in measured {
+        for (j, value, scale) in measured {
             if let (true, Some(closed)) = (applies(keys[j]), phase_values[j]) {
-                let scale = if j == 1 { p.g } else { 0.0 };
-                out.push(Check::measured_on_scale(keys[j], closed, value, scale));
+                out.push(
+                    Check::measured_on_scale(keys[j], closed, value, scale)
+                        .unobservable_if(unsettled.clone()),
+                );
             }
         }
         if let Some(slip) = orbit_slip {
             let covered = |j: usize| applies(keys[j]) && phase_values[j].is_some();
             let covered = [covered(4), covered(2), covered(7)];
-            push_orbit_checks(&mut out, k + 1, slip, m.as_ref(), start, covered);
+            let from = out.len();
+            push_orbit_checks(&mut out, k + 1, slip, m.as_ref(), start, covered, &time);
+            mark_unobservable(&mut out[from..], &unsettled);
         }
     }
     if let Some(orbit) = &c.orbit {
+        let from = out.len();
         push_period_checks(&mut out, c, orbit, summary, applies(Key::VAvg));
+        mark_unobservable(&mut out[from..], &unsettled);
     }
-    out.push(Check::label_agreeing(
+    let regime = Check::label_agreeing(
         Key::Regime,
         c.regime.id(),
         summary.regime.id(),
         regime_agrees(c.regime, summary.regime),
-    ));
-    out.push(Check::label(
+    );
+    // Only a disagreement asks whether rounding could decide the regime (a dozen closed-form
+    // evaluations).
+    let boundary = |c: &Check| (!c.passed()).then(|| on_boundary(p)).flatten();
+    let reason = unsettled.clone().or_else(|| boundary(&regime));
+    out.push(regime.unobservable_if(reason));
+    let immediate = Check::label(
         Key::ImmediateSlip,
         &c.immediate_slip.to_string(),
         &run.immediate_slip.to_string(),
-    ));
+    );
+    let reason = boundary(&immediate);
+    out.push(immediate.unobservable_if(reason));
     out
+}
+
+/// The checks marked not observable for `reason`, when there is one.
+fn mark_unobservable(checks: &mut [Check], reason: &Option<String>) {
+    for c in checks {
+        *c = c.clone().unobservable_if(reason.clone());
+    }
+}
+
+/// Why the regime is undecidable: a relative change of [`BOUNDARY_BAND`] in one parameter
+/// changes the closed-form regime or the immediate slip.
+fn on_boundary(p: &WoodpeckerParams) -> Option<String> {
+    let closed_form = |p: &WoodpeckerParams| cf::evaluate(&linear_inputs(p));
+    let base = closed_form(p);
+    let base = (base.regime, base.immediate_slip);
+    PARAMS.iter().find_map(|spec| {
+        let value = (spec.get)(p)?;
+        [1.0 - BOUNDARY_BAND, 1.0 + BOUNDARY_BAND]
+            .into_iter()
+            .any(|f| {
+                let mut q = *p;
+                (spec.set)(&mut q, value * f);
+                let c = closed_form(&q);
+                (c.regime, c.immediate_slip) != base
+            })
+            .then(|| {
+                format!(
+                    "a change of {BOUNDARY_BAND:e} in {} changes the regime: rounding decides it",
+                    spec.key
+                )
+            })
+    })
 }
 
 /// The closed-form values of one phase in the order of [`PHASE_KEYS`].
@@ -439,11 +501,12 @@ fn push_orbit_checks(
     m: Option<&MeasuredSlip>,
     start: f64,
     covered: [bool; 3],
+    time: &dyn Fn(OrbitQuantity, f64, Option<f64>) -> Check,
 ) {
     let [stick_covered, first_max_covered, distance_covered] = covered;
     if !stick_covered {
         let stick = m.and_then(|m| m.stick);
-        out.push(Check::measured(
+        out.push(time(
             OrbitQuantity::TStick { slip: k },
             slip.t_halt,
             stick.map(|e| e.t - start),
@@ -454,7 +517,7 @@ fn push_orbit_checks(
             continue;
         }
         let measured = m.and_then(|m| m.maxima.get(j));
-        out.push(Check::measured(
+        out.push(time(
             OrbitQuantity::TMaxSpeed {
                 slip: k,
                 maximum: j + 1,
