@@ -119,6 +119,20 @@ pub enum Error {
         column: Option<String>,
         reason: String,
     },
+    /// Parameters each inside its range whose combination drives a result out of the range of
+    /// double precision (overflow to ∞, underflow to 0 of a non-zero quantity, or NaN).
+    #[error(
+        "the parameters make {} = {} out of the range of double precision: bring {} closer \
+         to a real apparatus",
+        excerpt(quantity, VALUE_CHARS),
+        excerpt(value, VALUE_CHARS),
+        excerpt(params, REASON_CHARS)
+    )]
+    OutOfRange {
+        quantity: String,
+        value: String,
+        params: String,
+    },
     /// A fit that ended without converging (results are still reported, flagged).
     #[error("the fit did not converge: {}", excerpt(reason, REASON_CHARS))]
     NotConverged { reason: String },
@@ -215,6 +229,7 @@ impl Error {
             | Self::UnknownScene { .. }
             | Self::TrackedData { .. }
             | Self::Output { .. }
+            | Self::OutOfRange { .. }
             | Self::NoChromium { .. } => 2,
             Self::Stalled { .. }
             | Self::InvalidLaw(_)

@@ -220,7 +220,7 @@ fn a_negative_count_names_its_flag() {
 #[test]
 fn huge_parameters_are_printed_short() {
     let output = stickslip()
-        .args(["eval", "pulled-mass", "--force", "1e308"])
+        .args(["eval", "pulled-mass", "--force", "1e49", "--mass", "1e48"])
         .assert()
         .success()
         .get_output()
@@ -228,7 +228,68 @@ fn huge_parameters_are_printed_short() {
     let stdout = String::from_utf8(output.stdout).unwrap();
     let longest = stdout.lines().map(|l| l.chars().count()).max().unwrap();
     assert!(longest <= 200, "{longest} characters");
-    assert!(stdout.contains("F = 1e308 N"), "{stdout}");
+    assert!(stdout.contains("F = 1e49 N"), "{stdout}");
+}
+
+#[test]
+fn combinations_out_of_double_precision_are_refused_naming_the_parameter() {
+    let cases: [(&[&str], &str); 6] = [
+        (
+            &["pulled-mass", "--mass", "6e-302", "--g", "9.81e-200"],
+            "mass",
+        ),
+        (&["pulled-mass", "--force", "1e200", "--json"], "force"),
+        (&["pulled-mass", "--force", "1e308"], "force"),
+        (&["pulled-mass", "--force", "1e-10"], "phi = F/(m g)"),
+        (&["pulled-mass", "--mu-d", "1e-9"], "mu_d"),
+        (&["woodpecker", "--k", "1e300"], "1e-50 <= k <= 1e50"),
+    ];
+    for (args, names) in cases {
+        let msg = one_line_error(stickslip().arg("eval").args(args), 2);
+        assert!(msg.contains(names), "{args:?}: {msg}");
+        assert!(
+            !msg.contains("force law"),
+            "no internal invariant shown: {msg}"
+        );
+    }
+    // Each parameter in range, their combination not: the net names the quantity.
+    let msg = one_line_error(
+        stickslip().args([
+            "eval",
+            "woodpecker",
+            "--m-sleeve",
+            "2e-45",
+            "--m-bird",
+            "1.4e-40",
+            "--l",
+            "2.9e42",
+            "--h",
+            "1.8e29",
+            "--z0",
+            "8.4e-35",
+            "--d0",
+            "3e-10",
+            "--g",
+            "1.3e-19",
+            "--k",
+            "1e23",
+            "--mu-s",
+            "1.1e-6",
+            "--mu-d",
+            "1e-6",
+            "--lever",
+            "1.4e26",
+            "--omega",
+            "total",
+            "--counterpart",
+            "tangent",
+        ]),
+        2,
+    );
+    assert!(
+        msg.contains("out of the range of double precision"),
+        "{msg}"
+    );
 }
 
 #[test]

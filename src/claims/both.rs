@@ -178,8 +178,10 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
     let (mut cube_ok, mut cube_text) = (false, "no m_S pair in the standard regime".to_string());
     if let Some(((a, b), which)) = pair {
         let ((ca, na), (cb, nb)) = (weight_powers(&a)?, weight_powers(&b)?);
-        let closed = ca.zip(cb).map(|(x, y)| y / x);
-        let numeric = na.zip(nb).map(|(x, y)| y / x);
+        // A ratio exists only where the first power does not vanish.
+        let ratio =
+            |x: Option<f64>, y: Option<f64>| x.zip(y).map(|(x, y)| y / x).filter(|r| r.is_finite());
+        let (closed, numeric) = (ratio(ca, cb), ratio(na, nb));
         cube_ok = numeric.is_some_and(|r| (r / 8.0 - 1.0).abs() <= AGREE);
         n.push("P_W ratio for doubled m_S, closed form", closed, "")
             .push("P_W ratio for doubled m_S, integration", numeric, "");

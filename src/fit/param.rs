@@ -2,8 +2,8 @@
 //! them in: unbounded, and valid wherever they go.
 //!
 //! ```text
-//! μd = μs · σ(x)                          0 < μd < μs
-//! μs = lo + (MU_MAX − lo) · σ(x)          lo = 0, or the fixed μd when μd is not free
+//! μd = MU_MIN + (μs − MU_MIN) · σ(x)      MU_MIN < μd < μs
+//! μs = lo + (MU_MAX − lo) · σ(x)          lo = MU_MIN, or the fixed μd when μd is not free
 //! z0 = x mm                               any sign
 //! d0 = eˣ,  k = eˣ                        positive
 //! ```
@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use crate::models::woodpecker::WoodpeckerParams;
 
-use crate::models::param::MU_MAX;
+use crate::models::param::{MU_MAX, MU_MIN};
 
 /// A woodpecker parameter the fit can adjust.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, clap::ValueEnum)]
@@ -83,7 +83,7 @@ impl FitParam {
 
     fn internal(self, p: &WoodpeckerParams, free: &[FitParam]) -> f64 {
         match self {
-            Self::MuD => logit(p.mu_d / p.mu_s),
+            Self::MuD => logit((p.mu_d - MU_MIN) / (p.mu_s - MU_MIN).max(f64::MIN_POSITIVE)),
             Self::MuS => {
                 let lo = mu_s_floor(p, free);
                 logit((p.mu_s - lo) / (MU_MAX - lo))
@@ -95,7 +95,7 @@ impl FitParam {
 
     fn set_internal(self, p: &mut WoodpeckerParams, x: f64, free: &[FitParam]) {
         let value = match self {
-            Self::MuD => p.mu_s * logistic(x),
+            Self::MuD => MU_MIN + (p.mu_s - MU_MIN) * logistic(x),
             Self::MuS => {
                 let lo = mu_s_floor(p, free);
                 lo + (MU_MAX - lo) * logistic(x)
@@ -137,7 +137,7 @@ pub fn with_values(base: &WoodpeckerParams, free: &[FitParam], values: &[f64]) -
 /// μs must stay above a fixed μd; a free μd follows μs.
 fn mu_s_floor(p: &WoodpeckerParams, free: &[FitParam]) -> f64 {
     if free.contains(&FitParam::MuD) {
-        0.0
+        MU_MIN
     } else {
         p.mu_d
     }

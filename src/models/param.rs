@@ -8,17 +8,25 @@ use crate::error::{Error, Result};
 /// Largest friction coefficient accepted: far beyond any real pair of surfaces, and small
 /// enough that μ² and μ³ in the closed forms cannot overflow.
 pub const MU_MAX: f64 = 100.0;
+/// Smallest friction coefficient accepted: a millionth is frictionless for any table, and the
+/// closed forms divide by μs³μd² (Γ), which must not overflow.
+pub const MU_MIN: f64 = 1e-6;
+/// Smallest and largest magnitude of a dimensional parameter in SI units. Fifty orders of
+/// magnitude either way hold every real apparatus many times over, and keep the products and
+/// powers in the closed forms (W = m g, T = 2π√(m/k), v̄ = g T φ³ Γ, P = F v̄ …) finite and
+/// normal in double precision.
+pub const MAGNITUDE: (f64, f64) = (1e-50, 1e50);
 
 /// The rule a parameter's value must satisfy; the error message states it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Rule {
-    /// 0 < x < ∞.
+    /// A positive magnitude: [`MAGNITUDE`].0 ≤ x ≤ [`MAGNITUDE`].1.
     Positive,
-    /// −∞ < x < ∞.
+    /// A signed length: |x| ≤ [`MAGNITUDE`].1.
     Finite,
-    /// The static friction coefficient: 0 < μs ≤ [`MU_MAX`].
+    /// The static friction coefficient: [`MU_MIN`] ≤ μs ≤ [`MU_MAX`].
     StaticFriction,
-    /// The dynamic friction coefficient: 0 < μd ≤ μs (the model's `mu_s`).
+    /// The dynamic friction coefficient: [`MU_MIN`] ≤ μd ≤ μs (the model's `mu_s`).
     DynamicFriction,
 }
 
@@ -79,27 +87,30 @@ impl<P> ParamSpec<P> {
     /// Checks `value` against the rule; `mu_s` is the model's static friction (for μd).
     pub fn check(&self, value: f64, mu_s: f64) -> Result<()> {
         let key = self.key;
-        let ok = match self.rule {
-            Rule::Positive => value.is_finite() && value > 0.0,
-            Rule::Finite => value.is_finite(),
-            Rule::StaticFriction => value.is_finite() && value > 0.0 && value <= MU_MAX,
-            Rule::DynamicFriction => value.is_finite() && value > 0.0 && value <= mu_s,
+        let (lo, hi) = MAGNITUDE;
+        let (ok, rule) = match self.rule {
+            Rule::Positive => (
+                (lo..=hi).contains(&value),
+                format!("{} <= {key} <= {}", num(lo), num(hi)),
+            ),
+            Rule::Finite => (
+                (-hi..=hi).contains(&value),
+                format!("{} <= {key} <= {}", num(-hi), num(hi)),
+            ),
+            Rule::StaticFriction => (
+                (MU_MIN..=MU_MAX).contains(&value),
+                format!("{} <= {key} <= {MU_MAX}", num(MU_MIN)),
+            ),
+            Rule::DynamicFriction => (
+                (MU_MIN..=mu_s).contains(&value),
+                format!("{} <= {key} <= mu_s (mu_s = {})", num(MU_MIN), num(mu_s)),
+            ),
         };
         if ok {
-            return Ok(());
+            Ok(())
+        } else {
+            Err(invalid(key, num(value), rule))
         }
-        // A non-positive friction coefficient breaks the positivity rule first.
-        let rule = match self.rule {
-            Rule::Finite => format!("-inf < {key} < inf"),
-            Rule::StaticFriction if value.is_finite() && value > 0.0 => {
-                format!("0 < {key} <= {MU_MAX}")
-            }
-            Rule::DynamicFriction if value.is_finite() && value > 0.0 => {
-                format!("0 < {key} <= mu_s (mu_s = {mu_s})")
-            }
-            _ => format!("0 < {key} < inf"),
-        };
-        Err(invalid(key, num(value), rule))
     }
 }
 
@@ -236,21 +247,21 @@ mod tests {
                 mu_s: 0.4,
                 mu_d: 0.5
             }),
-            "invalid parameter mu_d = 0.5: must satisfy 0 < mu_d <= mu_s (mu_s = 0.4)"
+            "invalid parameter mu_d = 0.5: must satisfy 1e-6 <= mu_d <= mu_s (mu_s = 0.4)"
         );
         assert_eq!(
             msg(P {
                 mu_s: 200.0,
                 mu_d: 0.5
             }),
-            "invalid parameter mu_s = 200: must satisfy 0 < mu_s <= 100"
+            "invalid parameter mu_s = 200: must satisfy 1e-6 <= mu_s <= 100"
         );
         assert_eq!(
             msg(P {
                 mu_s: -1.0,
                 mu_d: 0.5
             }),
-            "invalid parameter mu_s = -1: must satisfy 0 < mu_s < inf"
+            "invalid parameter mu_s = -1: must satisfy 1e-6 <= mu_s <= 100"
         );
         assert!(validate_all(
             &SPECS,

@@ -155,6 +155,15 @@ impl Value {
             Value::Flag(_) | Value::Label(_) => None,
         }
     }
+
+    /// The number as computed, finite or not (`None` for a label or an undefined value): what
+    /// [`crate::results::ensure_in_range`] inspects.
+    pub fn computed(self) -> Option<f64> {
+        match self {
+            Value::Number(x) => x,
+            Value::Flag(_) | Value::Label(_) => None,
+        }
+    }
 }
 
 impl From<f64> for Value {

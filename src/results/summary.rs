@@ -65,6 +65,28 @@ pub struct Summary {
 }
 
 impl Summary {
+    /// Every number of the summary, named as in §7 (for [`super::ensure_in_range`]).
+    pub fn numbers(&self) -> Vec<(&'static str, f64)> {
+        let mut out: Vec<(&'static str, f64)> = [
+            ("first_slip_time", self.first_slip_time),
+            ("v_avg", self.v_avg),
+            ("advance_per_period", self.advance_per_period),
+            (self.power.key, self.power.driving),
+            ("power_friction", self.power.friction),
+        ]
+        .into_iter()
+        .filter_map(|(name, x)| Some((name, x?)))
+        .collect();
+        out.extend(self.steady_events.iter().map(|e| ("steady_events.t", e.t)));
+        for m in &self.steady_speed_maxima {
+            out.extend([
+                ("steady_speed_maxima.t", m.t),
+                ("steady_speed_maxima.v", m.v),
+            ]);
+        }
+        out
+    }
+
     /// Builds the summary of `run` with its steady state; `power` computes the power keys from
     /// (v̄, friction power).
     pub fn new(

@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 use crate::models::param::{
-    dynamic_friction, gravity, static_friction, validate_all, ParamSpec, Rule,
+    dynamic_friction, gravity, invalid, num, static_friction, validate_all, ParamSpec, Rule,
 };
 use crate::params::G_STANDARD;
 
@@ -26,6 +26,12 @@ pub struct PulledMassParams {
     /// Gravitational acceleration g (m/s²).
     pub g: f64,
 }
+
+/// The range of φ = F/W accepted. Below 1e-9 the pull is nothing against the weight: the
+/// slip is a difference of forces 10⁹ times larger and double precision cannot measure it
+/// to the checks' tolerance. Above 1e6 (the block pulled with a million times its weight,
+/// 10⁴ times the largest 2μs) the mean speed g T φ³ Γ is beyond any apparatus.
+pub const PHI_RANGE: (f64, f64) = (1e-9, 1e6);
 
 /// Where the defaults come from.
 pub const DEFAULTS_SOURCE: &str = "the paper's Fig. 6 set";
@@ -91,9 +97,26 @@ pub const PARAMS: &[ParamSpec<PulledMassParams>] = &[
 ];
 
 impl PulledMassParams {
-    /// Checks every parameter against its valid range.
+    /// Checks every parameter against its valid range, then φ = F/W against [`PHI_RANGE`]
+    /// (named by the force, which sets it).
     pub fn validate(&self) -> Result<()> {
-        validate_all(PARAMS, self, self.mu_s)
+        validate_all(PARAMS, self, self.mu_s)?;
+        let phi = self.phi();
+        let (lo, hi) = PHI_RANGE;
+        if (lo..=hi).contains(&phi) {
+            Ok(())
+        } else {
+            Err(invalid(
+                "force",
+                num(self.force),
+                format!(
+                    "{} <= phi = F/(m g) <= {} (here phi = {})",
+                    num(lo),
+                    num(hi),
+                    num(phi)
+                ),
+            ))
+        }
     }
 
     /// Weight W = m g (N).

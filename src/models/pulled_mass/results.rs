@@ -13,7 +13,7 @@ use crate::params::validate_periods;
 use crate::results::checks::{unsettled, Check, BOUNDARY_BAND};
 use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
-use crate::results::Applicability;
+use crate::results::{ensure_in_range, Applicability};
 
 /// Input parameters and the derived W, T, ω, φ (keys of §7 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -101,7 +101,33 @@ pub fn evaluate_with_runs(
         checks,
         applicability,
     };
+    in_range(&evaluation)?;
     Ok((evaluation, runs))
+}
+
+/// Refuses parameters whose combination drives a derived parameter, a closed form or an
+/// integrated quantity out of the range of double precision.
+fn in_range(e: &Evaluation) -> Result<()> {
+    let derived = [
+        ("W", e.params.weight),
+        ("T", e.params.period),
+        ("omega", e.params.omega),
+        ("phi", e.params.phi),
+    ];
+    let closed = Key::numbers().filter_map(|entry| {
+        Some((
+            entry.quantity.id,
+            e.closed_form.value(entry.key).computed()?,
+        ))
+    });
+    ensure_in_range(
+        derived
+            .into_iter()
+            .chain(closed)
+            .chain(e.linear.numbers())
+            .chain(e.harmonic.numbers()),
+        "F, m, k and g",
+    )
 }
 
 /// Which closed forms of §1.3–1.4 describe the motion in the regime of `c`: those whose

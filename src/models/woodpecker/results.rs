@@ -17,7 +17,7 @@ use crate::params::validate_periods;
 use crate::results::checks::{unsettled, Check, BOUNDARY_BAND};
 use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
-use crate::results::Applicability;
+use crate::results::{ensure_in_range, Applicability};
 
 /// Input parameters and the derived quantities (keys of §7 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -138,7 +138,38 @@ pub fn evaluate_with_runs(
         applicability,
         domain_note,
     };
+    in_range(&evaluation)?;
     Ok((evaluation, runs))
+}
+
+/// Refuses parameters whose combination drives a derived parameter, a closed form or an
+/// integrated quantity out of the range of double precision.
+fn in_range(e: &Evaluation) -> Result<()> {
+    let p = &e.params;
+    let derived = [
+        ("W_S", Some(p.sleeve_weight)),
+        ("T", Some(p.period)),
+        ("omega", Some(p.omega)),
+        ("lambda", Some(p.lambda)),
+        ("zeta0", p.zeta0),
+        ("delta0", p.delta0),
+    ]
+    .into_iter()
+    .filter_map(|(name, x)| Some((name, x?)));
+    let closed = Key::numbers().filter_map(|entry| {
+        Some((
+            entry.quantity.id,
+            e.closed_form.value(entry.key).computed()?,
+        ))
+    });
+    let linear = e.linear.as_ref().map(Summary::numbers).unwrap_or_default();
+    ensure_in_range(
+        derived
+            .chain(closed)
+            .chain(linear)
+            .chain(e.harmonic.numbers()),
+        "k, the masses, l, h, z0, d0 and g",
+    )
 }
 
 /// Why the closed forms do not apply at all (outside their domain), if so.
