@@ -342,3 +342,19 @@ fn scenario_text_reaches_markdown_as_literal_text_on_one_line() {
         "{row}"
     );
 }
+
+#[test]
+fn report_and_handout_refuse_a_force_that_would_hang_the_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(
+        dir.path(),
+        "huge.toml",
+        "model = \"pulled-mass\"\ntitle = \"huge\"\n[params]\nforce = 1e308\n",
+    );
+    for cmd in ["report", "handout"] {
+        let out = dir.path().join(cmd);
+        let msg = one_line_error(stickslip().arg(cmd).arg(&file).arg("--out").arg(&out), 2);
+        assert!(msg.contains("force"), "{cmd}: {msg}");
+        assert!(!out.exists(), "{cmd} wrote nothing");
+    }
+}
