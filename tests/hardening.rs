@@ -358,3 +358,30 @@ fn report_and_handout_refuse_a_force_that_would_hang_the_figures() {
         assert!(!out.exists(), "{cmd} wrote nothing");
     }
 }
+
+#[test]
+fn a_sweep_goes_on_past_points_the_model_refuses() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("sweep");
+    stickslip()
+        .args([
+            "sweep",
+            "pulled-mass",
+            "--param",
+            "force",
+            "--from",
+            "1e-12",
+            "--to",
+            "0.2",
+        ])
+        .args(["--steps", "5", "--out"])
+        .arg(&out)
+        .assert()
+        .success();
+    let csv = std::fs::read_to_string(out.join("sweep.csv")).unwrap();
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    assert_eq!(rows.len(), 5);
+    // φ = 1.7e-12 is below the accepted 1e-9: that point is a gap, the others are computed.
+    assert!(rows[0].ends_with(",invalid"), "{}", rows[0]);
+    assert!(rows[1..].iter().all(|r| !r.contains("invalid")), "{csv}");
+}

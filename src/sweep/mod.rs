@@ -226,7 +226,14 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
             linear,
             closed_form: Some(closed),
         }),
-        Err(e @ (Error::InvalidParam { .. } | Error::InvalidLaw(_))) => Ok(Point {
+        // A point the model refuses, or (should it ever happen) one the engine cannot
+        // advance, is a gap in the sweep, not the end of it.
+        Err(
+            e @ (Error::InvalidParam { .. }
+            | Error::InvalidLaw(_)
+            | Error::OutOfRange { .. }
+            | Error::Stalled { .. }),
+        ) => Ok(Point {
             value,
             invalid: Some(e),
             harmonic: None,
