@@ -117,9 +117,35 @@ pub struct WorksheetArgs {
     /// Output folder.
     #[arg(long, default_value = "worksheets")]
     pub out: PathBuf,
-    /// Formats, comma-separated (answer-key.json is always written).
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
-    pub format: Vec<Format>,
+    /// Formats, comma-separated (answer-key.json is always written): html, md, moodle (Moodle
+    /// XML question bank), gift (Moodle GIFT).
+    #[arg(long, value_enum, value_delimiter = ',',
+          default_values_t = [SheetFormat::Html, SheetFormat::Md])]
+    pub format: Vec<SheetFormat>,
+}
+
+/// What `stickslip worksheet` writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SheetFormat {
+    /// worksheets.html and answer-key.html.
+    Html,
+    /// worksheets.md and answer-key.md, figures as SVG files.
+    Md,
+    /// worksheets.moodle.xml: a Moodle question bank, one category per question.
+    Moodle,
+    /// worksheets.gift.txt: the same in Moodle's GIFT format (without the figure question).
+    Gift,
+}
+
+impl SheetFormat {
+    /// The report format of a page format.
+    pub fn page(self) -> Option<Format> {
+        match self {
+            SheetFormat::Html => Some(Format::Html),
+            SheetFormat::Md => Some(Format::Md),
+            SheetFormat::Moodle | SheetFormat::Gift => None,
+        }
+    }
 }
 
 /// The grid of `stickslip sweep`.

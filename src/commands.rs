@@ -7,14 +7,14 @@ use anyhow::{Context, Result};
 
 use crate::cli::{
     BenchArgs, Cli, Command, FitArgs, HandoutArgs, ModelArgs, ModelCommand, NoArgs, ReportArgs,
-    SweepArgs, WorksheetArgs,
+    SheetFormat, SweepArgs, WorksheetArgs,
 };
 use crate::error::Error;
 use crate::models::param::invalid;
 use crate::models::{with_model, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS, MAX_PERIODS};
 use crate::present::Present;
-use crate::report;
+use crate::report::{self, Format};
 
 /// Runs a parsed command line.
 pub fn run(cli: Cli) -> Result<()> {
@@ -154,7 +154,13 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         questions: args.questions.clone(),
     };
     let sheets = crate::worksheet::generate(&request)?;
-    let files = crate::worksheet::render(&sheets, &args.format)?;
+    let pages: Vec<Format> = args.format.iter().filter_map(|f| f.page()).collect();
+    let mut files = crate::worksheet::render(&sheets, &pages)?;
+    files.extend(crate::worksheet::moodle::render(
+        &sheets,
+        args.format.contains(&SheetFormat::Moodle),
+        args.format.contains(&SheetFormat::Gift),
+    )?);
     let written = report::write_all(&args.out, &files)?;
     print_stdout(&format!(
         "wrote {} files for {} students ({}, regime {}) to {}\n",

@@ -486,3 +486,144 @@ fn a_small_markdown_worksheet_matches_its_snapshot() {
     let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
     insta::assert_snapshot!("worksheets_md_pulled_mass_2", md);
 }
+
+/// The child element `name` of `node`.
+fn child<'a, 'i>(node: roxmltree::Node<'a, 'i>, name: &str) -> Option<roxmltree::Node<'a, 'i>> {
+    node.children().find(|c| c.has_tag_name(name))
+}
+
+/// The text of `node/name/text`, as Moodle's importer reads it (qformat_xml: `getpath(…,
+/// ['name', 0, '#', 'text', 0, '#'])`).
+fn text_of<'a>(node: roxmltree::Node<'a, '_>, name: &str) -> &'a str {
+    child(node, name)
+        .and_then(|n| child(n, "text"))
+        .and_then(|t| t.text())
+        .unwrap_or_else(|| panic!("{name}/text in {:?}", node.attribute("type")))
+}
+
+/// The Moodle XML is the structure Moodle's importer (question/format/xml) expects: a <quiz>
+/// of <question type=…>; a category before each question's variants; every numerical and
+/// multichoice question with a name, an HTML question text, general feedback, and answers
+/// with a fraction; numerical answers numbers with a tolerance and the SI unit; multiple
+/// choice with exactly one right option; an embedded file base64 SVG referenced as
+/// @@PLUGINFILE@@. One variant per student and question.
+#[test]
+fn moodle_xml_and_gift_hold_one_variant_per_student_and_question() {
+    let dir = tempfile::tempdir().unwrap();
+    worksheet(
+        dir.path(),
+        &["--model", "pulled-mass", "--students", "3", "--seed", "7"],
+    );
+    let key = read_json(dir.path());
+    let questions = key["questions"].as_array().unwrap().len();
+    let out = dir.path().join("moodle");
+    worksheet(
+        &out,
+        &[
+            "--model",
+            "pulled-mass",
+            "--students",
+            "3",
+            "--seed",
+            "7",
+            "--format",
+            "moodle,gift",
+        ],
+    );
+    assert!(
+        !out.join("worksheets.html").exists(),
+        "only the formats asked for"
+    );
+    let xml = fs::read_to_string(out.join("worksheets.moodle.xml")).unwrap();
+    let doc = roxmltree::Document::parse(&xml).expect("well-formed XML");
+    let quiz = doc.root_element();
+    assert_eq!(quiz.tag_name().name(), "quiz");
+    let all: Vec<_> = quiz.children().filter(|n| n.is_element()).collect();
+    let categories = all
+        .iter()
+        .filter(|q| q.attribute("type") == Some("category"))
+        .count();
+    assert_eq!(categories, questions);
+    let (mut numerical, mut choice, mut files) = (0, 0, 0);
+    for q in &all {
+        assert!(q.has_tag_name("question"));
+        match q.attribute("type").unwrap() {
+            "category" => assert!(text_of(*q, "category").starts_with("$course$/top/stickslip")),
+            kind => {
+                assert!(!text_of(*q, "name").is_empty());
+                let html = text_of(*q, "questiontext");
+                assert_eq!(
+                    child(*q, "questiontext").unwrap().attribute("format"),
+                    Some("html")
+                );
+                assert!(
+                    html.contains(r"\(\mu_s\)"),
+                    "the student's parameters, in MathJax"
+                );
+                assert!(text_of(*q, "generalfeedback").contains("exact integration"));
+                let answers: Vec<_> = q.children().filter(|c| c.has_tag_name("answer")).collect();
+                let fractions: Vec<&str> = answers
+                    .iter()
+                    .map(|a| a.attribute("fraction").unwrap())
+                    .collect();
+                if let Some(file) = child(child(*q, "questiontext").unwrap(), "file") {
+                    use base64::Engine;
+                    assert_eq!(file.attribute("encoding"), Some("base64"));
+                    let name = file.attribute("name").unwrap();
+                    assert!(html.contains(&format!("@@PLUGINFILE@@/{name}")));
+                    let svg = base64::engine::general_purpose::STANDARD
+                        .decode(file.text().unwrap())
+                        .unwrap();
+                    assert!(String::from_utf8(svg).unwrap().contains("<svg"));
+                    files += 1;
+                }
+                match kind {
+                    "numerical" => {
+                        numerical += 1;
+                        assert_eq!(fractions, ["100"]);
+                        let value: f64 = child(answers[0], "text")
+                            .unwrap()
+                            .text()
+                            .unwrap()
+                            .parse()
+                            .unwrap();
+                        let tol: f64 = child(answers[0], "tolerance")
+                            .unwrap()
+                            .text()
+                            .unwrap()
+                            .parse()
+                            .unwrap();
+                        // One unit in the third figure, or the reading tolerance of the figure (≤ 5 %).
+                        assert!(tol > 0.0 && tol <= 0.05 * value.abs(), "{value} ± {tol}");
+                    }
+                    "multichoice" => {
+                        choice += 1;
+                        assert_eq!(fractions.iter().filter(|f| **f == "100").count(), 1);
+                        assert!(fractions.len() >= 2);
+                        assert_eq!(child(*q, "single").unwrap().text(), Some("true"));
+                    }
+                    other => panic!("question type {other}"),
+                }
+            }
+        }
+    }
+    assert_eq!(numerical + choice, 3 * questions);
+    assert_eq!(files, 3, "the figure question embeds each student's v(t)");
+    // GIFT: the same bank less the figure question, one question per blank-line block.
+    let gift = fs::read_to_string(out.join("worksheets.gift.txt")).unwrap();
+    let blocks: Vec<&str> = gift
+        .split("\n\n")
+        .filter(|b| b.trim_start().starts_with("::"))
+        .collect();
+    assert_eq!(blocks.len(), 3 * (questions - 1), "{gift}");
+    for b in blocks {
+        // One answer block: its braces are the only unescaped ones.
+        let unescaped = |c: char| {
+            b.match_indices(c)
+                .filter(|(i, _)| !b[..*i].ends_with('\\'))
+                .count()
+        };
+        assert_eq!((unescaped('{'), unescaped('}')), (1, 1), "{b}");
+        assert!(b.contains("[html]") && b.contains("####"), "{b}");
+    }
+}

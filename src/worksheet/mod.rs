@@ -15,6 +15,7 @@ pub mod answer;
 pub mod exercise;
 pub mod figure;
 pub mod json;
+pub mod moodle;
 pub mod question;
 pub mod render;
 pub mod sample;

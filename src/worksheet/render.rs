@@ -42,14 +42,14 @@ const ANSWER_DIGITS: usize = 4;
 const NUMERIC_DIGITS: usize = 10;
 
 /// What the student is told about the model (the parameters follow in a table).
-fn intro(model: Model) -> &'static str {
+pub(crate) fn intro(model: Model) -> &'static str {
     fn of<M: Exercise>(_: &M) -> &'static str {
         M::INTRO
     }
     with_model!(&model, p => of(p))
 }
 
-fn title(model: Model) -> &'static str {
+pub(crate) fn title(model: Model) -> &'static str {
     fn of<M: Exercise>(_: &M) -> &'static str {
         M::TITLE
     }

@@ -1,0 +1,288 @@
+//! The worksheet as a Moodle question bank: Moodle XML (`worksheets.moodle.xml`) and GIFT
+//! (`worksheets.gift.txt`).
+//!
+//! One question category per worksheet question, holding one variant per student (that
+//! student's parameters and answer): a quiz that draws one random question from each category
+//! gives every student a variant, and the teacher's answer key maps variant to student.
+//!
+//! ```text
+//! closed form, threshold, figure  →  numerical question: the answer, a tolerance of one unit
+//!                                    in its third significant figure (the figure: the reading
+//!                                    tolerance), the SI unit, the worked step as feedback
+//! regime                          →  multiple choice: the inequalities that decide the regime
+//! ```
+//!
+//! Both carry HTML with formulas as MathJax LaTeX `\( … \)` (Moodle's MathJax filter renders
+//! them). XML embeds the v(t) figure as a file of its question; GIFT, which has no files,
+//! leaves the figure question out, and escapes its syntax characters `~ = # { } :` (no formula
+//! here holds `\n`, which GIFT would read as a line break).
+
+use base64::Engine;
+use serde::Serialize;
+
+use super::answer::{Answer, Value};
+use super::question::{self, Kind};
+use super::{Student, Worksheets};
+use crate::error::Result;
+use crate::models::{with_model, Model, Physics};
+use crate::report::render::{page, template_error};
+use crate::report::OutFile;
+
+const TEMPLATES: &[(&str, &str)] = &[
+    (
+        "moodle.xml",
+        include_str!("../../templates/moodle.xml.tera"),
+    ),
+    ("gift.txt", include_str!("../../templates/gift.txt.tera")),
+];
+
+/// Significant figures a student is asked to give; the tolerance is one unit in the last.
+pub const ANSWER_FIGURES: i32 = 3;
+
+/// The tolerance of a numerical answer `x` given to [`ANSWER_FIGURES`] significant figures: one
+/// unit in the last (rounding, and intermediate results rounded too).
+pub fn tolerance(x: f64) -> f64 {
+    if x == 0.0 || !x.is_finite() {
+        return 0.0;
+    }
+    10f64.powi(x.abs().log10().floor() as i32 - (ANSWER_FIGURES - 1))
+}
+
+/// One question variant (a student's) in a category (a question of the sheet).
+#[derive(Serialize)]
+struct Variant {
+    name: String,
+    /// Question text, HTML.
+    html: String,
+    /// The worked step, HTML.
+    feedback: String,
+    /// Numerical: the answer, its tolerance and SI unit.
+    answer: String,
+    tolerance: String,
+    unit: &'static str,
+    /// Multiple choice: the options.
+    choices: Vec<Choice>,
+    /// The v(t) figure (file name, base64), XML only.
+    file: Option<(String, String)>,
+}
+
+#[derive(Serialize)]
+struct Choice {
+    html: String,
+    right: bool,
+}
+
+#[derive(Serialize)]
+struct Category {
+    path: String,
+    numerical: bool,
+    variants: Vec<Variant>,
+}
+
+/// A number as Moodle reads it: plain or with an exponent, shortest round trip.
+fn moodle_number(x: f64) -> String {
+    crate::error::short(x)
+}
+
+/// (LaTeX symbol, value, unit) of the given parameters of a case.
+fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
+    fn of<M: Physics>(p: &M) -> Vec<(&'static str, f64, &'static str)> {
+        M::PARAMS
+            .iter()
+            .filter_map(|s| Some((s.tex, (s.get)(p)?, s.unit)))
+            .collect()
+    }
+    with_model!(case, p => of(p))
+}
+
+fn params_html(case: &Model) -> String {
+    let rows: String = parameters(case)
+        .into_iter()
+        .map(|(tex, value, unit)| {
+            format!(
+                "<tr><th scope=\"row\">\\({}\\)</th><td>{}</td><td>{}</td></tr>",
+                tera::escape_html(tex),
+                moodle_number(value),
+                tera::escape_html(unit)
+            )
+        })
+        .collect();
+    format!("<table><tbody>{rows}</tbody></table>")
+}
+
+fn variant(w: &Worksheets, intro: &str, s: &Student, i: usize, a: &Answer) -> Variant {
+    let q = a.question;
+    let figures = match (q.kind, q.unit()) {
+        (Kind::Regime(_), _) => String::new(),
+        (_, "") => format!(" ({ANSWER_FIGURES} significant figures)"),
+        (_, unit) => format!(" in {unit} ({ANSWER_FIGURES} significant figures)"),
+    };
+    let image = if s.figure.is_some() && matches!(q.kind, Kind::ReadFigure(_)) {
+        "<p><img src=\"@@PLUGINFILE@@/v-t.svg\" alt=\"Speed v(t) of the linearized law, from \
+         which the answer is read\" width=\"640\"></p>"
+    } else {
+        ""
+    };
+    let html = format!(
+        "<p>{}</p>{}<p>{}{}</p>{image}",
+        tera::escape_html(intro),
+        params_html(&s.case),
+        tera::escape_html(q.prompt),
+        tera::escape_html(&figures),
+    );
+    let name = format!("Q{} {} — student {:03}", i + 1, q.key(), s.number);
+    let mut v = Variant {
+        name,
+        html,
+        feedback: feedback(a),
+        answer: String::new(),
+        tolerance: String::new(),
+        unit: q.unit(),
+        choices: Vec::new(),
+        file: None,
+    };
+    match (&a.value, q.kind) {
+        (Value::Text(regime), Kind::Regime(_)) => {
+            v.choices = question::regime_rules(w.model)
+                .iter()
+                .map(|&(r, condition)| Choice {
+                    html: format!("\\({}\\)", tera::escape_html(condition)),
+                    right: r.id() == regime,
+                })
+                .collect();
+        }
+        (Value::Number(x), kind) => {
+            v.answer = moodle_number(*x);
+            let tol = match kind {
+                Kind::ReadFigure(_) => a.tolerance.unwrap_or_else(|| tolerance(*x)),
+                _ => tolerance(*x),
+            };
+            v.tolerance = moodle_number(tol);
+            if let (Kind::ReadFigure(_), Some(svg)) = (kind, &s.figure) {
+                let data = base64::engine::general_purpose::STANDARD.encode(svg);
+                v.file = Some(("v-t.svg".to_string(), data));
+            }
+        }
+        (Value::Text(t), _) => v.answer = t.clone(),
+    }
+    v
+}
+
+/// The worked step (formula = numbers = result, or the values the regime inequalities
+/// compare) and the exact integration that confirms it, in HTML.
+fn feedback(a: &Answer) -> String {
+    let unit = a.question.unit();
+    let confirm = match &a.numeric {
+        Value::Number(x) => format!(
+            "The exact integration of the linearized law gives {} {unit}.",
+            crate::output::format::sig(Some(*x), 10)
+        ),
+        Value::Text(t) => format!("The exact integration of the linearized law gives: {t}."),
+    };
+    let worked = match &a.step {
+        Some(step) => format!(
+            "\\({}\\) (eq. {})",
+            tera::escape_html(&step.worked_tex()),
+            tera::escape_html(step.equation)
+        ),
+        None => {
+            let compared = a
+                .comparisons
+                .iter()
+                .map(|c| format!("{} = {}", c.symbol, moodle_number(c.value)))
+                .collect::<Vec<_>>()
+                .join(r",\quad ");
+            format!("\\({}\\)", tera::escape_html(&compared))
+        }
+    };
+    format!(
+        "<p>{worked}</p><p>{}</p>",
+        tera::escape_html(confirm.trim_end())
+    )
+}
+
+fn categories(w: &Worksheets, intro: &str, title: &str) -> Vec<Category> {
+    w.questions
+        .iter()
+        .enumerate()
+        .map(|(i, q)| Category {
+            path: format!(
+                "$course$/top/stickslip {title} (seed {})/Q{} {}",
+                w.seed,
+                i + 1,
+                q.key()
+            ),
+            numerical: !matches!(q.kind, Kind::Regime(_)),
+            variants: w
+                .students
+                .iter()
+                .filter_map(|s| {
+                    let a = s.answers.iter().find(|a| a.question == *q)?;
+                    Some(variant(w, intro, s, i, a))
+                })
+                .collect(),
+        })
+        .collect()
+}
+
+/// `worksheets.moodle.xml` and/or `worksheets.gift.txt` of the set.
+pub fn render(w: &Worksheets, xml: bool, gift: bool) -> Result<Vec<OutFile>> {
+    let (intro, title) = (super::render::intro(w.model), super::render::title(w.model));
+    let mut tera = tera::Tera::default();
+    // XML escaping: tera's HTML escape writes entities XML reads (`&#x27;`, `&#x2F;` …).
+    tera.autoescape_on(vec![".xml"]);
+    tera.register_filter("gift", gift_text);
+    tera.add_raw_templates(TEMPLATES.iter().copied())
+        .map_err(|e| template_error("moodle", &e))?;
+    let mut ctx = tera::Context::new();
+    ctx.insert("categories", &categories(w, intro, title));
+    let mut out = Vec::new();
+    if xml {
+        out.push(OutFile::new(
+            "worksheets.moodle.xml",
+            page(&tera, "moodle.xml", &ctx)?,
+        ));
+    }
+    if gift {
+        out.push(OutFile::new(
+            "worksheets.gift.txt",
+            page(&tera, "gift.txt", &ctx)?,
+        ));
+    }
+    Ok(out)
+}
+
+/// Tera filter `gift`: text safe in GIFT, its special characters escaped and on one line.
+pub(crate) fn gift_text(
+    value: &tera::Value,
+    _: &std::collections::HashMap<String, tera::Value>,
+) -> tera::Result<tera::Value> {
+    let text = value
+        .as_str()
+        .map_or_else(|| value.to_string(), str::to_string);
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '~' | '=' | '#' | '{' | '}' | ':' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '\n' | '\r' => out.push(' '),
+            c => out.push(c),
+        }
+    }
+    Ok(tera::Value::String(out))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tolerance_is_one_unit_in_the_third_figure() {
+        assert_eq!(tolerance(0.1234), 0.001);
+        assert_eq!(tolerance(5.397e-3), 1e-5);
+        assert_eq!(tolerance(-2500.0), 10.0);
+        assert_eq!(tolerance(0.0), 0.0);
+    }
+}
