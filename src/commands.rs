@@ -153,7 +153,8 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         regime: args.regime.clone(),
         questions: args.questions.clone(),
     };
-    let sheets = crate::worksheet::generate(&request)?;
+    let progress = crate::output::progress::progress_bar(args.students, "students");
+    let sheets = crate::worksheet::generate(&request, &progress)?;
     let pages: Vec<Format> = args.format.iter().filter_map(|f| f.page()).collect();
     let mut files = crate::worksheet::render(&sheets, &pages)?;
     files.extend(crate::worksheet::moodle::render(
@@ -247,7 +248,7 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
         periods,
     };
     crate::sweep::validate(&base, &spec)?;
-    let progress = crate::sweep::progress_bar(spec.steps);
+    let progress = crate::output::progress::progress_bar(spec.steps, "sweep");
     let result = crate::sweep::run(&base, &spec, &progress)?;
     let files = crate::sweep::render(&result)?;
     report::write_all(&grid.out, &files)?;

@@ -14,9 +14,7 @@
 
 mod render;
 
-use std::io::IsTerminal;
-
-use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::error::{Error, Result};
@@ -159,18 +157,6 @@ pub fn grid_value(from: f64, to: f64, i: u32, n: u32) -> f64 {
         return to;
     }
     from + (to - from) * f64::from(i) / f64::from(n - 1)
-}
-
-/// A progress bar on stderr when stderr is a terminal; hidden when it is piped.
-pub fn progress_bar(len: u32) -> ProgressBar {
-    let bar = ProgressBar::with_draw_target(Some(u64::from(len)), ProgressDrawTarget::hidden());
-    if std::io::stderr().is_terminal() {
-        bar.set_draw_target(ProgressDrawTarget::stderr());
-        if let Ok(style) = ProgressStyle::with_template("sweep {bar:40} {pos}/{len} {eta}") {
-            bar.set_style(style);
-        }
-    }
-    bar
 }
 
 /// Runs the sweep in parallel over the grid, ticking `progress` once per point.
