@@ -385,3 +385,48 @@ fn a_sweep_goes_on_past_points_the_model_refuses() {
     assert!(rows[0].ends_with(",invalid"), "{}", rows[0]);
     assert!(rows[1..].iter().all(|r| !r.contains("invalid")), "{csv}");
 }
+
+/// A tracked file whose times are in the wrong unit (scaled by 1e300) spans 10^301 model
+/// periods: the period scan once ran forever. It is refused at once, naming the time column.
+#[test]
+fn a_tracked_span_of_astronomical_periods_is_refused_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let text: String = std::iter::once("t,y\n".to_string())
+        .chain((0..50).map(|i| format!("{:e},{}\n", f64::from(i) * 1e298, -f64::from(i) * 1e-3)))
+        .collect();
+    let file = write(dir.path(), "scaled.csv", &text);
+    let out = dir.path().join("out");
+    let msg = one_line_error(stickslip().arg("fit").arg(&file).arg("--out").arg(&out), 2);
+    assert!(
+        msg.contains("column t") && msg.contains("periods of the model") && msg.contains("100000"),
+        "{msg}"
+    );
+    assert!(tree(&out).is_empty());
+}
+
+/// More rows than a fit takes are refused naming the first line past the limit.
+#[test]
+fn a_tracked_file_of_more_than_a_hundred_thousand_rows_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from("t,y\n");
+    for i in 0..=100_000 {
+        text.push_str(&format!(
+            "{},{}\n",
+            f64::from(i) / 240.0,
+            -f64::from(i) * 1e-5
+        ));
+    }
+    let file = write(dir.path(), "long.csv", &text);
+    let msg = one_line_error(
+        stickslip()
+            .arg("fit")
+            .arg(&file)
+            .arg("--out")
+            .arg(dir.path().join("out")),
+        2,
+    );
+    assert!(
+        msg.contains("line 100002") && msg.contains("at most 100000"),
+        "{msg}"
+    );
+}

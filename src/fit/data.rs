@@ -13,7 +13,8 @@
 //! that `0,5;1,2` reads as two decimal-comma numbers). Decimal commas are accepted when the
 //! separator is not `,`. Quoting follows RFC 4180 (the `csv` crate).
 //! Every problem is one line naming the line of the file: no header, a missing column, an
-//! empty or non-numeric cell, time not strictly increasing, fewer than [`MIN_ROWS`] rows.
+//! empty or non-numeric cell, time not strictly increasing, fewer than [`MIN_ROWS`] or more
+//! than [`MAX_ROWS`] rows.
 
 use std::path::Path;
 
@@ -26,6 +27,9 @@ const CELL_CHARS: usize = 40;
 
 /// Fewest data rows a fit accepts.
 pub const MIN_ROWS: usize = 10;
+/// Most data rows a fit accepts (an hour of video at 30 frames per second), so that every fit
+/// returns in seconds.
+pub const MAX_ROWS: usize = 100_000;
 
 /// Unit of the position column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
@@ -162,6 +166,15 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
         .position(|r| r.cells.iter().any(|c| number(c).is_some()))
         .ok_or_else(|| err(None, "no data rows (no row holds a number)".to_string()))?;
     let (preamble, data) = rows.split_at(first_data);
+    if let Some(row) = data.get(MAX_ROWS) {
+        return Err(err(
+            Some(row.line),
+            format!(
+                "more than {MAX_ROWS} data rows; a fit takes at most {MAX_ROWS} (keep every \
+                 n-th frame)"
+            ),
+        ));
+    }
     let header_at = preamble
         .iter()
         .rposition(|r| non_empty(&r.cells) >= 2 && !is_units_row(&r.cells))

@@ -30,6 +30,7 @@ use crate::engine::{analyse, integrate, RunOptions};
 use crate::error::{Error, Result};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
+use crate::output::format::sig;
 use crate::params::DEFAULT_PERIODS;
 pub use data::Tracked;
 pub use model::{data_period, track, Axis, Track};
@@ -110,6 +111,9 @@ pub struct Fit {
     pub series: Series,
 }
 
+/// Most model periods a tracked span may cover (a falling toy covers tens).
+pub const MAX_SPAN_PERIODS: f64 = 100_000.0;
+
 /// Fits the `free` parameters of `base` (validated; the start of the free ones) and the
 /// nuisance to `data`.
 ///
@@ -133,6 +137,21 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
             })
         }
     };
+    let span_periods = (data.t[data.t.len() - 1] - data.t[0]) / base.period();
+    if span_periods.is_nan() || span_periods > MAX_SPAN_PERIODS {
+        return Err(Error::TrackedData {
+            path: data.file.clone(),
+            line: None,
+            column: Some(data.time_column.clone()),
+            reason: format!(
+                "the tracked span covers {} periods of the model (T = {} s); a fit takes at \
+                 most {}: check the time unit of the file, and k and m_W",
+                sig(Some(span_periods), 3),
+                sig(Some(base.period()), 4),
+                sig(Some(MAX_SPAN_PERIODS), 6)
+            ),
+        });
+    }
     let setup = Setup {
         base: *base,
         free: &free,
@@ -184,8 +203,8 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
         axis,
         n,
         p: k + 2,
-        converged: s.termination.was_successful() && s.covariance.is_some(),
-        termination: termination_text(&s.termination, s.covariance.is_some()),
+        converged: s.termination.was_successful() && !s.exhausted && s.covariance.is_some(),
+        termination: termination_text(&s.termination, s.exhausted, s.covariance.is_some()),
         iterations: s.iterations,
         evaluations: s.evaluations,
         starts: s.starts,

@@ -33,6 +33,9 @@ pub const STARTS: usize = 3;
 /// RACE_PATIENCE·(p + 1), and only the best goes on.
 const PATIENCE: usize = 30;
 const RACE_PATIENCE: usize = 5;
+/// Most row evaluations of the model (tracks × data rows) that LM spends over all its starts:
+/// about 600 tracks of 10^5 rows, a few seconds, and never binding for a few thousand rows.
+pub const WORK_BUDGET: usize = 60_000_000;
 /// Step of the central differences: in the internal coordinates, and relative in the physical.
 const FD_STEP: f64 = 1e-6;
 
@@ -59,6 +62,8 @@ pub struct Solution {
     pub s2: f64,
     pub covariance: Option<DMatrix<f64>>,
     pub termination: TerminationReason,
+    /// LM stopped because [`WORK_BUDGET`] was spent.
+    pub exhausted: bool,
     /// Of the winning start: Jacobians (LM iterations) and residual evaluations.
     pub iterations: usize,
     pub evaluations: usize,
@@ -71,11 +76,12 @@ pub struct Solution {
 /// Fits `setup`'s free parameters and the nuisance; `data_period` (s) starts k when it is free.
 pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
     let starts = starts(setup, data_period)?;
+    let budget = Budget(Cell::new(WORK_BUDGET / setup.y.len().max(1)));
     let mut leader: Option<(Attempt, &Start)> = None;
     for start in &starts {
         let mut x0 = to_internal(&start.p, setup.free);
         x0.extend([start.shift, start.y_off]);
-        let attempt = minimize(setup, DVector::from_vec(x0), RACE_PATIENCE);
+        let attempt = minimize(setup, DVector::from_vec(x0), RACE_PATIENCE, &budget);
         if leader.as_ref().is_none_or(|(b, _)| attempt.beats(b)) {
             leader = Some((attempt, start));
         }
@@ -86,7 +92,7 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
     let best = if leader.termination.was_successful() {
         leader
     } else {
-        let more = minimize(setup, leader.x.clone(), PATIENCE);
+        let more = minimize(setup, leader.x.clone(), PATIENCE, &budget);
         Attempt {
             iterations: leader.iterations + more.iterations,
             evaluations: leader.evaluations + more.evaluations,
@@ -127,6 +133,7 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
         residuals: eval.r,
         s2,
         covariance,
+        exhausted: budget.0.get() == 0 && !best.termination.was_successful(),
         termination: best.termination,
         iterations: best.iterations,
         evaluations: best.evaluations,
@@ -199,6 +206,19 @@ struct Problem<'a> {
     /// The evaluation at x; `None` where the model cannot be evaluated (LM then stops).
     current: Option<Eval>,
     jacobians: Cell<usize>,
+    budget: &'a Budget,
+}
+
+/// The model tracks LM may still compute; 0 once a request did not fit.
+struct Budget(Cell<usize>);
+
+impl Budget {
+    /// Takes `tracks` from the budget; `false` (and the budget emptied) if they do not fit.
+    fn spend(&self, tracks: usize) -> bool {
+        let left = self.0.get();
+        self.0.set(left.saturating_sub(tracks));
+        left >= tracks && left > 0
+    }
 }
 
 impl Problem<'_> {
@@ -218,7 +238,11 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
         self.x.copy_from(x);
         let (internal, shift, y_off) = self.split();
         let p = self.setup.params(internal);
-        self.current = self.setup.eval(&p, shift, y_off).ok();
+        self.current = if self.budget.spend(1) {
+            self.setup.eval(&p, shift, y_off).ok()
+        } else {
+            None
+        };
     }
 
     fn params(&self) -> DVector<f64> {
@@ -234,6 +258,9 @@ impl LeastSquaresProblem<f64, Dyn, Dyn> for Problem<'_> {
         let (internal, shift, _) = self.split();
         let steps = vec![FD_STEP; internal.len()];
         let dv = &self.current.as_ref()?.dv;
+        if !self.budget.spend(2 * internal.len()) {
+            return None;
+        }
         self.setup
             .jacobian(internal, &steps, |x| self.setup.params(x), shift, dv)
     }
@@ -263,7 +290,7 @@ impl Attempt {
 }
 
 /// Runs LM from `x0` for at most `patience`·(p + 1) residual evaluations.
-fn minimize(setup: &Setup, x0: DVector<f64>, patience: usize) -> Attempt {
+fn minimize(setup: &Setup, x0: DVector<f64>, patience: usize, budget: &Budget) -> Attempt {
     let lm = LevenbergMarquardt::new()
         .with_ftol(1e-10)
         .with_xtol(1e-10)
@@ -275,6 +302,7 @@ fn minimize(setup: &Setup, x0: DVector<f64>, patience: usize) -> Attempt {
         x: x0.clone(),
         current: None,
         jacobians: Cell::new(0),
+        budget,
     };
     problem.set_params(&x0);
     let (problem, report) = lm.minimize(problem);
@@ -362,9 +390,11 @@ fn covariance(j: &DMatrix<f64>, s2: f64) -> Option<DMatrix<f64>> {
     ))
 }
 
-/// LM's termination in words; `regular`: whether JᵀJ could be inverted.
-pub fn termination_text(t: &TerminationReason, regular: bool) -> String {
+/// LM's termination in words; `exhausted`: whether [`WORK_BUDGET`] stopped it; `regular`:
+/// whether JᵀJ could be inverted.
+pub fn termination_text(t: &TerminationReason, exhausted: bool, regular: bool) -> String {
     let text = match t {
+        _ if exhausted => "stopped: work limit reached".to_string(),
         TerminationReason::Converged { ftol, xtol } => {
             let which: Vec<&str> = [(*ftol, "ftol"), (*xtol, "xtol")]
                 .into_iter()
@@ -417,6 +447,18 @@ mod tests {
         let fd = (plus - minus) / (2.0 * h);
         assert!((jac.column(1) - &fd).amax() < 1e-5 * fd.amax());
         assert!(jac.column(2).iter().all(|&c| c == 1.0));
+    }
+
+    #[test]
+    fn the_budget_refuses_what_does_not_fit_and_stays_spent() {
+        let budget = Budget(Cell::new(10));
+        assert!(budget.spend(4));
+        assert!(budget.spend(6));
+        assert!(!budget.spend(1));
+        let budget = Budget(Cell::new(5));
+        assert!(!budget.spend(6));
+        assert!(!budget.spend(1));
+        assert!(termination_text(&TerminationReason::User("x"), true, true).contains("work limit"));
     }
 
     #[test]
