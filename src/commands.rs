@@ -198,12 +198,16 @@ fn bench(args: &BenchArgs) -> Result<()> {
 
 /// `stickslip report`: the built-in scenes or the given scenario files.
 fn report(args: &ReportArgs) -> Result<()> {
-    let scenes = if args.scenarios.is_empty() {
-        report::builtin_scenes()?
+    let (scenes, files) = if args.scenarios.is_empty() {
+        let scenes = report::builtin_scenes()?;
+        let (mut files, links) = report::classroom::material(&scenes, &args.format)?;
+        files.extend(report::render_with(&scenes, &args.format, &links)?);
+        (scenes, files)
     } else {
-        report::Scene::from_files(&args.scenarios)?
+        let scenes = report::Scene::from_files(&args.scenarios)?;
+        let files = report::render(&scenes, &args.format)?;
+        (scenes, files)
     };
-    let files = report::render(&scenes, &args.format)?;
     let written = report::write_all(&args.out, &files)?;
     print_stdout(&format!(
         "wrote {} files for {} scenes to {}\n",

@@ -9,6 +9,7 @@ use crate::handout::physics::Note;
 use crate::models::Physics;
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
+use crate::report::sketch::Phase;
 use crate::report::{OutFile, Scene};
 use crate::results::Summary;
 
@@ -42,6 +43,8 @@ pub trait Present: Physics {
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)>;
     /// The equation of motion, line by line: (formula, its physics).
     fn equation_of_motion() -> &'static [(&'static str, &'static str)];
+    /// A sketch of the apparatus with these parameters and the forces of `phase` (SVG).
+    fn sketch(&self, phase: Phase) -> String;
     /// The laws of an evaluation.
     fn laws(e: &Self::Evaluation) -> Laws<'_>;
     /// The evaluation as terminal tables.

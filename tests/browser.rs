@@ -53,15 +53,16 @@ fn ink_share(png_path: &Path) -> f64 {
 
 #[test]
 fn every_page_renders_in_chromium_and_prints_to_pdf() {
-    let (Some(browser), Some(pdftotext)) = (
+    let (Some(browser), Some(pdftotext), Some(pdfinfo)) = (
         find(&["chromium", "chromium-browser", "google-chrome"]),
         find(&["pdftotext"]),
+        find(&["pdfinfo"]),
     ) else {
         assert!(
             std::env::var("CI").is_err(),
             "CI must install chromium and poppler-utils"
         );
-        eprintln!("skipped: chromium or pdftotext not installed");
+        eprintln!("skipped: chromium or poppler-utils not installed");
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -81,16 +82,21 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
             (format!("{}.html", s.id), s.title.clone(), value)
         })
         .collect();
-    // The index: its title and the first scene's title in its table.
+    // The index: its title and the first scene's title in its table; the lecture notes.
     pages.push((
         "index.html".into(),
         "stickslip".into(),
         scenes[0].title.clone(),
     ));
+    pages.push((
+        "all-scenes.html".into(),
+        "Lecture notes".into(),
+        scenes.last().unwrap().title.clone(),
+    ));
     // Two pages at a time on this 2-core machine.
     std::thread::scope(|scope| {
         for chunk in pages.chunks(pages.len().div_ceil(2)) {
-            let (browser, pdftotext, dir) = (&browser, &pdftotext, dir.path());
+            let (browser, pdftotext, pdfinfo, dir) = (&browser, &pdftotext, &pdfinfo, dir.path());
             scope.spawn(move || {
                 for (i, (page, title, value)) in chunk.iter().enumerate() {
                     let profile = dir.join(format!("profile-{page}-{i}"));
@@ -115,6 +121,11 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
                         &[format!("--print-to-pdf={}", pdf.display()), url],
                     );
                     assert!(pdf.exists(), "{page}: no PDF: {out:?}");
+                    let pages = print_pages(pdfinfo, &pdf);
+                    assert!(
+                        pages <= page_budget(page),
+                        "{page}: prints to {pages} A4 pages"
+                    );
                     let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
                     let text = String::from_utf8_lossy(&text.stdout).replace('\n', " ");
                     let squashed = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -131,6 +142,89 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
             });
         }
     });
+}
+
+/// A4 pages a page may print to: the lecture notes 30, a scene 3 (the woodpecker's regime map
+/// 4: two maps, 45 closed forms and three claims), the index 2.
+fn page_budget(page: &str) -> u32 {
+    match page {
+        "all-scenes.html" => 30,
+        "woodpecker-regime-map.html" => 4,
+        "index.html" => 2,
+        _ => 3,
+    }
+}
+
+/// The page count pdfinfo reads from `pdf`.
+fn print_pages(pdfinfo: &Path, pdf: &Path) -> u32 {
+    let info = Command::new(pdfinfo).arg(pdf).output().unwrap();
+    String::from_utf8_lossy(&info.stdout)
+        .lines()
+        .find_map(|l| l.strip_prefix("Pages:"))
+        .and_then(|n| n.trim().parse().ok())
+        .unwrap_or(0)
+}
+
+/// axe-core in Chromium on every page of the default report, at desktop and phone width: no
+/// serious or critical violation (figures without a text alternative, missing landmarks,
+/// contrast, scrollable tables out of keyboard reach). Needs Node with axe-core and
+/// playwright-core in `STICKSLIP_NODE_MODULES` (default `target/axe/node_modules`, where
+/// `.ci/run` installs them).
+#[test]
+fn every_page_has_no_serious_accessibility_violation() {
+    let modules = std::env::var("STICKSLIP_NODE_MODULES").map_or_else(
+        |_| Path::new(env!("CARGO_MANIFEST_DIR")).join("target/axe/node_modules"),
+        PathBuf::from,
+    );
+    let (Some(browser), Some(node)) = (
+        find(&["chromium", "chromium-browser", "google-chrome"]),
+        find(&["node"]),
+    ) else {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install chromium and node"
+        );
+        eprintln!("skipped: chromium or node not installed");
+        return;
+    };
+    if !modules.join("axe-core").exists() || !modules.join("playwright-core").exists() {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install axe-core and playwright-core in {}",
+            modules.display()
+        );
+        eprintln!(
+            "skipped: axe-core or playwright-core not in {}",
+            modules.display()
+        );
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let files = render(&builtin_scenes().unwrap(), &[Format::Html]).unwrap();
+    write_all(dir.path(), &files).unwrap();
+    let pages: Vec<String> = files
+        .iter()
+        .filter(|f| f.path.extension().is_some_and(|e| e == "html"))
+        .map(|f| dir.path().join(&f.path).display().to_string())
+        .collect();
+    let out = Command::new(node)
+        .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/axe/run.mjs"))
+        .arg(&browser)
+        .arg(&modules)
+        .args(&pages)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let results: Vec<serde_json::Value> = stdout
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    // Every page at both widths.
+    assert_eq!(results.len(), 2 * pages.len(), "{stdout}");
+    for r in &results {
+        assert_eq!(r["violations"], serde_json::json!([]), "{r}");
+    }
 }
 
 #[test]

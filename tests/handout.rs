@@ -76,10 +76,12 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
         assert_eq!(html.matches("<section class=\"page\"").count(), 2, "{id}");
         assert!(html.contains("break-after: page"), "{id}: page break");
         let handout: Handout = handout::build(&scene).unwrap();
+        // The figures and the sketch of the apparatus.
         let svgs = html.matches("<svg").count();
-        assert!((2..=3).contains(&svgs), "{id}: {svgs} figures");
-        assert_eq!(svgs, handout.scene.figures.len(), "{id}");
-        for f in &handout.scene.figures {
+        assert!((3..=4).contains(&svgs), "{id}: {svgs} figures");
+        assert_eq!(svgs, handout.scene.figures.len() + 1, "{id}");
+        assert!(html.contains("<title>") && handout.scene.sketch.svg.contains("<desc>"));
+        for f in std::iter::once(&handout.scene.sketch).chain(&handout.scene.figures) {
             assert!(md.contains(&format!("]({})", f.file)), "{id}: {}", f.file);
             assert!(files.iter().any(|g| g.path == Path::new(&f.file)), "{id}");
         }

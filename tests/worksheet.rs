@@ -287,7 +287,9 @@ fn the_same_seed_gives_the_same_bytes_and_another_seed_other_sets() {
     worksheet(a.path(), &args);
     worksheet(b.path(), &args);
     let (ta, tb) = (tree(a.path()), tree(b.path()));
-    assert_eq!(ta.len(), 9, "{:?}", ta.keys());
+    // Sheets and key in two formats, the JSON key, and per student the v(t) figure and the
+    // apparatus for Markdown.
+    assert_eq!(ta.len(), 13, "{:?}", ta.keys());
     assert!(ta == tb, "same arguments, different bytes");
     worksheet(
         c.path(),
@@ -343,8 +345,8 @@ fn html_pages_put_one_student_per_page_and_are_self_contained() {
     let sheets = fs::read_to_string(tmp.path().join("worksheets.html")).unwrap();
     assert_eq!(
         sheets.matches("<svg").count(),
-        5,
-        "one inline figure per student"
+        10,
+        "one inline figure and one sketch of the apparatus per student"
     );
     assert_eq!(sheets.matches("class=\"answer-box\"").count(), 5 * 7);
     // The figure question does not give its answer away: no value of the key on the sheet.
@@ -401,8 +403,14 @@ fn a_subset_of_questions_is_asked_in_sheet_order() {
     let files: Vec<_> = tree(tmp.path()).into_keys().collect();
     assert_eq!(
         files,
-        ["answer-key.json", "answer-key.md", "worksheets.md"],
-        "md only, and no figure without the figure question"
+        [
+            "answer-key.json",
+            "answer-key.md",
+            "figures/student-001-apparatus.svg",
+            "figures/student-002-apparatus.svg",
+            "worksheets.md"
+        ],
+        "md only, the apparatus, and no figure without the figure question"
     );
     let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
     assert_eq!(md.matches("\n1. ").count(), 2);

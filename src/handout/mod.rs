@@ -19,7 +19,7 @@ use crate::error::{Error, Result};
 use crate::models::{with_model, Model};
 use crate::present::Present;
 use crate::report::context::{FigureCtx, SceneCtx};
-use crate::report::render::{claim_params, page, scene_context, templates, CSS};
+use crate::report::render::{claim_params, first_sentence, page, scene_context, templates, CSS};
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
 use physics::Note;
 
@@ -38,14 +38,6 @@ const TEMPLATES: &[(&str, &str)] = &[
     ),
 ];
 const HANDOUT_CSS: &str = include_str!("../../templates/handout.css");
-
-/// A line of the equation of motion, in symbols, with a sentence of physics.
-#[derive(Clone, Debug, Serialize)]
-pub struct MotionLine {
-    pub mathml: String,
-    pub tex: String,
-    pub note: String,
-}
 
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
@@ -84,7 +76,6 @@ pub struct Handout {
     /// The regime of the closed forms (linearized law) and the inequality that decides it.
     pub regime: String,
     pub regime_why: String,
-    pub motion: Vec<MotionLine>,
     /// The chain of formulas that describe this motion.
     pub steps: Vec<StepCtx>,
     /// The formulas left out, one line per reason ("t_ST, v̄: why").
@@ -116,14 +107,6 @@ pub fn list() -> Result<String> {
         .iter()
         .map(|s| format!("{:width$}  {}\n", s.id, first_sentence(&s.caption)))
         .collect())
-}
-
-/// The text up to the first full stop that ends a sentence (not "Fig. 6").
-fn first_sentence(text: &str) -> &str {
-    text.match_indices(". ")
-        .map(|(i, _)| &text[..=i])
-        .find(|head| !(head.ends_with("Fig.") || head.ends_with("Figs.")))
-        .unwrap_or(text)
 }
 
 /// The handout of `scene`: context, figures and claims.
@@ -161,21 +144,12 @@ pub fn build(scene: &Scene) -> Result<Handout> {
         .map(|r| (r.regime.clone(), r.why.clone()))
         .unwrap_or_default();
     let (steps, omitted) = chain(&scene.setup);
-    let motion = physics::equation_of_motion(&scene.setup)
-        .iter()
-        .map(|(tex, note)| MotionLine {
-            mathml: math::mathml(tex),
-            tex: tex.to_string(),
-            note: note.to_string(),
-        })
-        .collect();
     Ok(Handout {
         scene: ctx,
         figure_columns: page.columns,
         claims_brief: page.brief,
         regime,
         regime_why,
-        motion,
         steps,
         omitted,
         unchecked,
@@ -271,7 +245,12 @@ pub fn render(scene: &Scene, formats: &[Format], browser: Option<&Path>) -> Resu
             format!("{id}.md"),
             page(&tera, "handout.md", &ctx)?,
         ));
-        files.extend(handout.scene.figures.iter().map(FigureCtx::out_file));
+        let scene = &handout.scene;
+        files.extend(
+            std::iter::once(&scene.sketch)
+                .chain(&scene.figures)
+                .map(FigureCtx::out_file),
+        );
     }
     Ok(files)
 }

@@ -4,11 +4,13 @@
 use serde::Serialize;
 
 use crate::error::Result;
-use crate::models::with_model;
+use crate::handout::physics::equation_of_motion;
+use crate::models::{with_model, Model};
 use crate::output::format::{rel, sig};
 use crate::present::Present;
 use crate::report::math::mathml;
 use crate::report::scene::Scene;
+use crate::report::sketch::Phase;
 use crate::report::writer::OutFile;
 use crate::results::quantity::{Quantity, Registry};
 use crate::results::{Applicability, Check, CheckValue, Checked, Summary};
@@ -76,6 +78,14 @@ impl FigureCtx {
     }
 }
 
+/// A line of the equation of motion, in symbols, with a sentence of physics.
+#[derive(Clone, Debug, Serialize)]
+pub struct MotionLine {
+    pub mathml: String,
+    pub tex: String,
+    pub note: String,
+}
+
 /// A claim of the paper with its computed verdict.
 #[derive(Clone, Debug, Serialize)]
 pub struct ClaimCtx {
@@ -93,6 +103,13 @@ pub struct SceneCtx {
     pub id: String,
     pub title: String,
     pub model: String,
+    /// The part of the reading path ([`Part::heading`]) and why the scene matters.
+    pub part: String,
+    pub why: String,
+    /// The apparatus with the scene's parameters, at the slip onset.
+    pub sketch: FigureCtx,
+    /// The equation of motion and the force laws.
+    pub motion: Vec<MotionLine>,
     pub caption: String,
     pub description: String,
     pub params: Vec<ParamRow>,
@@ -114,6 +131,17 @@ pub struct SceneCtx {
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
     let mut ctx = with_model!(&scene.setup, p => p.scene_tables(scene)?);
+    ctx.sketch = FigureCtx {
+        id: format!("{}-apparatus", scene.id),
+        caption: format!(
+            "The apparatus with this page's parameters, {}; forces at the slip onset, to \
+             scale.",
+            SKETCH_WHAT[usize::from(scene.setup.id() == "woodpecker")]
+        ),
+        svg: with_model!(&scene.setup, p => p.sketch(Phase::Slipping)),
+        file: format!("figures/{}-apparatus.svg", scene.id),
+    };
+    ctx.motion = motion_lines(&scene.setup);
     ctx.closed_regime = ctx
         .regimes
         .first()
@@ -193,11 +221,38 @@ pub(crate) fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
     }
 }
 
+/// What each model's sketch shows (pulled mass, woodpecker).
+const SKETCH_WHAT: [&str; 2] = [
+    "the block on the table pulled by F, pressed by the spring and the hanging mass under it",
+    "the sleeve on the pole, tilted by the spring that carries the bird, gripping at two contacts",
+];
+
+/// The equation of motion of `setup`'s model, each line in MathML and LaTeX with its physics.
+pub fn motion_lines(setup: &Model) -> Vec<MotionLine> {
+    equation_of_motion(setup)
+        .iter()
+        .map(|(tex, note)| MotionLine {
+            mathml: mathml(tex),
+            tex: tex.to_string(),
+            note: note.to_string(),
+        })
+        .collect()
+}
+
 pub(crate) fn blank(scene: &Scene, model: &str) -> SceneCtx {
     SceneCtx {
         id: scene.id.clone(),
         title: scene.title.clone(),
         model: model.to_string(),
+        part: scene.part.heading().to_string(),
+        why: scene.why.clone(),
+        sketch: FigureCtx {
+            id: String::new(),
+            caption: String::new(),
+            svg: String::new(),
+            file: String::new(),
+        },
+        motion: Vec::new(),
         caption: scene.caption.clone(),
         description: scene.description.clone(),
         params: Vec::new(),

@@ -6,6 +6,7 @@
 //!       → tera templates (templates/) → files (writer)
 //! ```
 
+pub mod classroom;
 pub mod context;
 pub mod figures;
 pub mod math;
@@ -14,6 +15,6 @@ pub mod scene;
 pub mod sketch;
 pub mod writer;
 
-pub use render::{render, Format};
+pub use render::{render, render_with, Format, Material};
 pub use scene::{builtin_scenes, Scene};
 pub use writer::{write_all, OutFile};

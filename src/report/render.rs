@@ -6,8 +6,9 @@ use serde::Serialize;
 use tera::Tera;
 
 use super::context::{claim, scene_tables, FigureCtx, SceneCtx};
+use super::figures::style::with_text;
 use super::figures::{chart, map};
-use super::scene::{Drawing, Scene};
+use super::scene::{Drawing, Part, Scene};
 use super::writer::OutFile;
 use crate::claims::{self, Claims, Sample};
 use crate::error::{Error, Result};
@@ -166,6 +167,15 @@ fn draw(id: &str, drawing: &Drawing) -> Result<String> {
     })
 }
 
+/// The first sentence of `text` (to the first ". " that does not end "Fig." or "Figs."), the
+/// whole text if it has one.
+pub(crate) fn first_sentence(text: &str) -> &str {
+    text.match_indices(". ")
+        .map(|(i, _)| &text[..=i])
+        .find(|head| !(head.ends_with("Fig.") || head.ends_with("Figs.")))
+        .unwrap_or(text)
+}
+
 /// The parameter pair the claims of a scene are computed on: the scene's own set for its
 /// model, the paper's default set for the other.
 pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
@@ -182,7 +192,11 @@ pub(crate) fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> 
             Ok(FigureCtx {
                 id: f.id.clone(),
                 caption: f.caption.clone(),
-                svg: draw(&f.id, &f.drawing)?,
+                svg: with_text(
+                    &draw(&f.id, &f.drawing)?,
+                    first_sentence(&f.caption),
+                    &f.caption,
+                ),
                 file: format!("figures/{}.svg", f.id),
             })
         })
@@ -200,6 +214,7 @@ pub(crate) fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> 
 struct IndexRow<'a> {
     id: &'a str,
     title: &'a str,
+    why: &'a str,
     model: &'a str,
     closed_regime: &'a str,
     harmonic_regime: &'a str,
@@ -208,8 +223,94 @@ struct IndexRow<'a> {
     all_pass: bool,
 }
 
+impl<'a> IndexRow<'a> {
+    fn of(c: &'a SceneCtx) -> Self {
+        IndexRow {
+            id: &c.id,
+            title: &c.title,
+            why: &c.why,
+            model: &c.model,
+            closed_regime: &c.closed_regime,
+            harmonic_regime: &c.harmonic_regime,
+            passed: c.checks_passed,
+            total: c.checks_total,
+            all_pass: c.all_pass,
+        }
+    }
+}
+
+/// A part of the reading path in the index: its heading, story and scenes.
+#[derive(Serialize)]
+struct IndexPart<'a> {
+    heading: &'static str,
+    story: &'static str,
+    scenes: Vec<IndexRow<'a>>,
+}
+
+/// A page's neighbour in the reading path.
+#[derive(Serialize)]
+struct Link<'a> {
+    id: &'a str,
+    title: &'a str,
+}
+
+impl<'a> Link<'a> {
+    fn of(c: &'a SceneCtx) -> Self {
+        Link {
+            id: &c.id,
+            title: &c.title,
+        }
+    }
+}
+
+/// A scene of the lecture notes, and the earlier scene with the same parameters whose tables
+/// it shares.
+#[derive(Serialize)]
+struct NotesItem<'a> {
+    scene: &'a SceneCtx,
+    /// Verification rows left out (no numeric counterpart, or outside the regime).
+    left_out: usize,
+    shared: Option<Link<'a>>,
+}
+
+/// Teaching material written beside the report, linked from the index.
+#[derive(Clone, Debug, Serialize)]
+pub struct Material {
+    /// Relative links from the HTML and the Markdown index.
+    pub html: String,
+    pub md: String,
+    pub title: String,
+    pub what: String,
+}
+
+/// The checks of `scenes` counted once per distinct parameter set (scenes that share a set
+/// share its checks): (passed, total, distinct sets).
+fn distinct_checks(scenes: &[Scene], contexts: &[SceneCtx]) -> (usize, usize, usize) {
+    let mut seen: Vec<(&crate::models::Model, u32)> = Vec::new();
+    let (mut passed, mut total) = (0, 0);
+    for (s, c) in scenes.iter().zip(contexts) {
+        let key = (&s.setup, s.periods);
+        if !seen.contains(&key) {
+            seen.push(key);
+            passed += c.checks_passed;
+            total += c.checks_total;
+        }
+    }
+    (passed, total, seen.len())
+}
+
 /// Renders `scenes` in the given formats: pages, index and figure files.
 pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
+    render_with(scenes, formats, &[])
+}
+
+/// [`render`], with the index linking `material` (handouts, worksheets, the study) written
+/// beside the report.
+pub fn render_with(
+    scenes: &[Scene],
+    formats: &[Format],
+    material: &[Material],
+) -> Result<Vec<OutFile>> {
     let tera = templates(&[])?;
     // Claims are computed once per distinct parameter pair.
     let mut pairs: Vec<(PulledMassParams, WoodpeckerParams)> = Vec::new();
@@ -234,28 +335,30 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
     let version = env!("CARGO_PKG_VERSION");
     let mut files = Vec::new();
     let page = |name: &str, ctx: &tera::Context| page(&tera, name, ctx).map(String::into_bytes);
-    let index_rows: Vec<IndexRow> = contexts
+    let parts: Vec<IndexPart> = Part::ALL
         .iter()
-        .map(|c| IndexRow {
-            id: &c.id,
-            title: &c.title,
-            model: &c.model,
-            closed_regime: &c.closed_regime,
-            harmonic_regime: &c.harmonic_regime,
-            passed: c.checks_passed,
-            total: c.checks_total,
-            all_pass: c.all_pass,
+        .map(|&part| IndexPart {
+            heading: part.heading(),
+            story: part.story(),
+            scenes: scenes
+                .iter()
+                .zip(&contexts)
+                .filter(|(s, _)| s.part == part)
+                .map(|(_, c)| IndexRow::of(c))
+                .collect(),
         })
+        .filter(|p| !p.scenes.is_empty())
         .collect();
-    let passed: usize = contexts.iter().map(|c| c.checks_passed).sum();
-    let total: usize = contexts.iter().map(|c| c.checks_total).sum();
+    let (passed, total, sets) = distinct_checks(scenes, &contexts);
     let mut index = tera::Context::new();
     index.insert("title", TITLE);
     index.insert("version", version);
     index.insert("css", CSS);
-    index.insert("scenes", &index_rows);
+    index.insert("parts", &parts);
+    index.insert("material", material);
     index.insert("passed", &passed);
     index.insert("total", &total);
+    index.insert("sets", &sets);
     index.insert("all_pass", &(passed == total));
     for format in formats {
         let ext = format.ext();
@@ -268,8 +371,9 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
             c.insert("scene", ctx);
             c.insert("css", CSS);
             c.insert("version", version);
-            c.insert("prev", &i.checked_sub(1).map(|j| contexts[j].id.as_str()));
-            c.insert("next", &contexts.get(i + 1).map(|n| n.id.as_str()));
+            c.insert("prev", &i.checked_sub(1).map(|j| Link::of(&contexts[j])));
+            c.insert("next", &contexts.get(i + 1).map(Link::of));
+            c.insert("shared", &None::<Link>);
             files.push(OutFile::new(
                 format!("{}.{ext}", ctx.id),
                 page(&format!("scene.{ext}"), &c)?,
@@ -277,8 +381,38 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
         }
         match format {
             Format::Html => {
+                // Each claim once, where it first concerns a scene.
+                let mut shown: Vec<u8> = Vec::new();
+                // Only the rows that compare a closed form with the integration; the others
+                // (no counterpart, outside the regime) stay on the scene page.
+                let notes: Vec<(SceneCtx, usize)> = contexts
+                    .iter()
+                    .map(|c| {
+                        let mut c = c.clone();
+                        c.claims.retain(|claim| !shown.contains(&claim.id));
+                        shown.extend(c.claims.iter().map(|claim| claim.id));
+                        let rows = c.verification.len();
+                        c.verification
+                            .retain(|r| r.class == "pass" || r.class == "fail");
+                        let left_out = rows - c.verification.len();
+                        (c, left_out)
+                    })
+                    .collect();
+                let items: Vec<NotesItem> = scenes
+                    .iter()
+                    .zip(&notes)
+                    .enumerate()
+                    .map(|(i, (s, (c, left_out)))| NotesItem {
+                        scene: c,
+                        left_out: *left_out,
+                        shared: scenes[..i]
+                            .iter()
+                            .position(|e| e.setup == s.setup && e.periods == s.periods)
+                            .map(|j| Link::of(&contexts[j])),
+                    })
+                    .collect();
                 let mut all = tera::Context::new();
-                all.insert("scenes", &contexts);
+                all.insert("scenes", &items);
                 all.insert("css", CSS);
                 files.push(OutFile::new("all-scenes.html", page("all.html", &all)?));
             }
@@ -286,7 +420,7 @@ pub fn render(scenes: &[Scene], formats: &[Format]) -> Result<Vec<OutFile>> {
                 files.extend(
                     contexts
                         .iter()
-                        .flat_map(|c| &c.figures)
+                        .flat_map(|c| std::iter::once(&c.sketch).chain(&c.figures))
                         .map(FigureCtx::out_file),
                 );
             }

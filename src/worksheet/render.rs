@@ -13,8 +13,10 @@ use super::{Student, Worksheets};
 use crate::error::Result;
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
+use crate::present::Present;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};
+use crate::report::sketch::Phase;
 use crate::report::{Format, OutFile};
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -113,6 +115,10 @@ struct SheetCtx {
     /// Inline SVG for HTML, file path for Markdown; empty without a figure.
     figure_svg: String,
     figure_file: String,
+    /// The apparatus with the student's parameters, at rest at t = 0 (nothing of the answers):
+    /// inline SVG and the file for Markdown.
+    sketch_svg: String,
+    sketch_file: String,
 }
 
 #[derive(Clone, Debug, Serialize)]
@@ -183,8 +189,19 @@ fn figure_file(number: u32) -> String {
     format!("figures/student-{number:03}.svg")
 }
 
+fn sketch_file(number: u32) -> String {
+    format!("figures/student-{number:03}-apparatus.svg")
+}
+
+/// The apparatus of `case`, at rest at t = 0.
+fn sketch(case: &Model) -> String {
+    with_model!(case, p => p.sketch(Phase::Stuck))
+}
+
 fn sheet_ctx(s: &Student) -> SheetCtx {
     SheetCtx {
+        sketch_svg: sketch(&s.case),
+        sketch_file: sketch_file(s.number),
         number: s.number,
         params: params_ctx(&s.case),
         figure_svg: s.figure.clone().unwrap_or_default(),
@@ -274,10 +291,12 @@ pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
             files.push(OutFile::new(&name, page(&tera, &name, &ctx)?));
         }
         if *format == Format::Md {
-            files.extend(w.students.iter().filter_map(|s| {
-                let svg = s.figure.as_deref()?;
-                Some(OutFile::new(figure_file(s.number), svg))
-            }));
+            for s in &w.students {
+                files.push(OutFile::new(sketch_file(s.number), sketch(&s.case)));
+                if let Some(svg) = &s.figure {
+                    files.push(OutFile::new(figure_file(s.number), svg.as_str()));
+                }
+            }
         }
     }
     files.push(OutFile::new("answer-key.json", key_json(w)?));

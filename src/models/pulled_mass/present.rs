@@ -8,6 +8,7 @@ use crate::handout::physics::Note;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
+use crate::report::sketch::{self, Phase};
 use crate::report::{OutFile, Scene};
 
 impl Present for PulledMassParams {
@@ -46,6 +47,10 @@ impl Present for PulledMassParams {
 
     fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
         teaching::EQUATION_OF_MOTION
+    }
+
+    fn sketch(&self, phase: Phase) -> String {
+        sketch::pulled_mass(self, phase)
     }
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {

@@ -9,6 +9,7 @@ use crate::models::LawKind;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
+use crate::report::sketch::{self, Phase};
 use crate::report::{OutFile, Scene};
 
 impl Present for WoodpeckerParams {
@@ -50,6 +51,10 @@ impl Present for WoodpeckerParams {
 
     fn equation_of_motion() -> &'static [(&'static str, &'static str)] {
         teaching::EQUATION_OF_MOTION
+    }
+
+    fn sketch(&self, phase: Phase) -> String {
+        sketch::woodpecker(self, phase)
     }
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {

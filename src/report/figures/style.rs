@@ -433,6 +433,33 @@ pub fn finish_svg(svg: String) -> String {
     out
 }
 
+/// `svg` with a text alternative: `<title>` (its accessible name) and `<desc>` (what it shows,
+/// with its key numbers) as the first children of the root element, XML-escaped. An SVG that
+/// has a `<title>` already is returned as it is.
+pub fn with_text(svg: &str, title: &str, desc: &str) -> String {
+    let Some(open) = svg.find("<svg") else {
+        return svg.to_string();
+    };
+    let Some(end) = svg[open..].find('>').map(|e| open + e + 1) else {
+        return svg.to_string();
+    };
+    if svg[end..].trim_start().starts_with("<title") {
+        return svg.to_string();
+    }
+    let escape = |t: &str| {
+        t.replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;")
+    };
+    format!(
+        "{}\n<title>{}</title>\n<desc>{}</desc>{}",
+        &svg[..end],
+        escape(title),
+        escape(desc),
+        &svg[end..]
+    )
+}
+
 /// Copies `svg`, writing every `font-size="…"` value with at most two decimals.
 fn push_rounded_font_sizes(out: &mut String, svg: &str) {
     const KEY: &str = "font-size=\"";
@@ -496,6 +523,16 @@ mod tests {
             assert!(f.0 >= c.0 && f.1 >= c.1 && f.2 >= c.2);
         }
         assert_eq!(FILLS[7], RGBColor(153, 153, 153));
+    }
+
+    #[test]
+    fn a_figure_gets_a_title_and_a_description_once() {
+        let svg = "<svg width=\"10\" height=\"5\">\n<rect/>\n</svg>";
+        let out = with_text(svg, "v(t) & x(t)", "speed <1 m/s>");
+        assert!(out.starts_with(
+            "<svg width=\"10\" height=\"5\">\n<title>v(t) &amp; x(t)</title>\n<desc>speed &lt;1 m/s&gt;</desc>\n<rect/>"
+        ));
+        assert_eq!(with_text(&out, "again", "again"), out);
     }
 
     #[test]

@@ -4,6 +4,8 @@
 
 use std::path::{Path, PathBuf};
 
+use serde::Serialize;
+
 use crate::error::{Error, Result};
 use crate::models::{with_model, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS};
@@ -57,12 +59,60 @@ pub struct Figure {
     pub drawing: Drawing,
 }
 
+/// The part of the reading path a scene belongs to: the paper's two models, then the user's
+/// own scenario files.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum Part {
+    PulledMass,
+    Woodpecker,
+    Scenarios,
+}
+
+impl Part {
+    /// Every part, in reading order.
+    pub const ALL: [Part; 3] = [Part::PulledMass, Part::Woodpecker, Part::Scenarios];
+
+    /// The heading of the part in the index.
+    pub fn heading(self) -> &'static str {
+        match self {
+            Part::PulledMass => "Part 1. The pulled mass",
+            Part::Woodpecker => "Part 2. The falling woodpecker",
+            Part::Scenarios => "Your scenarios",
+        }
+    }
+
+    /// The part's story in two sentences: what the apparatus is and what to follow.
+    pub fn story(self) -> &'static str {
+        match self {
+            Part::PulledMass => {
+                "A block on a table is pulled by a constant force F while a spring presses it \
+                 down with a mass hanging under the table: the normal force N oscillates, so \
+                 friction alternately holds the block and lets it slide. Read the pages in order: \
+                 the pull against the friction limits, then each kind of motion, then the price \
+                 of the linearized law that makes every result a closed formula."
+            }
+            Part::Woodpecker => {
+                "The toy woodpecker slides down its pole in jerks: the bird swings on a spring, \
+                 tilting the sleeve so that it grips the pole and lets go twice per swing. The \
+                 same stick-slip rule as in Part 1, with the grip set by the lever l/h; the pages \
+                 follow one period phase by phase, then the regimes and the real toy."
+            }
+            Part::Scenarios => "Scenes from the scenario files given to `stickslip report`.",
+        }
+    }
+}
+
 /// A scene of the report.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     /// File stem of the scene's pages.
     pub id: String,
     pub title: String,
+    /// Where the scene sits in the reading path.
+    pub part: Part,
+    /// Why the scene matters, in a sentence: the index's line and the page's opening.
+    pub why: String,
     /// What the scene shows and what to look for.
     pub caption: String,
     /// The scenario's description of the parameters.
@@ -77,7 +127,7 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// A scene from a scenario: its parameters, title and description.
+    /// A user's scenario as a scene: its parameters, title and description, and what to draw.
     pub fn from_scenario(
         id: &str,
         scenario: &Scenario,
@@ -91,6 +141,8 @@ impl Scene {
         Ok(Self {
             id: id.to_string(),
             title: scenario.title.clone(),
+            part: Part::Scenarios,
+            why: String::new(),
             caption: caption.to_string(),
             description: scenario.description.trim().to_string(),
             setup,
@@ -176,9 +228,13 @@ pub fn page_name(stem: &str) -> String {
 /// Page names of the report itself, which no scene may take (compared in lower case).
 pub const RESERVED_PAGES: &[&str] = &["index", "all-scenes"];
 
-/// A built-in scenario file, compiled into the binary.
+/// A built-in scene: a scenario file compiled into the binary and its place in the story.
 struct Builtin {
     id: &'static str,
+    /// The figure(s) of the paper it reproduces, and what they show (unique).
+    title: &'static str,
+    part: Part,
+    why: &'static str,
     file: &'static str,
     text: &'static str,
     caption: &'static str,
@@ -201,8 +257,32 @@ const FIG16: (&str, &str) = scenario_file!("fig16-no-intermediate-halt.toml");
 const FIG26: (&str, &str) = scenario_file!("fig26-tracked-toy.toml");
 const LAMBDA1: (&str, &str) = scenario_file!("lambda1-printed-formulas.toml");
 
+/// The title, part and why of a built-in scene.
+struct Story {
+    title: &'static str,
+    part: Part,
+    why: &'static str,
+}
+
+const fn pulled(title: &'static str, why: &'static str) -> Story {
+    Story {
+        title,
+        part: Part::PulledMass,
+        why,
+    }
+}
+
+const fn wood(title: &'static str, why: &'static str) -> Story {
+    Story {
+        title,
+        part: Part::Woodpecker,
+        why,
+    }
+}
+
 const fn builtin(
     id: &'static str,
+    story: Story,
     scenario: (&'static str, &'static str),
     caption: &'static str,
     figures: &'static [FigureKind],
@@ -210,6 +290,9 @@ const fn builtin(
 ) -> Builtin {
     Builtin {
         id,
+        title: story.title,
+        part: story.part,
+        why: story.why,
         file: scenario.0,
         text: scenario.1,
         caption,
@@ -221,6 +304,10 @@ const fn builtin(
 const BUILTINS: &[Builtin] = &[
     builtin(
         "fig05-immediate-slip",
+        pulled(
+            "Fig. 5: immediate slip",
+            "The simplest case sets the scale: a pull stronger than friction can ever hold, φ = F/W > 2μs.",
+        ),
         FIG05,
         "Immediate slip: F exceeds the largest static capacity 2μsW, so the mass slips at t = 0 \
          and never sticks. Position, speed and acceleration under both laws.",
@@ -229,6 +316,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig06-continuous-slip",
+        pulled(
+            "Fig. 6: continuous slip",
+            "Friction brakes the block every period but never stops it: its speed oscillates about a steady drift.",
+        ),
         FIG06,
         "Non-immediate continuous slip (the paper's Fig. 6 set): the slip starts where F = μs N, \
          the speed peaks where F = μd N, and the mass never comes back to rest.",
@@ -237,6 +328,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "pulled-forces",
+        pulled(
+            "The pull against the friction limits",
+            "One picture decides the motion: where F crosses μs N the slip starts, where it crosses μd N the speed peaks.",
+        ),
         SET_B,
         "The competing forces: the pull F against the static capacity μs N(t) and the dynamic \
          friction μd N(t). The slip starts where F crosses μs N (t_SL), the speed is largest \
@@ -246,6 +341,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig09-domain",
+        pulled(
+            "Fig. 9: where the block sticks, in the (μd, μs) plane",
+            "Which friction pairs give stick-slip, and the band where the paper's condition (20) misses a late stick.",
+        ),
         FIG06,
         "The (μd, μs) plane for the Fig. 6 value of φ = F/W: where the mass sticks in the same \
          period (20), sticks late in the next period (§1.4), or slips for ever, for the linear \
@@ -256,6 +355,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig10-linear-slip-stick",
+        pulled(
+            "Fig. 10: slip-stick within one period",
+            "Textbook stick-slip: every characteristic time has a closed formula, each checked here against the integration.",
+        ),
         SET_B,
         "Slip-stick within one period (set B): position, speed and acceleration with the \
          characteristic times of the closed forms.",
@@ -264,6 +367,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "late-stick",
+        pulled(
+            "Late stick: the block stops in the next period",
+            "A motion the paper's Fig. 9 calls non-stick: the block halts early in the following period.",
+        ),
         SET_C,
         "Late stick (set C): (20) is violated, yet the mass stops early in the next period, \
          before the next slip onset — the band the paper's Fig. 9 calls non-stick.",
@@ -272,6 +379,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig11-position",
+        pulled(
+            "Fig. 11: ten periods of position and the mean speed",
+            "The staircase motion and its mean speed v̄, the number an experiment measures.",
+        ),
         SET_B,
         "Position over ten periods and the line of slope v̄ through the slip onsets.",
         &[FigureKind::PulledLongRun],
@@ -279,6 +390,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig12-harmonic-vs-linear",
+        pulled(
+            "Fig. 12: the harmonic law against its linearization",
+            "What the triangle-wave approximation changes in the motion: the price of closed formulas.",
+        ),
         SET_B,
         "Speed and acceleration of the harmonic law against its linearization, in the settled \
          motion.",
@@ -287,6 +402,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig15-double-slip-stick",
+        wood(
+            "Fig. 15: double slip-stick of the falling woodpecker",
+            "The toy as it works: two slips and two halts per swing of the bird.",
+        ),
         FIG15,
         "The falling woodpecker (Fig. 15 set): two slips and two sticks per period under both \
          laws. Sleeve position and speed with the characteristic times.",
@@ -295,6 +414,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig16-no-intermediate-halt",
+        wood(
+            "Fig. 16: no intermediate halt (z0 = 7.1 mm)",
+            "Regime boundaries are sharp: 0.1 mm of spring set-up changes the motion.",
+        ),
         FIG16,
         "A 0.1 mm larger z0 removes the intermediate halt of the harmonic law: one slip per \
          period with two speed maxima.",
@@ -303,6 +426,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig17-spring-coordinate",
+        wood(
+            "Fig. 17: the spring coordinate and its linear counterparts",
+            "Three ways to replace the bird's harmonic swing by a triangle wave, and how far each is off.",
+        ),
         FIG15,
         "The spring coordinate of the harmonic law against its three linear counterparts \
          (same extremes, same zeros, same zeros and slopes).",
@@ -311,6 +438,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig18-forces",
+        wood(
+            "Fig. 18: the driving force against the grip",
+            "Why the sleeve slips: its weight and the spring force against the friction the lever can hold.",
+        ),
         FIG15,
         "The driving force W_S + F_e against the static capacity 2λμs|F_e| (and the dynamic \
          friction 2λμd|F_e|): the slip of phase I starts where they cross.",
@@ -319,6 +450,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig19-phase-one",
+        wood(
+            "Fig. 19: phase I step by step",
+            "The first slip of each period, with each of its characteristic times.",
+        ),
         FIG15,
         "Phase I of the linear law: acceleration, speed and position with t_SL, t0, t_M, t_ST.",
         &[FigureKind::WoodPhase { phase: 1 }],
@@ -326,6 +461,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig20-mu-d-min-one",
+        wood(
+            "Fig. 20: the critical dynamic friction of phase I",
+            "The friction μd,MIN at which the sleeve stops exactly at half a period.",
+        ),
         FIG15,
         "Phase I for μd below, at and above μd,MIN^(I): at the critical value the sleeve \
          stops exactly at T/2.",
@@ -334,6 +473,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "phase-two",
+        wood(
+            "Phase II and its critical dynamic friction",
+            "The second slip of the period, and the friction μd,MIN at which it ends at the period's end.",
+        ),
         FIG15,
         "Phase II likewise: acceleration, speed and position, and μd below, at and above \
          μd,MIN^(II).",
@@ -345,6 +488,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig23-positions",
+        wood(
+            "Fig. 23: sleeve and bird positions",
+            "The bird swings about the falling sleeve: the motion the eye follows on the real toy.",
+        ),
         FIG15,
         "Sleeve and woodpecker positions and the sleeve speed (harmonic law): the bird \
          oscillates about the falling sleeve.",
@@ -353,6 +500,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "fig26-tracked-toy",
+        wood(
+            "Figs. 26-27: the parameters of the tracked toy",
+            "The model with the parameters of a real, video-tracked toy.",
+        ),
         FIG26,
         "The tracked toy's parameters (Figs. 26–27): sleeve position and speed under both laws.",
         &[FigureKind::WoodMotion { periods: 3.0 }],
@@ -360,6 +511,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "woodpecker-regime-map",
+        wood(
+            "The woodpecker's regimes in the (μd, z0) plane",
+            "Where the toy halts twice, once or never, and how well the closed-form boundaries find it.",
+        ),
         FIG15,
         "Regimes in the (μd, z0) plane: the linear orbit (closed form, §3.6) and the harmonic law \
          (exact integration), with the analytic boundaries μd,MIN and μd,HALT of both phases.",
@@ -368,6 +523,10 @@ const BUILTINS: &[Builtin] = &[
     ),
     builtin(
         "lambda1-printed-formulas",
+        wood(
+            "The printed formulas (λ = 1): a sleeve that never halts",
+            "The paper's formulas as printed leave out the lever: with them the toy would not work.",
+        ),
         LAMBDA1,
         "The printed formulas (λ = 1, N = |F_e|): with the paper's friction values the sleeve \
          never sticks.",
@@ -383,14 +542,20 @@ pub fn builtin_scenes() -> Result<Vec<Scene>> {
         .map(|b| {
             let path = Path::new("scenarios").join(b.file);
             let scenario = Scenario::parse(b.text, &path)?;
-            Scene::from_scenario(
+            let scene = Scene::from_scenario(
                 b.id,
                 &scenario,
                 &path,
                 b.caption,
                 b.figures.to_vec(),
                 b.claims.to_vec(),
-            )
+            )?;
+            Ok(Scene {
+                title: b.title.to_string(),
+                part: b.part,
+                why: b.why.to_string(),
+                ..scene
+            })
         })
         .collect()
 }
@@ -408,5 +573,25 @@ mod tests {
         assert_eq!(ids.len(), scenes.len());
         assert!(scenes.iter().all(|s| !s.figures.is_empty()));
         assert!(ids.iter().all(|id| !RESERVED_PAGES.contains(&id.as_str())));
+    }
+
+    /// Eight pages were once all titled after Fig. 15: a title names what its page shows.
+    #[test]
+    fn builtin_titles_are_unique_and_every_scene_says_why_it_matters() {
+        let scenes = builtin_scenes().unwrap();
+        let mut titles: Vec<_> = scenes.iter().map(|s| s.title.to_lowercase()).collect();
+        titles.sort();
+        titles.dedup();
+        assert_eq!(titles.len(), scenes.len());
+        for s in &scenes {
+            assert!(s.why.ends_with('.') && s.why.len() > 40, "{}", s.id);
+            assert_ne!(s.part, Part::Scenarios, "{}", s.id);
+            let model = if s.part == Part::PulledMass {
+                "pulled-mass"
+            } else {
+                "woodpecker"
+            };
+            assert_eq!(s.setup.id(), model, "{}", s.id);
+        }
     }
 }

@@ -1,0 +1,90 @@
+//! The classroom material of the default report: lecture handouts of two scenes (one per
+//! model) and a worksheet of each model with its answer key, written under `handouts/` and
+//! `worksheets/` beside the scene pages and linked from the index with the speed and accuracy
+//! study (`bench/`, written by `stickslip bench`).
+
+use std::path::Path;
+
+use super::render::Material;
+use super::{Format, OutFile, Scene};
+use crate::error::Result;
+use crate::models::Model;
+use crate::worksheet::{self, Request};
+
+/// The scenes with a handout, and what each teaches.
+const HANDOUTS: &[(&str, &str)] = &[
+    (
+        "fig10-linear-slip-stick",
+        "the pulled mass from its equation of motion to every characteristic time, with the \
+         numbers substituted; two A4 pages",
+    ),
+    (
+        "fig15-double-slip-stick",
+        "the woodpecker's two phases from the equation of motion to the mean speed; two A4 pages",
+    ),
+];
+/// Students on each sample worksheet, and the seed of their draw.
+const STUDENTS: u32 = 4;
+const SEED: u64 = 1;
+
+/// The files of the classroom material for the built-in `scenes` in `formats`, under their
+/// folders, and the index's links to them.
+pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, Vec<Material>)> {
+    let mut files = Vec::new();
+    let mut links = Vec::new();
+    for (id, what) in HANDOUTS {
+        let Some(scene) = scenes.iter().find(|s| s.id == *id) else {
+            continue;
+        };
+        files.extend(under(
+            "handouts",
+            crate::handout::render(scene, formats, None)?,
+        ));
+        links.push(Material {
+            html: format!("handouts/{id}.html"),
+            md: format!("handouts/{id}.md"),
+            title: format!("Handout: {}", scene.title),
+            what: what.to_string(),
+        });
+    }
+    for model in Model::defaults() {
+        let sheets = worksheet::generate(
+            &Request {
+                model,
+                students: STUDENTS,
+                seed: SEED,
+                regime: None,
+                questions: None,
+            },
+            &indicatif::ProgressBar::hidden(),
+        )?;
+        let folder = format!("worksheets/{}", model.id());
+        files.extend(under(&folder, worksheet::render(&sheets, formats)?));
+        links.push(Material {
+            html: format!("{folder}/worksheets.html"),
+            md: format!("{folder}/worksheets.md"),
+            title: format!("Worksheets: {}", worksheet::render::title(model)),
+            what: format!(
+                "{STUDENTS} students, each with their own parameters (seed {SEED}), and the \
+                 answer key with every answer worked out (answer-key)"
+            ),
+        });
+    }
+    links.push(Material {
+        html: "bench/index.html".to_string(),
+        md: "bench/bench.md".to_string(),
+        title: "Speed and accuracy study".to_string(),
+        what: "the exact engine against time-stepping integrators: work-precision charts and \
+               where each method fails (written by `stickslip bench`)"
+            .to_string(),
+    });
+    Ok((files, links))
+}
+
+/// `files` moved into `folder`.
+fn under(folder: &str, files: Vec<OutFile>) -> Vec<OutFile> {
+    files
+        .into_iter()
+        .map(|f| OutFile::new(Path::new(folder).join(&f.path), f.bytes))
+        .collect()
+}
