@@ -5,7 +5,7 @@ use std::fmt::Write;
 
 use super::format::{rel, sig};
 use crate::results::quantity::Registry;
-use crate::results::{Check, CheckValue, Summary};
+use crate::results::{Applicability, Check, CheckValue, Summary};
 
 pub(crate) const DIGITS: usize = 10;
 
@@ -28,6 +28,18 @@ pub(crate) fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -
             q.equation,
             q.tag
         );
+    }
+}
+
+/// The closed forms that do not describe this motion, each with why (the report greys them).
+pub(crate) fn not_describing(out: &mut String, applicability: &[Applicability]) {
+    let not_applying: Vec<_> = applicability.iter().filter(|a| !a.applies).collect();
+    if !not_applying.is_empty() {
+        let _ = writeln!(out, "\nformulas that do not describe this motion");
+        for a in not_applying {
+            let symbol = a.quantity.quantity().symbol;
+            let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
+        }
     }
 }
 

@@ -288,7 +288,7 @@ pub(crate) fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
     };
     RegimeRow {
         law: law.to_string(),
-        regime: s.regime.id().to_string(),
+        regime: s.regime.words().to_string(),
         why,
     }
 }
@@ -353,11 +353,37 @@ pub(crate) fn fill_checks<K: Registry>(
     ctx.verification = rows;
 }
 
+/// A checked value for people: a number formatted, a regime id in words.
 fn value(v: &CheckValue) -> String {
     match v {
         CheckValue::Number(x) => num(*x),
-        CheckValue::Text(s) => s.clone(),
+        CheckValue::Text(s) => regime_words(s).to_string(),
     }
+}
+
+/// The words of the regime whose id is `id` (closed forms of either model or an integration),
+/// or `id` itself if it names none.
+pub fn regime_words(id: &str) -> &str {
+    use crate::engine::IntegrationRegime;
+    use crate::models::pulled_mass::formula::Regime;
+    use crate::models::woodpecker::formula::OrbitRegime;
+    Regime::ALL
+        .iter()
+        .find(|r| r.id() == id)
+        .map(|r| r.words())
+        .or_else(|| {
+            IntegrationRegime::ALL
+                .iter()
+                .find(|r| r.id() == id)
+                .map(|r| r.words())
+        })
+        .or_else(|| {
+            OrbitRegime::ALL
+                .iter()
+                .find(|r| r.id() == id)
+                .map(|r| r.words())
+        })
+        .unwrap_or(id)
 }
 
 fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
@@ -440,7 +466,7 @@ pub(crate) fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> T
         r.extend(values);
         rows.push(r);
     };
-    push("regime", cell(&|s| s.regime.id().to_string()));
+    push("regime", cell(&|s| s.regime.words().to_string()));
     push("first slip (s)", cell(&|s| opt(s.first_slip_time)));
     push(
         "slips / sticks per period",
@@ -469,4 +495,27 @@ pub(crate) fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> T
     );
     push("friction dissipation (W)", cell(&|s| opt(s.power.friction)));
     Table { header, rows }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Tables for people name regimes in words (the ids stay in JSON and CSV).
+    #[test]
+    fn every_regime_id_has_words() {
+        use crate::engine::IntegrationRegime;
+        use crate::models::pulled_mass::formula::Regime;
+        use crate::models::woodpecker::formula::OrbitRegime;
+        let ids = Regime::ALL
+            .iter()
+            .map(|r| r.id())
+            .chain(IntegrationRegime::ALL.iter().map(|r| r.id()))
+            .chain(OrbitRegime::ALL.iter().map(|r| r.id()));
+        for id in ids {
+            let words = regime_words(id);
+            assert!(words.contains(' ') && !words.contains('_'), "{id}: {words}");
+        }
+        assert_eq!(regime_words("t_slip"), "t_slip");
+    }
 }

@@ -212,13 +212,16 @@ impl Regime {
         }
     }
 
-    /// The regime in plain words.
+    /// The regime in plain words: those of the motion the integration shows
+    /// ([`Self::integrated`]), with when the stick comes or the slip starts.
     pub fn words(self) -> &'static str {
         match self {
-            Self::SlipStick => "a stick within the same period",
-            Self::SlipStickLate => "a stick early in the next period",
-            Self::ContinuousSlip => "continuous slip",
-            Self::ImmediateContinuousSlip => "continuous slip from t = 0",
+            Self::SlipStick => "one slip and one stick per period, the stick within the period",
+            Self::SlipStickLate => {
+                "one slip and one stick per period, the stick early in the next period"
+            }
+            Self::ContinuousSlip => "continuous slip, never sticking",
+            Self::ImmediateContinuousSlip => "continuous slip, never sticking, from t = 0",
         }
     }
 
@@ -447,7 +450,9 @@ mod tests {
     fn regimes_are_serialized_as_their_ids_and_named_once() {
         for r in Regime::ALL {
             assert_eq!(serde_json::to_value(r).unwrap(), r.id());
-            assert!(!r.words().is_empty());
+            // People read one name for one motion: the closed form's words are the
+            // integration's, with when the stick comes or the slip starts.
+            assert!(r.words().starts_with(r.integrated().words()), "{}", r.id());
             assert_eq!(Regime::ALL.iter().filter(|q| q.id() == r.id()).count(), 1);
         }
         for r in IntegrationRegime::ALL {

@@ -10,7 +10,7 @@ use crate::error::Result;
 use crate::models::param::num as pnum;
 use crate::output::format::sig;
 use crate::output::text::{
-    checks_table, closed_form_table, laws_table as text_laws, DIGITS as TEXT_DIGITS,
+    checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
 use crate::report::context::{
     blank, fill_checks, input, integration_regime, laws_table, num, row, RegimeRow, SceneCtx,
@@ -39,7 +39,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
     ctx.regimes = vec![
         RegimeRow {
             law: "linearized law, closed forms (§1.5)".to_string(),
-            regime: c.regime.id().to_string(),
+            regime: c.regime.words().to_string(),
             why,
         },
         integration_regime("linearized law, exact integration", &e.linear),
@@ -91,11 +91,13 @@ pub(crate) fn text(e: &Evaluation) -> String {
     );
     let _ = writeln!(
         out,
-        "\nregime (linearized law): {}  [{}]",
+        "\nregime (linearized law): {} ({})  [{}]",
+        c.regime.words(),
         c.regime.id(),
         regime_reason(e)
     );
     closed_form_table(&mut out, |k: pm::Key| c.get(k));
+    not_describing(&mut out, &e.applicability);
     checks_table(&mut out, &e.checks);
     text_laws(&mut out, &e.harmonic, Some(&e.linear));
     out

@@ -34,8 +34,8 @@ pub fn force_law(p: &WoodpeckerParams, law: LawKind) -> Result<ForceLaw> {
         LawKind::Linear => {
             let (zeta0, delta0) = linear_amplitudes(p).ok_or_else(|| {
                 Error::InvalidLaw(format!(
-                    "the {:?} counterpart needs |z0| <= d0 (z0 = {}, d0 = {})",
-                    p.counterpart,
+                    "the {} counterpart needs |z0| <= d0 (z0 = {}, d0 = {})",
+                    p.counterpart.id(),
                     crate::error::short(p.z0),
                     crate::error::short(p.d0)
                 ))

@@ -29,6 +29,14 @@ impl OmegaMode {
         (Self::Reduced, "reduced"),
         (Self::Total, "total"),
     ];
+
+    /// The id of the mode, as typed.
+    pub fn id(self) -> &'static str {
+        Self::ALL
+            .iter()
+            .find(|(mode, _)| *mode == self)
+            .map_or("bird", |(_, id)| id)
+    }
 }
 
 /// The falling woodpecker of Sec. 3 (physics.md §2–3). Defaults: the paper's Fig. 15 set.

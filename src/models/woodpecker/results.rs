@@ -176,9 +176,11 @@ fn in_range(e: &Evaluation) -> Result<()> {
 pub fn domain_note(p: &WoodpeckerParams, c: &WoodpeckerClosedForm) -> Option<String> {
     if woodpecker::linear_amplitudes(p).is_none() {
         return Some(format!(
-            "the {:?} counterpart is undefined for |z0| > d0 (z0 = {} m, d0 = {} m): F_e never \
+            "the {} counterpart is undefined for |z0| > d0 (z0 = {} m, d0 = {} m): F_e never \
              changes sign; only the harmonic law is integrated",
-            p.counterpart, p.z0, p.d0
+            p.counterpart.id(),
+            crate::error::short(p.z0),
+            crate::error::short(p.d0)
         ));
     }
     if c.regime != OrbitRegime::OutsideClosedFormDomain {

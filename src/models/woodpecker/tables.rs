@@ -10,7 +10,7 @@ use crate::error::Result;
 use crate::models::param::num as pnum;
 use crate::output::format::sig;
 use crate::output::text::{
-    checks_table, closed_form_table, laws_table as text_laws, DIGITS as TEXT_DIGITS,
+    checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
 use crate::report::context::{
     blank, fill_checks, input, integration_regime, laws_table, opt, row, ParamRow, RegimeRow,
@@ -45,7 +45,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
         },
         ParamRow {
             name: "options".to_string(),
-            value: format!("ω: {:?}, counterpart: {:?}", p.omega, p.counterpart).to_lowercase(),
+            value: format!("ω: {}, counterpart: {}", p.omega.id(), p.counterpart.id()),
             unit: String::new(),
         },
         input("periods integrated", pp.periods, ""),
@@ -53,7 +53,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
     let c = &e.closed_form;
     ctx.regimes = vec![RegimeRow {
         law: "linearized law, closed forms (§3.6)".to_string(),
-        regime: c.regime.id().to_string(),
+        regime: c.regime.words().to_string(),
         why: format!(
             "paper's standard regime (both sticks within their half periods): {}; immediate \
              slip (38): {}",
@@ -112,11 +112,11 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     );
     let _ = writeln!(
         out,
-        "options:    lambda = {} ({}), omega = {:?}, counterpart = {:?}",
+        "options:    lambda = {} ({}), omega = {}, counterpart = {}",
         sig(Some(p.lambda), TEXT_DIGITS),
         if i.lever.is_some() { "given" } else { "l/h" },
-        i.omega,
-        i.counterpart
+        i.omega.id(),
+        i.counterpart.id()
     );
     let _ = writeln!(
         out,
@@ -129,7 +129,8 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     );
     let _ = writeln!(
         out,
-        "\nregime (linearized law, §3.6): {}; paper's standard regime valid: {}; immediate slip (38): {}",
+        "\nregime (linearized law, §3.6): {} ({}); paper's standard regime valid: {}; immediate slip (38): {}",
+        c.regime.words(),
         c.regime.id(),
         c.paper_regime_valid,
         c.immediate_slip
@@ -138,13 +139,8 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
         let _ = writeln!(out, "closed forms do not apply: {note}");
     }
     closed_form_table(&mut out, |k: wp::Key| c.get(k));
-    let not_applying: Vec<_> = e.applicability.iter().filter(|a| !a.applies).collect();
-    if !not_applying.is_empty() && e.domain_note.is_none() {
-        let _ = writeln!(out, "\nformulas that do not describe this motion");
-        for a in not_applying {
-            let symbol = a.quantity.quantity().symbol;
-            let _ = writeln!(out, "  {symbol:<14} {}", a.reason);
-        }
+    if e.domain_note.is_none() {
+        not_describing(&mut out, &e.applicability);
     }
     checks_table(&mut out, &e.checks);
     text_laws(&mut out, &e.harmonic, e.linear.as_ref());
