@@ -34,7 +34,7 @@ pub enum Command {
     /// Render the report: the built-in scenes of the paper's figures, or the given scenario
     /// files, as HTML and Markdown.
     Report(ReportArgs),
-    /// Evaluate the claims of the paper (physics.md §6) on the given parameters (the other
+    /// Evaluate the claims of the paper (docs/physics.md, where the paper is wrong) on the given parameters (the other
     /// model keeps the paper's default set) and on a seeded random sample.
     Claims {
         /// Seed of the random sample.
@@ -231,7 +231,7 @@ pub struct CommonArgs {
     /// Periods to integrate (1 to 1000000) [default: 8, or the scenario's].
     #[arg(long, allow_hyphen_values = true)]
     pub periods: Option<i64>,
-    /// Print the JSON object of physics.md §7 instead of tables.
+    /// Print the evaluation as one JSON object (machine-readable) instead of tables.
     #[arg(long)]
     pub json: bool,
     /// Also write the time series and event lists of both laws as CSV files to this folder
