@@ -293,3 +293,39 @@ fn every_link_of_the_committed_index_reaches_a_file() {
         }
     }
 }
+
+/// Numbers for people: no e-notation and no trailing zeros in the parameter and verification
+/// tables of any page, parameters in mm and g, and a unit column beside the values.
+#[test]
+fn tables_show_numbers_as_people_write_them() {
+    let files = default_report();
+    let page = rendered(&files, "fig10-linear-slip-stick.md");
+    let tables: Vec<&str> = page
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| law"))
+        .collect();
+    assert!(tables.len() > 30);
+    for line in &tables {
+        for cell in line.split(" | ").skip(1) {
+            let cell = cell.trim_end_matches(" |");
+            if cell.starts_with('$') || cell.starts_with('(') {
+                continue; // a formula or an equation number
+            }
+            assert!(
+                !(cell.contains("e-") && cell.chars().next().is_some_and(|c| c.is_ascii_digit())),
+                "e-notation: {line}"
+            );
+            if cell.contains('.') && cell.chars().all(|c| c.is_ascii_digit() || c == '.') {
+                assert!(!cell.ends_with('0'), "trailing zero: {cell} in {line}");
+            }
+        }
+    }
+    assert!(
+        page.contains("| m (block; hanging mass m' = m) | 60 | g |"),
+        "{page}"
+    );
+    assert!(page.contains("| closed form | numeric | unit |"));
+    assert!(page.contains("× 10⁻⁴ | W |"), "P in W with ×10ⁿ");
+    let wood = rendered(&files, "fig15-double-slip-stick.md");
+    assert!(wood.contains("| l (lever arm of the spring force) | 16 | mm |"));
+}

@@ -6,7 +6,7 @@ use serde::Serialize;
 use crate::error::Result;
 use crate::handout::physics::equation_of_motion;
 use crate::models::{with_model, Model};
-use crate::output::format::{rel, sig};
+use crate::output::format::{people, people_rel, people_tolerance};
 use crate::present::Present;
 use crate::report::math::mathml;
 use crate::report::scene::Scene;
@@ -45,6 +45,8 @@ pub struct VerificationRow {
     pub tag: String,
     pub closed_form: String,
     pub numeric: String,
+    /// SI unit of the closed form and the numeric value (empty: a number).
+    pub unit: String,
     pub rel_error: String,
     pub tolerance: String,
     /// "pass", "FAIL", "n/a" (outside its regime) or "—" (no numeric counterpart).
@@ -196,15 +198,25 @@ pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
 }
 
 pub(crate) fn num(x: f64) -> String {
-    sig(Some(x), DIGITS)
+    people(Some(x), DIGITS)
 }
 
 pub(crate) fn opt(x: Option<f64>) -> String {
-    sig(x, DIGITS)
+    people(x, DIGITS)
 }
 
-/// A derived value, to the table's significant digits.
+/// A value in the unit people think in: lengths below 1 m in mm, masses below 1 kg in g.
+fn human_unit(value: f64, unit: &str) -> (f64, &str) {
+    match unit {
+        "m" if value != 0.0 && value.abs() < 1.0 => (value * 1e3, "mm"),
+        "kg" if value != 0.0 && value.abs() < 1.0 => (value * 1e3, "g"),
+        _ => (value, unit),
+    }
+}
+
+/// A derived value, to the table's significant digits, in the unit people think in.
 pub(crate) fn row(name: &str, value: f64, unit: &str) -> ParamRow {
+    let (value, unit) = human_unit(value, unit);
     ParamRow {
         name: name.to_string(),
         value: num(value),
@@ -212,12 +224,23 @@ pub(crate) fn row(name: &str, value: f64, unit: &str) -> ParamRow {
     }
 }
 
-/// An input value, exactly as given (shortest representation).
-pub(crate) fn input(name: &str, value: impl ToString, unit: &str) -> ParamRow {
+/// An input value as given (to 12 significant figures, which undoes the rounding of a change
+/// of unit), in the unit people think in.
+pub(crate) fn input(name: &str, value: f64, unit: &str) -> ParamRow {
+    let (value, unit) = human_unit(value, unit);
     ParamRow {
         name: name.to_string(),
-        value: value.to_string(),
+        value: people(Some(value), 12),
         unit: unit.to_string(),
+    }
+}
+
+/// A count (periods, points).
+pub(crate) fn count(name: &str, n: u32) -> ParamRow {
+    ParamRow {
+        name: name.to_string(),
+        value: n.to_string(),
+        unit: String::new(),
     }
 }
 
@@ -399,8 +422,9 @@ fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
         tag: q.tag.to_string(),
         closed_form: value(&c.closed_form),
         numeric: value(&c.numeric),
-        rel_error: rel(c.rel_error),
-        tolerance: format!("{:.0e}", c.tolerance),
+        unit: q.unit.to_string(),
+        rel_error: people_rel(c.rel_error),
+        tolerance: people_tolerance(c.tolerance),
         verdict: c.verdict().to_string(),
         class: match c.pass {
             Some(true) => "pass",
@@ -427,6 +451,7 @@ fn plain_row(
         tag: q.tag.to_string(),
         closed_form: opt(closed),
         numeric: "—".to_string(),
+        unit: q.unit.to_string(),
         rel_error: "—".to_string(),
         tolerance: "—".to_string(),
         verdict: verdict.to_string(),
@@ -491,7 +516,7 @@ pub(crate) fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> T
     );
     push(
         "mean speed v̄ (mm/s)",
-        cell(&|s| sig(s.v_avg.map(|v| 1e3 * v), DIGITS)),
+        cell(&|s| opt(s.v_avg.map(|v| 1e3 * v))),
     );
     push("friction dissipation (W)", cell(&|s| opt(s.power.friction)));
     Table { header, rows }

@@ -13,7 +13,7 @@ use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
 use crate::report::context::{
-    blank, fill_checks, input, integration_regime, laws_table, num, row, RegimeRow, SceneCtx,
+    blank, count, fill_checks, input, integration_regime, laws_table, num, row, RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
 
@@ -32,7 +32,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
         row("ω = √(k/m')", pp.omega, "rad/s"),
         row("T = 2π/ω", pp.period, "s"),
         row("φ = F/W", pp.phi, ""),
-        input("periods integrated", pp.periods, ""),
+        count("periods integrated", pp.periods),
     ];
     let c = &e.closed_form;
     let why = pulled_regime_reason(c, p.mu_s);

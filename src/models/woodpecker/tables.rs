@@ -13,8 +13,8 @@ use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
 use crate::report::context::{
-    blank, fill_checks, input, integration_regime, laws_table, opt, row, ParamRow, RegimeRow,
-    SceneCtx,
+    blank, count, fill_checks, input, integration_regime, laws_table, opt, row, ParamRow,
+    RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
 use crate::results::Summary;
@@ -40,15 +40,19 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
         row("T = 2π/ω", pp.period, "s"),
         ParamRow {
             name: "ζ0, δ0 (linear counterpart)".to_string(),
-            value: format!("{}, {}", opt(pp.zeta0), opt(pp.delta0)),
-            unit: "m".to_string(),
+            value: format!(
+                "{}, {}",
+                opt(pp.zeta0.map(|z| 1e3 * z)),
+                opt(pp.delta0.map(|d| 1e3 * d))
+            ),
+            unit: "mm".to_string(),
         },
         ParamRow {
             name: "options".to_string(),
             value: format!("ω: {}, counterpart: {}", p.omega.id(), p.counterpart.id()),
             unit: String::new(),
         },
-        input("periods integrated", pp.periods, ""),
+        count("periods integrated", pp.periods),
     ];
     let c = &e.closed_form;
     ctx.regimes = vec![RegimeRow {
