@@ -329,3 +329,18 @@ fn tables_show_numbers_as_people_write_them() {
     let wood = rendered(&files, "fig15-double-slip-stick.md");
     assert!(wood.contains("| l (lever arm of the spring force) | 16 | mm |"));
 }
+
+/// Pages cite the paper's equations and the project's own guide, never a section ("§1.4") of a
+/// specification readers do not have.
+#[test]
+fn no_page_cites_a_section_readers_do_not_have() {
+    for f in default_report() {
+        let text = String::from_utf8_lossy(&f.bytes);
+        assert!(
+            !text.contains('§'),
+            "{}: cites a § section",
+            f.path.display()
+        );
+        assert!(!text.contains("physics.md §"), "{}", f.path.display());
+    }
+}

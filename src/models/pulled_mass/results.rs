@@ -164,7 +164,7 @@ fn why_not(regime: Regime, describes: &[Regime]) -> String {
         }
         Regime::SlipStick => "the mass sticks within the period (20): no late stick".to_string(),
         Regime::SlipStickLate => "(20) fails (φ > 1/Θ): the mass sticks early in the next period; \
-                                  the late-stick forms of §1.4 apply"
+                                  the late-stick forms apply"
             .to_string(),
     }
 }

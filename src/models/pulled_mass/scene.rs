@@ -302,7 +302,14 @@ fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
     };
     let linear_cells = grid(&|mu_s, mu_d| linear_category(phi, mu_s, mu_d));
     let harmonic_cells = grid(&|mu_s, mu_d| harmonic_category(p, mu_s, mu_d));
-    let curves = domain_curves(phi, top);
+    let mut curves = domain_curves(phi, top);
+    curves.extend(Curve::point_marker(
+        "this scene (μd, μs)",
+        (p.mu_d, p.mu_s),
+        (0.0, top),
+        (0.0, top),
+        0,
+    ));
     let map = |cells, categories| CategoryMap {
         x_label: "μd".to_string(),
         y_label: "μs".to_string(),
@@ -336,7 +343,7 @@ fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
     );
     let about = format!(
         "Grid of {GRID}×{GRID} cells for φ = F/W = {phi:.4}. Curves: the boundary of (20) \
-         (same-period stick), the boundary φ = φ_c of any stick (§1.4), and the immediate-slip \
+         (same-period stick), the boundary φ = φ_c of any stick (late stick), and the immediate-slip \
          line μs = φ/2. On the diagonal μs = μd, (22) gives μ_MIN = {:.4}; any stick needs only \
          μ > φ = {phi:.4}.",
         cf::mu_min_equal(phi)
@@ -344,7 +351,7 @@ fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
     Ok([
         (
             linear,
-            format!("Regimes of the linearized law from the closed forms (§1.5). {about}"),
+            format!("Regimes of the linearized law from the closed forms. {about}"),
         ),
         (
             harmonic,
@@ -418,6 +425,24 @@ fn domain_curves(phi: f64, top: f64) -> Vec<Curve> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_domain_maps_mark_the_scenes_own_point() {
+        let p = PulledMassParams::default();
+        for map in domain(&p).unwrap() {
+            let marker = map
+                .0
+                .curves
+                .iter()
+                .find(|c| c.label == "this scene (μd, μs)")
+                .expect("a marker");
+            let centre = marker.points[..4]
+                .iter()
+                .fold((0.0, 0.0), |(x, y), p| (x + p.0, y + p.1));
+            assert!((centre.0 / 4.0 - p.mu_d).abs() < 1e-12);
+            assert!((centre.1 / 4.0 - p.mu_s).abs() < 1e-12);
+        }
+    }
 
     #[test]
     fn every_pulled_kind_builds_finite_curves() {

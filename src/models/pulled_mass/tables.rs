@@ -38,7 +38,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
     let why = pulled_regime_reason(c, p.mu_s);
     ctx.regimes = vec![
         RegimeRow {
-            law: "linearized law, closed forms (§1.5)".to_string(),
+            law: "linearized law, closed forms".to_string(),
             regime: c.regime.words().to_string(),
             why,
         },

@@ -384,8 +384,8 @@ fn motion_times(c: &WoodpeckerClosedForm) -> (Vec<(String, f64)>, bool, &'static
         return (
             times,
             true,
-            "the slip and stick times of the periodic orbit of the linear law (lobe engine, \
-             §3.6), repeated every period; the paper's standard regime does not hold here",
+            "the slip and stick times of the periodic orbit of the linear law (from the closed \
+             forms), repeated every period; the paper's standard regime does not hold here",
         );
     }
     match c.t_slip_1.filter(|&t| t >= 0.0 && !c.immediate_slip) {
@@ -989,29 +989,22 @@ fn map_curves(p: &WoodpeckerParams, x: (f64, f64), y: (f64, f64)) -> Vec<Curve> 
     type Of = fn(&WoodpeckerClosedForm) -> Option<f64>;
     let boundaries: [(&str, (usize, Stroke), Of); 4] = [
         ("μd,MIN(I) (51)", (0, Stroke::Solid), |c| c.mu_d_min_1),
-        ("μd,HALT(I) §3.6", (0, Stroke::Dashed), |c| c.mu_d_halt_1),
+        ("μd,HALT(I) [D]", (0, Stroke::Dashed), |c| c.mu_d_halt_1),
         ("μd,MIN(II) (65)", (7, Stroke::DashDot), |c| c.mu_d_min_2),
-        ("μd,HALT(II) §3.6", (7, Stroke::Dotted), |c| c.mu_d_halt_2),
+        ("μd,HALT(II) [D]", (7, Stroke::Dotted), |c| c.mu_d_halt_2),
     ];
     let mut curves: Vec<Curve> = boundaries
         .iter()
         .flat_map(|&(label, style, of)| boundary_curves(p, label, style, x, y, of))
         .collect();
     // The scene's (μd, z0) as a small closed diamond.
-    let (cx, cy) = (p.mu_d, MM * p.z0);
-    let (dx, dy) = (0.012 * (x.1 - x.0), 0.012 * (y.1 - y.0));
-    curves.push(Curve {
-        label: "this scene (μd, z0)".to_string(),
-        points: vec![
-            (cx - dx, cy),
-            (cx, cy + dy),
-            (cx + dx, cy),
-            (cx, cy - dy),
-            (cx - dx, cy),
-        ],
-        color: 1,
-        stroke: Stroke::Solid,
-    });
+    curves.extend(Curve::point_marker(
+        "this scene (μd, z0)",
+        (p.mu_d, MM * p.z0),
+        x,
+        y,
+        1,
+    ));
     curves
 }
 
@@ -1040,7 +1033,7 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
          to {:.2} mm (d0 = {:.2} mm, the other parameters of the scene). Curves, from the \
          closed forms of the linear law ({} counterpart) as functions of z0: μd,MIN of phases I \
          and II, above which (51) and (65) put the stick within the half period, and the exact \
-         halt thresholds μd,HALT (§3.6), above which a slip halts before the next slip onset. \
+         halt thresholds μd,HALT (derived in the physics guide), above which a slip halts before the next slip onset. \
          The diamond marks the scene's own μd = {} and z0 = {:.3} mm. Regions: \"2 slips, 2 \
          sticks\" is the paper's double slip-stick; \"1 slip, 2 maxima\" has lost the \
          intermediate halt but the speed still dips between the two pushes; \"1 slip, 1 \
@@ -1059,8 +1052,7 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
         (
             linear,
             format!(
-                "Regimes of the linear law's periodic orbit from the closed forms (lobe engine, \
-                 §3.6); \"no closed form\" where their domain 0 ≤ δ0 < ζ0, 2λμs > 1 fails (every \
+                "Regimes of the linear law's periodic orbit from the closed forms; \"no closed form\" where their domain 0 ≤ δ0 < ζ0, 2λμs > 1 fails (every \
                  counterpart has δ0 < 0 for z0 < 0). {about}"
             ),
         ),
@@ -1282,9 +1274,9 @@ mod tests {
         let labels: Vec<&str> = maps[0].curves.iter().map(|c| c.label.as_str()).collect();
         for l in [
             "μd,MIN(I) (51)",
-            "μd,HALT(I) §3.6",
+            "μd,HALT(I) [D]",
             "μd,MIN(II) (65)",
-            "μd,HALT(II) §3.6",
+            "μd,HALT(II) [D]",
         ] {
             assert!(labels.contains(&l), "{l}");
         }

@@ -56,7 +56,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
     ];
     let c = &e.closed_form;
     ctx.regimes = vec![RegimeRow {
-        law: "linearized law, closed forms (§3.6)".to_string(),
+        law: "linearized law, closed forms".to_string(),
         regime: c.regime.words().to_string(),
         why: format!(
             "paper's standard regime (both sticks within their half periods): {}; immediate \

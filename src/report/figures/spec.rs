@@ -20,6 +20,37 @@ pub struct Curve {
     pub stroke: Stroke,
 }
 
+impl Curve {
+    /// A small closed diamond at `at` (sized from the axis ranges) that marks a scene's own
+    /// point on a map; `None` when the point lies outside the ranges.
+    pub fn point_marker(
+        label: &str,
+        at: (f64, f64),
+        x: (f64, f64),
+        y: (f64, f64),
+        color: usize,
+    ) -> Option<Curve> {
+        let inside = |v: f64, (lo, hi): (f64, f64)| (lo..=hi).contains(&v);
+        if !(inside(at.0, x) && inside(at.1, y)) {
+            return None;
+        }
+        let (cx, cy) = at;
+        let (dx, dy) = (0.012 * (x.1 - x.0), 0.012 * (y.1 - y.0));
+        Some(Curve {
+            label: label.to_string(),
+            points: vec![
+                (cx - dx, cy),
+                (cx, cy + dy),
+                (cx + dx, cy),
+                (cx, cy - dy),
+                (cx - dx, cy),
+            ],
+            color,
+            stroke: Stroke::Solid,
+        })
+    }
+}
+
 /// A vertical marker (a characteristic time) with a short label such as "t_SL".
 #[derive(Clone, Debug, PartialEq)]
 pub struct Marker {

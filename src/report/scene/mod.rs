@@ -347,7 +347,7 @@ const BUILTINS: &[Builtin] = &[
         ),
         FIG06,
         "The (μd, μs) plane for the Fig. 6 value of φ = F/W: where the mass sticks in the same \
-         period (20), sticks late in the next period (§1.4), or slips for ever, for the linear \
+         period (20), sticks late in the next period, or slips for ever, for the linear \
          closed forms and for the exact harmonic integration; the analytic boundaries are drawn \
          over the computed regimes.",
         &[FigureKind::PulledDomain],
@@ -516,7 +516,7 @@ const BUILTINS: &[Builtin] = &[
             "Where the toy halts twice, once or never, and how well the closed-form boundaries find it.",
         ),
         FIG15,
-        "Regimes in the (μd, z0) plane: the linear orbit (closed form, §3.6) and the harmonic law \
+        "Regimes in the (μd, z0) plane: the linear orbit (closed forms) and the harmonic law \
          (exact integration), with the analytic boundaries μd,MIN and μd,HALT of both phases.",
         &[FigureKind::WoodRegimeMap],
         &[4, 5, 6],
