@@ -166,7 +166,11 @@ fn a_scenario_file_becomes_a_handout() {
         .assert()
         .success();
     let html = std::fs::read_to_string(dir.path().join("set-c-late-stick.html")).unwrap();
-    assert!(html.contains("slip_stick_late"));
+    assert!(html.contains("the stick early in the next period"));
+    assert!(
+        !html.contains("slip_stick_late"),
+        "regimes in words, not ids"
+    );
     let md = std::fs::read_to_string(dir.path().join("set-c-late-stick.md")).unwrap();
     assert!(md.contains("](figures/set-c-late-stick-motion.svg)"));
     assert!(dir

@@ -196,7 +196,7 @@ fn a_user_scenario_becomes_a_scene() {
         .assert()
         .success();
     let md = std::fs::read_to_string(dir.path().join("set-c-late-stick.md")).unwrap();
-    assert!(md.contains("slip_stick_late"));
+    assert!(md.contains("the stick early in the next period"));
     assert!(dir
         .path()
         .join("figures/set-c-late-stick-motion.svg")

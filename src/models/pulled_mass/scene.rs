@@ -131,8 +131,8 @@ fn motion(p: &PulledMassParams, periods: f64) -> Result<(LineChart, String)> {
     let caption = format!(
         "Position, speed and acceleration of the pulled mass over {periods} periods, harmonic law \
          (solid) and linearized law (dashed), from rest at t = 0. Marked: the closed-form times \
-         of the linearized law (regime {}).",
-        c.regime.id()
+         of the linearized law ({}).",
+        c.regime.words()
     );
     Ok((chart, caption))
 }

@@ -253,7 +253,7 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                 (Some(note), _) => Some(note.to_string()),
                 (None, None) => Some(format!(
                     "no slip starts from rest in phase {name} on the periodic orbit ({})",
-                    c.regime.id()
+                    c.regime.words()
                 )),
                 (None, Some(halt)) => match (j, halt) {
                     (0 | 1, _) => None,

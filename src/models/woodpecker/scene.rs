@@ -447,17 +447,18 @@ fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
     );
     let linear_note = match (&eval.linear, &eval.domain_note) {
         (Some(s), None) => format!(
-            "The linear law with the {} counterpart (dashed) is in the regime {} by integration \
-             and {} by the closed forms. Vertical lines: {about_markers}.",
+            "The linear law with the {} counterpart (dashed): {} by integration, {} by the \
+             closed forms. Vertical lines (the linear law's events; the harmonic curve need not \
+             stop there): {about_markers}.",
             counterpart_name(p.counterpart),
-            s.regime.id(),
-            c.regime.id()
+            s.regime.words(),
+            c.regime.words()
         ),
         (Some(s), Some(note)) => format!(
-            "The linear law with the {} counterpart (dashed) is in the regime {} by integration; \
-             no closed form applies: {note}.",
+            "The linear law with the {} counterpart (dashed): {} by integration; no closed \
+             form applies: {note}.",
             counterpart_name(p.counterpart),
-            s.regime.id()
+            s.regime.words()
         ),
         (None, note) => format!(
             "The linear law is not drawn: {}.",
@@ -466,9 +467,9 @@ fn motion(p: &WoodpeckerParams, periods: f64) -> Result<(LineChart, String)> {
     };
     let caption = format!(
         "Position y_S (downward) and speed v of the woodpecker's sleeve over {periods} periods, \
-         from rest at t = 0, both laws integrated exactly. The harmonic law (solid) is in the \
-         regime {}. {linear_note}",
-        eval.harmonic.regime.id()
+         from rest at t = 0, both laws integrated exactly. The harmonic law (solid): {}. \
+         {linear_note}",
+        eval.harmonic.regime.words()
     );
     Ok((chart, caption))
 }
@@ -665,10 +666,9 @@ fn phase_chart(p: &WoodpeckerParams, phase: Phase) -> Result<(LineChart, String)
             .to_string()
     } else {
         format!(
-            "The parameters are outside the paper's standard regime (the closed forms find the \
-             orbit {}): where a marker and the curve disagree, the formula does not describe \
-             this motion.",
-            c.regime.id()
+            "The parameters are outside the paper's standard regime (the closed forms find {}): \
+             where a marker and the curve disagree, the formula does not describe this motion.",
+            c.regime.words()
         )
     };
     let caption = format!(
