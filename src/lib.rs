@@ -37,7 +37,6 @@ pub mod fit;
 #[cfg(feature = "cli")]
 pub mod handout;
 pub mod models;
-#[cfg(feature = "cli")]
 pub mod output;
 pub mod params;
 #[cfg(feature = "cli")]

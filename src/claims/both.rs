@@ -15,6 +15,7 @@ use crate::models::woodpecker::formula::{self as cf, Counterpart};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
+use crate::output::format::people;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
 const CLOSE: f64 = 0.10;
@@ -190,8 +191,8 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
              multiplies W_S v̄ by {} in (71) and by {} in the exact linear integration, i.e. 2³",
             1e3 * a.m_sleeve,
             1e3 * b.m_sleeve,
-            super::or_none(closed, |r| format!("{r:.9}")),
-            super::or_none(numeric, |r| format!("{r:.9}")),
+            super::or_none(closed, |r| people(Some(r), 10)),
+            super::or_none(numeric, |r| people(Some(r), 10)),
         );
     }
     let w_s = w.sleeve_weight();

@@ -262,7 +262,7 @@ pub(crate) fn rel_text(e: f64) -> String {
     if e == 0.0 {
         "0".to_string()
     } else if e < 1e-3 {
-        format!("{e:.1e}")
+        crate::output::format::people_rel(Some(e))
     } else {
         format!("{:.1} %", 100.0 * e)
     }

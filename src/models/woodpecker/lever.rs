@@ -174,7 +174,7 @@ impl Evidence {
         let threshold = match self.threshold {
             Some(z) => format!(
                 "Raising z0 from {:.3} mm (λ = l/h), the intermediate halt disappears at z0 = \
-                 {:.6} mm (bisection to 1e-6 mm; the paper's Fig. 16 shows a motion without it).",
+                 {:.6} mm (bisection to 10⁻⁶ mm; the paper's Fig. 16 shows a motion without it).",
                 1e3 * z0,
                 1e3 * z
             ),
