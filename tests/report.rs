@@ -257,6 +257,26 @@ fn an_unwritable_output_folder_is_refused() {
     common::unwritable(cmd);
 }
 
+/// The handouts written beside the report link the physics guide from their own folder.
+#[test]
+fn the_classroom_handouts_link_the_guide_from_their_folder() {
+    let handouts = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports/handouts");
+    for name in ["fig10-linear-slip-stick.html", "fig15-double-slip-stick.md"] {
+        let text = std::fs::read_to_string(handouts.join(name))
+            .unwrap()
+            .replace("&#x2F;", "/");
+        assert!(
+            text.contains("\"../../docs/physics.md#") || text.contains("](../../docs/physics.md#"),
+            "{name}"
+        );
+        assert!(
+            !text.contains("\"../docs/physics.md") && !text.contains("](../docs/physics.md"),
+            "{name}"
+        );
+        assert!(handouts.join("../../docs/physics.md").exists());
+    }
+}
+
 /// Every link of the committed index (HTML and Markdown) reaches a file: the scene pages, the
 /// lecture notes, the handouts, worksheets and answer keys, the study and the physics guide.
 #[test]

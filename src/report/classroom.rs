@@ -81,10 +81,27 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
     Ok((files, links))
 }
 
-/// `files` moved into `folder`.
+/// `files` moved into `folder` (one or two levels below `reports/`), their links to the
+/// physics guide (written for pages in `reports/`) made relative to the new depth.
 fn under(folder: &str, files: Vec<OutFile>) -> Vec<OutFile> {
+    let up = "../".repeat(Path::new(folder).components().count());
     files
         .into_iter()
-        .map(|f| OutFile::new(Path::new(folder).join(&f.path), f.bytes))
+        .map(|f| {
+            // HTML attributes hold the path with `/` escaped as `&#x2F;`.
+            let escaped = up.replace('/', "&#x2F;");
+            let bytes = match String::from_utf8(f.bytes) {
+                Ok(text) => text
+                    .replace("\"../docs/physics.md", &format!("\"{up}../docs/physics.md"))
+                    .replace(
+                        "\"..&#x2F;docs&#x2F;physics.md",
+                        &format!("\"{escaped}..&#x2F;docs&#x2F;physics.md"),
+                    )
+                    .replace("](../docs/physics.md", &format!("]({up}../docs/physics.md"))
+                    .into_bytes(),
+                Err(e) => e.into_bytes(),
+            };
+            OutFile::new(Path::new(folder).join(&f.path), bytes)
+        })
         .collect()
 }
