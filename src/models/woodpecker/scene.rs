@@ -19,6 +19,7 @@ use crate::models::woodpecker::formula::{
 use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
+use crate::output::format::people;
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
 use crate::report::scene::{Drawing, Figure, FigureKind};
@@ -124,7 +125,13 @@ pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: FigureKind) -> Result
     Ok(match kind {
         FigureKind::WoodMotion { periods } => vec![figure("motion", motion(p, periods)?)],
         FigureKind::WoodSpring => vec![figure("spring", spring(p)?)],
-        FigureKind::WoodForces => vec![figure("forces", forces(p)?)],
+        FigureKind::WoodForces => {
+            let mut out = vec![figure("forces", forces(p, None)?)];
+            if let Some(window) = onset_window(p) {
+                out.push(figure("forces-onsets", forces(p, Some(window))?));
+            }
+            out
+        }
         FigureKind::WoodPhase { phase } => {
             let phase = phase_of(phase)?;
             vec![figure(
@@ -546,9 +553,20 @@ fn spring(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
 // ---------------------------------------------------------------------------------------------
 // The forces (Fig. 18)
 
-fn forces(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
+/// The time window around the two slip onsets of the linear law, t_SL(I) − T/10 to
+/// t_SL(II) + T/10, where the forces that decide them are a small fraction of the largest.
+fn onset_window(p: &WoodpeckerParams) -> Option<(f64, f64)> {
+    let c = closed_form(p);
+    let (first, second) = (c.t_slip_1?, c.t_slip_2?);
+    let margin = 0.1 * p.period();
+    (woodpecker::linear_amplitudes(p).is_some() && 0.0 <= first && first < second)
+        .then(|| ((first - margin).max(0.0), (second + margin).min(p.period())))
+}
+
+/// The competing forces over one period, or zoomed into `window` (s).
+fn forces(p: &WoodpeckerParams, window: Option<(f64, f64)>) -> Result<(LineChart, String)> {
     let period = p.period();
-    let range = (0.0, period);
+    let range = window.unwrap_or((0.0, period));
     let (w_s, two_lambda) = (p.sleeve_weight(), 2.0 * p.lambda());
     let spring_force = |law: LawKind, t: f64| {
         woodpecker::spring_coordinate(p, law, t).map_or(f64::NAN, |z| p.k * z)
@@ -606,6 +624,17 @@ fn forces(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     } else {
         "for the harmonic law (the linear counterpart is undefined for these z0, d0)".to_string()
     };
+    if window.is_some() {
+        let caption = format!(
+            "The same forces zoomed on the two slip onsets, from {} s to {} s {law_note}: near \
+             the zeros of F_e the grip 2λμs|F_e| falls below the driving force W_S + F_e, a \
+             small fraction of the largest forces of the period, and the sleeve slips at \
+             t_SL(I) and t_SL(II).",
+            people(Some(range.0), 3),
+            people(Some(range.1), 3)
+        );
+        return Ok((chart, caption));
+    }
     let caption = format!(
         "Forces on the sleeve over one period {law_note}: the driving force W_S + F_e (weight \
          W_S = {w_s:.4} N plus spring force), the static friction capacity 2λμs|F_e| and the \
@@ -1096,28 +1125,31 @@ mod tests {
         let p = WoodpeckerParams::default();
         for kind in WOOD_KINDS {
             let figs = figures("s", &p, kind).unwrap();
-            assert_eq!(figs.len(), 1, "{kind:?}");
-            let f = &figs[0];
-            assert!(f.id.starts_with("s-") && !f.caption.is_empty(), "{kind:?}");
-            let chart = chart_of(f);
-            let (lo, hi) = chart.x_range.unwrap();
-            assert!(lo < hi, "{kind:?}");
-            for panel in &chart.panels {
-                assert!(!panel.curves.is_empty(), "{kind:?} {}", panel.y_label);
-                for c in &panel.curves {
-                    assert!(c.points.len() > 10, "{kind:?} {}", c.label);
-                    assert!(
-                        c.points.iter().all(|(x, y)| x.is_finite() && y.is_finite()),
-                        "{kind:?} {}",
-                        c.label
-                    );
+            // The forces also zoomed on the slip onsets.
+            let expected = if kind == FigureKind::WoodForces { 2 } else { 1 };
+            assert_eq!(figs.len(), expected, "{kind:?}");
+            for f in &figs {
+                assert!(f.id.starts_with("s-") && !f.caption.is_empty(), "{kind:?}");
+                let chart = chart_of(f);
+                let (lo, hi) = chart.x_range.unwrap();
+                assert!(lo < hi, "{kind:?}");
+                for panel in &chart.panels {
+                    assert!(!panel.curves.is_empty(), "{kind:?} {}", panel.y_label);
+                    for c in &panel.curves {
+                        assert!(c.points.len() > 10, "{kind:?} {}", c.label);
+                        assert!(
+                            c.points.iter().all(|(x, y)| x.is_finite() && y.is_finite()),
+                            "{kind:?} {}",
+                            c.label
+                        );
+                    }
                 }
+                assert!(!chart.markers.is_empty(), "{kind:?}");
+                assert!(
+                    chart.markers.iter().all(|m| m.x >= lo && m.x <= hi),
+                    "{kind:?}"
+                );
             }
-            assert!(!chart.markers.is_empty(), "{kind:?}");
-            assert!(
-                chart.markers.iter().all(|m| m.x >= lo && m.x <= hi),
-                "{kind:?}"
-            );
         }
     }
 
