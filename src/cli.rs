@@ -9,6 +9,7 @@ use std::marker::PhantomData;
 use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand};
 
+use crate::export::CsvDialect;
 use crate::fit::data::{Columns, Unit};
 use crate::fit::FitParam;
 use crate::models::woodpecker::WoodpeckerParams;
@@ -238,6 +239,9 @@ pub struct CommonArgs {
     /// (`eval` only).
     #[arg(long, value_name = "DIR")]
     pub csv: Option<PathBuf>,
+    /// How CSV files write numbers (`eval --csv`, `sweep`, `fit`) [default: standard].
+    #[arg(long, value_enum, value_name = "DIALECT")]
+    pub csv_dialect: Option<CsvDialect>,
 }
 
 /// A subcommand without options of its own.

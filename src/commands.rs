@@ -6,10 +6,11 @@ use std::io::Write;
 use anyhow::{Context, Result};
 
 use crate::cli::{
-    BenchArgs, Cli, Command, FitArgs, HandoutArgs, ModelArgs, ModelCommand, NoArgs, ReportArgs,
-    SheetFormat, SweepArgs, WorksheetArgs,
+    BenchArgs, Cli, Command, CommonArgs, FitArgs, HandoutArgs, ModelArgs, ModelCommand, NoArgs,
+    ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
 };
 use crate::error::Error;
+use crate::export::CsvDialect;
 use crate::models::param::invalid;
 use crate::models::{with_model, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS, MAX_PERIODS};
@@ -71,11 +72,15 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
 
 /// `stickslip eval MODEL`: the §7 evaluation as tables or JSON, and the CSV files with --csv.
 fn eval(args: &ModelArgs) -> Result<()> {
+    if args.common.csv.is_none() && args.common.csv_dialect.is_some() {
+        anyhow::bail!("--csv-dialect applies to the files of --csv DIR: give --csv too");
+    }
     fn show<M: Present>(p: &M, periods: u32, args: &ModelArgs) -> Result<String> {
         let evaluation = match &args.common.csv {
             None => p.evaluate(periods)?,
             Some(dir) => {
                 let (evaluation, files) = p.evaluate_with_csv(periods)?;
+                let files = dialect(&args.common).apply(files);
                 // Written before anything is printed: a bad target leaves no output at all.
                 report::write_all(dir, &files)?;
                 evaluation
@@ -96,6 +101,7 @@ fn eval(args: &ModelArgs) -> Result<()> {
 fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()> {
     let common = &model.args.common;
     reject_flag("claims", "--csv", common.csv.is_some())?;
+    reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
     let (params, _) = model_params(&model.args)?;
     let (pulled, wood) = crate::claims::params_for(&params);
     let sample = crate::claims::Sample {
@@ -125,7 +131,8 @@ fn fit(args: &FitArgs) -> Result<()> {
     };
     let data = crate::fit::data::read(&args.file, &opts)?;
     let fit = crate::fit::fit(&data, &base, &args.free)?;
-    report::write_all(&args.out, &crate::fit::render(&fit)?)?;
+    let files = dialect(common).apply(crate::fit::render(&fit)?);
+    report::write_all(&args.out, &files)?;
     print_stdout(&if common.json {
         crate::fit::json(&fit)?
     } else {
@@ -254,9 +261,14 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
     crate::sweep::validate(&base, &spec)?;
     let progress = crate::output::progress::progress_bar(spec.steps, "sweep");
     let result = crate::sweep::run(&base, &spec, &progress)?;
-    let files = crate::sweep::render(&result)?;
+    let files = dialect(common).apply(crate::sweep::render(&result)?);
     report::write_all(&grid.out, &files)?;
     print_stdout(&crate::sweep::summary_line(&result, &grid.out))
+}
+
+/// The CSV dialect asked for.
+fn dialect(common: &CommonArgs) -> CsvDialect {
+    common.csv_dialect.unwrap_or_default()
 }
 
 /// A flag that the subcommand does not use is refused rather than silently ignored.

@@ -9,7 +9,9 @@
 //!
 //! Rendering is pure (text in memory, [`OutFile`]s); [`crate::report::write_all`] writes them,
 //! so a bad target folder leaves nothing behind. Numbers are written in the shortest form that
-//! reads back to the same `f64` (`{:e}`), so the bytes are the same on every machine.
+//! reads back to the same `f64` ([`num`]), so the bytes are the same on every machine; every CSV
+//! of the tool (these, sweep.csv, fit.csv) can be rewritten for comma-decimal spreadsheets
+//! ([`CsvDialect`]).
 
 use std::fmt::Write as _;
 
@@ -23,13 +25,80 @@ pub const SAMPLES_PER_PERIOD: u64 = 200;
 /// (still uniformly) so that a file stays below ~100 MB.
 pub const MAX_UNIFORM_SAMPLES: u64 = 1_000_000;
 
-/// A float in the shortest scientific form that round-trips; zero is written `0e0` whatever
+/// Magnitudes written without an exponent: from 10⁻⁵ (0.00001) up to 10¹⁵.
+const PLAIN: std::ops::Range<f64> = 1e-5..1e15;
+
+/// A float in the shortest form that reads back to the same `f64`: plain decimals where the
+/// magnitude allows ([`PLAIN`]), scientific notation (`1.5e-9`) beyond; zero is `0` whatever
 /// its sign, so that rest states read the same everywhere.
 pub fn num(x: f64) -> String {
     if x == 0.0 {
-        "0e0".to_string()
+        "0".to_string()
+    } else if PLAIN.contains(&x.abs()) {
+        format!("{x}")
     } else {
         format!("{x:e}")
+    }
+}
+
+/// How a CSV file separates fields and writes decimals.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum CsvDialect {
+    /// `,` between fields, `.` decimals (RFC 4180; what most software reads).
+    #[default]
+    Standard,
+    /// `;` between fields, `,` decimals: what spreadsheets set to Italian, German, French or
+    /// Spanish read as numbers.
+    Semicolon,
+}
+
+impl CsvDialect {
+    /// `text`, a CSV file of this tool in the standard dialect (no quoted fields, no `;`), in
+    /// this dialect: `;` between fields and a decimal comma in every number.
+    pub fn convert(self, text: &str) -> String {
+        match self {
+            CsvDialect::Standard => text.to_string(),
+            CsvDialect::Semicolon => text
+                .split_inclusive('\n')
+                .map(|line| {
+                    let (body, end) = line
+                        .strip_suffix('\n')
+                        .map_or((line, ""), |body| (body, "\n"));
+                    let fields: Vec<String> = body
+                        .split(',')
+                        .map(|f| {
+                            if f.parse::<f64>().is_ok() {
+                                f.replace('.', ",")
+                            } else {
+                                f.to_string()
+                            }
+                        })
+                        .collect();
+                    fields.join(";") + end
+                })
+                .collect(),
+        }
+    }
+
+    /// `files` with every `.csv` among them in this dialect.
+    pub fn apply(self, files: Vec<OutFile>) -> Vec<OutFile> {
+        if self == CsvDialect::Standard {
+            return files;
+        }
+        files
+            .into_iter()
+            .map(|f| {
+                if f.path.extension().is_some_and(|e| e == "csv") {
+                    let text = String::from_utf8_lossy(&f.bytes);
+                    OutFile {
+                        bytes: self.convert(&text).into_bytes(),
+                        ..f
+                    }
+                } else {
+                    f
+                }
+            })
+            .collect()
     }
 }
 
@@ -133,10 +202,37 @@ mod tests {
 
     #[test]
     fn numbers_round_trip_and_zero_has_one_spelling() {
-        for x in [1.0, -2.5e-7, 0.1 + 0.2, f64::MIN_POSITIVE, 123456.789] {
+        for x in [
+            1.0,
+            -2.5e-7,
+            0.1 + 0.2,
+            f64::MIN_POSITIVE,
+            123456.789,
+            1e-5,
+            9.99e14,
+            1e15,
+        ] {
             assert_eq!(num(x).parse::<f64>().unwrap(), x);
         }
-        assert_eq!(num(-0.0), "0e0");
-        assert_eq!(num(0.0), "0e0");
+        assert_eq!(num(-0.0), "0");
+        assert_eq!(num(0.0), "0");
+        // Plain decimals where the magnitude allows, an exponent beyond.
+        assert_eq!(num(0.000_123), "0.000123");
+        assert_eq!(num(-1234.5), "-1234.5");
+        assert_eq!(num(1e-5), "0.00001");
+        assert_eq!(num(2.5e-7), "2.5e-7");
+        assert_eq!(num(3e15), "3e15");
+    }
+
+    #[test]
+    fn the_semicolon_dialect_has_decimal_commas_and_keeps_text() {
+        let text = "t_s,kind,x_m\n0.25,slip_onset,-1.5e-7\n1,stick,0\n";
+        assert_eq!(
+            CsvDialect::Semicolon.convert(text),
+            "t_s;kind;x_m\n0,25;slip_onset;-1,5e-7\n1;stick;0\n"
+        );
+        assert_eq!(CsvDialect::Standard.convert(text), text);
+        // A last line without a newline stays without one.
+        assert_eq!(CsvDialect::Semicolon.convert("a,0.5"), "a;0,5");
     }
 }

@@ -28,6 +28,7 @@ pub mod cli;
 pub mod commands;
 #[cfg(feature = "cli")]
 pub mod derivation;
+pub mod draws;
 pub mod engine;
 pub mod error;
 #[cfg(feature = "cli")]

@@ -228,3 +228,48 @@ fn csv_is_an_option_of_eval_only() {
         .join("nowhere")
         .exists());
 }
+
+/// `--csv-dialect semicolon`: `;` between fields and decimal commas, the same numbers as the
+/// standard files, for spreadsheets in comma-decimal locales; refused without `--csv`.
+#[test]
+fn the_semicolon_dialect_writes_the_same_numbers_for_comma_decimal_spreadsheets() {
+    let tmp = tempfile::tempdir().unwrap();
+    let (standard, semicolon) = (tmp.path().join("std"), tmp.path().join("semi"));
+    eval_set_b(&standard, false);
+    stickslip()
+        .args(["eval", "pulled-mass", "--scenario", SET_B, "--csv"])
+        .arg(&semicolon)
+        .args(["--csv-dialect", "semicolon"])
+        .assert()
+        .success();
+    for name in ["timeseries_linear.csv", "events_harmonic.csv"] {
+        let a = fs::read_to_string(standard.join(name)).unwrap();
+        let b = fs::read_to_string(semicolon.join(name)).unwrap();
+        assert_eq!(a.lines().count(), b.lines().count());
+        assert!(b.starts_with("t_s;"), "{b}");
+        for (la, lb) in a.lines().zip(b.lines()) {
+            let (fa, fb): (Vec<&str>, Vec<&str>) =
+                (la.split(',').collect(), lb.split(';').collect());
+            assert_eq!(fa.len(), fb.len(), "{lb}");
+            for (x, y) in fa.iter().zip(&fb) {
+                assert!(!y.contains('.'), "{lb}");
+                match x.parse::<f64>() {
+                    Ok(v) => assert_eq!(y.replace(',', ".").parse::<f64>().unwrap(), v),
+                    Err(_) => assert_eq!(x, y),
+                }
+            }
+        }
+        // Plain decimals where the magnitude allows: no exponent in a time column.
+        assert!(
+            b.lines()
+                .skip(1)
+                .all(|l| !l.split(';').next().unwrap().contains('e')),
+            "{name}"
+        );
+    }
+    stickslip()
+        .args(["eval", "pulled-mass", "--csv-dialect", "semicolon"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("--csv-dialect"));
+}

@@ -1,6 +1,6 @@
 //! Seeded random samples of valid parameter sets for the claims about "sensible values"
 //! (claims 1 and 4). Only closed forms are evaluated here, so thousands of sets cost
-//! milliseconds; the same seed always gives the same sets (`StdRng::seed_from_u64`).
+//! milliseconds; the same seed always gives the same sets ([`Draws`]).
 //!
 //! ```text
 //! pulled mass (claim 1):  μs ∈ [0.1, 1],  μd = μs·[0.05, 1],  φ uniform in (1/Θ, 2μs]
@@ -11,7 +11,7 @@
 //!                         counterexample: μd,MIN^(I) ≤ μd,MIN^(II)
 //! ```
 
-use rand::{rngs::StdRng, Rng, SeedableRng};
+use crate::draws::Draws;
 
 use super::{Sample, SampleResult};
 use crate::models::pulled_mass::formula as pcf;
@@ -34,15 +34,15 @@ pub(crate) struct PulledExample {
 /// Claim 1 on the sample: sets in the "non-stick" area of Fig. 9 (φ > 1/Θ, no immediate slip)
 /// that still stick, in the next period (φ ≤ φ_c).
 pub(crate) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<PulledExample>) {
-    let mut rng = StdRng::seed_from_u64(sample.seed);
+    let mut rng = Draws::new(sample.seed);
     let mut counterexamples = 0;
     let mut example = None;
     for _ in 0..sample.size {
-        let mu_s = rng.gen_range(0.1..=1.0);
-        let mu_d = mu_s * rng.gen_range(0.05..=1.0);
+        let mu_s = rng.between(0.1, 1.0);
+        let mu_d = mu_s * rng.between(0.05, 1.0);
         let lo = pcf::phi_stick_max(mu_s, mu_d);
         // 1/Θ ≤ μd ≤ μs < 2μs, so the interval is never empty.
-        let phi = lo + (2.0 * mu_s - lo) * (1.0 - rng.gen::<f64>());
+        let phi = lo + (2.0 * mu_s - lo) * (1.0 - rng.unit());
         if pcf::regime(phi, mu_s, mu_d) != pcf::Regime::SlipStickLate {
             continue;
         }
@@ -71,7 +71,7 @@ pub(crate) fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<Pulled
 /// Claim 4 on the sample: valid sets with μd,MIN^(I) ≤ μd,MIN^(II). `g` (m/s²) and the quarter
 /// period `tau` (s) do not change either critical value; they only complete the set.
 pub(crate) fn woodpecker_mu_min_order(sample: &Sample, g: f64, tau: f64) -> SampleResult {
-    let mut rng = StdRng::seed_from_u64(sample.seed);
+    let mut rng = Draws::new(sample.seed);
     let (mut kept, mut counterexamples) = (0, 0);
     let mut example = None;
     for _ in 0..sample.size.saturating_mul(MAX_DRAWS_PER_SET) {
@@ -91,14 +91,14 @@ pub(crate) fn woodpecker_mu_min_order(sample: &Sample, g: f64, tau: f64) -> Samp
     result(sample, kept, counterexamples, example)
 }
 
-fn random_woodpecker(rng: &mut StdRng, g: f64, tau: f64) -> LinearWoodpecker {
-    let lambda = rng.gen_range(1.0..=3.0);
-    let mu_s = rng.gen_range(0.3..=1.0);
-    let mu_d = mu_s * rng.gen_range(0.05..=1.0);
-    let k = rng.gen_range(5.0..=50.0);
-    let m_s = rng.gen_range(0.002..=0.02);
-    let zeta0 = rng.gen_range(0.002..=0.02);
-    let delta0 = zeta0 * rng.gen_range(0.0..0.95);
+fn random_woodpecker(rng: &mut Draws, g: f64, tau: f64) -> LinearWoodpecker {
+    let lambda = rng.between(1.0, 3.0);
+    let mu_s = rng.between(0.3, 1.0);
+    let mu_d = mu_s * rng.between(0.05, 1.0);
+    let k = rng.between(5.0, 50.0);
+    let m_s = rng.between(0.002, 0.02);
+    let zeta0 = rng.between(0.002, 0.02);
+    let delta0 = zeta0 * rng.between(0.0, 0.95);
     LinearWoodpecker {
         mu_s,
         mu_d,

@@ -163,6 +163,33 @@ enum Mode {
 }
 
 impl Expr {
+    /// The symbols of the computed quantities (the [`Expr::Var`] leaves), in the order they
+    /// are written, each once.
+    pub fn vars(&self) -> Vec<&'static str> {
+        fn walk(e: &Expr, out: &mut Vec<&'static str>) {
+            match e {
+                Expr::Var { tex, .. } => {
+                    if !out.contains(tex) {
+                        out.push(tex);
+                    }
+                }
+                Expr::Int(_) | Expr::Const { .. } | Expr::Given { .. } => {}
+                Expr::Add(a, b)
+                | Expr::Sub(a, b)
+                | Expr::Mul(a, b)
+                | Expr::Div(a, b)
+                | Expr::Max(a, b) => {
+                    walk(a, out);
+                    walk(b, out);
+                }
+                Expr::Pow(a, ..) | Expr::Apply(_, a) => walk(a, out),
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, &mut out);
+        out
+    }
+
     /// The value, with every leaf at full precision.
     pub fn eval(&self) -> f64 {
         match self {

@@ -143,6 +143,32 @@ impl Step {
     }
 }
 
+/// The steps that `step` uses, each before the steps that use it (the computed symbols of its
+/// formula, found among `steps` by symbol, recursively): the working a student writes down on
+/// the way to `step`, for partial credit.
+pub fn working<'a>(steps: &'a [Step], step: &Step) -> Vec<&'a Step> {
+    fn visit<'a>(steps: &'a [Step], step: &Step, out: &mut Vec<&'a Step>, depth: usize) {
+        if depth > steps.len() {
+            return;
+        }
+        for symbol in step.expr.vars() {
+            let Some(used) = steps.iter().find(|s| s.symbol == symbol) else {
+                continue;
+            };
+            if out.iter().any(|s| std::ptr::eq(*s, used)) {
+                continue;
+            }
+            visit(steps, used, out, depth + 1);
+            if !out.iter().any(|s| std::ptr::eq(*s, used)) {
+                out.push(used);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    visit(steps, step, &mut out, 0);
+    out
+}
+
 /// Collects the steps of one model (key `K`) in order; each step's symbol and value become a
 /// quantity leaf for the steps after it.
 pub(crate) struct Steps<'a, K> {

@@ -308,3 +308,39 @@ fn outside_the_domain_every_phase_step_says_why() {
         .unwrap();
     assert!(omega.value.is_some());
 }
+
+#[test]
+fn the_working_of_a_step_is_its_chain_of_earlier_steps() {
+    for steps in [
+        pulled_mass(&PulledMassParams::default()),
+        woodpecker(&WoodpeckerParams::default()),
+    ] {
+        for step in &steps {
+            let chain = working(&steps, step);
+            let symbols: Vec<&str> = chain.iter().map(|s| s.symbol).collect();
+            // Every computed symbol of the formula is worked out in the chain...
+            for v in step.expr.vars() {
+                if steps.iter().any(|s| s.symbol == v) {
+                    assert!(symbols.contains(&v), "{}: {v} missing", step.symbol);
+                }
+            }
+            // ... after the steps it uses, each once, and never the step itself.
+            for (i, s) in chain.iter().enumerate() {
+                assert!(!std::ptr::eq(*s, step));
+                for v in s.expr.vars() {
+                    if let Some(j) = symbols.iter().position(|x| *x == v) {
+                        assert!(j < i, "{} uses {v} worked later", s.symbol);
+                    }
+                }
+                assert_eq!(symbols.iter().filter(|x| **x == s.symbol).count(), 1);
+            }
+        }
+    }
+    let steps = pulled_mass(&PulledMassParams::default());
+    let t_slip = steps
+        .iter()
+        .find(|s| s.key == StepKey::Quantity(P::TSlip.into()))
+        .unwrap();
+    let symbols: Vec<&str> = working(&steps, t_slip).iter().map(|s| s.symbol).collect();
+    assert!(symbols.contains(&"T"), "{symbols:?}");
+}

@@ -35,7 +35,7 @@ use crate::params::DEFAULT_PERIODS;
 pub use data::Tracked;
 pub use model::{data_period, track, Axis, Track};
 pub use param::FitParam;
-pub use render::{json, render, text};
+pub use render::{chart, json, render, strong_correlations, text, Correlated};
 use solve::{solve, termination_text, Setup};
 
 /// Samples of the model curve drawn in the figure.

@@ -9,6 +9,7 @@ use super::{Axis, Estimate, Fit};
 use crate::error::{excerpt, excerpt_path, Error, Result};
 use crate::export::num;
 use crate::output::format::sig;
+use crate::report::context::regime_words;
 use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::{Curve, LineChart, Panel, Stroke};
 use crate::report::OutFile;
@@ -63,6 +64,14 @@ fn csv(fit: &Fit) -> String {
 }
 
 fn svg(fit: &Fit) -> Result<String> {
+    line_chart(&chart(fit)).map_err(|e| Error::Figure {
+        id: "fit".to_string(),
+        reason: e.to_string(),
+    })
+}
+
+/// The overlay of Figs. 26–27: the tracked points and the fitted model, and the residuals.
+pub fn chart(fit: &Fit) -> LineChart {
     let u = fit.data.unit.symbol();
     let s = &fit.series;
     let curve = |label: &str, points: Vec<(f64, f64)>, color: usize, stroke: Stroke| Curve {
@@ -72,14 +81,14 @@ fn svg(fit: &Fit) -> Result<String> {
         stroke,
     };
     let zip = |y: &[f64]| s.t.iter().copied().zip(y.iter().copied()).collect();
-    let spec = LineChart {
+    LineChart {
         x_label: "t (s)".to_string(),
         x_range: None,
         panels: vec![
             Panel {
                 y_label: format!("y ({u})"),
                 curves: vec![
-                    curve("tracked", zip(&s.y), DATA_COLOR, Stroke::Solid),
+                    curve("tracked", zip(&s.y), DATA_COLOR, Stroke::Points),
                     curve(
                         "model (harmonic law, fitted)",
                         s.curve.clone(),
@@ -91,39 +100,86 @@ fn svg(fit: &Fit) -> Result<String> {
             },
             Panel {
                 y_label: format!("model − data ({u})"),
-                curves: vec![curve("", zip(&s.residual), DATA_COLOR, Stroke::Solid)],
+                curves: vec![curve("", zip(&s.residual), DATA_COLOR, Stroke::Points)],
                 h_lines: vec![(0.0, String::new())],
             },
         ],
         markers: Vec::new(),
-    };
-    line_chart(&spec).map_err(|e| Error::Figure {
-        id: "fit".to_string(),
-        reason: e.to_string(),
-    })
+    }
 }
 
 /// A model period that drifts more than this many periods from the data's over the tracked
 /// span is warned about.
 const MAX_DRIFT: f64 = 0.25;
-/// Correlations beyond this (in absolute value) between physical parameters are warned about.
-const STRONG_CORRELATION: f64 = 0.99;
+/// Correlations from this (in absolute value) between physical parameters are warned about:
+/// at |r| = 0.95 an error in one is compensated by the other to 95 %.
+pub const STRONG_CORRELATION: f64 = 0.95;
+
+/// A pair of physical parameters whose estimates are strongly correlated, and the one to fix:
+/// the one in most such pairs (fixing it separates them all), else the one the data determine
+/// worse (larger relative standard error).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Correlated {
+    pub a: &'static str,
+    pub b: &'static str,
+    pub r: f64,
+    pub fix: &'static str,
+}
 
 /// Pairs of physical parameters whose estimates are strongly correlated.
-fn strong_correlations(fit: &Fit) -> Vec<(&'static str, &'static str, f64)> {
+pub fn strong_correlations(fit: &Fit) -> Vec<Correlated> {
     let Some(c) = &fit.correlation else {
         return Vec::new();
     };
     let physics: Vec<&Estimate> = fit.estimates.iter().filter(|e| !e.nuisance).collect();
-    let mut out = Vec::new();
-    for (i, a) in physics.iter().enumerate() {
-        for (j, b) in physics.iter().enumerate().skip(i + 1) {
-            if c[i][j].abs() > STRONG_CORRELATION {
-                out.push((a.name, b.name, c[i][j]));
+    let mut pairs = Vec::new();
+    for i in 0..physics.len() {
+        for j in i + 1..physics.len() {
+            if c[i][j].abs() >= STRONG_CORRELATION {
+                pairs.push((i, j));
             }
         }
     }
-    out
+    let count = |k: usize| pairs.iter().filter(|&&(i, j)| i == k || j == k).count();
+    let relative = |k: usize| {
+        let e = physics[k];
+        e.std_error.map_or(f64::INFINITY, |se| se / e.value.abs())
+    };
+    let rank = |k: usize| (count(k), relative(k));
+    pairs
+        .iter()
+        .map(|&(i, j)| Correlated {
+            a: physics[i].name,
+            b: physics[j].name,
+            r: c[i][j],
+            fix: if rank(i) >= rank(j) {
+                physics[i].name
+            } else {
+                physics[j].name
+            },
+        })
+        .collect()
+}
+
+/// The correlation matrix of the estimates as a text table (two decimals).
+fn correlation_table(fit: &Fit) -> String {
+    let Some(c) = &fit.correlation else {
+        return "correlations: not available (JᵀJ is singular)\n".to_string();
+    };
+    let names: Vec<&str> = fit.estimates.iter().map(|e| e.name).collect();
+    let mut o = format!("correlations:\n{:<12}", "");
+    for n in &names {
+        let _ = write!(o, " {n:>11}");
+    }
+    o.push('\n');
+    for (name, row) in names.iter().zip(c) {
+        let _ = write!(o, "{name:<12}");
+        for r in row {
+            let _ = write!(o, " {:>11}", format!("{r:+.2}").replace('-', "−"));
+        }
+        o.push('\n');
+    }
+    o
 }
 
 /// Lengths are shown in mm in the table (the paper's unit), other values in SI.
@@ -213,24 +269,24 @@ pub fn text(fit: &Fit, out: &Path) -> String {
             sig(Some(tracked_periods), 3)
         );
     }
-    let strong = strong_correlations(fit);
-    if !strong.is_empty() {
-        let pairs: Vec<String> = strong
-            .iter()
-            .map(|(a, b, r)| format!("{a} and {b} at r = {r:.4}"))
-            .collect();
+    let _ = write!(o, "\n{}", correlation_table(fit));
+    for c in strong_correlations(fit) {
         let _ = writeln!(
             o,
-            "warning: correlated beyond {STRONG_CORRELATION}: {}; the data hardly separate \
-             them: fix some of them (fewer --free)",
-            pairs.join(", ")
+            "warning: {} and {} are correlated at r = {} (|r| ≥ {STRONG_CORRELATION}): the \
+             data hardly separate them, and an error in one is made up by the other. Fix {} \
+             at a measured value (leave it out of --free) and fit again.",
+            c.a,
+            c.b,
+            format!("{:.3}", c.r).replace('-', "−"),
+            c.fix
         );
     }
     let p = &fit.params;
     let _ = writeln!(
         o,
         "\nfitted model: mu_s = {}, mu_d = {}, k = {} N/m, z0 = {} mm, d0 = {} mm; T = {} s, \
-         first tracked time at phase {} T; regime {}, v̄ = {} mm/s",
+         first tracked time at phase {} T; {}, v̄ = {} mm/s",
         sig(Some(p.mu_s), 6),
         sig(Some(p.mu_d), 6),
         sig(Some(p.k), 6),
@@ -238,7 +294,7 @@ pub fn text(fit: &Fit, out: &Path) -> String {
         sig(Some(p.d0 * 1e3), 6),
         sig(Some(fit.period), 6),
         sig(Some(fit.phase), 3),
-        fit.regime,
+        regime_words(fit.regime),
         sig(fit.v_avg.map(|v| v * 1e3), 4)
     );
     let _ = writeln!(

@@ -9,13 +9,13 @@
 
 use std::fmt::Write as _;
 
-use rand::rngs::StdRng;
-use rand::{Rng, SeedableRng};
+use crate::draws::Draws;
 
 use super::data::Unit;
 use super::track;
 use crate::error::Result;
 use crate::models::woodpecker::WoodpeckerParams;
+use crate::output::format::people;
 
 /// What to generate.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,13 +41,53 @@ pub struct SyntheticTrack {
     pub y_offset: f64,
 }
 
+/// Where the example track is kept, relative to the repository.
+pub const EXAMPLE_FILE: &str = "scenarios/tracked-toy-example.csv";
+
 impl Synthetic {
+    /// The example of `scenarios/tracked-toy-example.csv` and of the Figs. 26–27 scene: the
+    /// tracked toy's set with μd, z0 and d0 a few percent off it (the paper's "a few percent"),
+    /// 500 frames at 240 fps, σ = 0.2 mm, seed 2017.
+    pub fn example() -> Self {
+        Synthetic {
+            truth: WoodpeckerParams {
+                mu_d: 0.34,
+                z0: 0.0069,
+                d0: 0.0093,
+                ..crate::models::woodpecker::lever::fig26()
+            },
+            points: 500,
+            frame_rate: 240.0,
+            noise: 2e-4,
+            seed: 2017,
+        }
+    }
+
+    /// What the data were made with, in words: for the example file's comment and captions.
+    pub fn provenance(&self) -> String {
+        let t = &self.truth;
+        format!(
+            "Synthetic data, NOT a measurement: made by stickslip's exact harmonic woodpecker \
+             model (the sleeve position, y up as in tracking apps) with mu_d = {}, z0 = {} mm, \
+             d0 = {} mm and k = {} N/m, the other values as in Fig. 15; {} frames at {} fps, \
+             Gaussian noise sigma = {} mm, seed {}.",
+            people(Some(t.mu_d), 4),
+            people(Some(t.z0 * 1e3), 4),
+            people(Some(t.d0 * 1e3), 4),
+            people(Some(t.k), 4),
+            self.points,
+            people(Some(self.frame_rate), 4),
+            people(Some(self.noise * 1e3), 4),
+            self.seed
+        )
+    }
+
     /// Generates the track (the same bytes for the same seed).
     pub fn generate(&self) -> Result<SyntheticTrack> {
-        let mut rng = StdRng::seed_from_u64(self.seed);
-        let time_shift = rng.gen::<f64>() * self.truth.period();
-        let t0: f64 = rng.gen();
-        let y_offset = 0.1 + 0.1 * rng.gen::<f64>();
+        let mut rng = Draws::new(self.seed);
+        let time_shift = rng.unit() * self.truth.period();
+        let t0 = rng.unit();
+        let y_offset = rng.between(0.1, 0.2);
         let dt: Vec<f64> = (0..self.points)
             .map(|i| i as f64 / self.frame_rate)
             .collect();
@@ -55,7 +95,7 @@ impl Synthetic {
         let y = sleeve
             .y
             .iter()
-            .map(|y_s| y_offset - y_s + self.noise * gaussian(&mut rng))
+            .map(|y_s| y_offset - y_s + self.noise * rng.gaussian())
             .collect();
         Ok(SyntheticTrack {
             t: dt.iter().map(|d| t0 + d).collect(),
@@ -82,13 +122,6 @@ impl SyntheticTrack {
         }
         text
     }
-}
-
-/// A standard normal deviate (Box–Muller).
-fn gaussian(rng: &mut StdRng) -> f64 {
-    let u1 = 1.0 - rng.gen::<f64>();
-    let u2: f64 = rng.gen();
-    (-2.0 * u1.ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
 }
 
 #[cfg(test)]

@@ -2,7 +2,7 @@
 //! how a student's parameter set is drawn, and the model-specific parts of the answers.
 //! Implemented by each model's params struct (`src/models/<name>/exercise.rs`).
 
-use rand::rngs::StdRng;
+use crate::draws::Draws;
 
 use super::answer::Answer;
 use super::question::{Question, Regime};
@@ -26,7 +26,7 @@ pub trait Exercise: Present {
     /// The rules that decide the regime, as (regime, condition in LaTeX).
     fn regime_rules() -> &'static [(Regime, &'static str)];
     /// A candidate parameter set aimed at `regime`, every value rounded as typed.
-    fn draw(regime: Regime, rng: &mut StdRng) -> Self;
+    fn draw(regime: Regime, rng: &mut Draws) -> Self;
     /// The values the regime's inequalities compare, as (LaTeX symbol, value); `value` gives
     /// the value of a worked step.
     fn regime_comparisons(

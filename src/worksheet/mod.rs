@@ -20,9 +20,8 @@ pub mod question;
 pub mod render;
 pub mod sample;
 
+use crate::draws::Draws;
 use indicatif::ProgressBar;
-use rand::rngs::StdRng;
-use rand::{Rng, SeedableRng};
 use rayon::prelude::*;
 
 pub use answer::{Answer, Comparison, Value};
@@ -150,8 +149,8 @@ pub fn generate(req: &Request, progress: &ProgressBar) -> Result<Worksheets> {
         ));
     }
     let (regime, questions) = resolve(req)?;
-    let mut master = StdRng::seed_from_u64(req.seed);
-    let seeds: Vec<(u32, u64)> = (1..=req.students).map(|n| (n, master.gen())).collect();
+    let mut master = Draws::new(req.seed);
+    let seeds: Vec<(u32, u64)> = (1..=req.students).map(|n| (n, master.word())).collect();
     let students = seeds
         .par_iter()
         .map(|&(number, seed)| {
@@ -180,7 +179,7 @@ pub fn student(
     seed: u64,
     attempts: u32,
 ) -> Result<Student> {
-    let mut rng = StdRng::seed_from_u64(seed);
+    let mut rng = Draws::new(seed);
     for _ in 0..attempts {
         let case = sample::draw(model, regime, &mut rng);
         if case.closed_form_regime() != regime.id() {

@@ -10,6 +10,7 @@ use super::exercise::Exercise;
 use super::json::key_json;
 use super::question::{self, Kind, Question};
 use super::{Student, Worksheets};
+use crate::derivation::{self, Step};
 use crate::error::Result;
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
@@ -125,6 +126,9 @@ struct SheetCtx {
 struct AnswerCtx {
     number: usize,
     prompt: &'static str,
+    /// The steps the answer uses, each worked out (`symbol = formula = numbers = result`),
+    /// for partial credit.
+    working: Vec<Math>,
     /// `symbol = formula = numbers = result` (closed forms), or the values compared (regime).
     worked: Option<Math>,
     /// The answer to 4 significant figures with its unit, or the regime.
@@ -234,8 +238,20 @@ fn comparisons_tex(c: &[Comparison]) -> String {
         .join(r",\quad ")
 }
 
-fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
+/// The answer's context; `shown` holds the symbols of the steps worked out in earlier answers
+/// of the same key, which are not repeated.
+fn answer_ctx(i: usize, a: &Answer, steps: &[Step], shown: &mut Vec<&'static str>) -> AnswerCtx {
     let q = a.question;
+    let mut working = Vec::new();
+    if let Some(step) = &a.step {
+        for s in derivation::working(steps, step) {
+            if !shown.contains(&s.symbol) {
+                shown.push(s.symbol);
+                working.push(math(&s.worked_tex()));
+            }
+        }
+        shown.push(step.symbol);
+    }
     let worked = match (&a.step, q.kind) {
         (_, Kind::Regime(_)) => Some(math(&comparisons_tex(&a.comparisons))),
         (Some(step), _) => Some(math(&step.worked_tex())),
@@ -244,6 +260,7 @@ fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
     AnswerCtx {
         number: i + 1,
         prompt: q.prompt,
+        working,
         worked,
         result: number(&a.value, ANSWER_DIGITS, q.unit()),
         numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit()),
@@ -255,6 +272,8 @@ fn answer_ctx(i: usize, a: &Answer) -> AnswerCtx {
 }
 
 fn key_ctx(s: &Student) -> KeyCtx {
+    let steps = super::answer::steps(&s.case);
+    let mut shown = Vec::new();
     KeyCtx {
         number: s.number,
         params: params_ctx(&s.case),
@@ -262,7 +281,7 @@ fn key_ctx(s: &Student) -> KeyCtx {
             .answers
             .iter()
             .enumerate()
-            .map(|(i, a)| answer_ctx(i, a))
+            .map(|(i, a)| answer_ctx(i, a, &steps, &mut shown))
             .collect(),
     }
 }

@@ -2,7 +2,7 @@
 //! around the paper's sets ([`Exercise::draw`]), every value rounded to three significant
 //! figures, the values a student types.
 
-use rand::rngs::StdRng;
+use crate::draws::Draws;
 
 use super::exercise::Exercise;
 use super::question::Regime;
@@ -15,8 +15,8 @@ pub fn round3(x: f64) -> f64 {
 
 /// A candidate set for `model`, aimed at `regime` where the draw can be (rounded; the caller
 /// checks the regime of the rounded set).
-pub fn draw(model: Model, regime: Regime, rng: &mut StdRng) -> Model {
-    fn draw_as<M: Exercise>(_: &M, regime: Regime, rng: &mut StdRng) -> Model {
+pub fn draw(model: Model, regime: Regime, rng: &mut Draws) -> Model {
+    fn draw_as<M: Exercise>(_: &M, regime: Regime, rng: &mut Draws) -> Model {
         M::draw(regime, rng).into_model()
     }
     with_model!(&model, p => draw_as(p, regime, rng))
@@ -26,7 +26,6 @@ pub fn draw(model: Model, regime: Regime, rng: &mut StdRng) -> Model {
 mod tests {
     use super::*;
     use crate::worksheet::question;
-    use rand::SeedableRng;
 
     #[test]
     fn rounding_keeps_three_significant_figures_as_typed() {
@@ -41,7 +40,7 @@ mod tests {
     fn draws_are_valid_and_reproducible() {
         for model in Model::defaults() {
             let regime = question::regimes(model)[0];
-            let (mut a, mut b) = (StdRng::seed_from_u64(3), StdRng::seed_from_u64(3));
+            let (mut a, mut b) = (Draws::new(3), Draws::new(3));
             for _ in 0..200 {
                 let (x, y) = (draw(model, regime, &mut a), draw(model, regime, &mut b));
                 assert_eq!(x, y);

@@ -1,8 +1,7 @@
 //! The pulled mass on a worksheet: its questions and regimes, its introduction, and how a
 //! student's parameter set is drawn.
 
-use rand::rngs::StdRng;
-use rand::Rng;
+use crate::draws::Draws;
 
 use super::formula as pm;
 use super::formula::Regime as PulledRegime;
@@ -109,7 +108,7 @@ impl Exercise for PulledMassParams {
         REGIME_RULES
     }
 
-    fn draw(regime: Regime, rng: &mut StdRng) -> Self {
+    fn draw(regime: Regime, rng: &mut Draws) -> Self {
         draw_set(regime, rng)
     }
 
@@ -138,11 +137,11 @@ impl Exercise for PulledMassParams {
 /// μs 0.25–0.8, μd/μs 0.5–1, m 20–200 g, k 10–100 N/m, and F = φW with φ inside the interval of
 /// the regime (§1.5), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
 /// the motion is large enough to see.
-fn draw_set(regime: Regime, rng: &mut StdRng) -> PulledMassParams {
-    let mu_s = rng.gen_range(0.25..0.8);
-    let mu_d = mu_s * rng.gen_range(0.5..=1.0);
-    let mass = rng.gen_range(0.02..0.2);
-    let k = rng.gen_range(10.0..100.0);
+fn draw_set(regime: Regime, rng: &mut Draws) -> PulledMassParams {
+    let mu_s = rng.between(0.25, 0.8);
+    let mu_d = mu_s * rng.between(0.5, 1.0);
+    let mass = rng.between(0.02, 0.2);
+    let k = rng.between(10.0, 100.0);
     let (stick, cont) = (
         pm::phi_stick_max(mu_s, mu_d),
         pm::phi_continuous(mu_s, mu_d),
@@ -154,7 +153,7 @@ fn draw_set(regime: Regime, rng: &mut StdRng) -> PulledMassParams {
         r if r == continuous => (cont, 2.0 * mu_s),
         _ => (0.3 * stick, stick),
     };
-    let phi = lo + rng.gen_range(0.02..0.98) * (hi - lo);
+    let phi = lo + rng.between(0.02, 0.98) * (hi - lo);
     PulledMassParams {
         mu_s: round3(mu_s),
         mu_d: round3(mu_d),

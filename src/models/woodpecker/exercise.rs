@@ -1,8 +1,7 @@
 //! The woodpecker on a worksheet: its questions and regimes, its introduction, how a
 //! student's parameter set is drawn, and the μd,MIN threshold found on the engine.
 
-use rand::rngs::StdRng;
-use rand::Rng;
+use crate::draws::Draws;
 
 use super::formula::OrbitRegime;
 use super::quantity::{any, Key, Key as W};
@@ -130,7 +129,7 @@ impl Exercise for WoodpeckerParams {
         REGIME_RULES
     }
 
-    fn draw(_regime: Regime, rng: &mut StdRng) -> Self {
+    fn draw(_regime: Regime, rng: &mut Draws) -> Self {
         draw_set(rng)
     }
 
@@ -176,18 +175,18 @@ impl Exercise for WoodpeckerParams {
 /// Around the paper's Fig. 15 toy: μs 0.5–0.8, μd/μs 0.3–1, k 10–40 N/m, m_S 4–12 g,
 /// m_W 8–25 g, l 12–20 mm, h 5–10 mm, d0 6–12 mm, z0/d0 0.3–0.95; λ = l/h, ω = √(k/m_W) and the
 /// `zeros` counterpart (the defaults).
-fn draw_set(rng: &mut StdRng) -> WoodpeckerParams {
-    let mu_s = rng.gen_range(0.5..0.8);
-    let d0 = rng.gen_range(0.006..0.012);
+fn draw_set(rng: &mut Draws) -> WoodpeckerParams {
+    let mu_s = rng.between(0.5, 0.8);
+    let d0 = rng.between(0.006, 0.012);
     WoodpeckerParams {
         mu_s: round3(mu_s),
-        mu_d: round3(mu_s * rng.gen_range(0.3..=1.0)),
-        k: round3(rng.gen_range(10.0..40.0)),
-        m_sleeve: round3(rng.gen_range(0.004..0.012)),
-        m_bird: round3(rng.gen_range(0.008..0.025)),
-        l: round3(rng.gen_range(0.012..0.020)),
-        h: round3(rng.gen_range(0.005..0.010)),
-        z0: round3(d0 * rng.gen_range(0.3..0.95)),
+        mu_d: round3(mu_s * rng.between(0.3, 1.0)),
+        k: round3(rng.between(10.0, 40.0)),
+        m_sleeve: round3(rng.between(0.004, 0.012)),
+        m_bird: round3(rng.between(0.008, 0.025)),
+        l: round3(rng.between(0.012, 0.020)),
+        h: round3(rng.between(0.005, 0.010)),
+        z0: round3(d0 * rng.between(0.3, 0.95)),
         d0: round3(d0),
         g: G_STANDARD,
         ..WoodpeckerParams::default()

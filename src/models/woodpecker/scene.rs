@@ -9,8 +9,13 @@
 
 use rayon::prelude::*;
 
+use std::path::Path;
+
 use crate::engine::{analyse, integrate, EventKind, IntegrationRegime, Run, RunOptions};
 use crate::error::{Error, Result};
+use crate::fit::data::{parse, ReadOptions, Unit};
+use crate::fit::synthetic::{Synthetic, EXAMPLE_FILE};
+use crate::fit::{self, FitParam};
 use crate::models::param::{invalid, num};
 use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, OrbitRegime, Phase,
@@ -66,7 +71,7 @@ impl Category {
 
 /// The categories of both maps, in legend order: legend label and fill. The same regime has the
 /// same fill on both maps (and continuous motion the same fill, whichever regime names it).
-const REGIMES: [(Category, &str, usize); 10] = [
+const REGIMES: [(Category, &str, usize); 9] = [
     (
         Category::Integrated(IntegrationRegime::DoubleSlipStick),
         "2 slips, 2 sticks",
@@ -106,11 +111,6 @@ const REGIMES: [(Category, &str, usize); 10] = [
         Category::Integrated(IntegrationRegime::NoSlip),
         "never slips",
         6,
-    ),
-    (
-        Category::Orbit(OrbitRegime::OutsideClosedFormDomain),
-        "no closed form",
-        7,
     ),
     (Category::Failed, "integration failed", 0),
 ];
@@ -156,12 +156,89 @@ pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: FigureKind) -> Result
                 drawing: Drawing::Map(map),
             })
             .collect(),
+        FigureKind::WoodTracked => vec![figure("tracked", tracked(p)?)],
         FigureKind::PulledMotion { .. }
         | FigureKind::PulledForces
         | FigureKind::PulledDomain
         | FigureKind::PulledLongRun
         | FigureKind::PulledCompare => Vec::new(),
     })
+}
+
+// ---------------------------------------------------------------------------------------------
+// Figs. 26–27: a tracked toy and the fitted model
+
+/// The example track ([`Synthetic::example`], made by the model itself: the paper's tracked data
+/// are not in the paper) with the harmonic law fitted to it from `p`, as `stickslip fit` does.
+fn tracked(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
+    let example = Synthetic::example();
+    let csv = example.generate()?.csv(Unit::Mm, "");
+    let data = parse(&csv, Path::new(EXAMPLE_FILE), &ReadOptions::default())?;
+    let fit = fit::fit(&data, p, &FitParam::DEFAULT)?;
+    let mut chart = fit::chart(&fit);
+    if let Some(points) = chart
+        .panels
+        .first_mut()
+        .and_then(|panel| panel.curves.first_mut())
+    {
+        points.label = "tracked (synthetic)".to_string();
+    }
+    let truth = &example.truth;
+    let estimates: Vec<String> = fit
+        .estimates
+        .iter()
+        .filter(|e| !e.nuisance)
+        .map(|e| {
+            let (scale, unit) = if e.unit == "m" {
+                (MM, " mm")
+            } else {
+                (1.0, "")
+            };
+            let param = FitParam::DEFAULT.iter().find(|f| f.name() == e.name);
+            format!(
+                "{} = {} ± {}{unit} (made with {})",
+                symbol(e.name),
+                people(Some(e.value * scale), 4),
+                people(e.std_error.map(|s| s * scale), 2),
+                people(param.map(|f| f.get(truth) * scale), 3)
+            )
+        })
+        .collect();
+    let correlated: Vec<String> = fit::strong_correlations(&fit)
+        .iter()
+        .map(|c| format!("{} and {} at r = {:.2}", symbol(c.a), symbol(c.b), c.r))
+        .collect();
+    let correlated = if correlated.is_empty() {
+        String::new()
+    } else {
+        format!(
+            " The data hardly separate {}: an error in one is made up by the other, so the \
+             fitted values may sit a standard error or two from the true ones; measuring one of \
+             them with a ruler and fitting the rest does better.",
+            correlated.join(" and ")
+        )
+    };
+    let caption = format!(
+        "Points: a tracked sleeve position, synthetic and not a measurement: {} Dashed: the \
+         harmonic law fitted to the points from this scene's values (`stickslip fit \
+         {EXAMPLE_FILE}`): {}; residuals of RMS {} mm below.{correlated}",
+        example
+            .provenance()
+            .replace("mu_d", "μd")
+            .replace("sigma", "σ"),
+        estimates.join(", "),
+        people(Some(fit.rms_residual * 1e3), 2)
+    );
+    Ok((chart, caption))
+}
+
+/// The symbol people read for a fitted parameter's name.
+fn symbol(name: &str) -> &str {
+    match name {
+        "mu_d" => "μd",
+        "mu_s" => "μs",
+        other => other,
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -912,20 +989,26 @@ fn regime_index(category: Category) -> u8 {
     i as u8
 }
 
-/// Regime of the linear orbit from the closed forms (§3.6).
+/// Regime of the linear orbit from the closed forms (§3.6); outside their domain, from the exact
+/// integration of the linear law, so that no part of the map is left without a regime.
 fn linear_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64) -> u8 {
     let q = WoodpeckerParams { mu_d, z0, ..*p };
-    regime_index(Category::orbit(closed_form(&q).regime))
+    match closed_form(&q).regime {
+        OrbitRegime::OutsideClosedFormDomain => {
+            integrated_cell(p, LawKind::Linear, mu_d, z0, MAP_PERIODS)
+        }
+        regime => regime_index(Category::orbit(regime)),
+    }
 }
 
-/// Regime of the harmonic law by exact integration over `periods` periods.
-fn harmonic_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64, periods: u32) -> u8 {
+/// Regime of the law `kind` by exact integration over `periods` periods.
+fn integrated_cell(p: &WoodpeckerParams, kind: LawKind, mu_d: f64, z0: f64, periods: u32) -> u8 {
     let q = WoodpeckerParams { mu_d, z0, ..*p };
     let opts = RunOptions {
         periods,
         record_segments: false,
     };
-    let run = woodpecker::force_law(&q, LawKind::Harmonic)
+    let run = woodpecker::force_law(&q, kind)
         .and_then(|law| integrate(&woodpecker::body(&q), &law, &opts));
     match run {
         Ok(run) => regime_index(Category::Integrated(analyse(&run).regime())),
@@ -1037,6 +1120,34 @@ fn map_curves(p: &WoodpeckerParams, x: (f64, f64), y: (f64, f64)) -> Vec<Curve> 
     curves
 }
 
+/// Whether the closed forms do not apply at z0 (mm) for the other parameters of `p`.
+fn linear_outside(p: &WoodpeckerParams, z0_mm: f64) -> bool {
+    let q = WoodpeckerParams {
+        z0: z0_mm / MM,
+        ..*p
+    };
+    closed_form(&q).regime == OrbitRegime::OutsideClosedFormDomain
+}
+
+/// The z0 (mm) on the map where the closed forms' domain begins (it depends on z0 alone, for
+/// μd ≤ μs), by bisection; `None` when the whole map lies on one side of it.
+fn domain_edge(p: &WoodpeckerParams, (lo, hi): (f64, f64)) -> Option<f64> {
+    let outside = |z0_mm| linear_outside(p, z0_mm);
+    if !outside(lo) || outside(hi) {
+        return None;
+    }
+    let (mut a, mut b) = (lo, hi);
+    for _ in 0..60 {
+        let mid = 0.5 * (a + b);
+        if outside(mid) {
+            a = mid;
+        } else {
+            b = mid;
+        }
+    }
+    Some(b)
+}
+
 fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
     p.validate()?;
     let x = (MAP_MU_D_MIN.min(0.5 * p.mu_s), p.mu_s);
@@ -1051,11 +1162,32 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
         categories,
         curves: curves.clone(),
     };
-    let linear = map(map_cells(x, y, &|mu_d, z0_mm| {
+    let mut linear = map(map_cells(x, y, &|mu_d, z0_mm| {
         linear_cell(p, mu_d, z0_mm / MM)
     }));
+    let edge = domain_edge(p, y);
+    if let Some(z0_mm) = edge {
+        linear.curves.push(Curve {
+            label: "edge of the closed forms' domain".to_string(),
+            points: vec![(x.0, z0_mm), (x.1, z0_mm)],
+            color: 3,
+            stroke: Stroke::Dashed,
+        });
+    }
+    let integrated = format!("the exact integration of the linear law over {MAP_PERIODS} periods");
+    let edge_words = match edge {
+        Some(z0_mm) => format!(
+            " Below z0 = {} mm (the line \"edge of the closed forms' domain\") they do not \
+             apply; there the cells come from {integrated}.",
+            people(Some(z0_mm), 3)
+        ),
+        None if linear_outside(p, y.1) => {
+            format!(" They do not apply anywhere on this map: every cell comes from {integrated}.")
+        }
+        None => String::new(),
+    };
     let harmonic = map(map_cells(x, y, &|mu_d, z0_mm| {
-        harmonic_cell(p, mu_d, z0_mm / MM, MAP_PERIODS)
+        integrated_cell(p, LawKind::Harmonic, mu_d, z0_mm / MM, MAP_PERIODS)
     }));
     let about = format!(
         "Grid of {MAP_CELLS}×{MAP_CELLS} cells over μd from {:.2} to μs = {} and z0 from {:.2} \
@@ -1081,8 +1213,8 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
         (
             linear,
             format!(
-                "Regimes of the linear law's periodic orbit from the closed forms; \"no closed form\" where their domain 0 ≤ δ0 < ζ0, 2λμs > 1 fails (every \
-                 counterpart has δ0 < 0 for z0 < 0). {about}"
+                "Regimes of the linear law's periodic orbit from the closed forms, which hold \
+                 where 0 ≤ δ0 < ζ0 and 2λμs > 1.{edge_words} {about}"
             ),
         ),
         (
@@ -1302,8 +1434,26 @@ mod tests {
             let own = &map.categories[usize::from(map.cells[row][col])].0;
             assert_eq!(own, dss, "{}", figs[0].id);
         }
-        // All four analytic boundaries are drawn.
+        // Every cell has a regime: where the closed forms fail, the linear law is integrated.
+        for map in &maps {
+            assert!(
+                map.categories.iter().all(|c| c.0 != "integration failed"),
+                "{:?}",
+                map.categories
+            );
+        }
+        // All four analytic boundaries are drawn, and the closed forms' domain edge (z0 = 0
+        // here: δ0 < 0 below it) on the linear map.
         let labels: Vec<&str> = maps[0].curves.iter().map(|c| c.label.as_str()).collect();
+        let edge = maps[0]
+            .curves
+            .iter()
+            .find(|c| c.label == "edge of the closed forms' domain")
+            .expect("domain edge");
+        assert!(edge.points[0].1.abs() < 1e-9, "{:?}", edge.points);
+        assert!(figs[0]
+            .caption
+            .contains("exact integration of the linear law"));
         for l in [
             "μd,MIN(I) (51)",
             "μd,HALT(I) [D]",
@@ -1323,13 +1473,21 @@ mod tests {
         let linear = start.elapsed().as_secs_f64();
         let start = Instant::now();
         let _ = map_cells(x, y, &|mu_d, z0_mm| {
-            harmonic_cell(&p, mu_d, z0_mm / MM, MAP_PERIODS)
+            integrated_cell(&p, LawKind::Harmonic, mu_d, z0_mm / MM, MAP_PERIODS)
         });
         let harmonic = start.elapsed().as_secs_f64();
         let n = 400;
         let start = Instant::now();
         let cells: Vec<u8> = (0..n)
-            .map(|i| harmonic_cell(&p, 0.2 + 0.0003 * f64::from(i), p.z0, MAP_PERIODS))
+            .map(|i| {
+                integrated_cell(
+                    &p,
+                    LawKind::Harmonic,
+                    0.2 + 0.0003 * f64::from(i),
+                    p.z0,
+                    MAP_PERIODS,
+                )
+            })
             .collect();
         eprintln!(
             "maps on {} threads: linear {linear:.3} s, harmonic {harmonic:.3} s; one harmonic \

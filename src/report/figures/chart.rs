@@ -13,7 +13,7 @@ use plotters::style::{ShapeStyle, WHITE};
 use super::spec::{LineChart, Panel};
 pub use super::style::FigureError;
 use super::style::{
-    curve_color, dash_pattern, draw_err, draw_legend, draw_stroked, finish_svg, font, legend_size,
+    curve_color, draw_curve, draw_err, draw_legend, draw_stroked, finish_svg, font, legend_size,
     text_width, tick_label, LegendEntry, AXIS_COLOR, CURVE_WIDTH, FIGURE_WIDTH, FRAME_WIDTH,
     GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH, MARKER_FONT_PX,
     MARKER_WIDTH, PANEL_HEIGHT, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN, TICK_FONT_PX,
@@ -112,10 +112,23 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
                 .build_cartesian_2d(x.0..x.1, y0..y1)
                 .map_err(draw_err)?;
             let x_fmt = |v: &f64| tick_label(*v, x.1 - x.0);
-            let y_fmt = |v: &f64| tick_label(*v, y1 - y0);
+            let y_fmt = |v: &f64| {
+                // A count's axis labels whole numbers only.
+                if panel.counts && (v - v.round()).abs() > 1e-9 * (y1 - y0) {
+                    String::new()
+                } else {
+                    tick_label(*v, y1 - y0)
+                }
+            };
+            let y_ticks = if panel.counts {
+                // At most one tick per whole number, so that plotters steps by 1 or more.
+                ((y1 - y0).floor() as usize + 1).clamp(2, 6)
+            } else {
+                6
+            };
             let mut mesh = chart.configure_mesh();
             mesh.x_labels(10)
-                .y_labels(6)
+                .y_labels(y_ticks)
                 .max_light_lines(0)
                 .x_label_formatter(&x_fmt)
                 .y_label_formatter(&y_fmt)
@@ -157,10 +170,15 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
                 lines.push(line.to_vec());
             }
             for (curve, runs) in panel.spec.curves.iter().zip(&panel.runs) {
-                let pattern = dash_pattern(curve.stroke, CURVE_WIDTH);
                 for run in runs {
                     let px = to_pixels(run, to_px);
-                    draw_stroked(&root, &px, curve_color(curve.color), CURVE_WIDTH, &pattern)?;
+                    draw_curve(
+                        &root,
+                        &px,
+                        curve_color(curve.color),
+                        CURVE_WIDTH,
+                        curve.stroke,
+                    )?;
                     lines.push(px);
                 }
             }
@@ -208,6 +226,8 @@ struct PreparedPanel<'a> {
     /// runs[curve] = finite, clipped, thinned pieces of that curve.
     runs: Vec<Vec<Vec<Point>>>,
     y: (f64, f64),
+    /// Every value drawn is a whole number (a count): ticks only at whole numbers.
+    counts: bool,
 }
 
 impl<'a> PreparedPanel<'a> {
@@ -225,7 +245,14 @@ impl<'a> PreparedPanel<'a> {
             .chain(spec.h_lines.iter().map(|h| h.0).filter(|y| y.is_finite()));
         let y = padded_range("y", ys, Y_MARGIN)?;
         let y = with_legend_room(spec, &runs, (clip.lo.0, clip.hi.0), y);
-        Ok(Self { spec, runs, y })
+        let mut values = runs.iter().flatten().flatten().map(|p| p.1).peekable();
+        let counts = values.peek().is_some() && values.all(|v| v.fract() == 0.0);
+        Ok(Self {
+            spec,
+            runs,
+            y,
+            counts,
+        })
     }
 }
 
@@ -614,6 +641,33 @@ mod tests {
         assert!(svg.contains("viewBox=\"0 0 900 "));
         assert!(svg.contains("font-size=\"14\""));
         assert_eq!(svg, line_chart(&spec).expect("renders again"));
+    }
+
+    #[test]
+    fn a_panel_of_counts_labels_whole_numbers_only() {
+        let mut spec = sample_chart();
+        spec.panels[1].curves = vec![curve("slips per period", 0, Stroke::Solid, |t| {
+            if t < 1.5 {
+                1.0
+            } else {
+                2.0
+            }
+        })];
+        spec.panels[0].curves = vec![curve("small", 0, Stroke::Solid, |t| 0.3 * t.sin())];
+        let svg = line_chart(&spec).expect("renders");
+        // y tick labels are the right-aligned texts; each panel's follow its axis title.
+        let y_ticks = |part: &str| -> Vec<String> {
+            part.split("<text")
+                .filter(|t| t.contains("text-anchor=\"end\"") && !t.contains("rest"))
+                .filter_map(|t| t.split('>').nth(1))
+                .map(|t| t.split('<').next().unwrap_or("").trim().to_string())
+                .collect()
+        };
+        let (first, second) = svg.split_once("v (mm/s)").expect("second panel");
+        let counts = y_ticks(second);
+        assert_eq!(counts, ["1", "2"]);
+        // The first panel is not a count: it keeps its fractional ticks.
+        assert!(y_ticks(first).iter().any(|l| l.contains('.')), "{first}");
     }
 
     #[test]

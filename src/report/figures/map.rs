@@ -12,10 +12,10 @@ use super::chart::{checked_range, clipped_runs, thin, to_pixels, Bounds, MAX_POI
 use super::spec::CategoryMap;
 pub use super::style::FigureError;
 use super::style::{
-    curve_color, dash_pattern, draw_err, draw_legend, draw_stroked, fill_color, finish_svg, font,
-    legend_size, tick_label, LegendEntry, LegendKey, AXIS_COLOR, FIGURE_WIDTH, FRAME_WIDTH,
-    LABEL_FONT_PX, MAP_CURVE_WIDTH, MAP_PLOT_HEIGHT, RIGHT_MARGIN, TICK_FONT_PX, UNKNOWN_FILL,
-    X_LABEL_AREA, Y_LABEL_AREA,
+    curve_color, draw_curve, draw_err, draw_legend, fill_color, finish_svg, font, legend_size,
+    tick_label, LegendEntry, LegendKey, AXIS_COLOR, FIGURE_WIDTH, FRAME_WIDTH, LABEL_FONT_PX,
+    MAP_CURVE_WIDTH, MAP_PLOT_HEIGHT, RIGHT_MARGIN, TICK_FONT_PX, UNKNOWN_FILL, X_LABEL_AREA,
+    Y_LABEL_AREA,
 };
 
 /// Space above the plotting area (px).
@@ -95,15 +95,14 @@ pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
         };
         let to_px = |p: &(f64, f64)| chart.backend_coord(p);
         for curve in &spec.curves {
-            let pattern = dash_pattern(curve.stroke, MAP_CURVE_WIDTH);
             for run in thin(clipped_runs(&curve.points, clip), MAX_POINTS) {
                 let px = to_pixels(&run, to_px);
-                draw_stroked(
+                draw_curve(
                     &root,
                     &px,
                     curve_color(curve.color),
                     MAP_CURVE_WIDTH,
-                    &pattern,
+                    curve.stroke,
                 )?;
             }
         }
@@ -118,7 +117,11 @@ pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
         draw_legend(&root, at, &entries)?;
         root.present().map_err(draw_err)?;
     }
-    Ok(finish_svg(svg))
+    // Crisp edges: anti-aliased neighbouring cells would show hairline seams between them.
+    Ok(finish_svg(svg.replace(
+        "<rect ",
+        "<rect shape-rendering=\"crispEdges\" ",
+    )))
 }
 
 /// Maximal runs of equal values in a row: (first column, one past the last, value).
@@ -218,6 +221,7 @@ mod tests {
         }
         assert!(svg.contains("F/W") && svg.contains("ω T"));
         assert!(svg.contains("viewBox=\"0 0 900 "));
+        assert!(!svg.contains("<rect x") && svg.contains("<rect shape-rendering=\"crispEdges\""));
         assert_eq!(svg, category_map(&spec).expect("renders again"));
         eprintln!("200x200 map: {} bytes in {:?}", svg.len(), elapsed);
     }

@@ -8,6 +8,8 @@ pub enum Stroke {
     Dashed,
     Dotted,
     DashDot,
+    /// Each point as a small open circle, not joined: measured data.
+    Points,
 }
 
 /// One curve: (x, y) points in plot units, a legend label, a palette index and a stroke.

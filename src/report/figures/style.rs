@@ -6,7 +6,7 @@
 //! system font is read and the SVG bytes are the same on every machine.
 
 use plotters::coord::Shift;
-use plotters::element::{PathElement, Rectangle, Text};
+use plotters::element::{Circle, PathElement, Rectangle, Text};
 use plotters::prelude::{DrawingArea, SVGBackend};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{Color, IntoFont, RGBColor, ShapeStyle, TextStyle};
@@ -138,7 +138,7 @@ pub fn fill_color(i: usize) -> RGBColor {
 /// Patterns are tuned at width 2 and scale with the width so dots stay round-ish.
 pub fn dash_pattern(stroke: Stroke, width: u32) -> Vec<f64> {
     let base: &[f64] = match stroke {
-        Stroke::Solid => &[],
+        Stroke::Solid | Stroke::Points => &[],
         Stroke::Dashed => &[10.0, 5.0],
         Stroke::Dotted => &[2.0, 4.0],
         Stroke::DashDot => &[11.0, 4.0, 2.0, 4.0],
@@ -266,6 +266,29 @@ pub fn draw_stroked(
     Ok(())
 }
 
+/// Radius (px) of the circles of a [`Stroke::Points`] curve.
+const POINT_RADIUS: i32 = 3;
+
+/// Draws a curve in pixels: joined in its dash pattern, or as open circles for
+/// [`Stroke::Points`].
+pub fn draw_curve(
+    root: &DrawingArea<SVGBackend, Shift>,
+    points: &[(i32, i32)],
+    color: RGBColor,
+    width: u32,
+    stroke: Stroke,
+) -> Result<(), FigureError> {
+    if stroke == Stroke::Points {
+        let style = ShapeStyle::from(&color).stroke_width(1);
+        for &p in points {
+            root.draw(&Circle::new(p, POINT_RADIUS, style))
+                .map_err(draw_err)?;
+        }
+        return Ok(());
+    }
+    draw_stroked(root, points, color, width, &dash_pattern(stroke, width))
+}
+
 /// One legend row: a line sample or a filled square, and its text.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LegendEntry {
@@ -362,14 +385,12 @@ pub fn draw_legend(
                 stroke,
                 width,
             } => {
-                let sample = [(x0, cy), (x0 + LEGEND_SAMPLE, cy)];
-                draw_stroked(
-                    root,
-                    &sample,
-                    curve_color(color),
-                    width,
-                    &dash_pattern(stroke, width),
-                )?;
+                let sample = if stroke == Stroke::Points {
+                    vec![(x0 + LEGEND_SAMPLE / 2, cy)]
+                } else {
+                    vec![(x0, cy), (x0 + LEGEND_SAMPLE, cy)]
+                };
+                draw_curve(root, &sample, curve_color(color), width, stroke)?;
             }
             LegendKey::Swatch { fill } => {
                 let sx = x0 + (LEGEND_SAMPLE - LEGEND_SWATCH) / 2;

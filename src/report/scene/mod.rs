@@ -42,6 +42,9 @@ pub enum FigureKind {
     WoodPositions,
     /// Woodpecker: regimes in the (μd, z0) plane with μd,MIN and μd,HALT of both phases.
     WoodRegimeMap,
+    /// Woodpecker: the example track (synthetic) with the harmonic law fitted to it from the
+    /// scene's parameters (Figs. 26–27).
+    WoodTracked,
 }
 
 /// A drawing ready for a renderer.
@@ -505,8 +508,10 @@ const BUILTINS: &[Builtin] = &[
             "The model with the parameters of a real, video-tracked toy.",
         ),
         FIG26,
-        "The tracked toy's parameters (Figs. 26–27): sleeve position and speed under both laws.",
-        &[FigureKind::WoodMotion { periods: 3.0 }],
+        "The tracked toy's parameters (Figs. 26–27): sleeve position and speed under both laws, \
+         and a tracked track (synthetic here: the paper does not give its tracked data) with \
+         the harmonic law fitted to it, as `stickslip fit` does for your own video.",
+        &[FigureKind::WoodMotion { periods: 3.0 }, FigureKind::WoodTracked],
         &[3, 8],
     ),
     builtin(
