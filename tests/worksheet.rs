@@ -140,8 +140,9 @@ fn check_answer(
     match answer["tolerance"].as_f64() {
         Some(t) => {
             assert!(key.starts_with("read_"), "{key}");
+            // Half a grid step of the forces figure, at most a quarter of the time read.
             assert!(
-                t > 0.0 && t <= 0.05 * value,
+                t > 0.0 && t <= 0.25 * value,
                 "{key}: tolerance {t} for {value}"
             );
         }
@@ -297,7 +298,7 @@ fn seed_one_draws_pinned_parameters() {
     );
     let wood = &read_json(tmp.path())["students"][0]["params"];
     let expected = serde_json::json!({
-        "counterpart": "zeros", "d0": 0.00941, "g": 9.81, "h": 0.00727, "k": 23.0, "l": 0.0168, "lever": null, "m_bird": 0.0206, "m_sleeve": 0.011, "mu_d": 0.501, "mu_s": 0.619, "omega": "bird", "z0": 0.00357
+        "counterpart": "zeros", "d0": 0.0102, "g": 9.81, "h": 0.0053, "k": 26.2, "l": 0.0125, "lever": null, "m_bird": 0.0101, "m_sleeve": 0.0073, "mu_d": 0.352, "mu_s": 0.646, "omega": "bird", "z0": 0.00714
     });
     assert_eq!(wood, &expected);
 }
@@ -313,9 +314,9 @@ fn the_same_seed_gives_the_same_bytes_and_another_seed_other_sets() {
     worksheet(a.path(), &args);
     worksheet(b.path(), &args);
     let (ta, tb) = (tree(a.path()), tree(b.path()));
-    // Sheets and key in two formats, the JSON key, and per student the v(t) figure and the
-    // apparatus for Markdown.
-    assert_eq!(ta.len(), 13, "{:?}", ta.keys());
+    // Sheets and key in two formats, the JSON key, and per student for Markdown the forces
+    // figure of the sheet, the v(t) figure of the key and the apparatus.
+    assert_eq!(ta.len(), 17, "{:?}", ta.keys());
     assert!(ta == tb, "same arguments, different bytes");
     worksheet(
         c.path(),
@@ -374,20 +375,25 @@ fn html_pages_put_one_student_per_page_and_are_self_contained() {
         10,
         "one inline figure and one sketch of the apparatus per student"
     );
-    assert_eq!(sheets.matches("class=\"answer-box\"").count(), 5 * 7);
-    // The figure question does not give its answer away: no value of the key on the sheet.
+    // Seven questions; the regime is ticked in its table, not written in a box.
+    assert_eq!(sheets.matches("class=\"answer-box\"").count(), 5 * 6);
+    assert_eq!(sheets.matches("class=\"tick\"").count(), 5 * 4);
+    // The figures do not give answers away: no value of the key on the sheet (the v(t)
+    // figure is in the key only).
     let key = read_json(tmp.path());
     for s in key["students"].as_array().unwrap() {
-        let v = s["answers"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .find(|a| a["key"] == "read_v_max")
-            .unwrap()["value"]
-            .as_f64()
-            .unwrap();
-        assert!(!sheets.contains(&format!("{v:.4}")), "{v}");
+        for a in s["answers"].as_array().unwrap() {
+            if let Some(v) = a["value"].as_f64() {
+                assert!(!sheets.contains(&format!("{v:.4}")), "{}: {v}", a["key"]);
+            }
+        }
     }
+    let answer_key = fs::read_to_string(tmp.path().join("answer-key.html")).unwrap();
+    assert_eq!(
+        answer_key.matches("<svg").count(),
+        5,
+        "the v(t) figure per student"
+    );
     let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
     assert_eq!(md.matches("\n---\n").count(), 5);
     for n in 1..=5 {
@@ -433,10 +439,12 @@ fn a_subset_of_questions_is_asked_in_sheet_order() {
             "answer-key.json",
             "answer-key.md",
             "figures/student-001-apparatus.svg",
+            "figures/student-001-speed.svg",
             "figures/student-002-apparatus.svg",
+            "figures/student-002-speed.svg",
             "worksheets.md"
         ],
-        "md only, the apparatus, and no figure without the figure question"
+        "md only, the apparatus, the key's v(t), and no figure without the figure question"
     );
     let md = fs::read_to_string(tmp.path().join("worksheets.md")).unwrap();
     assert_eq!(md.matches("\n1. ").count(), 2);
@@ -627,8 +635,8 @@ fn moodle_xml_and_gift_hold_one_variant_per_student_and_question() {
                             .unwrap()
                             .parse()
                             .unwrap();
-                        // One unit in the third figure, or the reading tolerance of the figure (≤ 5 %).
-                        assert!(tol > 0.0 && tol <= 0.05 * value.abs(), "{value} ± {tol}");
+                        // One unit in the third figure, or the reading tolerance of the figure (≤ 25 %).
+                        assert!(tol > 0.0 && tol <= 0.25 * value.abs(), "{value} ± {tol}");
                     }
                     "multichoice" => {
                         choice += 1;

@@ -132,14 +132,11 @@ pub fn strong_correlations(fit: &Fit) -> Vec<Correlated> {
         return Vec::new();
     };
     let physics: Vec<&Estimate> = fit.estimates.iter().filter(|e| !e.nuisance).collect();
-    let mut pairs = Vec::new();
-    for i in 0..physics.len() {
-        for j in i + 1..physics.len() {
-            if c[i][j].abs() >= STRONG_CORRELATION {
-                pairs.push((i, j));
-            }
-        }
-    }
+    let n = physics.len();
+    let pairs: Vec<(usize, usize)> = (0..n)
+        .flat_map(|i| (i + 1..n).map(move |j| (i, j)))
+        .filter(|&(i, j)| c[i][j].abs() >= STRONG_CORRELATION)
+        .collect();
     let count = |k: usize| pairs.iter().filter(|&&(i, j)| i == k || j == k).count();
     let relative = |k: usize| {
         let e = physics[k];

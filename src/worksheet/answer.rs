@@ -1,12 +1,13 @@
 //! The answers of one student's case: each question's worked step (from [`crate::derivation`]),
 //! the value of the exact integration of the linearized law that confirms it (from the checks
-//! of [`crate::results`]), and for the figure question the v(t) plot and its reading tolerance.
+//! of [`crate::results`]), for the figure question the forces figure and its reading tolerance,
+//! and the key's v(t) figure.
 //! `None` when some answer has no confirmed value: the sampler then draws another set.
 
 use serde::Serialize;
 
 use super::exercise::Exercise;
-use super::figure::v_figure;
+use super::figure::{force_figure, v_figure};
 use super::question::{Kind, Question};
 use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
@@ -17,9 +18,9 @@ use crate::present::Present;
 use crate::results::quantity::AnyKey;
 use crate::results::{rel_diff, Check, CheckValue, Checked, TOLERANCE};
 
-/// A figure is readable when its reading tolerance is at most this fraction of the value read
-/// (not so when the speed grows far beyond the first maximum, as in continuous slip).
-const READABLE: f64 = 0.05;
+/// A time is readable off the forces figure when the reading tolerance (half a grid step) is at
+/// most this fraction of it (not so for a slip onset just after t = 0).
+const READABLE: f64 = 0.25;
 
 /// A value of an answer: a number (SI) or a name (the regime).
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -55,12 +56,14 @@ pub struct Answer {
     pub comparisons: Vec<Comparison>,
 }
 
-/// The answers of a case, with the v(t) figure when a question reads it.
+/// The answers of a case, with the figures.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Answers {
     pub answers: Vec<Answer>,
-    /// SVG of v(t) of the linearized law, without the answer marked.
+    /// SVG of the forces over a period, when a question reads it (on the student's sheet).
     pub figure: Option<String>,
+    /// SVG of v(t) of the linearized law from rest (in the answer key).
+    pub key_figure: Option<String>,
 }
 
 /// What the answers read from the evaluation of the case.
@@ -111,10 +114,7 @@ pub fn answer(
     steps: &[Step],
     questions: &[&'static Question],
 ) -> Result<Option<Answers>> {
-    let reads_figure = questions
-        .iter()
-        .any(|q| matches!(q.kind, Kind::ReadFigure(_)));
-    let evaluated = evaluate(case, reads_figure)?;
+    let evaluated = evaluate(case, true)?;
     let mut answers = Vec::with_capacity(questions.len());
     let mut figure = None;
     for &question in questions {
@@ -125,17 +125,14 @@ pub fn answer(
             }
             Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
             Kind::ReadFigure(key) => {
-                let Some(run) = &evaluated.linear else {
-                    return Ok(None);
-                };
-                let (svg, spacing) = v_figure(run)?;
+                let labels = with_model!(case, p => force_labels(p));
+                let (svg, spacing) = force_figure(case, labels)?;
                 figure = Some(svg);
+                let tolerance = 0.5 * spacing;
                 measured(question, steps, &evaluated, key)
-                    .filter(
-                        |a| matches!(a.value, Value::Number(v) if 0.5 * spacing <= READABLE * v),
-                    )
+                    .filter(|a| matches!(a.value, Value::Number(v) if tolerance <= READABLE * v))
                     .map(|a| Answer {
-                        tolerance: Some(0.5 * spacing),
+                        tolerance: Some(tolerance),
                         ..a
                     })
             }
@@ -145,7 +142,20 @@ pub fn answer(
             None => return Ok(None),
         }
     }
-    Ok(Some(Answers { answers, figure }))
+    let key_figure = match &evaluated.linear {
+        Some(run) => Some(v_figure(run)?.0),
+        None => None,
+    };
+    Ok(Some(Answers {
+        answers,
+        figure,
+        key_figure,
+    }))
+}
+
+/// The labels of a model's force curves (driving, static limit, dynamic limit).
+fn force_labels<M: Exercise>(_: &M) -> [&'static str; 3] {
+    M::FORCE_LABELS
 }
 
 /// The closed form `key` confirmed by its passing check on the integration.

@@ -1,10 +1,13 @@
-//! The student's v(t) figure: the linearized law from rest over two periods on graph paper (a
-//! fine horizontal grid of round spacing), without the answer marked.
+//! The worksheet's figures. On the student's sheet, the forces of the linearized law over one
+//! period on graph paper: the driving force against the static and dynamic friction limits, from
+//! which the slip onset is read (the slip condition, not the answers). In the answer key, v(t)
+//! from rest over two periods (fine horizontal grid of round spacing).
 
 use crate::engine::Run;
 use crate::error::{Error, Result};
+use crate::models::{LawKind, Model};
 use crate::report::figures::chart::line_chart;
-use crate::report::figures::spec::{LineChart, Panel, Stroke};
+use crate::report::figures::spec::{Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, sample};
 
 /// Points of the figure over its two periods (event times are added).
@@ -61,9 +64,91 @@ pub fn v_figure(run: &Run) -> Result<(String, f64)> {
     Ok((svg, spacing))
 }
 
+/// Samples of each force curve over the period (the pieces' ends are added).
+const FORCE_SAMPLES: usize = 800;
+
+/// The forces of `case`'s linearized law over one period, on graph paper: the driving force
+/// and the friction limits μs·N and μd·N, labelled with `labels` (driving, static, dynamic), and
+/// light vertical lines at a round time spacing (s), which is returned; the reading tolerance of
+/// a time is half of it.
+pub fn force_figure(case: &Model, labels: [&str; 3]) -> Result<(String, f64)> {
+    let figure_error = |reason: String| Error::Figure {
+        id: "worksheet forces".to_string(),
+        reason,
+    };
+    let law = case.force_law(LawKind::Linear)?;
+    let body = case.body();
+    let period = law.period;
+    let mut times: Vec<f64> = (0..=FORCE_SAMPLES)
+        .map(|i| period * i as f64 / FORCE_SAMPLES as f64)
+        .chain(law.pieces.iter().map(|p| p.end.min(period)))
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times.dedup();
+    // Just before the period's end, so that the last piece (not the next period's first) is
+    // evaluated there.
+    let at = |t: f64| {
+        if t >= period {
+            period * (1.0 - 1e-12)
+        } else {
+            t
+        }
+    };
+    let line = |label: &str, color, stroke, f: &dyn Fn(f64) -> f64| Curve {
+        label: label.to_string(),
+        points: times.iter().map(|&t| (t, f(at(t)))).collect(),
+        color,
+        stroke,
+    };
+    let spacing = fine_spacing(period);
+    let grid = (1..)
+        .map(|k| f64::from(k) * spacing)
+        .take_while(|&t| t < period)
+        .map(|x| Marker {
+            x,
+            label: String::new(),
+        })
+        .collect();
+    let chart = LineChart {
+        x_label: "t (s)".to_string(),
+        x_range: Some((0.0, period)),
+        panels: vec![Panel {
+            y_label: "force (N)".to_string(),
+            curves: vec![
+                line(labels[0], 7, Stroke::Solid, &|t| law.drive(t)),
+                line(labels[1], 0, Stroke::Dashed, &|t| body.mu_s * law.normal(t)),
+                line(labels[2], 1, Stroke::DashDot, &|t| {
+                    body.mu_d * law.normal(t)
+                }),
+            ],
+            h_lines: Vec::new(),
+        }],
+        markers: grid,
+    };
+    let svg = line_chart(&chart).map_err(|e| figure_error(e.to_string()))?;
+    Ok((svg, spacing))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_force_figure_has_the_three_forces_and_a_time_grid() {
+        let case = Model::defaults()[0];
+        let (svg, spacing) =
+            force_figure(&case, ["pull F", "static limit", "dynamic limit"]).unwrap();
+        for label in ["pull F", "static limit", "dynamic limit", "force (N)"] {
+            assert!(svg.contains(label), "{label}");
+        }
+        let period = case.force_law(LawKind::Linear).unwrap().period;
+        assert!(
+            spacing > period / 45.0 && spacing <= period / 10.0,
+            "{spacing} {period}"
+        );
+        // The time grid: light vertical lines, no marker labels.
+        assert!(svg.matches("stroke=\"#E3E3E3\"").count() >= 10);
+    }
 
     #[test]
     fn fine_grid_spacing_is_round_and_about_a_twentieth() {

@@ -56,8 +56,10 @@ pub struct Student {
     pub number: u32,
     pub case: Model,
     pub answers: Vec<Answer>,
-    /// SVG of v(t), when a question reads it.
+    /// SVG of the forces over a period, when a question reads it (on the sheet).
     pub figure: Option<String>,
+    /// SVG of v(t) from rest (in the answer key).
+    pub key_figure: Option<String>,
 }
 
 /// The whole set: the request resolved, and every student.
@@ -195,6 +197,7 @@ pub fn student(
                 case,
                 answers: a.answers,
                 figure: a.figure,
+                key_figure: a.key_figure,
             });
         }
     }
@@ -246,7 +249,7 @@ mod tests {
             None,
         );
         let (_, qs) = resolve(&late).unwrap();
-        assert_eq!(keys(&qs), ["t_slip", "v_max", "regime", "read_v_max"]);
+        assert_eq!(keys(&qs), ["t_slip", "v_max", "regime", "read_t_slip"]);
     }
 
     #[test]

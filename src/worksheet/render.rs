@@ -15,6 +15,7 @@ use crate::error::Result;
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
 use crate::present::Present;
+use crate::report::context::regime_words;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};
 use crate::report::sketch::Phase;
@@ -50,6 +51,20 @@ pub(crate) fn intro(model: Model) -> &'static str {
         M::INTRO
     }
     with_model!(&model, p => of(p))
+}
+
+/// The definitions of the model's [`Exercise::DEFINED`] symbols, `symbol = formula`, from the
+/// worked steps of `case` (the formulas are the same for every student).
+fn definitions(case: &Model) -> Vec<Math> {
+    fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
+        M::DEFINED
+    }
+    let steps = super::answer::steps(case);
+    with_model!(case, p => of(p))
+        .iter()
+        .filter_map(|symbol| steps.iter().find(|s| s.symbol == *symbol))
+        .map(|s| math(&format!("{} = {}", s.symbol, s.formula)))
+        .collect()
 }
 
 pub(crate) fn title(model: Model) -> &'static str {
@@ -144,6 +159,9 @@ struct AnswerCtx {
 struct KeyCtx {
     number: u32,
     params: Vec<ParamCtx>,
+    /// v(t) from rest: inline SVG for HTML, file path for Markdown; empty without.
+    figure_svg: String,
+    figure_file: String,
     answers: Vec<AnswerCtx>,
 }
 
@@ -179,7 +197,7 @@ fn questions_ctx(model: Model, questions: &[&Question]) -> Vec<QuestionCtx> {
                 Kind::Regime(_) => question::regime_rules(model)
                     .iter()
                     .map(|&(regime, condition)| RuleCtx {
-                        regime: regime.id(),
+                        regime: regime_words(regime.id()),
                         condition: math(condition),
                     })
                     .collect(),
@@ -191,6 +209,10 @@ fn questions_ctx(model: Model, questions: &[&Question]) -> Vec<QuestionCtx> {
 
 fn figure_file(number: u32) -> String {
     format!("figures/student-{number:03}.svg")
+}
+
+fn key_figure_file(number: u32) -> String {
+    format!("figures/student-{number:03}-speed.svg")
 }
 
 fn sketch_file(number: u32) -> String {
@@ -220,7 +242,7 @@ fn sheet_ctx(s: &Student) -> SheetCtx {
 fn number(v: &Value, digits: usize, unit: &str) -> String {
     match v {
         Value::Number(x) => with_unit(sig(Some(*x), digits), unit),
-        Value::Text(t) => t.clone(),
+        Value::Text(t) => regime_words(t).to_string(),
     }
 }
 
@@ -277,6 +299,12 @@ fn key_ctx(s: &Student) -> KeyCtx {
     KeyCtx {
         number: s.number,
         params: params_ctx(&s.case),
+        figure_svg: s.key_figure.clone().unwrap_or_default(),
+        figure_file: s
+            .key_figure
+            .as_ref()
+            .map(|_| key_figure_file(s.number))
+            .unwrap_or_default(),
         answers: s
             .answers
             .iter()
@@ -293,6 +321,8 @@ pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
     let mut ctx = tera::Context::new();
     ctx.insert("title", title(w.model));
     ctx.insert("intro", intro(w.model));
+    let first = w.students.first().map_or(w.model, |s| s.case);
+    ctx.insert("definitions", &definitions(&first));
     ctx.insert("regime", w.regime.id());
     ctx.insert("seed", &w.seed);
     ctx.insert("count", &w.students.len());
@@ -314,6 +344,9 @@ pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
                 files.push(OutFile::new(sketch_file(s.number), sketch(&s.case)));
                 if let Some(svg) = &s.figure {
                     files.push(OutFile::new(figure_file(s.number), svg.as_str()));
+                }
+                if let Some(svg) = &s.key_figure {
+                    files.push(OutFile::new(key_figure_file(s.number), svg.as_str()));
                 }
             }
         }
@@ -346,5 +379,22 @@ mod tests {
             }
         }
         assert_eq!(unit_tex("m/s²").as_deref(), Some(r"\mathrm{m/s^{2}}"));
+    }
+
+    #[test]
+    fn every_symbol_a_sheet_defines_is_a_worked_step() {
+        fn defined<M: Exercise>(_: &M) -> usize {
+            M::DEFINED.len()
+        }
+        for model in Model::defaults() {
+            let d = definitions(&model);
+            assert_eq!(
+                d.len(),
+                with_model!(&model, p => defined(p)),
+                "{}",
+                model.id()
+            );
+            assert!(d.iter().all(|m| !m.mathml.contains("merror")));
+        }
     }
 }

@@ -58,12 +58,14 @@ pub const QUESTIONS: &[Question] = &[
     },
     Question {
         kind: Kind::Regime(p(P::Regime)),
-        prompt: "Which regime is the block in? Decide from the inequalities below.",
+        prompt: "How does the block move? Decide from the inequalities below (the symbols are defined at the top of the sheet).",
         regimes: REGIMES,
     },
     Question {
-        kind: Kind::ReadFigure(p(P::VMax)),
-        prompt: "Read the first speed maximum off Figure 1.",
+        kind: Kind::ReadFigure(p(P::TSlip)),
+        prompt: "On Figure 1, read the time at which the pull F first exceeds the static \
+                 limit μs N(t): the block starts to slip there. Does it agree with your answer \
+                 to question 1?",
         regimes: REGIMES,
     },
 ];
@@ -94,7 +96,13 @@ impl Exercise for PulledMassParams {
          horizontal force F. An equal mass hangs below it on a spring of constant k, moves with \
          it (inertial mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the \
          linearized (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half \
-         period, W = mg. At t = 0 the block is at rest.";
+         period, with the weight W, the angular frequency ω and the period T defined below. At \
+         t = 0 the block is at rest.";
+    const DEFINED: &'static [&'static str] =
+        &["W", r"\omega", "T", r"\varphi", r"\Theta", r"\varphi_c"];
+
+    const FORCE_LABELS: [&'static str; 3] =
+        ["pull F", "static limit μs N(t)", "dynamic limit μd N(t)"];
 
     fn catalogue() -> &'static [Question] {
         QUESTIONS

@@ -36,14 +36,6 @@ const PEAK_IN_LOBE_B: &[Regime] = &[
     Regime::new(OrbitRegime::ContinuousOrMultiperiod.id()),
 ];
 
-/// Where the first speed maximum can be read off the v(t) figure to 5 %: not where the sleeve
-/// never halts, whose speed grows over the figure's periods until the first maximum is a bump
-/// below half a grid spacing (in 399 of 400 drawn sets).
-const READABLE_PEAK: &[Regime] = &[
-    Regime::new(OrbitRegime::DoubleSlipStick.id()),
-    Regime::new(OrbitRegime::DoubleSlipNoHalt.id()),
-];
-
 /// The question of a woodpecker quantity.
 const fn w(k: W) -> AnyKey {
     any(k)
@@ -79,13 +71,15 @@ pub const QUESTIONS: &[Question] = &[
     },
     Question {
         kind: Kind::Regime(w(W::Regime)),
-        prompt: "Which regime is the sleeve in? Decide from the inequalities below.",
+        prompt: "How does the sleeve move? Decide from the inequalities below (the symbols are defined at the top of the sheet).",
         regimes: REGIMES,
     },
     Question {
-        kind: Kind::ReadFigure(w(W::VMax1)),
-        prompt: "Read the first speed maximum off Figure 1.",
-        regimes: READABLE_PEAK,
+        kind: Kind::ReadFigure(w(W::TSlip1)),
+        prompt: "On Figure 1, read the time at which W_S + F_e first exceeds the static limit \
+                 2λμs|F_e|: the sleeve starts to slip there (phase I). Does it agree with your \
+                 answer to question 1?",
+        regimes: REGIMES,
     },
 ];
 
@@ -113,9 +107,29 @@ impl Exercise for WoodpeckerParams {
     const TITLE: &'static str = "the falling woodpecker";
     const INTRO: &'static str = "The sleeve of the woodpecker toy (mass m_S) slides down the \
          pole while the bird (mass m_W) oscillates on the spring of constant k. Use the \
-         linearized (triangle-wave) law of the paper with the lever ratio λ = l/h, ω = √(k/m_W) \
-         and the counterpart ζ0 = d0, δ0 = d0 (2/π) arcsin(z0/d0). At t = 0 the sleeve is at \
-         rest.";
+         linearized (triangle-wave) law of the paper with the sleeve's weight W_S, the lever \
+         ratio λ, the angular frequency ω and the amplitudes ζ0, δ0 of its triangle wave defined \
+         below. At t = 0 the sleeve is at rest.";
+    const DEFINED: &'static [&'static str] = &[
+        "W_S",
+        r"\lambda",
+        r"\omega",
+        "T",
+        r"\zeta_0",
+        r"\delta_0",
+        r"u_s^{(-)}",
+        r"u_s^{(+)}",
+        r"\eta",
+        r"\eta'",
+        r"\mu_{d,HALT}^{(I)}",
+        r"\mu_{d,HALT}^{(II)}",
+    ];
+
+    const FORCE_LABELS: [&'static str; 3] = [
+        "W_S + F_e (drives the sleeve)",
+        "static limit 2λμs|F_e|",
+        "dynamic limit 2λμd|F_e|",
+    ];
 
     fn catalogue() -> &'static [Question] {
         QUESTIONS

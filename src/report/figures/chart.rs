@@ -64,11 +64,11 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
         .map(|p| PreparedPanel::new(p, clip))
         .collect::<Result<Vec<_>, _>>()?;
 
-    let markers: Vec<_> = spec
+    let (grid, markers): (Vec<_>, Vec<_>) = spec
         .markers
         .iter()
         .filter(|m| m.x.is_finite() && m.x >= x.0 && m.x <= x.1)
-        .collect();
+        .partition(|m| m.label.is_empty());
     // Rows are chosen before the layout exists, with the same affine map plotters will use.
     let plot_width = f64::from(FIGURE_WIDTH - Y_LABEL_AREA - RIGHT_MARGIN);
     let approx_px = |v: f64| f64::from(Y_LABEL_AREA) + (v - x.0) / (x.1 - x.0) * plot_width;
@@ -190,6 +190,13 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
         let bottom = frames.last().map_or(0, |f| f.1 .1);
         let (left, right) = frames.first().map_or((0, 0), |f| (f.0 .0, f.1 .0));
         let label_style = font(MARKER_FONT_PX).pos(Pos::new(HPos::Center, VPos::Bottom));
+        // A marker without a label is a vertical grid line (graph paper to read times from).
+        let top = frames.first().map_or(0, |f| f.0 .1);
+        for marker in &grid {
+            let px =
+                left + ((marker.x - x.0) / (x.1 - x.0) * f64::from(right - left)).round() as i32;
+            draw_stroked(&root, &[(px, top), (px, bottom)], GRID_COLOR, 1, &[])?;
+        }
         for (marker, row) in markers.iter().zip(&rows) {
             let px =
                 left + ((marker.x - x.0) / (x.1 - x.0) * f64::from(right - left)).round() as i32;

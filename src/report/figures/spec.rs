@@ -78,7 +78,8 @@ pub struct LineChart {
     /// x range; `None` = from the data.
     pub x_range: Option<(f64, f64)>,
     pub panels: Vec<Panel>,
-    /// Vertical markers drawn through every panel, labelled in the top one.
+    /// Vertical markers drawn through every panel, labelled in the top one; a marker without a
+    /// label is a light vertical grid line.
     pub markers: Vec<Marker>,
 }
 
