@@ -123,6 +123,11 @@ pub struct WorksheetArgs {
     #[arg(long, value_enum, value_delimiter = ',',
           default_values_t = [SheetFormat::Html, SheetFormat::Md])]
     pub format: Vec<SheetFormat>,
+    /// Also print the worksheets and the answer key to worksheets.pdf and answer-key.pdf (A4,
+    /// one student per page) with headless Chromium ($STICKSLIP_CHROMIUM, else chromium,
+    /// chromium-browser or google-chrome on PATH).
+    #[arg(long)]
+    pub pdf: bool,
 }
 
 /// What `stickslip worksheet` writes.

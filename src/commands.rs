@@ -160,10 +160,15 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         regime: args.regime.clone(),
         questions: args.questions.clone(),
     };
+    // The browser is found before any work: without it, nothing is drawn or written.
+    let browser = args.pdf.then(crate::handout::pdf::locate).transpose()?;
     let progress = crate::output::progress::progress_bar(args.students, "students");
     let sheets = crate::worksheet::generate(&request, &progress)?;
     let pages: Vec<Format> = args.format.iter().filter_map(|f| f.page()).collect();
     let mut files = crate::worksheet::render(&sheets, &pages)?;
+    if let Some(browser) = &browser {
+        files.extend(crate::worksheet::pdf(&sheets, browser)?);
+    }
     files.extend(crate::worksheet::moodle::render(
         &sheets,
         args.format.contains(&SheetFormat::Moodle),

@@ -325,3 +325,59 @@ fn first_plain_result(scene: &Scene) -> String {
         .map(str::to_string)
         .expect("a plain decimal result")
 }
+
+/// `stickslip worksheet --pdf` prints a class set in one command: the pulled mass's sheet is one
+/// A4 page per student (its questions with it), the woodpecker's at most two, the answer key
+/// at least a page per student, and the sheet's text holds no answer of the key.
+#[test]
+fn worksheets_and_answer_keys_print_one_student_per_page() {
+    let (Some(browser), Some(pdfinfo), Some(pdftotext)) = (
+        find(&["chromium", "chromium-browser", "google-chrome"]),
+        find(&["pdfinfo"]),
+        find(&["pdftotext"]),
+    ) else {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install chromium and poppler-utils"
+        );
+        eprintln!("skipped: chromium or poppler-utils not installed");
+        return;
+    };
+    let dir = tempfile::tempdir().unwrap();
+    for (model, most) in [("pulled-mass", 1), ("woodpecker", 2)] {
+        let out = dir.path().join(model);
+        let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
+            .args(["worksheet", "--model", model, "--students", "3", "--pdf"])
+            .args(["--format", "md", "--out"])
+            .arg(&out)
+            .env("STICKSLIP_CHROMIUM", &browser)
+            .output()
+            .unwrap();
+        assert!(run.status.success(), "{model}: {run:?}");
+        let sheets = print_pages(&pdfinfo, &out.join("worksheets.pdf"));
+        assert!((3..=3 * most).contains(&sheets), "{model}: {sheets} pages");
+        assert_eq!(sheets % 3, 0, "{model}: every student on whole pages");
+        assert!(
+            print_pages(&pdfinfo, &out.join("answer-key.pdf")) >= 3,
+            "{model}"
+        );
+        let text = Command::new(&pdftotext)
+            .arg(out.join("worksheets.pdf"))
+            .arg("-")
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&text.stdout);
+        assert!(text.contains("student 3"), "{model}");
+        let key: serde_json::Value =
+            serde_json::from_str(&std::fs::read_to_string(out.join("answer-key.json")).unwrap())
+                .unwrap();
+        for s in key["students"].as_array().unwrap() {
+            for a in s["answers"].as_array().unwrap() {
+                if let Some(v) = a["value"].as_f64() {
+                    let shown = format!("{v:.4}");
+                    assert!(!text.contains(&shown), "{model}: {} {shown}", a["key"]);
+                }
+            }
+        }
+    }
+}

@@ -500,6 +500,19 @@ fn bad_requests_exit_2_with_one_line_and_write_nothing() {
             assert!(stderr.contains(part), "{args:?}: {stderr}");
         }
     }
+    // --pdf without a browser is refused before anything is drawn.
+    let mut cmd = stickslip();
+    cmd.args([
+        "worksheet",
+        "--model",
+        "pulled-mass",
+        "--students",
+        "1",
+        "--pdf",
+    ])
+    .env("STICKSLIP_CHROMIUM", "/nonexistent/chromium");
+    let stderr = common::refused(cmd);
+    assert!(stderr.contains("--pdf needs headless Chromium"), "{stderr}");
 }
 
 #[test]

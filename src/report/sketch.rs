@@ -64,6 +64,35 @@ const INK: &str = "currentColor"; // outlines, text, weights
 /// at the slip onset, where F = μs N (or t = 0 for an immediate slip, F > 2μs W) and the
 /// friction drops to μd N.
 pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
+    draw_pulled_mass(p, phase, Labels::Computed)
+}
+
+/// The pulled mass at rest at t = 0 labelled with the given values only, for a worksheet: the
+/// derived values (W, T, N, φ) are the student's to work out, so they are named, not numbered.
+pub fn pulled_mass_givens(p: &PulledMassParams) -> String {
+    draw_pulled_mass(p, Phase::Stuck, Labels::Givens)
+}
+
+/// Which values the labels of a sketch show.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Labels {
+    /// Given and derived values (W, T, N, …).
+    Computed,
+    /// Given values only; derived ones by their symbols.
+    Givens,
+}
+
+impl Labels {
+    /// `symbolic`, then ` = value` unless only givens are shown.
+    fn derived(self, symbolic: &str, value: String) -> String {
+        match self {
+            Labels::Computed => format!("{symbolic} = {value}"),
+            Labels::Givens => symbolic.to_string(),
+        }
+    }
+}
+
+fn draw_pulled_mass(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
     let w = p.weight();
     let f = p.force;
     let immediate = f > 2.0 * p.mu_s * w;
@@ -99,7 +128,21 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         ),
         (Phase::Slipping, _) => format!("dynamic friction F_f = μd N = {}", mn(friction)),
     };
-    let desc = format!(
+    let desc = if labels == Labels::Givens {
+        format!(
+            "A block of mass m = {m} lies on a table and is pulled to the right by a constant \
+             force F = {F}. Under it, through a slot in the table, a spring of stiffness k = {k} \
+             carries a second mass m' = m = {m} that oscillates, so the normal force N(t) swings \
+             between 0 and twice the block's weight. Friction coefficients μs = {mus}, μd = \
+             {mud}. Drawn at rest at t = 0.",
+            m = grams(p.mass),
+            F = mn(f),
+            k = plain(p.k, "N/m"),
+            mus = num(p.mu_s),
+            mud = num(p.mu_d),
+        )
+    } else {
+        format!(
         "A block of mass m = {m} lies on a table and is pulled to the right by a constant force \
          F = {F}. Under it, through a slot in the table, a spring of stiffness k = {k} carries a \
          second mass m' = m = {m} that oscillates with period T = {T}, so the normal force \
@@ -115,7 +158,8 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         mus = num(p.mu_s),
         mud = num(p.mu_d),
         N = mn(n),
-    );
+    )
+    };
     s.open(&title, &desc);
 
     // Header.
@@ -174,7 +218,7 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         hang_y + 40.0,
         "start",
         SMALL,
-        &format!("oscillates: T = 2π√(m'/k) = {}", ms(period)),
+        &labels.derived("oscillates: T = 2π√(m'/k)", ms(period)),
     );
     s.text(
         cx - 20.0,
@@ -223,7 +267,7 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
     );
     let ff_label = match (phase, immediate) {
         (Phase::Stuck, false) => "F_{f} = F ≤ μ_{s} N".to_string(),
-        (Phase::Stuck, true) => format!("F_{{f}} = μ_{{s}} N = {}", mn(friction)),
+        (Phase::Stuck, true) => labels.derived("F_{f} = μ_{s} N", mn(friction)),
         (Phase::Slipping, _) => format!("F_{{f}} = μ_{{d}} N = {}", mn(friction)),
     };
     s.text(bx - 8.0, ff_y - 12.0, "end", FONT, &ff_label);
@@ -239,7 +283,7 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         n_label_y,
         "end",
         FONT,
-        &format!("N = {} at {instant}", mn(n)),
+        &format!("{} at {instant}", labels.derived("N", mn(n))),
     );
     s.text(
         bx - 12.0,
@@ -258,7 +302,7 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         w_tip - 2.0,
         "start",
         FONT,
-        &format!("W = mg = {}", mn(w)),
+        &labels.derived("W = mg", mn(w)),
     );
 
     // Velocity (slipping) or "v = 0" (stuck), above the block.
@@ -289,7 +333,7 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
         height - 34.0,
         "start",
         SMALL,
-        &format!("φ = F/W = {}", num(f / w)),
+        &labels.derived("φ = F/W", num(f / w)),
     );
     let bar = 0.1 * scale;
     s.line(40.0, height - 16.0, 40.0 + bar, height - 16.0, INK, 3.0);
@@ -311,6 +355,16 @@ pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
 /// width and the clearance of the hole are not. The spring force is drawn pushing the sleeve
 /// down (F_e > 0, the spring stretched), so the contacts are top-left and bottom-right.
 pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
+    draw_woodpecker(p, phase, Labels::Computed)
+}
+
+/// The woodpecker at rest labelled with the given values only, for a worksheet (W_S, λ, T and
+/// the spring force's range are the student's to work out).
+pub fn woodpecker_givens(p: &WoodpeckerParams) -> String {
+    draw_woodpecker(p, Phase::Stuck, Labels::Givens)
+}
+
+fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String {
     let mm = 1e3;
     let (l_mm, h_mm, z0_mm, d0_mm) = (p.l * mm, p.h * mm, p.z0 * mm, p.d0 * mm);
     let z_lo = (z0_mm - d0_mm.abs()).min(0.0);
@@ -340,8 +394,27 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
         Phase::Stuck => "static friction, up to μs N at each contact, holds the sleeve",
         Phase::Slipping => "dynamic friction μd N at each contact brakes the falling sleeve",
     };
-    let desc = format!(
-        "A sleeve of mass m_S = {ms} (weight W_S = {ws}) slides down a vertical pole. The \
+    let desc = if labels == Labels::Givens {
+        format!(
+            "A sleeve of mass m_S = {ms} slides down a vertical pole. The spring (k = {k}) \
+             carrying the bird (m_W = {mw}) acts on the sleeve at lever arm l = {l} from the \
+             pole's axis; the sleeve tilts and touches the pole at two contacts h = {h} apart. \
+             The spring coordinate z = z0 + d0 cos ωt has offset z0 = {z0} and amplitude \
+             d0 = {d0}. Friction coefficients μs = {mus}, μd = {mud}. The tilt is exaggerated; \
+             lengths to scale.",
+            ms = grams(p.m_sleeve),
+            k = plain(p.k, "N/m"),
+            mw = grams(p.m_bird),
+            l = mm_text(l_mm),
+            h = mm_text(h_mm),
+            z0 = mm_text(z0_mm),
+            d0 = mm_text(d0_mm),
+            mus = num(p.mu_s),
+            mud = num(p.mu_d),
+        )
+    } else {
+        format!(
+            "A sleeve of mass m_S = {ms} (weight W_S = {ws}) slides down a vertical pole. The \
          spring (k = {k}) carrying the bird (m_W = {mw}) acts on the sleeve at lever arm \
          l = {l} from the pole's axis; the sleeve tilts and touches the pole at two contacts \
          h = {h} apart, each pressing with N = λ|F_e|, λ = l/h = {lambda}. The spring \
@@ -349,22 +422,23 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
          T = {T}), so the spring force F_e = k z ranges from {femin} to {femax} and N reaches \
          {nmax}. Friction coefficients μs = {mus}, μd = {mud}: {friction_words}. The tilt is \
          exaggerated; lengths to scale.",
-        ms = grams(p.m_sleeve),
-        ws = mn(ws),
-        k = plain(p.k, "N/m"),
-        mw = grams(p.m_bird),
-        l = mm_text(l_mm),
-        h = mm_text(h_mm),
-        lambda = num(lambda),
-        z0 = mm_text(z0_mm),
-        d0 = mm_text(d0_mm),
-        T = ms(period),
-        femin = mn(fe_min),
-        femax = mn(fe_max),
-        nmax = mn(n_max),
-        mus = num(p.mu_s),
-        mud = num(p.mu_d),
-    );
+            ms = grams(p.m_sleeve),
+            ws = mn(ws),
+            k = plain(p.k, "N/m"),
+            mw = grams(p.m_bird),
+            l = mm_text(l_mm),
+            h = mm_text(h_mm),
+            lambda = num(lambda),
+            z0 = mm_text(z0_mm),
+            d0 = mm_text(d0_mm),
+            T = ms(period),
+            femin = mn(fe_min),
+            femax = mn(fe_max),
+            nmax = mn(n_max),
+            mus = num(p.mu_s),
+            mud = num(p.mu_d),
+        )
+    };
     s.open(&title, &desc);
     s.text(
         24.0,
@@ -517,7 +591,7 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
         w_top + 78.0,
         "end",
         FONT,
-        &format!("W_{{S}} = {}", mn(ws)),
+        &labels.derived("W_{S}", mn(ws)),
     );
 
     // Velocity of the sleeve, or "v = 0".
@@ -555,7 +629,7 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
         l_y + 24.0,
         "middle",
         SMALL,
-        &format!("λ = l/h = {}", num(lambda)),
+        &labels.derived("λ = l/h", num(lambda)),
     );
 
     // The spring: natural length, then the coordinate z; the bird drawn at z = z0, and the band
@@ -639,7 +713,7 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
         formula_y,
         "start",
         SMALL,
-        &format!("z = z_{{0}} + d_{{0}} cos ωt, T = {}", ms(period)),
+        &labels.derived("z = z_{0} + d_{0} cos ωt, T", ms(period)),
     );
     s.text(lx, zero_y, "start", SMALL, "z = 0: spring unstretched");
     let z0_y = if (y0 - bird_y).abs() >= 34.0 {
@@ -674,12 +748,14 @@ pub fn woodpecker(p: &WoodpeckerParams, phase: Phase) -> String {
     );
 
     // The numbers that are not lengths, bottom left.
-    let info = [
+    let mut info = vec![
         format!("sleeve m_{{S}} = {}", grams(p.m_sleeve)),
         format!("μ_{{s}} = {}, μ_{{d}} = {}", num(p.mu_s), num(p.mu_d)),
-        format!("F_{{e}} from {} to {}", mn(fe_min), mn(fe_max)),
-        format!("N up to {}", mn(n_max)),
     ];
+    if labels == Labels::Computed {
+        info.push(format!("F_{{e}} from {} to {}", mn(fe_min), mn(fe_max)));
+        info.push(format!("N up to {}", mn(n_max)));
+    }
     for (i, line) in info.iter().enumerate() {
         s.text(24.0, height - 92.0 + 22.0 * i as f64, "start", SMALL, line);
     }
@@ -1261,6 +1337,32 @@ mod tests {
             assert!(desc.contains(value), "{value}: {desc}");
         }
         assert!(child_text(&wood, "title").contains("Falling woodpecker, slipping"));
+    }
+
+    #[test]
+    fn a_worksheet_sketch_shows_the_given_values_and_names_the_derived_ones() {
+        let p = PulledMassParams::default();
+        let svg = pulled_mass_givens(&p);
+        for derived in [
+            mn(p.weight()),
+            ms(p.period()),
+            mn(2.0 * p.weight()),
+            num(p.phi()),
+        ] {
+            assert!(!svg.contains(&derived), "{derived} on a worksheet sketch");
+        }
+        for given in [grams(p.mass), mn(p.force), plain(p.k, "N/m")] {
+            assert!(svg.contains(&given), "{given}");
+        }
+        assert!(svg.contains("oscillates: T = 2π√(m'/k)"));
+        let w = WoodpeckerParams::default();
+        let svg = woodpecker_givens(&w);
+        for derived in [mn(w.sleeve_weight()), ms(w.period()), num(w.lambda())] {
+            assert!(!svg.contains(&derived), "{derived} on a worksheet sketch");
+        }
+        assert!(svg.contains(&mm_text(w.l * 1e3)) && svg.contains(&mm_text(w.d0 * 1e3)));
+        // The report's sketches keep their numbers.
+        assert!(pulled_mass(&p, Phase::Stuck).contains(&ms(p.period())));
     }
 
     #[test]

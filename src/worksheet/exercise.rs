@@ -31,6 +31,9 @@ pub trait Exercise: Present {
     fn regimes() -> &'static [Regime];
     /// The rules that decide the regime, as (regime, condition in LaTeX).
     fn regime_rules() -> &'static [(Regime, &'static str)];
+    /// The apparatus at rest at t = 0 labelled with the given values only (SVG): the derived
+    /// ones are the student's to work out.
+    fn sketch_givens(&self) -> String;
     /// A candidate parameter set aimed at `regime`, every value rounded as typed.
     fn draw(regime: Regime, rng: &mut Draws) -> Self;
     /// The values the regime's inequalities compare, as (LaTeX symbol, value); `value` gives

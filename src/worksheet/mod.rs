@@ -26,7 +26,7 @@ use rayon::prelude::*;
 
 pub use answer::{Answer, Comparison, Value};
 pub use question::{Kind, Question, Regime};
-pub use render::render;
+pub use render::{pdf, render};
 
 use crate::error::{Error, Result};
 use crate::models::Model;

@@ -14,11 +14,9 @@ use crate::derivation::{self, Step};
 use crate::error::Result;
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
-use crate::present::Present;
 use crate::report::context::regime_words;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};
-use crate::report::sketch::Phase;
 use crate::report::{Format, OutFile};
 
 const TEMPLATES: &[(&str, &str)] = &[
@@ -219,9 +217,9 @@ fn sketch_file(number: u32) -> String {
     format!("figures/student-{number:03}-apparatus.svg")
 }
 
-/// The apparatus of `case`, at rest at t = 0.
+/// The apparatus of `case`, at rest at t = 0, labelled with the given values only.
 fn sketch(case: &Model) -> String {
-    with_model!(case, p => p.sketch(Phase::Stuck))
+    with_model!(case, p => p.sketch_givens())
 }
 
 fn sheet_ctx(s: &Student) -> SheetCtx {
@@ -312,6 +310,21 @@ fn key_ctx(s: &Student) -> KeyCtx {
             .map(|(i, a)| answer_ctx(i, a, &steps, &mut shown))
             .collect(),
     }
+}
+
+/// worksheets.pdf and answer-key.pdf: the HTML pages printed with headless Chromium at
+/// `browser` (A4, one student per page). Nothing is written here.
+pub fn pdf(w: &Worksheets, browser: &std::path::Path) -> Result<Vec<OutFile>> {
+    render(w, &[Format::Html])?
+        .into_iter()
+        .filter(|f| f.path.extension().is_some_and(|e| e == "html"))
+        .map(|f| {
+            let name = f.path.display().to_string();
+            let html = String::from_utf8_lossy(&f.bytes);
+            let bytes = crate::handout::pdf::print(browser, &name, &html)?;
+            Ok(OutFile::new(f.path.with_extension("pdf"), bytes))
+        })
+        .collect()
 }
 
 /// The worksheet files in `formats` (HTML: worksheets.html, answer-key.html; Markdown:

@@ -112,6 +112,10 @@ impl Exercise for PulledMassParams {
         REGIMES
     }
 
+    fn sketch_givens(&self) -> String {
+        crate::report::sketch::pulled_mass_givens(self)
+    }
+
     fn regime_rules() -> &'static [(Regime, &'static str)] {
         REGIME_RULES
     }

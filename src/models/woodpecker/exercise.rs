@@ -139,6 +139,10 @@ impl Exercise for WoodpeckerParams {
         REGIMES
     }
 
+    fn sketch_givens(&self) -> String {
+        crate::report::sketch::woodpecker_givens(self)
+    }
+
     fn regime_rules() -> &'static [(Regime, &'static str)] {
         REGIME_RULES
     }
