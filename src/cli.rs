@@ -15,6 +15,7 @@ use crate::fit::FitParam;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{Model, Physics};
 use crate::report::Format;
+use crate::worksheet::Lang;
 
 /// Stick-slip models of a physics paper: closed forms checked against exact integration.
 #[derive(Debug, Parser)]
@@ -128,6 +129,10 @@ pub struct WorksheetArgs {
     /// chromium-browser or google-chrome on PATH).
     #[arg(long)]
     pub pdf: bool,
+    /// Language of the worksheets and answer keys (words and decimal sign); the Moodle bank
+    /// is in English.
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
 }
 
 /// What `stickslip worksheet` writes.

@@ -165,9 +165,9 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
     let progress = crate::output::progress::progress_bar(args.students, "students");
     let sheets = crate::worksheet::generate(&request, &progress)?;
     let pages: Vec<Format> = args.format.iter().filter_map(|f| f.page()).collect();
-    let mut files = crate::worksheet::render(&sheets, &pages)?;
+    let mut files = crate::worksheet::render(&sheets, &pages, args.lang)?;
     if let Some(browser) = &browser {
-        files.extend(crate::worksheet::pdf(&sheets, browser)?);
+        files.extend(crate::worksheet::pdf(&sheets, args.lang, browser)?);
     }
     files.extend(crate::worksheet::moodle::render(
         &sheets,

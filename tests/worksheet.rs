@@ -682,3 +682,57 @@ fn moodle_xml_and_gift_hold_one_variant_per_student_and_question() {
         assert!(b.contains("[html]") && b.contains("####"), "{b}");
     }
 }
+
+/// `--lang it`: the same class set (same parameters, same answers) in Italian words, with
+/// decimal commas in the numbers a student reads; answer-key.json stays the contract (SI, `.`).
+#[test]
+fn italian_sheets_have_italian_words_and_decimal_commas() {
+    let (en, it) = (tempfile::tempdir().unwrap(), tempfile::tempdir().unwrap());
+    let args = ["--model", "pulled-mass", "--students", "2", "--seed", "3"];
+    worksheet(en.path(), &args);
+    worksheet(it.path(), &[&args[..], &["--lang", "it"]].concat());
+    assert_eq!(
+        fs::read(en.path().join("answer-key.json")).unwrap(),
+        fs::read(it.path().join("answer-key.json")).unwrap()
+    );
+    let sheets = fs::read_to_string(it.path().join("worksheets.html")).unwrap();
+    assert!(sheets.contains("<html lang=\"it\">"));
+    for word in [
+        "Scheda",
+        "studente 1",
+        "Nome",
+        "Definizioni",
+        "Figura 1.",
+        "trazione F",
+        "forza (N)",
+        "fessura nel tavolo",
+    ] {
+        assert!(sheets.contains(word), "{word}");
+    }
+    for english in [
+        "Worksheet:",
+        "Name:",
+        "Give each answer",
+        "slot in the table",
+        "pull F",
+    ] {
+        assert!(!sheets.contains(english), "{english} on the Italian sheet");
+    }
+    let key = read_json(it.path());
+    let mu_s = key["students"][0]["params"]["mu_s"].as_f64().unwrap();
+    let comma = format!("{mu_s}").replace('.', ",");
+    assert!(sheets.contains(&format!(">{comma}<")), "{comma}");
+    let answers = fs::read_to_string(it.path().join("answer-key.md")).unwrap();
+    assert!(
+        answers.contains("Risposta: **") && answers.contains("{,}"),
+        "{answers}"
+    );
+    let t_slip = key["students"][0]["answers"][0]["value"].as_f64().unwrap();
+    let shown = format!("{t_slip:.4}").replace('.', ",");
+    assert!(answers.contains(&shown[..5]), "{shown}");
+    stickslip()
+        .args(["worksheet", "--model", "pulled-mass", "--lang", "fr"])
+        .assert()
+        .code(2)
+        .stderr(predicates::str::contains("--lang"));
+}

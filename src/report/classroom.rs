@@ -59,11 +59,17 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
             &indicatif::ProgressBar::hidden(),
         )?;
         let folder = format!("worksheets/{}", model.id());
-        files.extend(under(&folder, worksheet::render(&sheets, formats)?));
+        files.extend(under(
+            &folder,
+            worksheet::render(&sheets, formats, worksheet::Lang::En)?,
+        ));
+        let title = worksheet::Lang::En
+            .catalogue()?
+            .text(&format!("{}.title", model.id()), &[])?;
         links.push(Material {
             html: format!("{folder}/worksheets.html"),
             md: format!("{folder}/worksheets.md"),
-            title: format!("Worksheets: {}", worksheet::render::title(model)),
+            title: format!("Worksheets: {title}"),
             what: format!(
                 "{STUDENTS} students, each with their own parameters (seed {SEED}), and the \
                  answer key with every answer worked out (answer-key)"

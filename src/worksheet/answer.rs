@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use super::exercise::Exercise;
 use super::figure::{force_figure, v_figure};
+use super::lang::Lang;
 use super::question::{Kind, Question};
 use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
@@ -125,8 +126,8 @@ pub fn answer(
             }
             Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
             Kind::ReadFigure(key) => {
-                let labels = with_model!(case, p => force_labels(p));
-                let (svg, spacing) = force_figure(case, labels)?;
+                // The answers' figure is English; a sheet in another language redraws it.
+                let (svg, spacing) = force_figure(case, Lang::En)?;
                 figure = Some(svg);
                 let tolerance = 0.5 * spacing;
                 measured(question, steps, &evaluated, key)
@@ -151,11 +152,6 @@ pub fn answer(
         figure,
         key_figure,
     }))
-}
-
-/// The labels of a model's force curves (driving, static limit, dynamic limit).
-fn force_labels<M: Exercise>(_: &M) -> [&'static str; 3] {
-    M::FORCE_LABELS
 }
 
 /// The closed form `key` confirmed by its passing check on the integration.

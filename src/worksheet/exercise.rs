@@ -15,16 +15,9 @@ use crate::results::Check;
 
 /// The worksheet side of a model.
 pub trait Exercise: Present {
-    /// The model in the sheet's title ("the pulled mass").
-    const TITLE: &'static str;
-    /// What the student is told about the model (the parameters follow in a table).
-    const INTRO: &'static str;
     /// The computed symbols the sheet defines by their formulas (the symbols of worked steps),
     /// so that every symbol of the introduction and the regime rules is defined on the sheet.
     const DEFINED: &'static [&'static str];
-    /// Legend labels of the sheet's forces figure: the driving force, the static friction
-    /// limit μs·N and the dynamic one μd·N, in the model's symbols.
-    const FORCE_LABELS: [&'static str; 3];
     /// Every question the model's sheets can ask.
     fn catalogue() -> &'static [Question];
     /// Regimes a worksheet can ask for (closed-form regimes), the default first.

@@ -3,6 +3,7 @@
 //! which the slip onset is read (the slip condition, not the answers). In the answer key, v(t)
 //! from rest over two periods (fine horizontal grid of round spacing).
 
+use super::lang::Lang;
 use crate::engine::Run;
 use crate::error::{Error, Result};
 use crate::models::{LawKind, Model};
@@ -68,10 +69,19 @@ pub fn v_figure(run: &Run) -> Result<(String, f64)> {
 const FORCE_SAMPLES: usize = 800;
 
 /// The forces of `case`'s linearized law over one period, on graph paper: the driving force
-/// and the friction limits μs·N and μd·N, labelled with `labels` (driving, static, dynamic), and
+/// and the friction limits μs·N and μd·N, labelled in `lang`'s words, and
 /// light vertical lines at a round time spacing (s), which is returned; the reading tolerance of
 /// a time is half of it.
-pub fn force_figure(case: &Model, labels: [&str; 3]) -> Result<(String, f64)> {
+pub fn force_figure(case: &Model, lang: Lang) -> Result<(String, f64)> {
+    let catalogue = lang.catalogue()?;
+    let labels = catalogue.list(&format!("{}.force_labels", case.id()))?;
+    let (Some(drive), Some(stat), Some(dynamic)) = (labels.first(), labels.get(1), labels.get(2))
+    else {
+        return Err(Error::Template {
+            name: format!("templates/lang/{}.toml", lang.code()),
+            reason: format!("{}.force_labels needs three labels", case.id()),
+        });
+    };
     let figure_error = |reason: String| Error::Figure {
         id: "worksheet forces".to_string(),
         reason,
@@ -113,13 +123,11 @@ pub fn force_figure(case: &Model, labels: [&str; 3]) -> Result<(String, f64)> {
         x_label: "t (s)".to_string(),
         x_range: Some((0.0, period)),
         panels: vec![Panel {
-            y_label: "force (N)".to_string(),
+            y_label: catalogue.text("sheet.force_axis", &[])?,
             curves: vec![
-                line(labels[0], 7, Stroke::Solid, &|t| law.drive(t)),
-                line(labels[1], 0, Stroke::Dashed, &|t| body.mu_s * law.normal(t)),
-                line(labels[2], 1, Stroke::DashDot, &|t| {
-                    body.mu_d * law.normal(t)
-                }),
+                line(drive, 7, Stroke::Solid, &|t| law.drive(t)),
+                line(stat, 0, Stroke::Dashed, &|t| body.mu_s * law.normal(t)),
+                line(dynamic, 1, Stroke::DashDot, &|t| body.mu_d * law.normal(t)),
             ],
             h_lines: Vec::new(),
         }],
@@ -136,8 +144,7 @@ mod tests {
     #[test]
     fn the_force_figure_has_the_three_forces_and_a_time_grid() {
         let case = Model::defaults()[0];
-        let (svg, spacing) =
-            force_figure(&case, ["pull F", "static limit", "dynamic limit"]).unwrap();
+        let (svg, spacing) = force_figure(&case, Lang::En).unwrap();
         for label in ["pull F", "static limit", "dynamic limit", "force (N)"] {
             assert!(svg.contains(label), "{label}");
         }
@@ -148,6 +155,8 @@ mod tests {
         );
         // The time grid: light vertical lines, no marker labels.
         assert!(svg.matches("stroke=\"#E3E3E3\"").count() >= 10);
+        let (italian, _) = force_figure(&case, Lang::It).unwrap();
+        assert!(italian.contains("trazione F") && italian.contains("forza (N)"));
     }
 
     #[test]

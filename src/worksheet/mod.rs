@@ -15,6 +15,7 @@ pub mod answer;
 pub mod exercise;
 pub mod figure;
 pub mod json;
+pub mod lang;
 pub mod moodle;
 pub mod question;
 pub mod render;
@@ -25,6 +26,7 @@ use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 pub use answer::{Answer, Comparison, Value};
+pub use lang::Lang;
 pub use question::{Kind, Question, Regime};
 pub use render::{pdf, render};
 

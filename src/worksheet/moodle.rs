@@ -21,7 +21,9 @@ use base64::Engine;
 use serde::Serialize;
 
 use super::answer::{Answer, Value};
+use super::lang::Lang;
 use super::question::{self, Kind};
+use super::render::Words;
 use super::{Student, Worksheets};
 use crate::error::Result;
 use crate::models::{with_model, Model, Physics};
@@ -110,7 +112,8 @@ fn params_html(case: &Model) -> String {
     format!("<table><tbody>{rows}</tbody></table>")
 }
 
-fn variant(w: &Worksheets, intro: &str, s: &Student, i: usize, a: &Answer) -> Variant {
+fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> Result<Variant> {
+    let intro = words.model_text("intro")?;
     let q = a.question;
     let figures = match (q.kind, q.unit()) {
         (Kind::Regime(_), _) => String::new(),
@@ -125,9 +128,9 @@ fn variant(w: &Worksheets, intro: &str, s: &Student, i: usize, a: &Answer) -> Va
     };
     let html = format!(
         "<p>{}</p>{}<p>{}{}</p>{image}",
-        tera::escape_html(intro),
+        tera::escape_html(&intro),
         params_html(&s.case),
-        tera::escape_html(q.prompt),
+        tera::escape_html(&words.prompt(q)?),
         tera::escape_html(&figures),
     );
     let name = format!("Q{} {} — student {:03}", i + 1, q.key(), s.number);
@@ -165,7 +168,7 @@ fn variant(w: &Worksheets, intro: &str, s: &Student, i: usize, a: &Answer) -> Va
         }
         (Value::Text(t), _) => v.answer = t.clone(),
     }
-    v
+    Ok(v)
 }
 
 /// The worked step (formula = numbers = result, or the values the regime inequalities
@@ -201,33 +204,37 @@ fn feedback(a: &Answer) -> String {
     )
 }
 
-fn categories(w: &Worksheets, intro: &str, title: &str) -> Vec<Category> {
+fn categories(w: &Worksheets, words: &Words) -> Result<Vec<Category>> {
+    let title = words.model_text("title")?;
     w.questions
         .iter()
         .enumerate()
-        .map(|(i, q)| Category {
-            path: format!(
-                "$course$/top/stickslip {title} (seed {})/Q{} {}",
-                w.seed,
-                i + 1,
-                q.key()
-            ),
-            numerical: !matches!(q.kind, Kind::Regime(_)),
-            variants: w
-                .students
-                .iter()
-                .filter_map(|s| {
-                    let a = s.answers.iter().find(|a| a.question == *q)?;
-                    Some(variant(w, intro, s, i, a))
-                })
-                .collect(),
+        .map(|(i, q)| {
+            Ok(Category {
+                path: format!(
+                    "$course$/top/stickslip {title} (seed {})/Q{} {}",
+                    w.seed,
+                    i + 1,
+                    q.key()
+                ),
+                numerical: !matches!(q.kind, Kind::Regime(_)),
+                variants: w
+                    .students
+                    .iter()
+                    .filter_map(|s| {
+                        let a = s.answers.iter().find(|a| a.question == *q)?;
+                        Some(variant(w, words, s, i, a))
+                    })
+                    .collect::<Result<_>>()?,
+            })
         })
         .collect()
 }
 
 /// `worksheets.moodle.xml` and/or `worksheets.gift.txt` of the set.
 pub fn render(w: &Worksheets, xml: bool, gift: bool) -> Result<Vec<OutFile>> {
-    let (intro, title) = (super::render::intro(w.model), super::render::title(w.model));
+    // The question bank is in English (its fixed texts are; see the issue note).
+    let words = Words::new(Lang::En, w.model)?;
     let mut tera = tera::Tera::default();
     // XML escaping: tera's HTML escape writes entities XML reads (`&#x27;`, `&#x2F;` …).
     tera.autoescape_on(vec![".xml"]);
@@ -235,7 +242,7 @@ pub fn render(w: &Worksheets, xml: bool, gift: bool) -> Result<Vec<OutFile>> {
     tera.add_raw_templates(TEMPLATES.iter().copied())
         .map_err(|e| template_error("moodle", &e))?;
     let mut ctx = tera::Context::new();
-    ctx.insert("categories", &categories(w, intro, title));
+    ctx.insert("categories", &categories(w, &words)?);
     let mut out = Vec::new();
     if xml {
         out.push(OutFile::new(

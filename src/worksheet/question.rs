@@ -58,8 +58,6 @@ impl Kind {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Question {
     pub kind: Kind,
-    /// What the student is asked (plain text).
-    pub prompt: &'static str,
     /// Regimes in which the answer can exist.
     pub regimes: &'static [Regime],
 }

@@ -7,7 +7,9 @@ use serde::Serialize;
 
 use super::answer::{Answer, Comparison, Value};
 use super::exercise::Exercise;
+use super::figure;
 use super::json::key_json;
+use super::lang::{Catalogue, Lang};
 use super::question::{self, Kind, Question};
 use super::{Student, Worksheets};
 use crate::derivation::{self, Step};
@@ -43,17 +45,9 @@ const WORKSHEET_CSS: &str = include_str!("../../templates/worksheet.css");
 const ANSWER_DIGITS: usize = 4;
 const NUMERIC_DIGITS: usize = 10;
 
-/// What the student is told about the model (the parameters follow in a table).
-pub(crate) fn intro(model: Model) -> &'static str {
-    fn of<M: Exercise>(_: &M) -> &'static str {
-        M::INTRO
-    }
-    with_model!(&model, p => of(p))
-}
-
 /// The definitions of the model's [`Exercise::DEFINED`] symbols, `symbol = formula`, from the
 /// worked steps of `case` (the formulas are the same for every student).
-fn definitions(case: &Model) -> Vec<Math> {
+fn definitions(case: &Model, words: &Words) -> Vec<Math> {
     fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
         M::DEFINED
     }
@@ -61,15 +55,8 @@ fn definitions(case: &Model) -> Vec<Math> {
     with_model!(case, p => of(p))
         .iter()
         .filter_map(|symbol| steps.iter().find(|s| s.symbol == *symbol))
-        .map(|s| math(&format!("{} = {}", s.symbol, s.formula)))
+        .map(|s| words.math(&format!("{} = {}", s.symbol, s.formula)))
         .collect()
-}
-
-pub(crate) fn title(model: Model) -> &'static str {
-    fn of<M: Exercise>(_: &M) -> &'static str {
-        M::TITLE
-    }
-    with_model!(&model, p => of(p))
 }
 
 /// (LaTeX symbol, value as typed, unit) of a case's given parameters, in the order of the
@@ -108,7 +95,7 @@ struct ParamCtx {
 #[derive(Clone, Debug, Serialize)]
 struct QuestionCtx {
     number: usize,
-    prompt: &'static str,
+    prompt: String,
     /// The answer line: `symbol =` (empty for the regime).
     symbol: Option<Math>,
     unit: &'static str,
@@ -118,7 +105,7 @@ struct QuestionCtx {
 
 #[derive(Clone, Debug, Serialize)]
 struct RuleCtx {
-    regime: &'static str,
+    regime: String,
     condition: Math,
 }
 
@@ -138,7 +125,7 @@ struct SheetCtx {
 #[derive(Clone, Debug, Serialize)]
 struct AnswerCtx {
     number: usize,
-    prompt: &'static str,
+    prompt: String,
     /// The steps the answer uses, each worked out (`symbol = formula = numbers = result`),
     /// for partial credit.
     working: Vec<Math>,
@@ -171,36 +158,88 @@ fn with_unit(value: String, unit: &str) -> String {
     }
 }
 
-fn params_ctx(case: &Model) -> Vec<ParamCtx> {
+/// The words of one language for one model's sheets.
+pub(crate) struct Words {
+    lang: Lang,
+    catalogue: &'static Catalogue,
+    /// The model's section of the catalogue (`pulled-mass`, `woodpecker`).
+    model: &'static str,
+}
+
+impl Words {
+    pub(crate) fn new(lang: Lang, model: Model) -> Result<Self> {
+        Ok(Self {
+            lang,
+            catalogue: lang.catalogue()?,
+            model: model.id(),
+        })
+    }
+
+    /// A text of the model's section.
+    pub(crate) fn model_text(&self, key: &str) -> Result<String> {
+        self.catalogue.text(&format!("{}.{key}", self.model), &[])
+    }
+
+    pub(crate) fn prompt(&self, q: &Question) -> Result<String> {
+        self.model_text(&format!("questions.{}", q.key()))
+    }
+
+    /// The words of a regime id (the id itself if the catalogue has none).
+    fn regime(&self, id: &str) -> String {
+        self.catalogue
+            .optional(&format!("regimes.{id}"))
+            .map_or_else(|| regime_words(id).to_string(), str::to_string)
+    }
+
+    /// A regime's rule: its LaTeX, or the catalogue's words where the rule is words.
+    fn rule(&self, id: &str, condition: &str) -> Math {
+        match self.catalogue.optional(&format!("rules.{id}")) {
+            Some(words) => math(&format!(r"\text{{{words}}}")),
+            None => self.math(condition),
+        }
+    }
+
+    fn math(&self, tex: &str) -> Math {
+        math(&self.lang.tex(tex))
+    }
+
+    fn number(&self, text: &str) -> String {
+        self.lang.number(text)
+    }
+}
+
+fn params_ctx(case: &Model, words: &Words) -> Vec<ParamCtx> {
     parameters(case)
         .into_iter()
         .map(|(symbol, value, unit)| ParamCtx {
             symbol: math(symbol),
-            value: value.to_string(),
+            value: words.number(&value.to_string()),
             unit: unit.to_string(),
         })
         .collect()
 }
 
-fn questions_ctx(model: Model, questions: &[&Question]) -> Vec<QuestionCtx> {
+fn questions_ctx(model: Model, questions: &[&Question], words: &Words) -> Result<Vec<QuestionCtx>> {
     questions
         .iter()
         .enumerate()
-        .map(|(i, q)| QuestionCtx {
-            number: i + 1,
-            prompt: q.prompt,
-            symbol: (!q.symbol().is_empty()).then(|| math(q.symbol())),
-            unit: q.unit(),
-            rules: match q.kind {
-                Kind::Regime(_) => question::regime_rules(model)
-                    .iter()
-                    .map(|&(regime, condition)| RuleCtx {
-                        regime: regime_words(regime.id()),
-                        condition: math(condition),
-                    })
-                    .collect(),
-                _ => Vec::new(),
-            },
+        .map(|(i, q)| {
+            Ok(QuestionCtx {
+                number: i + 1,
+                prompt: words.prompt(q)?,
+                symbol: (!q.symbol().is_empty()).then(|| math(q.symbol())),
+                unit: q.unit(),
+                rules: match q.kind {
+                    Kind::Regime(_) => question::regime_rules(model)
+                        .iter()
+                        .map(|&(regime, condition)| RuleCtx {
+                            regime: words.regime(regime.id()),
+                            condition: words.rule(regime.id(), condition),
+                        })
+                        .collect(),
+                    _ => Vec::new(),
+                },
+            })
         })
         .collect()
 }
@@ -217,30 +256,41 @@ fn sketch_file(number: u32) -> String {
     format!("figures/student-{number:03}-apparatus.svg")
 }
 
-/// The apparatus of `case`, at rest at t = 0, labelled with the given values only.
-fn sketch(case: &Model) -> String {
-    with_model!(case, p => p.sketch_givens())
+/// The apparatus of `case`, at rest at t = 0, labelled with the given values only, in the
+/// words of `lang`.
+fn sketch(case: &Model, lang: Lang) -> Result<String> {
+    lang.localize_svg(&with_model!(case, p => p.sketch_givens()))
 }
 
-fn sheet_ctx(s: &Student) -> SheetCtx {
-    SheetCtx {
-        sketch_svg: sketch(&s.case),
-        sketch_file: sketch_file(s.number),
-        number: s.number,
-        params: params_ctx(&s.case),
-        figure_svg: s.figure.clone().unwrap_or_default(),
-        figure_file: s
-            .figure
-            .as_ref()
-            .map(|_| figure_file(s.number))
-            .unwrap_or_default(),
+/// The forces figure of a sheet in the words of `words` (the one drawn with the answers is
+/// English).
+fn forces_figure(s: &Student, words: &Words) -> Result<Option<String>> {
+    match (&s.figure, words.lang) {
+        (None, _) => Ok(None),
+        (Some(svg), Lang::En) => Ok(Some(svg.clone())),
+        (Some(_), lang) => Ok(Some(figure::force_figure(&s.case, lang)?.0)),
     }
 }
 
-fn number(v: &Value, digits: usize, unit: &str) -> String {
+fn sheet_ctx(s: &Student, words: &Words) -> Result<SheetCtx> {
+    let figure = forces_figure(s, words)?;
+    Ok(SheetCtx {
+        sketch_svg: sketch(&s.case, words.lang)?,
+        sketch_file: sketch_file(s.number),
+        number: s.number,
+        params: params_ctx(&s.case, words),
+        figure_file: figure
+            .as_ref()
+            .map(|_| figure_file(s.number))
+            .unwrap_or_default(),
+        figure_svg: figure.unwrap_or_default(),
+    })
+}
+
+fn number(v: &Value, digits: usize, unit: &str, words: &Words) -> String {
     match v {
-        Value::Number(x) => with_unit(sig(Some(*x), digits), unit),
-        Value::Text(t) => regime_words(t).to_string(),
+        Value::Number(x) => words.number(&with_unit(sig(Some(*x), digits), unit)),
+        Value::Text(t) => words.regime(t),
     }
 }
 
@@ -260,43 +310,51 @@ fn comparisons_tex(c: &[Comparison]) -> String {
 
 /// The answer's context; `shown` holds the symbols of the steps worked out in earlier answers
 /// of the same key, which are not repeated.
-fn answer_ctx(i: usize, a: &Answer, steps: &[Step], shown: &mut Vec<&'static str>) -> AnswerCtx {
+fn answer_ctx(
+    i: usize,
+    a: &Answer,
+    steps: &[Step],
+    shown: &mut Vec<&'static str>,
+    words: &Words,
+) -> Result<AnswerCtx> {
     let q = a.question;
     let mut working = Vec::new();
     if let Some(step) = &a.step {
         for s in derivation::working(steps, step) {
             if !shown.contains(&s.symbol) {
                 shown.push(s.symbol);
-                working.push(math(&s.worked_tex()));
+                working.push(words.math(&s.worked_tex()));
             }
         }
         shown.push(step.symbol);
     }
     let worked = match (&a.step, q.kind) {
-        (_, Kind::Regime(_)) => Some(math(&comparisons_tex(&a.comparisons))),
-        (Some(step), _) => Some(math(&step.worked_tex())),
+        (_, Kind::Regime(_)) => Some(words.math(&comparisons_tex(&a.comparisons))),
+        (Some(step), _) => Some(words.math(&step.worked_tex())),
         (None, _) => None,
     };
-    AnswerCtx {
+    Ok(AnswerCtx {
         number: i + 1,
-        prompt: q.prompt,
+        prompt: words.prompt(q)?,
         working,
         worked,
-        result: number(&a.value, ANSWER_DIGITS, q.unit()),
-        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit()),
-        rel_error: a.rel_error.map_or(String::new(), |e| rel(Some(e))),
-        tolerance: a
-            .tolerance
-            .map_or(String::new(), |t| with_unit(sig(Some(t), 2), q.unit())),
-    }
+        result: number(&a.value, ANSWER_DIGITS, q.unit(), words),
+        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit(), words),
+        rel_error: a
+            .rel_error
+            .map_or(String::new(), |e| words.number(&rel(Some(e)))),
+        tolerance: a.tolerance.map_or(String::new(), |t| {
+            words.number(&with_unit(sig(Some(t), 2), q.unit()))
+        }),
+    })
 }
 
-fn key_ctx(s: &Student) -> KeyCtx {
+fn key_ctx(s: &Student, words: &Words) -> Result<KeyCtx> {
     let steps = super::answer::steps(&s.case);
     let mut shown = Vec::new();
-    KeyCtx {
+    Ok(KeyCtx {
         number: s.number,
-        params: params_ctx(&s.case),
+        params: params_ctx(&s.case, words),
         figure_svg: s.key_figure.clone().unwrap_or_default(),
         figure_file: s
             .key_figure
@@ -307,15 +365,15 @@ fn key_ctx(s: &Student) -> KeyCtx {
             .answers
             .iter()
             .enumerate()
-            .map(|(i, a)| answer_ctx(i, a, &steps, &mut shown))
-            .collect(),
-    }
+            .map(|(i, a)| answer_ctx(i, a, &steps, &mut shown, words))
+            .collect::<Result<_>>()?,
+    })
 }
 
 /// worksheets.pdf and answer-key.pdf: the HTML pages printed with headless Chromium at
 /// `browser` (A4, one student per page). Nothing is written here.
-pub fn pdf(w: &Worksheets, browser: &std::path::Path) -> Result<Vec<OutFile>> {
-    render(w, &[Format::Html])?
+pub fn pdf(w: &Worksheets, lang: Lang, browser: &std::path::Path) -> Result<Vec<OutFile>> {
+    render(w, &[Format::Html], lang)?
         .into_iter()
         .filter(|f| f.path.extension().is_some_and(|e| e == "html"))
         .map(|f| {
@@ -328,23 +386,49 @@ pub fn pdf(w: &Worksheets, browser: &std::path::Path) -> Result<Vec<OutFile>> {
 }
 
 /// The worksheet files in `formats` (HTML: worksheets.html, answer-key.html; Markdown:
-/// worksheets.md, answer-key.md, figures/*.svg) and answer-key.json.
-pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
+/// worksheets.md, answer-key.md, figures/*.svg) and answer-key.json, in the words of `lang`.
+pub fn render(w: &Worksheets, formats: &[Format], lang: Lang) -> Result<Vec<OutFile>> {
     let tera = templates(TEMPLATES)?;
+    let words = Words::new(lang, w.model)?;
+    let c = words.catalogue;
     let mut ctx = tera::Context::new();
-    ctx.insert("title", title(w.model));
-    ctx.insert("intro", intro(w.model));
+    ctx.insert("t", &c.section("sheet")?);
+    ctx.insert("title", &words.model_text("title")?);
+    ctx.insert("intro", &words.model_text("intro")?);
     let first = w.students.first().map_or(w.model, |s| s.case);
-    ctx.insert("definitions", &definitions(&first));
-    ctx.insert("regime", w.regime.id());
+    ctx.insert("definitions", &definitions(&first, &words));
+    let (count, seed) = (w.students.len().to_string(), w.seed.to_string());
+    ctx.insert(
+        "students_line",
+        &c.text("sheet.students_seed", &[("count", &count), ("seed", &seed)])?,
+    );
+    ctx.insert(
+        "key_line",
+        &c.text(
+            "sheet.students_regime_seed",
+            &[
+                ("count", &count),
+                ("regime", &words.regime(w.regime.id())),
+                ("seed", &seed),
+            ],
+        )?,
+    );
+    ctx.insert("regime", &words.regime(w.regime.id()));
     ctx.insert("seed", &w.seed);
-    ctx.insert("count", &w.students.len());
     ctx.insert("css", &format!("{CSS}{WORKSHEET_CSS}"));
     ctx.insert("version", env!("CARGO_PKG_VERSION"));
-    ctx.insert("questions", &questions_ctx(w.model, &w.questions));
-    let sheets: Vec<SheetCtx> = w.students.iter().map(sheet_ctx).collect();
+    ctx.insert("questions", &questions_ctx(w.model, &w.questions, &words)?);
+    let sheets = w
+        .students
+        .iter()
+        .map(|s| sheet_ctx(s, &words))
+        .collect::<Result<Vec<_>>>()?;
     ctx.insert("sheets", &sheets);
-    let keys: Vec<KeyCtx> = w.students.iter().map(key_ctx).collect();
+    let keys = w
+        .students
+        .iter()
+        .map(|s| key_ctx(s, &words))
+        .collect::<Result<Vec<_>>>()?;
     ctx.insert("keys", &keys);
     let mut files = Vec::new();
     for format in formats {
@@ -353,10 +437,16 @@ pub fn render(w: &Worksheets, formats: &[Format]) -> Result<Vec<OutFile>> {
             files.push(OutFile::new(&name, page(&tera, &name, &ctx)?));
         }
         if *format == Format::Md {
-            for s in &w.students {
-                files.push(OutFile::new(sketch_file(s.number), sketch(&s.case)));
-                if let Some(svg) = &s.figure {
-                    files.push(OutFile::new(figure_file(s.number), svg.as_str()));
+            for (s, sheet) in w.students.iter().zip(&sheets) {
+                files.push(OutFile::new(
+                    sketch_file(s.number),
+                    sheet.sketch_svg.as_str(),
+                ));
+                if !sheet.figure_svg.is_empty() {
+                    files.push(OutFile::new(
+                        figure_file(s.number),
+                        sheet.figure_svg.as_str(),
+                    ));
                 }
                 if let Some(svg) = &s.key_figure {
                     files.push(OutFile::new(key_figure_file(s.number), svg.as_str()));
@@ -400,7 +490,7 @@ mod tests {
             M::DEFINED.len()
         }
         for model in Model::defaults() {
-            let d = definitions(&model);
+            let d = definitions(&model, &Words::new(Lang::En, model).unwrap());
             assert_eq!(
                 d.len(),
                 with_model!(&model, p => defined(p)),

@@ -33,39 +33,30 @@ const fn p(k: P) -> AnyKey {
 pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(p(P::TSlip)),
-        prompt: "At what time does the block first start to slip? (eqs. 13, 25)",
         regimes: REGIMES,
     },
     Question {
         kind: Kind::ClosedForm(p(P::TStick)),
-        prompt: "At what time does it stick again? (eqs. 18, 25)",
         regimes: SAME_PERIOD,
     },
     Question {
         kind: Kind::ClosedForm(p(P::VMax)),
-        prompt: "What is the largest speed of the first slip? (eq. 26)",
         regimes: REGIMES,
     },
     Question {
         kind: Kind::ClosedForm(p(P::VAvg)),
-        prompt: "What is the mean speed of the block over a period? (eqs. 27, 28)",
         regimes: SAME_PERIOD,
     },
     Question {
         kind: Kind::ClosedForm(p(P::Power)),
-        prompt: "What power does friction dissipate on average? (eq. 29)",
         regimes: SAME_PERIOD,
     },
     Question {
         kind: Kind::Regime(p(P::Regime)),
-        prompt: "How does the block move? Decide from the inequalities below (the symbols are defined at the top of the sheet).",
         regimes: REGIMES,
     },
     Question {
         kind: Kind::ReadFigure(p(P::TSlip)),
-        prompt: "On Figure 1, read the time at which the pull F first exceeds the static \
-                 limit μs N(t): the block starts to slip there. Does it agree with your answer \
-                 to question 1?",
         regimes: REGIMES,
     },
 ];
@@ -91,18 +82,8 @@ const REGIME_RULES: &[(Regime, &str)] = &[
 ];
 
 impl Exercise for PulledMassParams {
-    const TITLE: &'static str = "the pulled mass";
-    const INTRO: &'static str = "A block of mass m lies on a table and is pulled by a constant \
-         horizontal force F. An equal mass hangs below it on a spring of constant k, moves with \
-         it (inertial mass 2m) and modulates the normal force N(t), maximal at t = 0. Use the \
-         linearized (triangle-wave) law of the paper, N = 2W(1 − 2t/T) for the first half \
-         period, with the weight W, the angular frequency ω and the period T defined below. At \
-         t = 0 the block is at rest.";
     const DEFINED: &'static [&'static str] =
         &["W", r"\omega", "T", r"\varphi", r"\Theta", r"\varphi_c"];
-
-    const FORCE_LABELS: [&'static str; 3] =
-        ["pull F", "static limit μs N(t)", "dynamic limit μd N(t)"];
 
     fn catalogue() -> &'static [Question] {
         QUESTIONS

@@ -45,40 +45,30 @@ const fn w(k: W) -> AnyKey {
 pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(w(W::TSlip1)),
-        prompt: "At what time does the sleeve first start to slip (phase I)? (eqs. 40–42)",
         regimes: REGIMES,
     },
     Question {
         kind: Kind::ClosedForm(w(W::TStick1)),
-        prompt: "At what time does it stick again in phase I? (eqs. 49, 50)",
         regimes: STANDARD,
     },
     Question {
         kind: Kind::ClosedForm(w(W::VMax1)),
-        prompt: "What is the largest speed of the phase-I slip? (eq. 48)",
         regimes: PEAK_IN_LOBE_B,
     },
     Question {
         kind: Kind::Threshold(w(W::MuDMin1)),
-        prompt: "What is the least dynamic coefficient for which the sleeve sticks before \
-                 t = T/2? (eq. 51)",
         regimes: PEAK_IN_LOBE_B,
     },
     Question {
         kind: Kind::ClosedForm(w(W::VAvg)),
-        prompt: "What is the mean speed of the sleeve? (eqs. 54, 69–71)",
         regimes: STANDARD,
     },
     Question {
         kind: Kind::Regime(w(W::Regime)),
-        prompt: "How does the sleeve move? Decide from the inequalities below (the symbols are defined at the top of the sheet).",
         regimes: REGIMES,
     },
     Question {
         kind: Kind::ReadFigure(w(W::TSlip1)),
-        prompt: "On Figure 1, read the time at which W_S + F_e first exceeds the static limit \
-                 2λμs|F_e|: the sleeve starts to slip there (phase I). Does it agree with your \
-                 answer to question 1?",
         regimes: REGIMES,
     },
 ];
@@ -104,12 +94,6 @@ const REGIME_RULES: &[(Regime, &str)] = &[
 ];
 
 impl Exercise for WoodpeckerParams {
-    const TITLE: &'static str = "the falling woodpecker";
-    const INTRO: &'static str = "The sleeve of the woodpecker toy (mass m_S) slides down the \
-         pole while the bird (mass m_W) oscillates on the spring of constant k. Use the \
-         linearized (triangle-wave) law of the paper with the sleeve's weight W_S, the lever \
-         ratio λ, the angular frequency ω and the amplitudes ζ0, δ0 of its triangle wave defined \
-         below. At t = 0 the sleeve is at rest.";
     const DEFINED: &'static [&'static str] = &[
         "W_S",
         r"\lambda",
@@ -123,12 +107,6 @@ impl Exercise for WoodpeckerParams {
         r"\eta'",
         r"\mu_{d,HALT}^{(I)}",
         r"\mu_{d,HALT}^{(II)}",
-    ];
-
-    const FORCE_LABELS: [&'static str; 3] = [
-        "W_S + F_e (drives the sleeve)",
-        "static limit 2λμs|F_e|",
-        "dynamic limit 2λμd|F_e|",
     ];
 
     fn catalogue() -> &'static [Question] {

@@ -1,0 +1,284 @@
+//! The languages of worksheets and answer keys (`--lang`): one message catalogue per language,
+//! `templates/lang/<code>.toml` (every key of `en.toml` in each), and the locale's decimal sign
+//! for the numbers on the page.
+
+use std::collections::BTreeMap;
+use std::sync::OnceLock;
+
+use crate::error::{Error, Result};
+
+/// A language of the sheets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Lang {
+    /// English.
+    #[default]
+    En,
+    /// Italian: words from `it.toml`, decimal commas.
+    It,
+}
+
+impl Lang {
+    pub const ALL: [Lang; 2] = [Lang::En, Lang::It];
+
+    /// The ISO 639-1 code (`lang` attribute, catalogue file name).
+    pub fn code(self) -> &'static str {
+        match self {
+            Lang::En => "en",
+            Lang::It => "it",
+        }
+    }
+
+    fn source(self) -> &'static str {
+        match self {
+            Lang::En => include_str!("../../templates/lang/en.toml"),
+            Lang::It => include_str!("../../templates/lang/it.toml"),
+        }
+    }
+
+    /// The catalogue of this language, parsed once.
+    pub fn catalogue(self) -> Result<&'static Catalogue> {
+        static PARSED: [OnceLock<std::result::Result<Catalogue, String>>; 2] =
+            [OnceLock::new(), OnceLock::new()];
+        let slot = &PARSED[self as usize];
+        slot.get_or_init(|| {
+            toml::from_str(self.source())
+                .map(|table| Catalogue { table })
+                .map_err(|e| e.to_string())
+        })
+        .as_ref()
+        .map_err(|reason| self.error(reason.clone()))
+    }
+
+    fn error(self, reason: String) -> Error {
+        Error::Template {
+            name: format!("templates/lang/{}.toml", self.code()),
+            reason,
+        }
+    }
+
+    /// A number as formatted (`0.06461`, `5.3 × 10⁻⁴`) with this language's decimal sign.
+    pub fn number(self, text: &str) -> String {
+        match self {
+            Lang::En => text.to_string(),
+            Lang::It => decimal_commas(text, ","),
+        }
+    }
+
+    /// LaTeX with this language's decimal sign in its numbers (`0{,}2375`: braces keep TeX
+    /// from spacing the comma as punctuation).
+    pub fn tex(self, tex: &str) -> String {
+        match self {
+            Lang::En => tex.to_string(),
+            Lang::It => decimal_commas(tex, "{,}"),
+        }
+    }
+}
+
+impl Lang {
+    /// An SVG drawn in English (a sketch of the apparatus) in this language: every phrase of
+    /// the English catalogue's `[sketch]` section replaced by this language's, longest first,
+    /// and this language's decimal sign, in text content only (never in attributes or CSS).
+    pub fn localize_svg(self, svg: &str) -> Result<String> {
+        if self == Lang::En {
+            return Ok(svg.to_string());
+        }
+        let english = Lang::En.catalogue()?.section("sketch")?;
+        let here = self.catalogue()?.section("sketch")?;
+        let mut pairs: Vec<(&str, &str)> = english
+            .iter()
+            .filter_map(|(k, en)| Some((en.as_str(), here.get(k)?.as_str())))
+            .collect();
+        pairs.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
+        let mut out = String::with_capacity(svg.len());
+        let mut in_style = false;
+        let mut rest = svg;
+        while let Some(open) = rest.find('<') {
+            let text = &rest[..open];
+            if in_style {
+                out.push_str(text);
+            } else {
+                let translated = pairs
+                    .iter()
+                    .fold(text.to_string(), |t, (en, here)| t.replace(en, here));
+                out.push_str(&self.number(&translated));
+            }
+            let close = rest[open..].find('>').map_or(rest.len(), |c| open + c + 1);
+            let tag = &rest[open..close];
+            in_style = tag.starts_with("<style");
+            out.push_str(tag);
+            rest = &rest[close..];
+        }
+        out.push_str(rest);
+        Ok(out)
+    }
+}
+
+/// `text` with every decimal point between two digits replaced by `comma`.
+fn decimal_commas(text: &str, comma: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len() + 8);
+    for (i, &c) in chars.iter().enumerate() {
+        let between_digits = c == '.'
+            && i > 0
+            && chars[i - 1].is_ascii_digit()
+            && chars.get(i + 1).is_some_and(char::is_ascii_digit);
+        if between_digits {
+            out.push_str(comma);
+        } else {
+            out.push(c);
+        }
+    }
+    out
+}
+
+/// One language's words, by dotted path (`sheet.name`, `woodpecker.questions.t_slip_1`).
+#[derive(Debug)]
+pub struct Catalogue {
+    table: toml::Table,
+}
+
+impl Catalogue {
+    fn value(&self, path: &str) -> Option<&toml::Value> {
+        let mut parts = path.split('.');
+        let mut value = self.table.get(parts.next()?)?;
+        for part in parts {
+            value = value.get(part)?;
+        }
+        Some(value)
+    }
+
+    /// The text at `path`, with `{name}` placeholders filled from `args`.
+    pub fn text(&self, path: &str, args: &[(&str, &str)]) -> Result<String> {
+        let text = self
+            .value(path)
+            .and_then(toml::Value::as_str)
+            .ok_or_else(|| missing(path))?;
+        Ok(args.iter().fold(text.to_string(), |t, (name, value)| {
+            t.replace(&format!("{{{name}}}"), value)
+        }))
+    }
+
+    /// The text at `path` if the catalogue has one.
+    pub fn optional(&self, path: &str) -> Option<&str> {
+        self.value(path).and_then(toml::Value::as_str)
+    }
+
+    /// The list of texts at `path`.
+    pub fn list(&self, path: &str) -> Result<Vec<String>> {
+        self.value(path)
+            .and_then(toml::Value::as_array)
+            .and_then(|a| a.iter().map(|v| v.as_str().map(str::to_string)).collect())
+            .ok_or_else(|| missing(path))
+    }
+
+    /// Every text of the section `name` by key (for the templates).
+    pub fn section(&self, name: &str) -> Result<BTreeMap<String, String>> {
+        self.table
+            .get(name)
+            .and_then(toml::Value::as_table)
+            .map(|t| {
+                t.iter()
+                    .filter_map(|(k, v)| Some((k.clone(), v.as_str()?.to_string())))
+                    .collect()
+            })
+            .ok_or_else(|| missing(name))
+    }
+
+    /// Every dotted path of a text or list in the catalogue.
+    #[cfg(test)]
+    fn paths(&self) -> Vec<String> {
+        fn walk(prefix: &str, table: &toml::Table, out: &mut Vec<String>) {
+            for (k, v) in table {
+                let path = if prefix.is_empty() {
+                    k.clone()
+                } else {
+                    format!("{prefix}.{k}")
+                };
+                match v.as_table() {
+                    Some(t) => walk(&path, t, out),
+                    None => out.push(path),
+                }
+            }
+        }
+        let mut out = Vec::new();
+        walk("", &self.table, &mut out);
+        out
+    }
+}
+
+fn missing(path: &str) -> Error {
+    Error::Template {
+        name: "templates/lang".to_string(),
+        reason: format!("no text `{path}` in the catalogue"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_catalogue_parses_and_has_every_key_of_the_english_one() {
+        let english = Lang::En.catalogue().unwrap().paths();
+        assert!(english.len() > 40, "{}", english.len());
+        for lang in Lang::ALL {
+            let mut paths = lang.catalogue().unwrap().paths();
+            paths.sort();
+            let mut want = english.clone();
+            want.sort();
+            assert_eq!(paths, want, "{}", lang.code());
+        }
+    }
+
+    /// Every English phrase of `[sketch]` is on an English worksheet sketch (so that the
+    /// catalogue follows the drawing code), and none is left on an Italian one.
+    #[test]
+    fn sketch_phrases_are_drawn_in_english_and_all_translated() {
+        use crate::models::{with_model, Model};
+        use crate::worksheet::exercise::Exercise;
+        let english: Vec<String> = Model::defaults()
+            .iter()
+            .map(|m| with_model!(m, p => p.sketch_givens()))
+            .collect();
+        let phrases = Lang::En.catalogue().unwrap().section("sketch").unwrap();
+        for (key, phrase) in &phrases {
+            assert!(
+                english.iter().any(|svg| svg.contains(phrase.as_str())),
+                "{key}: {phrase:?} is on no sketch"
+            );
+        }
+        for svg in &english {
+            let italian = Lang::It.localize_svg(svg).unwrap();
+            for (key, phrase) in &phrases {
+                assert!(!italian.contains(phrase.as_str()), "{key} left in English");
+            }
+        }
+    }
+
+    #[test]
+    fn placeholders_are_filled_and_decimals_follow_the_language() {
+        let it = Lang::It.catalogue().unwrap();
+        assert_eq!(
+            it.text("sheet.students_seed", &[("count", "3"), ("seed", "7")])
+                .unwrap(),
+            "3 studenti, seme 7."
+        );
+        assert!(it.text("sheet.nothing", &[]).is_err());
+        assert_eq!(Lang::It.number("0.06461 s"), "0,06461 s");
+        assert_eq!(Lang::It.number("5.3 × 10⁻⁴"), "5,3 × 10⁻⁴");
+        assert_eq!(Lang::En.number("0.5"), "0.5");
+        assert_eq!(
+            Lang::It.tex(r"0.1692 \times 0.3820 = 0.06461\,\mathrm{s}"),
+            r"0{,}1692 \times 0{,}3820 = 0{,}06461\,\mathrm{s}"
+        );
+        let svg = "<svg><style>a { opacity: 0.5 }</style><text x=\"1.5\">slot in the table, \
+                   m = 66.1 g</text></svg>";
+        assert_eq!(
+            Lang::It.localize_svg(svg).unwrap(),
+            "<svg><style>a { opacity: 0.5 }</style><text x=\"1.5\">fessura nel tavolo, m = \
+             66,1 g</text></svg>"
+        );
+        // Not a decimal point: an ellipsis, a sentence end.
+        assert_eq!(Lang::It.number("a. 1... 2"), "a. 1... 2");
+    }
+}
