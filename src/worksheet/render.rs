@@ -200,7 +200,12 @@ impl Words {
     }
 
     fn math(&self, tex: &str) -> Math {
-        math(&self.lang.tex(tex))
+        let tex = self.lang.tex(tex);
+        Math {
+            // `0{,}25` comes out as two numbers around a comma operator: one number again.
+            mathml: mathml(&tex).replace("</mn><mrow><mo>,</mo></mrow><mn>", ","),
+            tex,
+        }
     }
 
     fn number(&self, text: &str) -> String {
@@ -268,7 +273,9 @@ fn forces_figure(s: &Student, words: &Words) -> Result<Option<String>> {
     match (&s.figure, words.lang) {
         (None, _) => Ok(None),
         (Some(svg), Lang::En) => Ok(Some(svg.clone())),
-        (Some(_), lang) => Ok(Some(figure::force_figure(&s.case, lang)?.0)),
+        (Some(_), lang) => Ok(Some(
+            lang.localize_svg(&figure::force_figure(&s.case, lang)?.0)?,
+        )),
     }
 }
 
@@ -355,7 +362,10 @@ fn key_ctx(s: &Student, words: &Words) -> Result<KeyCtx> {
     Ok(KeyCtx {
         number: s.number,
         params: params_ctx(&s.case, words),
-        figure_svg: s.key_figure.clone().unwrap_or_default(),
+        figure_svg: match &s.key_figure {
+            Some(svg) => words.lang.localize_svg(svg)?,
+            None => String::new(),
+        },
         figure_file: s
             .key_figure
             .as_ref()
@@ -437,7 +447,7 @@ pub fn render(w: &Worksheets, formats: &[Format], lang: Lang) -> Result<Vec<OutF
             files.push(OutFile::new(&name, page(&tera, &name, &ctx)?));
         }
         if *format == Format::Md {
-            for (s, sheet) in w.students.iter().zip(&sheets) {
+            for ((s, sheet), key) in w.students.iter().zip(&sheets).zip(&keys) {
                 files.push(OutFile::new(
                     sketch_file(s.number),
                     sheet.sketch_svg.as_str(),
@@ -448,8 +458,11 @@ pub fn render(w: &Worksheets, formats: &[Format], lang: Lang) -> Result<Vec<OutF
                         sheet.figure_svg.as_str(),
                     ));
                 }
-                if let Some(svg) = &s.key_figure {
-                    files.push(OutFile::new(key_figure_file(s.number), svg.as_str()));
+                if s.key_figure.is_some() {
+                    files.push(OutFile::new(
+                        key_figure_file(s.number),
+                        key.figure_svg.as_str(),
+                    ));
                 }
             }
         }
