@@ -27,6 +27,11 @@ pub trait Exercise: Present {
     /// The apparatus at rest at t = 0 labelled with the given values only (SVG): the derived
     /// ones are the student's to work out.
     fn sketch_givens(&self) -> String;
+    /// The option of the sheet's motion question that names the closed-form regime `regime`
+    /// (the regime itself, unless the sheet's rules group regimes).
+    fn regime_option(regime: &'static str) -> &'static str {
+        regime
+    }
     /// A candidate parameter set aimed at `regime`, every value rounded as typed.
     fn draw(regime: Regime, rng: &mut Draws) -> Self;
     /// The values the regime's inequalities compare, as (LaTeX symbol, value); `value` gives

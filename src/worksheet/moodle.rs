@@ -150,7 +150,7 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
                 .iter()
                 .map(|&(r, condition)| Choice {
                     html: format!("\\({}\\)", tera::escape_html(condition)),
-                    right: r.id() == regime,
+                    right: r.id() == question::regime_option(w.model, regime),
                 })
                 .collect();
         }

@@ -111,3 +111,17 @@ pub fn regime_rules(model: Model) -> &'static [(Regime, &'static str)] {
     }
     with_model!(&model, p => of(p))
 }
+
+/// The option of the motion question that names the closed-form regime `regime` of `model`.
+pub fn regime_option(model: Model, regime: &str) -> &'static str {
+    fn of<M: Exercise>(_: &M, regime: &str) -> Option<&'static str> {
+        // The model's own id, so that the option is `'static`.
+        let id = M::regimes()
+            .iter()
+            .chain(M::regime_rules().iter().map(|r| &r.0))
+            .map(|r| r.id())
+            .find(|id| *id == regime)?;
+        Some(M::regime_option(id))
+    }
+    with_model!(&model, p => of(p, regime)).unwrap_or("")
+}

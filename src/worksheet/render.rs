@@ -161,6 +161,7 @@ fn with_unit(value: String, unit: &str) -> String {
 /// The words of one language for one model's sheets.
 pub(crate) struct Words {
     lang: Lang,
+    model_of: Model,
     catalogue: &'static Catalogue,
     /// The model's section of the catalogue (`pulled-mass`, `woodpecker`).
     model: &'static str,
@@ -170,6 +171,7 @@ impl Words {
     pub(crate) fn new(lang: Lang, model: Model) -> Result<Self> {
         Ok(Self {
             lang,
+            model_of: model,
             catalogue: lang.catalogue()?,
             model: model.id(),
         })
@@ -191,12 +193,17 @@ impl Words {
             .map_or_else(|| regime_words(id).to_string(), str::to_string)
     }
 
-    /// A regime's rule: its LaTeX, or the catalogue's words where the rule is words.
-    fn rule(&self, id: &str, condition: &str) -> Math {
-        match self.catalogue.optional(&format!("rules.{id}")) {
-            Some(words) => math(&format!(r"\text{{{words}}}")),
-            None => self.math(condition),
+    /// A rule's LaTeX with its connectives (`\text{ and }`, `\text{ or }`) in this language.
+    fn rule(&self, condition: &str) -> Result<Math> {
+        let mut tex = condition.to_string();
+        for word in ["and", "or"] {
+            let here = self.catalogue.text(&format!("sheet.{word}"), &[])?;
+            tex = tex.replace(
+                &format!(r"\text{{ {word} }}"),
+                &format!(r"\text{{ {here} }}"),
+            );
         }
+        Ok(self.math(&tex))
     }
 
     fn math(&self, tex: &str) -> Math {
@@ -237,11 +244,13 @@ fn questions_ctx(model: Model, questions: &[&Question], words: &Words) -> Result
                 rules: match q.kind {
                     Kind::Regime(_) => question::regime_rules(model)
                         .iter()
-                        .map(|&(regime, condition)| RuleCtx {
-                            regime: words.regime(regime.id()),
-                            condition: words.rule(regime.id(), condition),
+                        .map(|&(regime, condition)| {
+                            Ok(RuleCtx {
+                                regime: words.regime(regime.id()),
+                                condition: words.rule(condition)?,
+                            })
                         })
-                        .collect(),
+                        .collect::<Result<_>>()?,
                     _ => Vec::new(),
                 },
             })
@@ -345,7 +354,12 @@ fn answer_ctx(
         prompt: words.prompt(q)?,
         working,
         worked,
-        result: number(&a.value, ANSWER_DIGITS, q.unit(), words),
+        result: match (&a.value, q.kind) {
+            (Value::Text(regime), Kind::Regime(_)) => {
+                words.regime(question::regime_option(words.model_of, regime))
+            }
+            (value, _) => number(value, ANSWER_DIGITS, q.unit(), words),
+        },
         numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit(), words),
         rel_error: a
             .rel_error
