@@ -61,6 +61,13 @@ pub enum Command {
         #[command(subcommand)]
         model: ModelCommand<SweepArgs>,
     },
+    /// Put your own formula against the exact integration: at the given parameters and on a
+    /// seeded sample of the regimes where the quantity is measured (agreement, counterexamples,
+    /// where it fails by regime).
+    Check {
+        #[command(subcommand)]
+        model: ModelCommand<CheckArgs>,
+    },
     /// Fit the harmonic woodpecker to the tracked positions of a real toy (Figs. 26–27): μd,
     /// z0, d0 (optionally μs, k) by Levenberg–Marquardt, with standard errors, residuals and
     /// the overlay figure (fit.json, fit.csv, fit.svg in --out).
@@ -178,6 +185,25 @@ pub struct SweepArgs {
     /// Output folder (sweep.csv, sweep.svg).
     #[arg(long, default_value = "sweep")]
     pub out: PathBuf,
+}
+
+/// The formula and sample of `stickslip check`.
+#[derive(Debug, Args)]
+pub struct CheckArgs {
+    /// The formula, plain (`g*T*phi^3*Gamma`) or LaTeX (`g T \varphi^3 \Gamma`), in the
+    /// model's parameters and derived symbols (an unknown symbol lists the known ones).
+    #[arg(value_name = "FORMULA", allow_hyphen_values = true)]
+    pub formula: String,
+    /// The measured quantity it gives: a §7 closed-form key (t_slip, t_stick, v_max, v_avg,
+    /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker).
+    #[arg(long, value_name = "NAME")]
+    pub quantity: String,
+    /// Parameter sets drawn (1 to 100000).
+    #[arg(long, default_value_t = crate::check::DEFAULT_SAMPLES, allow_negative_numbers = true)]
+    pub samples: usize,
+    /// Seed of the draw.
+    #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
+    pub seed: u64,
 }
 
 /// Options of `stickslip bench`.

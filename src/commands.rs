@@ -6,8 +6,8 @@ use std::io::Write;
 use anyhow::{Context, Result};
 
 use crate::cli::{
-    BenchArgs, Cli, Command, CommonArgs, FitArgs, HandoutArgs, ModelArgs, ModelCommand, NoArgs,
-    ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
+    BenchArgs, CheckArgs, Cli, Command, CommonArgs, FitArgs, HandoutArgs, ModelArgs, ModelCommand,
+    NoArgs, ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
 };
 use crate::error::Error;
 use crate::export::CsvDialect;
@@ -30,6 +30,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Bench(args) => bench(&args),
         Command::Handout(args) => handout(&args),
         Command::Sweep { model } => sweep(&model),
+        Command::Check { model } => check(&model),
         Command::Fit(args) => fit(&args),
         Command::Worksheet(args) => worksheet(&args),
     }
@@ -269,6 +270,29 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
     let files = dialect(common).apply(crate::sweep::render(&result)?);
     report::write_all(&grid.out, &files)?;
     print_stdout(&crate::sweep::summary_line(&result, &grid.out))
+}
+
+/// `stickslip check MODEL FORMULA --quantity NAME`: the report as text or JSON; nothing is
+/// written.
+fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
+    let common = &model.args.common;
+    reject_flag("check", "--csv", common.csv.is_some())?;
+    reject_flag("check", "--csv-dialect", common.csv_dialect.is_some())?;
+    reject_flag("check", "--periods", common.periods.is_some())?;
+    let (case, _) = model_params(&model.args)?;
+    let args = &model.extra;
+    let report = crate::check::run(&crate::check::Request {
+        case,
+        formula: args.formula.clone(),
+        quantity: args.quantity.clone(),
+        samples: args.samples,
+        seed: args.seed,
+    })?;
+    print_stdout(&if common.json {
+        serde_json::to_string_pretty(&report)? + "\n"
+    } else {
+        crate::check::text(&report)
+    })
 }
 
 /// The CSV dialect asked for.

@@ -47,6 +47,9 @@ pub enum Error {
         excerpt(reason, REASON_CHARS)
     )]
     Template { name: String, reason: String },
+    /// A formula of `stickslip check` that cannot be read or evaluated.
+    #[error("formula {formula}: {}", excerpt(reason, REASON_CHARS))]
+    Formula { formula: String, reason: String },
     /// An output file or folder that cannot be written.
     #[error(
         "cannot write {}: {}",
@@ -230,7 +233,8 @@ impl Error {
             | Self::TrackedData { .. }
             | Self::Output { .. }
             | Self::OutOfRange { .. }
-            | Self::NoChromium { .. } => 2,
+            | Self::NoChromium { .. }
+            | Self::Formula { .. } => 2,
             Self::Stalled { .. }
             | Self::InvalidLaw(_)
             | Self::Figure { .. }

@@ -1,0 +1,122 @@
+//! `stickslip check` as a user runs it: the README's examples (the paper's Γ with coefficient 1
+//! and 2, a student's t_ST with a sign error, a woodpecker formula in LaTeX), the JSON, and bad
+//! input refused in one line with exit 2.
+
+use assert_cmd::Command;
+use serde_json::Value;
+
+fn stickslip() -> Command {
+    Command::cargo_bin("stickslip").unwrap()
+}
+
+fn check_json(args: &[&str]) -> Value {
+    let out = stickslip()
+        .arg("check")
+        .args(args)
+        .args(["--samples", "300", "--json"])
+        .assert()
+        .success();
+    serde_json::from_slice(&out.get_output().stdout).unwrap()
+}
+
+#[test]
+fn the_papers_gamma_agrees_and_twice_it_does_not() {
+    let right = check_json(&[
+        "pulled-mass",
+        r"g T \varphi^3 \Gamma",
+        "--quantity",
+        "v_avg",
+    ]);
+    assert_eq!(right["agrees"], true, "{right}");
+    assert!(right["compared"].as_u64().unwrap() > 50);
+    assert!(right["max_rel_error"].as_f64().unwrap() < 1e-9);
+    let wrong = check_json(&["pulled-mass", "2*g*T*phi^3*Gamma", "--quantity", "v_avg"]);
+    assert_eq!(wrong["agrees"], false);
+    assert_eq!(wrong["disagree"], wrong["compared"]);
+    let worst = wrong["worst"].as_array().unwrap();
+    assert_eq!(worst.len(), 5);
+    let w = &worst[0];
+    let ratio = w["formula"].as_f64().unwrap() / w["numeric"].as_f64().unwrap();
+    assert!((ratio - 2.0).abs() < 1e-9, "{w}");
+    assert!(w["params"]["mu_s"].is_number());
+    // Where the quantity is not measured the sets are counted, and every regime is listed.
+    let rows = wrong["by_regime"].as_array().unwrap();
+    assert_eq!(rows.len(), 3);
+    let counted = wrong["compared"].as_u64().unwrap()
+        + wrong["undefined"].as_u64().unwrap()
+        + wrong["not_measured"].as_u64().unwrap();
+    assert_eq!(counted, 300);
+}
+
+#[test]
+fn a_students_sign_error_is_shown_with_counterexamples_in_words() {
+    let out = stickslip()
+        .args([
+            "check",
+            "pulled-mass",
+            r"\frac{T}{2}\left(1 - \varphi\Theta\right)",
+        ])
+        .args(["--quantity", "t_stick", "--samples", "200"])
+        .assert()
+        .success();
+    let text = String::from_utf8(out.get_output().stdout.clone()).unwrap();
+    for want in [
+        "DISAGREES",
+        "worst sets",
+        "read as:",
+        "one slip and one stick per period",
+    ] {
+        assert!(text.contains(want), "{want}: {text}");
+    }
+}
+
+#[test]
+fn a_woodpecker_formula_in_latex_agrees() {
+    let r = check_json(&[
+        "woodpecker",
+        r"t_0^{(I)} - \Delta^{(I)}",
+        "--quantity",
+        "t_slip_1",
+    ]);
+    assert_eq!(r["agrees"], true, "{r}");
+    assert_eq!(r["given"]["agrees"], true);
+}
+
+#[test]
+fn bad_input_is_refused_in_one_line() {
+    for (args, want) in [
+        (
+            vec!["pulled-mass", "g*T*xi", "--quantity", "v_avg"],
+            "unknown symbol xi",
+        ),
+        (
+            vec!["pulled-mass", "g*(T", "--quantity", "v_avg"],
+            "cannot be read",
+        ),
+        (
+            vec!["pulled-mass", "g*T", "--quantity", "speed"],
+            "--quantity",
+        ),
+        (
+            vec![
+                "pulled-mass",
+                "g*T",
+                "--quantity",
+                "v_avg",
+                "--samples",
+                "0",
+            ],
+            "samples",
+        ),
+        (
+            vec!["pulled-mass", r"\frac{g}{T", "--quantity", "v_avg"],
+            "not closed",
+        ),
+    ] {
+        let out = stickslip().arg("check").args(&args).assert().code(2);
+        let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
+        assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+        assert!(stderr.contains(want), "{args:?}: {stderr}");
+        assert!(out.get_output().stdout.is_empty());
+    }
+}
