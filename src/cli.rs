@@ -192,18 +192,30 @@ pub struct SweepArgs {
 pub struct CheckArgs {
     /// The formula, plain (`g*T*phi^3*Gamma`) or LaTeX (`g T \varphi^3 \Gamma`), in the
     /// model's parameters and derived symbols (an unknown symbol lists the known ones).
-    #[arg(value_name = "FORMULA", allow_hyphen_values = true)]
-    pub formula: String,
+    #[arg(
+        value_name = "FORMULA",
+        allow_hyphen_values = true,
+        required_unless_present = "formulas",
+        requires = "quantity"
+    )]
+    pub formula: Option<String>,
     /// The measured quantity it gives: a §7 closed-form key (t_slip, t_stick, v_max, v_avg,
-    /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker).
+    /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker), or `sticks` for a
+    /// condition.
     #[arg(long, value_name = "NAME")]
-    pub quantity: String,
+    pub quantity: Option<String>,
+    /// Several formulas from a TOML file: `[[check]]` tables with `formula` and `quantity`.
+    #[arg(long, value_name = "FILE", conflicts_with_all = ["formula", "quantity"])]
+    pub formulas: Option<PathBuf>,
     /// Parameter sets drawn (1 to 100000).
     #[arg(long, default_value_t = crate::check::DEFAULT_SAMPLES, allow_negative_numbers = true)]
     pub samples: usize,
     /// Seed of the draw.
     #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     pub seed: u64,
+    /// Also write the report as a page (check.html, check.md) and check.json to this folder.
+    #[arg(long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
 }
 
 /// Options of `stickslip bench`.

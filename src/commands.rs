@@ -272,8 +272,8 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
     print_stdout(&crate::sweep::summary_line(&result, &grid.out))
 }
 
-/// `stickslip check MODEL FORMULA --quantity NAME`: the report as text or JSON; nothing is
-/// written.
+/// `stickslip check MODEL FORMULA --quantity NAME` (or `--formulas FILE`): each report as text
+/// or JSON, and with `--out` as a page.
 fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     let common = &model.args.common;
     reject_flag("check", "--csv", common.csv.is_some())?;
@@ -281,17 +281,50 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     reject_flag("check", "--periods", common.periods.is_some())?;
     let (case, _) = model_params(&model.args)?;
     let args = &model.extra;
-    let report = crate::check::run(&crate::check::Request {
-        case,
-        formula: args.formula.clone(),
-        quantity: args.quantity.clone(),
-        samples: args.samples,
-        seed: args.seed,
-    })?;
-    print_stdout(&if common.json {
-        serde_json::to_string_pretty(&report)? + "\n"
-    } else {
-        crate::check::text(&report)
+    let pairs = match (&args.formulas, &args.formula, &args.quantity) {
+        (Some(file), _, _) => crate::check::read_formulas(file)?,
+        (None, Some(formula), Some(quantity)) => vec![(formula.clone(), quantity.clone())],
+        _ => anyhow::bail!("give a FORMULA and --quantity, or --formulas FILE"),
+    };
+    let reports = pairs
+        .into_iter()
+        .map(|(formula, quantity)| {
+            crate::check::run(&crate::check::Request {
+                case,
+                formula,
+                quantity,
+                samples: args.samples,
+                seed: args.seed,
+            })
+        })
+        .collect::<std::result::Result<Vec<_>, _>>()?;
+    if let Some(out) = &args.out {
+        let mut files = Vec::new();
+        for (i, r) in reports.iter().enumerate() {
+            let rendered = crate::check::render(r)?;
+            if reports.len() == 1 {
+                files.extend(rendered);
+            } else {
+                files.extend(rendered.into_iter().map(|f| {
+                    let path = f.path.with_file_name(format!("check-{}", i + 1));
+                    let ext = f.path.extension().unwrap_or_default().to_owned();
+                    report::OutFile {
+                        path: path.with_extension(ext),
+                        ..f
+                    }
+                }));
+            }
+        }
+        report::write_all(out, &files)?;
+    }
+    print_stdout(&match (common.json, reports.as_slice()) {
+        (true, [one]) => serde_json::to_string_pretty(one)? + "\n",
+        (true, all) => serde_json::to_string_pretty(all)? + "\n",
+        (false, all) => all
+            .iter()
+            .map(crate::check::text)
+            .collect::<Vec<_>>()
+            .join("\n"),
     })
 }
 

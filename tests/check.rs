@@ -120,3 +120,40 @@ fn bad_input_is_refused_in_one_line() {
         assert!(out.get_output().stdout.is_empty());
     }
 }
+
+/// Several formulas from a file, each with its page: the README's examples in one command.
+#[test]
+fn a_formulas_file_checks_each_and_writes_a_page_each() {
+    let tmp = tempfile::tempdir().unwrap();
+    let out = stickslip()
+        .args([
+            "check",
+            "pulled-mass",
+            "--formulas",
+            "scenarios/checks/paper-formulas.toml",
+        ])
+        .args(["--samples", "150", "--json", "--out"])
+        .arg(tmp.path())
+        .assert()
+        .success();
+    let all: Value = serde_json::from_slice(&out.get_output().stdout).unwrap();
+    let verdicts: Vec<bool> = all
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r["agrees"].as_bool().unwrap())
+        .collect();
+    assert_eq!(verdicts, [true, false, false, false]);
+    // (20) as "sticks at all" fails exactly in the late-stick band.
+    for row in all[3]["by_regime"].as_array().unwrap() {
+        let late = row["regime"] == "slip_stick_late";
+        assert_eq!(row["disagree"] == row["compared"], late, "{row}");
+    }
+    for n in 1..=4 {
+        let html = std::fs::read_to_string(tmp.path().join(format!("check-{n}.html"))).unwrap();
+        assert!(html.contains("<math") && !html.contains("merror") && html.contains("Verdict"));
+        assert!(tmp.path().join(format!("check-{n}.md")).exists());
+    }
+    let md = std::fs::read_to_string(tmp.path().join("check-2.md")).unwrap();
+    assert!(md.contains("DISAGREES") && md.contains("| μs |"), "{md}");
+}

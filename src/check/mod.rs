@@ -10,6 +10,9 @@
 //! ```
 
 pub mod latex;
+mod render;
+
+pub use render::{render, text};
 
 use exmex::prelude::*;
 use rayon::prelude::*;
@@ -19,7 +22,7 @@ use crate::draws::Draws;
 use crate::error::{excerpt, Error, Result};
 use crate::models::{with_model, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
-use crate::results::{rel_diff, CheckValue};
+use crate::results::{rel_diff, CheckValue, Checked};
 use crate::worksheet::exercise::Exercise;
 use crate::worksheet::{question, sample};
 
@@ -74,6 +77,9 @@ pub struct RegimeRow {
 pub struct Report {
     pub model: &'static str,
     pub quantity: String,
+    /// The quantity's symbol and words, for the page.
+    #[serde(skip)]
+    pub named: Named,
     pub formula: String,
     /// The formula in the evaluator's syntax.
     pub expression: String,
@@ -281,13 +287,31 @@ fn measured(case: &Model, quantity: &str) -> Result<(Option<f64>, f64)> {
         .unwrap_or((None, crate::results::TOLERANCE)))
 }
 
+/// How a quantity is written: its LaTeX symbol and its words.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Named {
+    pub id: String,
+    pub tex: String,
+    pub words: String,
+}
+
 /// The measurable quantities of the checks on `case`.
-fn measurable(case: &Model) -> Result<Vec<String>> {
+fn measurable(case: &Model) -> Result<Vec<Named>> {
     let (checks, _) = with_model!(case, p => p.checks_and_linear_run(DEFAULT_PERIODS, false)?);
     Ok(checks
         .iter()
         .filter(|c| matches!(c.numeric, CheckValue::Number(_)))
-        .map(|c| c.quantity.id().into_owned())
+        .map(|c| match c.quantity {
+            Checked::Key(k) => Named {
+                id: k.id().to_string(),
+                tex: k.quantity().tex.to_string(),
+                words: k.quantity().words.to_string(),
+            },
+            other => Named {
+                id: other.id().into_owned(),
+                ..Named::default()
+            },
+        })
         .collect())
 }
 
@@ -304,6 +328,36 @@ fn sample(formula: &Formula, case: Model, quantity: &str) -> Result<Sample> {
         tolerance,
         agrees: rel_error.map(|e| e <= tolerance),
     })
+}
+
+/// The (formula, quantity) pairs of a `--formulas` file: `[[check]]` tables with the keys
+/// `formula` and `quantity`.
+pub fn read_formulas(path: &std::path::Path) -> Result<Vec<(String, String)>> {
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct File {
+        check: Vec<Entry>,
+    }
+    #[derive(serde::Deserialize)]
+    #[serde(deny_unknown_fields)]
+    struct Entry {
+        formula: String,
+        quantity: String,
+    }
+    let scenario_error = |reason: String| Error::Scenario {
+        path: path.display().to_string(),
+        reason,
+    };
+    let text = std::fs::read_to_string(path).map_err(|e| scenario_error(e.to_string()))?;
+    let file: File = toml::from_str(&text).map_err(|e| scenario_error(e.message().to_string()))?;
+    if file.check.is_empty() {
+        return Err(scenario_error("no [[check]] table".to_string()));
+    }
+    Ok(file
+        .check
+        .into_iter()
+        .map(|e| (e.formula, e.quantity))
+        .collect())
 }
 
 /// Runs the check: the given parameters, then `samples` seeded sets drawn in turn from every
@@ -324,28 +378,39 @@ pub fn run(req: &Request) -> Result<Report> {
         .map(|i| sample::draw(req.case, regimes[i % regimes.len()], &mut rng))
         .collect();
     let mut names = measurable(&req.case)?;
-    names.push(STICKS.to_string());
+    names.push(Named {
+        id: STICKS.to_string(),
+        tex: r"\text{sticks}".to_string(),
+        words: "whether the motion has a stick (a condition: 1 or 0)".to_string(),
+    });
     for case in cases.iter().take(regimes.len() * 4) {
         names.extend(measurable(case)?);
     }
-    if !names.contains(&req.quantity) {
-        names.sort();
-        names.dedup();
+    let Some(named) = names.iter().find(|n| n.id == req.quantity).cloned() else {
+        let mut ids: Vec<String> = names.into_iter().map(|n| n.id).collect();
+        ids.sort();
+        ids.dedup();
         return Err(Error::InvalidChoice {
             flag: "--quantity",
             value: req.quantity.clone(),
-            valid: names.join(", "),
+            valid: ids.join(", "),
         });
-    }
+    };
     let given = sample(&formula, req.case, &req.quantity)?;
     let samples = cases
         .into_par_iter()
         .map(|case| sample(&formula, case, &req.quantity))
         .collect::<Result<Vec<_>>>()?;
-    Ok(summarise(req, formula.expression, given, samples))
+    Ok(summarise(req, formula.expression, named, given, samples))
 }
 
-fn summarise(req: &Request, expression: String, given: Sample, samples: Vec<Sample>) -> Report {
+fn summarise(
+    req: &Request,
+    expression: String,
+    named: Named,
+    given: Sample,
+    samples: Vec<Sample>,
+) -> Report {
     let n = samples.len();
     let undefined = samples.iter().filter(|s| s.formula.is_none()).count();
     let not_measured = samples
@@ -389,6 +454,7 @@ fn summarise(req: &Request, expression: String, given: Sample, samples: Vec<Samp
     Report {
         model: req.case.id(),
         quantity: req.quantity.clone(),
+        named,
         formula: req.formula.clone(),
         expression,
         seed: req.seed,
@@ -404,92 +470,6 @@ fn summarise(req: &Request, expression: String, given: Sample, samples: Vec<Samp
         worst,
         by_regime,
     }
-}
-
-/// The report for the terminal.
-pub fn text(r: &Report) -> String {
-    use crate::output::format::people;
-    use std::fmt::Write as _;
-    let rel = |e: Option<f64>| e.map_or("—".to_string(), |e| people(Some(e), 2));
-    let condition = r.quantity == STICKS;
-    let value = |v: Option<f64>, digits: usize| match (condition, v) {
-        (true, Some(v)) => (if v > 0.5 { "yes" } else { "no" }).to_string(),
-        (_, v) => people(v, digits),
-    };
-    let mut o = String::new();
-    let _ = writeln!(
-        o,
-        "stickslip check {}: {} = {}",
-        r.model,
-        r.quantity,
-        excerpt(&r.formula, 200)
-    );
-    if r.expression != r.formula {
-        let _ = writeln!(o, "read as:  {}", excerpt(&r.expression, 200));
-    }
-    let g = &r.given;
-    let _ = writeln!(
-        o,
-        "given parameters ({}): formula {}, exact integration {}, relative error {} (tolerance {})",
-        crate::report::context::regime_words(g.regime),
-        value(g.formula, 10),
-        value(g.numeric, 10),
-        rel(g.rel_error),
-        people(Some(g.tolerance), 1),
-    );
-    let verdict = if r.compared == 0 {
-        "NOT COMPARED: the sample never measures the quantity where the formula is defined"
-    } else if r.agrees {
-        "AGREES"
-    } else {
-        "DISAGREES"
-    };
-    let _ = writeln!(
-        o,
-        "sample (seed {}): {} sets; compared {}, formula undefined {}, quantity not measured {}",
-        r.seed, r.samples, r.compared, r.undefined, r.not_measured
-    );
-    let _ = writeln!(
-        o,
-        "{verdict}: {} of {} compared sets disagree; relative error max {}, median {}",
-        r.disagree,
-        r.compared,
-        rel(r.max_rel_error),
-        rel(r.median_rel_error)
-    );
-    let _ = writeln!(
-        o,
-        "\n{:>9} {:>9} {:>10}  regime",
-        "compared", "disagree", "max error"
-    );
-    for row in &r.by_regime {
-        let _ = writeln!(
-            o,
-            "{:>9} {:>9} {:>10}  {}",
-            row.compared,
-            row.disagree,
-            rel(row.max_rel_error),
-            crate::report::context::regime_words(row.regime)
-        );
-    }
-    if !r.agrees && !r.worst.is_empty() {
-        let _ = writeln!(
-            o,
-            "\nworst sets (formula, exact integration, relative error; parameters):"
-        );
-        for s in &r.worst {
-            let params = serde_json::to_string(&s.params).unwrap_or_default();
-            let _ = writeln!(
-                o,
-                "  {} vs {}, {}: {}",
-                value(s.formula, 8),
-                value(s.numeric, 8),
-                rel(s.rel_error),
-                params
-            );
-        }
-    }
-    o
 }
 
 #[cfg(test)]
