@@ -45,7 +45,22 @@ fn verdict(r: &Report) -> &'static str {
 }
 
 fn summary(r: &Report) -> String {
-    let mut s = format!(
+    let mut s = String::new();
+    if !r.unmeasured_regimes.is_empty() {
+        let words: Vec<&str> = r
+            .unmeasured_regimes
+            .iter()
+            .map(|id| regime_words(id))
+            .collect();
+        let _ = write!(
+            s,
+            "The exact integration does not measure this quantity in: {}; the sets are drawn \
+             from the other regimes. ",
+            words.join("; ")
+        );
+    }
+    let _ = write!(
+        s,
         "Of {} sets, {} were compared ({} where the formula is undefined, {} where the exact \
          integration does not measure the quantity); {} disagree.",
         r.samples, r.compared, r.undefined, r.not_measured, r.disagree
