@@ -5,7 +5,7 @@
 //!
 //! LaTeX is recognised by a backslash, `{` or `}`; there a letter is a symbol of its own, so
 //! `gT` is `g*T` (implicit products get their `*`). Supported: `\frac`, `\sqrt`, `\left`/`\right`,
-//! `\cdot`, `\times`, powers `^2` and `^{…}`, subscripts, Greek letters, `\pi`, and the
+//! `\sqrt[n]{}`, `\cdot`, `\times`, powers `^2` and `^{…}`, subscripts, Greek letters, `\pi`, and the
 //! superscripts that belong to a name: `^{(I)}`, `^{(II)}`, `^{(+)}`, `^{(-)}`, `'`.
 
 use crate::error::{Error, Result};
@@ -237,7 +237,28 @@ impl<'a> Latex<'a> {
                 let (num, den) = (self.argument()?, self.argument()?);
                 Ok(Token::Group(format!("({num}/{den})")))
             }
-            "sqrt" => Ok(Token::Group(format!("sqrt({})", self.argument()?))),
+            "sqrt" => {
+                self.skip_spaces();
+                if self.peek() == Some('[') {
+                    // \sqrt[n]{x} = x^(1/n).
+                    self.at += 1;
+                    let start = self.at;
+                    while self.peek().is_some_and(|c| c != ']') {
+                        self.at += 1;
+                    }
+                    if self.peek().is_none() {
+                        return Err(self.error("a `[` is not closed"));
+                    }
+                    let index: String = self.chars[start..self.at].iter().collect();
+                    self.at += 1;
+                    let index = Latex::new(&index).expression()?;
+                    return Ok(Token::Group(format!(
+                        "({})^(1/({index}))",
+                        self.argument()?
+                    )));
+                }
+                Ok(Token::Group(format!("sqrt({})", self.argument()?)))
+            }
             "left" | "right" | "big" | "Big" | "bigl" | "bigr" | "Bigl" | "Bigr" => {
                 self.skip_spaces();
                 match self.peek() {
@@ -328,6 +349,7 @@ mod tests {
             (r"u_s^{(-)}\eta'", "u_s_minus*eta_prime"),
             (r"2\pi/\omega", "2*PI/omega"),
             (r"\mu_s \cdot 2", "mu_s*2"),
+            (r"\sqrt[3]{\varphi}", "((varphi))^(1/(3))"),
         ];
         for (latex, plain) in cases {
             assert_eq!(to_plain(latex).unwrap(), plain, "{latex}");
