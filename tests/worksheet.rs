@@ -478,7 +478,7 @@ fn bad_requests_exit_2_with_one_line_and_write_nothing() {
         ),
         (
             &["--model", "pulled-mass", "--questions", "t_slip,speed"],
-            &["--questions", "'speed'", "t_slip, t_stick, v_max"],
+            &["--questions", "'speed'", "t_slip, a_slip, t_stick, v_max"],
         ),
         (
             &[

@@ -229,20 +229,40 @@ mod tests {
         questions.iter().map(|q| q.key()).collect()
     }
 
+    /// Every regime a teacher can ask for gives a sheet of at least this many questions.
+    const MIN_QUESTIONS: usize = 4;
+
+    #[test]
+    fn every_regime_asks_enough_questions() {
+        for model in Model::defaults() {
+            for regime in question::regimes(model) {
+                let (_, qs) = resolve(&request(model, Some(regime.id()), None)).unwrap();
+                assert!(
+                    qs.len() >= MIN_QUESTIONS,
+                    "{} {}: {:?}",
+                    model.id(),
+                    regime.id(),
+                    keys(&qs)
+                );
+            }
+        }
+    }
+
     #[test]
     fn defaults_are_the_standard_regime_and_every_question_it_allows() {
         let (regime, qs) =
             resolve(&request(Model::PulledMass(Default::default()), None, None)).unwrap();
         assert_eq!(regime, Regime::new(PulledRegime::SlipStick.id()));
+        // Every question but the acceleration at the onset, asked beyond the same period.
         assert_eq!(
-            qs.len(),
+            qs.len() + 1,
             question::catalogue(Model::PulledMass(Default::default())).len()
         );
         let (regime, qs) =
             resolve(&request(Model::Woodpecker(Default::default()), None, None)).unwrap();
         assert_eq!(regime, Regime::new(OrbitRegime::DoubleSlipStick.id()));
         assert_eq!(
-            qs.len(),
+            qs.len() + 1,
             question::catalogue(Model::Woodpecker(Default::default())).len()
         );
         let late = request(
@@ -251,7 +271,10 @@ mod tests {
             None,
         );
         let (_, qs) = resolve(&late).unwrap();
-        assert_eq!(keys(&qs), ["t_slip", "v_max", "regime", "read_t_slip"]);
+        assert_eq!(
+            keys(&qs),
+            ["t_slip", "a_slip", "v_max", "regime", "read_t_slip"]
+        );
     }
 
     #[test]

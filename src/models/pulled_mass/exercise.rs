@@ -23,6 +23,13 @@ pub(crate) const REGIMES: &[Regime] = &[
     Regime::new(PulledRegime::ContinuousSlip.id()),
 ];
 const SAME_PERIOD: &[Regime] = &[Regime::new(PulledRegime::SlipStick.id())];
+/// Where the mass does not stick within the period: fewer closed forms apply, so the sheet
+/// also asks for the acceleration at the slip onset (which the same-period sheet leaves out to
+/// keep to one printed page).
+const BEYOND_THE_PERIOD: &[Regime] = &[
+    Regime::new(PulledRegime::SlipStickLate.id()),
+    Regime::new(PulledRegime::ContinuousSlip.id()),
+];
 
 /// The question of a pulled-mass quantity.
 const fn p(k: P) -> AnyKey {
@@ -34,6 +41,10 @@ pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(p(P::TSlip)),
         regimes: REGIMES,
+    },
+    Question {
+        kind: Kind::ClosedForm(p(P::ASlip)),
+        regimes: BEYOND_THE_PERIOD,
     },
     Question {
         kind: Kind::ClosedForm(p(P::TStick)),

@@ -26,6 +26,13 @@ pub(crate) const REGIMES: &[Regime] = &[
     Regime::new(OrbitRegime::ContinuousOrMultiperiod.id()),
 ];
 const STANDARD: &[Regime] = &[Regime::new(OrbitRegime::DoubleSlipStick.id())];
+/// Outside the paper's regime fewer closed forms apply: the sheet also asks for the
+/// acceleration at the phase-I slip onset (45).
+const BEYOND_THE_STANDARD: &[Regime] = &[
+    Regime::new(OrbitRegime::DoubleSlipNoHalt.id()),
+    Regime::new(OrbitRegime::SingleSlipStick.id()),
+    Regime::new(OrbitRegime::ContinuousOrMultiperiod.id()),
+];
 /// Where the first slip's speed peaks in the lobe after the zero of F_e, as (46)–(48) assume:
 /// not with a single speed maximum (u_B h_B ≤ 1, no deceleration there). μd,MIN^(I) (51) is
 /// left out there too: its threshold is then mostly 1/η, not (51), and the sets on which the
@@ -46,6 +53,10 @@ pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(w(W::TSlip1)),
         regimes: REGIMES,
+    },
+    Question {
+        kind: Kind::ClosedForm(w(W::ASlip1)),
+        regimes: BEYOND_THE_STANDARD,
     },
     Question {
         kind: Kind::ClosedForm(w(W::TStick1)),
