@@ -136,8 +136,7 @@ pub struct WorksheetArgs {
     /// chromium-browser or google-chrome on PATH).
     #[arg(long)]
     pub pdf: bool,
-    /// Language of the worksheets and answer keys (words and decimal sign); the Moodle bank
-    /// is in English.
+    /// Language of the worksheets, answer keys and question banks (words and decimal sign).
     #[arg(long, value_enum, default_value_t = Lang::En)]
     pub lang: Lang,
 }

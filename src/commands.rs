@@ -174,6 +174,7 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         &sheets,
         args.format.contains(&SheetFormat::Moodle),
         args.format.contains(&SheetFormat::Gift),
+        args.lang,
     )?);
     let written = report::write_all(&args.out, &files)?;
     print_stdout(&format!(

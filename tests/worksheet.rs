@@ -730,6 +730,26 @@ fn italian_sheets_have_italian_words_and_decimal_commas() {
     let t_slip = key["students"][0]["answers"][0]["value"].as_f64().unwrap();
     let shown = format!("{t_slip:.4}").replace('.', ",");
     assert!(answers.contains(&shown[..5]), "{shown}");
+    // The question bank in Italian: its words, decimal commas in the parameters it shows, the
+    // answers as Moodle reads them (a point), and the forces figure embedded.
+    let moodle = tempfile::tempdir().unwrap();
+    worksheet(
+        moodle.path(),
+        &[&args[..], &["--lang", "it", "--format", "moodle"]].concat(),
+    );
+    let xml = fs::read_to_string(moodle.path().join("worksheets.moodle.xml")).unwrap();
+    roxmltree::Document::parse(&xml).unwrap();
+    for word in [
+        "cifre significative",
+        "studente 001",
+        "integrazione esatta della legge linearizzata dà",
+        "forces.svg",
+    ] {
+        assert!(xml.contains(word), "{word}");
+    }
+    assert!(!xml.contains("significant figures"));
+    let t_slip_answer = format!("<text>{t_slip}</text>");
+    assert!(xml.contains(&t_slip_answer), "{t_slip_answer}");
     stickslip()
         .args(["worksheet", "--model", "pulled-mass", "--lang", "fr"])
         .assert()

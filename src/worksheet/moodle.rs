@@ -38,6 +38,8 @@ const TEMPLATES: &[(&str, &str)] = &[
     ("gift.txt", include_str!("../../templates/gift.txt.tera")),
 ];
 
+/// The file name of the forces figure embedded in its question.
+const FIGURE_FILE: &str = "forces.svg";
 /// Significant figures a student is asked to give; the tolerance is one unit in the last.
 pub const ANSWER_FIGURES: i32 = 3;
 
@@ -97,14 +99,14 @@ fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
     with_model!(case, p => of(p))
 }
 
-fn params_html(case: &Model) -> String {
+fn params_html(case: &Model, words: &Words) -> String {
     let rows: String = parameters(case)
         .into_iter()
         .map(|(tex, value, unit)| {
             format!(
                 "<tr><th scope=\"row\">\\({}\\)</th><td>{}</td><td>{}</td></tr>",
                 tera::escape_html(tex),
-                moodle_number(value),
+                words.number(&moodle_number(value)),
                 tera::escape_html(unit)
             )
         })
@@ -113,31 +115,43 @@ fn params_html(case: &Model) -> String {
 }
 
 fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> Result<Variant> {
+    let c = words.catalogue;
     let intro = words.model_text("intro")?;
     let q = a.question;
+    let n = ANSWER_FIGURES.to_string();
     let figures = match (q.kind, q.unit()) {
         (Kind::Regime(_), _) => String::new(),
-        (_, "") => format!(" ({ANSWER_FIGURES} significant figures)"),
-        (_, unit) => format!(" in {unit} ({ANSWER_FIGURES} significant figures)"),
+        (_, "") => format!(" {}", c.text("moodle.figures", &[("n", &n)])?),
+        (_, unit) => format!(
+            " {}",
+            c.text("moodle.figures_in", &[("n", &n), ("unit", unit)])?
+        ),
     };
-    let image = if s.figure.is_some() && matches!(q.kind, Kind::ReadFigure(_)) {
-        "<p><img src=\"@@PLUGINFILE@@/v-t.svg\" alt=\"Speed v(t) of the linearized law, from \
-         which the answer is read\" width=\"640\"></p>"
-    } else {
-        ""
+    let image = match (&s.figure, q.kind) {
+        (Some(_), Kind::ReadFigure(_)) => format!(
+            "<p><img src=\"@@PLUGINFILE@@/{FIGURE_FILE}\" alt=\"{}\" width=\"640\"></p>",
+            tera::escape_html(&c.text("moodle.figure_alt", &[])?)
+        ),
+        _ => String::new(),
     };
     let html = format!(
         "<p>{}</p>{}<p>{}{}</p>{image}",
         tera::escape_html(&intro),
-        params_html(&s.case),
+        params_html(&s.case, words),
         tera::escape_html(&words.prompt(q)?),
         tera::escape_html(&figures),
     );
-    let name = format!("Q{} {} — student {:03}", i + 1, q.key(), s.number);
+    let name = format!(
+        "Q{} {} — {} {:03}",
+        i + 1,
+        q.key(),
+        c.text("sheet.student", &[])?,
+        s.number
+    );
     let mut v = Variant {
         name,
         html,
-        feedback: feedback(a),
+        feedback: feedback(a, words)?,
         answer: String::new(),
         tolerance: String::new(),
         unit: q.unit(),
@@ -148,11 +162,17 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
         (Value::Text(regime), Kind::Regime(_)) => {
             v.choices = question::regime_rules(w.model)
                 .iter()
-                .map(|&(r, condition)| Choice {
-                    html: format!("\\({}\\)", tera::escape_html(condition)),
-                    right: r.id() == question::regime_option(w.model, regime),
+                .map(|&(r, condition)| {
+                    Ok(Choice {
+                        html: format!(
+                            "{}: \\({}\\)",
+                            tera::escape_html(&words.regime(r.id())),
+                            tera::escape_html(&words.rule(condition)?.tex)
+                        ),
+                        right: r.id() == question::regime_option(w.model, regime),
+                    })
                 })
-                .collect();
+                .collect::<Result<_>>()?;
         }
         (Value::Number(x), kind) => {
             v.answer = moodle_number(*x);
@@ -162,8 +182,12 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
             };
             v.tolerance = moodle_number(tol);
             if let (Kind::ReadFigure(_), Some(svg)) = (kind, &s.figure) {
+                let svg = match words.lang {
+                    Lang::En => svg.clone(),
+                    lang => lang.localize_svg(&super::figure::force_figure(&s.case, lang)?.0)?,
+                };
                 let data = base64::engine::general_purpose::STANDARD.encode(svg);
-                v.file = Some(("v-t.svg".to_string(), data));
+                v.file = Some((FIGURE_FILE.to_string(), data));
             }
         }
         (Value::Text(t), _) => v.answer = t.clone(),
@@ -173,19 +197,22 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
 
 /// The worked step (formula = numbers = result, or the values the regime inequalities
 /// compare) and the exact integration that confirms it, in HTML.
-fn feedback(a: &Answer) -> String {
+fn feedback(a: &Answer, words: &Words) -> Result<String> {
     let unit = a.question.unit();
-    let confirm = match &a.numeric {
-        Value::Number(x) => format!(
-            "The exact integration of the linearized law gives {} {unit}.",
-            crate::output::format::sig(Some(*x), 10)
-        ),
-        Value::Text(t) => format!("The exact integration of the linearized law gives: {t}."),
+    let value = match &a.numeric {
+        Value::Number(x) => {
+            words.number(format!("{} {unit}", crate::output::format::sig(Some(*x), 10)).trim_end())
+        }
+        Value::Text(t) => words.regime(t),
     };
+    let confirm = words
+        .catalogue
+        .text("moodle.integration_gives", &[("value", &value)])?;
     let worked = match &a.step {
         Some(step) => format!(
-            "\\({}\\) (eq. {})",
-            tera::escape_html(&step.worked_tex()),
+            "\\({}\\) ({} {})",
+            tera::escape_html(&words.lang.tex(&step.worked_tex())),
+            tera::escape_html(&words.catalogue.text("moodle.eq", &[])?),
             tera::escape_html(step.equation)
         ),
         None => {
@@ -198,10 +225,10 @@ fn feedback(a: &Answer) -> String {
             format!("\\({}\\)", tera::escape_html(&compared))
         }
     };
-    format!(
+    Ok(format!(
         "<p>{worked}</p><p>{}</p>",
         tera::escape_html(confirm.trim_end())
-    )
+    ))
 }
 
 fn categories(w: &Worksheets, words: &Words) -> Result<Vec<Category>> {
@@ -231,10 +258,10 @@ fn categories(w: &Worksheets, words: &Words) -> Result<Vec<Category>> {
         .collect()
 }
 
-/// `worksheets.moodle.xml` and/or `worksheets.gift.txt` of the set.
-pub fn render(w: &Worksheets, xml: bool, gift: bool) -> Result<Vec<OutFile>> {
-    // The question bank is in English (its fixed texts are; see the issue note).
-    let words = Words::new(Lang::En, w.model)?;
+/// `worksheets.moodle.xml` and/or `worksheets.gift.txt` of the set, in the words of `lang`
+/// (answers and tolerances keep `.`: Moodle reads them so).
+pub fn render(w: &Worksheets, xml: bool, gift: bool, lang: Lang) -> Result<Vec<OutFile>> {
+    let words = Words::new(lang, w.model)?;
     let mut tera = tera::Tera::default();
     // XML escaping: tera's HTML escape writes entities XML reads (`&#x27;`, `&#x2F;` …).
     tera.autoescape_on(vec![".xml"]);

@@ -73,9 +73,9 @@ fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
 
 /// A formula for both formats: MathML for HTML, LaTeX for Markdown.
 #[derive(Clone, Debug, Serialize)]
-struct Math {
+pub(crate) struct Math {
     mathml: String,
-    tex: String,
+    pub(crate) tex: String,
 }
 
 fn math(tex: &str) -> Math {
@@ -160,9 +160,9 @@ fn with_unit(value: String, unit: &str) -> String {
 
 /// The words of one language for one model's sheets.
 pub(crate) struct Words {
-    lang: Lang,
+    pub(crate) lang: Lang,
     model_of: Model,
-    catalogue: &'static Catalogue,
+    pub(crate) catalogue: &'static Catalogue,
     /// The model's section of the catalogue (`pulled-mass`, `woodpecker`).
     model: &'static str,
 }
@@ -187,14 +187,14 @@ impl Words {
     }
 
     /// The words of a regime id (the id itself if the catalogue has none).
-    fn regime(&self, id: &str) -> String {
+    pub(crate) fn regime(&self, id: &str) -> String {
         self.catalogue
             .optional(&format!("regimes.{id}"))
             .map_or_else(|| regime_words(id).to_string(), str::to_string)
     }
 
     /// A rule's LaTeX with its connectives (`\text{ and }`, `\text{ or }`) in this language.
-    fn rule(&self, condition: &str) -> Result<Math> {
+    pub(crate) fn rule(&self, condition: &str) -> Result<Math> {
         let mut tex = condition.to_string();
         for word in ["and", "or"] {
             let here = self.catalogue.text(&format!("sheet.{word}"), &[])?;
@@ -215,7 +215,7 @@ impl Words {
         }
     }
 
-    fn number(&self, text: &str) -> String {
+    pub(crate) fn number(&self, text: &str) -> String {
         self.lang.number(text)
     }
 }
