@@ -25,6 +25,25 @@ fn find(names: &[&str]) -> Option<PathBuf> {
     })
 }
 
+/// Chromium, pdftotext and pdfinfo; `None` (the test skips) when one is missing, which CI
+/// (CI=true) does not allow.
+fn print_tools() -> Option<(PathBuf, PathBuf, PathBuf)> {
+    let tools = (
+        find(&["chromium", "chromium-browser", "google-chrome"]),
+        find(&["pdftotext"]),
+        find(&["pdfinfo"]),
+    );
+    if let (Some(browser), Some(pdftotext), Some(pdfinfo)) = tools {
+        return Some((browser, pdftotext, pdfinfo));
+    }
+    assert!(
+        std::env::var("CI").is_err(),
+        "CI must install chromium and poppler-utils"
+    );
+    eprintln!("skipped: chromium or poppler-utils not installed");
+    None
+}
+
 fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Output {
     Command::new(browser)
         .args(HEADLESS_FLAGS)
@@ -53,16 +72,7 @@ fn ink_share(png_path: &Path) -> f64 {
 
 #[test]
 fn every_page_renders_in_chromium_and_prints_to_pdf() {
-    let (Some(browser), Some(pdftotext), Some(pdfinfo)) = (
-        find(&["chromium", "chromium-browser", "google-chrome"]),
-        find(&["pdftotext"]),
-        find(&["pdfinfo"]),
-    ) else {
-        assert!(
-            std::env::var("CI").is_err(),
-            "CI must install chromium and poppler-utils"
-        );
-        eprintln!("skipped: chromium or poppler-utils not installed");
+    let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -242,16 +252,7 @@ fn no_page_references_the_network() {
 /// A4 pages, holding the scene's title and a result of its chain of formulas.
 #[test]
 fn every_handout_prints_to_exactly_two_a4_pages() {
-    let (Some(browser), Some(pdfinfo), Some(pdftotext)) = (
-        find(&["chromium", "chromium-browser", "google-chrome"]),
-        find(&["pdfinfo"]),
-        find(&["pdftotext"]),
-    ) else {
-        assert!(
-            std::env::var("CI").is_err(),
-            "CI must install chromium and poppler-utils"
-        );
-        eprintln!("skipped: chromium or poppler-utils not installed");
+    let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
@@ -331,16 +332,7 @@ fn first_plain_result(scene: &Scene) -> String {
 /// at least a page per student, and the sheet's text holds no answer of the key.
 #[test]
 fn worksheets_and_answer_keys_print_one_student_per_page() {
-    let (Some(browser), Some(pdfinfo), Some(pdftotext)) = (
-        find(&["chromium", "chromium-browser", "google-chrome"]),
-        find(&["pdfinfo"]),
-        find(&["pdftotext"]),
-    ) else {
-        assert!(
-            std::env::var("CI").is_err(),
-            "CI must install chromium and poppler-utils"
-        );
-        eprintln!("skipped: chromium or poppler-utils not installed");
+    let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
