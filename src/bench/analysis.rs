@@ -53,8 +53,13 @@ impl Metric {
         }
     }
 
-    /// The error of a point in this metric.
+    /// The error of a point in this metric; none for a run that found a different number of
+    /// slips and sticks than the exact solution (a failure: it stays off the fronts, the costs
+    /// and the order fits, and the failure table lists it).
     pub fn of(self, p: &SweepPoint) -> Option<f64> {
+        if p.count_mismatch() {
+            return None;
+        }
         match self {
             Metric::EventTime => p.err_event_s,
             Metric::XEnd => p.err_x_m,
@@ -240,6 +245,26 @@ mod tests {
         assert!(cost_at(&curve, 1e-12).is_none());
         let exact = cost_at(&[(5.0, 0.0)], 1e-8).unwrap();
         assert!(exact.overshoot && exact.cost == 5.0);
+    }
+
+    #[test]
+    fn a_run_with_a_wrong_event_count_has_no_error_in_any_metric() {
+        let json = serde_json::json!({
+            "problem": "p", "method": "rk4", "setting_kind": "step", "tolerance": null,
+            "h_s": 1e-3, "steps_per_period": 100.0, "status": "ok", "error": null,
+            "time_s": 1e-6, "runs": 1, "rhs_evals": 10, "steps": 10, "accepted": null,
+            "rejected": null, "n_events": 40, "n_events_exact": 80, "n_matched": 40,
+            "kind_mismatches": 0, "reversals": 0, "err_event_s": 1e-12, "err_x_m": 1e-12,
+            "err_vbar_m_s": 1e-12, "x_end_m": 0.1, "v_end_m_s": 0.0
+        });
+        let mut p: SweepPoint = serde_json::from_value(json).unwrap();
+        for m in Metric::ALL {
+            assert_eq!(m.of(&p), None, "{m:?}");
+        }
+        p.n_events = Some(80);
+        for m in Metric::ALL {
+            assert_eq!(m.of(&p), Some(1e-12), "{m:?}");
+        }
     }
 
     #[test]

@@ -120,7 +120,7 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
         rows.push(missed_row(m, &s.missed));
     }
     if method_kind(m) == MethodKind::FixedStep {
-        rows.push(order_row(m, &s.orders));
+        rows.push(order_row(m, &s.orders, &pts));
     }
     if m.starts_with("tanh") {
         rows.push(stiffness_row(m, &s.creep_epsilon));
@@ -278,27 +278,50 @@ fn missed_row(m: &str, missed: &[MissedPoint]) -> FailureRow {
     )
 }
 
-fn order_row(m: &str, orders: &[OrderFit]) -> FailureRow {
+/// The fitted orders of method `m`; runs with a wrong event count are left out of the fits
+/// (they are failures), and a problem where every run has one fails this row too.
+fn order_row(m: &str, orders: &[OrderFit], pts: &[&SweepPoint]) -> FailureRow {
     let mine: Vec<&OrderFit> = orders
         .iter()
         .filter(|o| o.method == m && o.metric == Metric::XEnd)
         .collect();
     let nominal = nominal_order(m);
+    let mut all_miscounted = false;
     let parts: Vec<String> = mine
         .iter()
-        .map(|o| match o.order {
-            Some(_) => format!("{} {}", o.problem, super::charts::slope_text(o.order)),
-            None => format!("{} — (fewer than 3 errors above round-off)", o.problem),
+        .map(|o| {
+            let runs: Vec<&&SweepPoint> = pts
+                .iter()
+                .filter(|p| p.problem == o.problem && p.ok())
+                .collect();
+            let miscounted = runs.iter().filter(|p| p.count_mismatch()).count();
+            match o.order {
+                Some(_) => format!("{} {}", o.problem, super::charts::slope_text(o.order)),
+                None if !runs.is_empty() && miscounted == runs.len() => {
+                    all_miscounted = true;
+                    format!(
+                        "{} — (no fit: all {} runs find a wrong number of events)",
+                        o.problem,
+                        runs.len()
+                    )
+                }
+                None => format!(
+                    "{} — (fewer than 3 runs with the right event count and an error above \
+                     round-off)",
+                    o.problem
+                ),
+            }
         })
         .collect();
     let lowest = mine
         .iter()
         .filter_map(|o| o.order)
         .fold(f64::INFINITY, f64::min);
-    let fails = match nominal {
-        Some(n) => lowest < n - ORDER_SLACK,
-        None => false,
-    };
+    let fails = all_miscounted
+        || match nominal {
+            Some(n) => lowest < n - ORDER_SLACK,
+            None => false,
+        };
     let measured = format!(
         "fitted order in x_end: {} (nominal on smooth arcs: {})",
         parts.join(", "),
