@@ -122,14 +122,7 @@ pub fn work_precision<'a>(
                 let pts: Vec<(f64, f64)> = peer
                     .iter()
                     .filter(|p| p.problem == problem && p.method == *sm)
-                    .filter_map(|p| {
-                        let e = if metric == Metric::EventTime {
-                            p.err_event_s
-                        } else {
-                            p.err_x_m
-                        };
-                        Some((p.time_s?.log10(), log_err(e?)))
-                    })
+                    .filter_map(|p| Some((p.time_s?.log10(), log_err(p.error_in(metric)?))))
                     .collect();
                 if !pts.is_empty() {
                     xs.extend(pts.iter().map(|p| p.0));

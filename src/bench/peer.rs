@@ -63,6 +63,30 @@ pub struct PeerPoint {
     pub err_x_m: Option<f64>,
 }
 
+impl PeerPoint {
+    /// The run returned a solution.
+    pub fn ok(&self) -> bool {
+        self.status == "ok"
+    }
+
+    /// The run found a different number of slips and sticks than the exact solution.
+    pub fn count_mismatch(&self) -> bool {
+        self.n_events.is_some_and(|n| n != self.n_events_exact)
+    }
+
+    /// The run's error in `metric` (x_end for the metrics SciPy does not report); none for a run
+    /// with a wrong event count, a failure that stays off the fronts and the ratios.
+    pub fn error_in(&self, metric: Metric) -> Option<f64> {
+        if self.count_mismatch() {
+            return None;
+        }
+        match metric {
+            Metric::EventTime => self.err_event_s,
+            _ => self.err_x_m,
+        }
+    }
+}
+
 #[derive(Deserialize)]
 struct ScriptOutput {
     python: String,
@@ -237,15 +261,20 @@ pub fn run(
             machine.python = Some(out.python);
             machine.numpy = Some(out.numpy);
             machine.scipy = Some(out.scipy);
-            let failed = out.points.iter().filter(|p| p.status != "ok").count();
+            let errors = out.points.iter().filter(|p| !p.ok()).count();
+            // A run that finds a wrong number of slips and sticks failed too.
+            let miscounted = out.points.iter().filter(|p| p.count_mismatch()).count();
             let mut report = PeerReport::without(
                 true,
                 "ok",
                 format!(
-                    "SciPy {} (Python {}): {} runs of solve_ivp, {failed} failed.",
+                    "SciPy {} (Python {}): {} runs of solve_ivp, {} failed ({errors} returned \
+                     an error, {miscounted} found a wrong number of events; these stay off the \
+                     fronts and the ratios).",
                     machine.scipy.as_deref().unwrap_or("?"),
                     machine.python.as_deref().unwrap_or("?"),
-                    out.points.len()
+                    out.points.len(),
+                    errors + miscounted
                 ),
             );
             report.points = out.points;
@@ -291,13 +320,7 @@ fn scipy_curve(points: &[PeerPoint], problem: &str, method: &str, m: Metric) -> 
     points
         .iter()
         .filter(|p| p.problem == problem && p.method == method)
-        .filter_map(|p| {
-            let e = match m {
-                Metric::EventTime => p.err_event_s,
-                _ => p.err_x_m,
-            };
-            Some((p.time_s?, e?))
-        })
+        .filter_map(|p| Some((p.time_s?, p.error_in(m)?)))
         .collect()
 }
 
@@ -465,6 +488,22 @@ mod tests {
     /// script's forces are checked bit for bit below. A wrong piece or basis is off by far more.
     fn close(a: f64, b: f64, scale: f64) -> bool {
         (a - b).abs() <= 1e-12 * scale.abs()
+    }
+
+    #[test]
+    fn a_scipy_run_with_a_wrong_event_count_is_a_failure() {
+        let mut p: PeerPoint = serde_json::from_value(serde_json::json!({
+            "problem": "p", "method": "RK45", "tol": 1e-8, "status": "ok", "error": null,
+            "time_s": 1e-3, "runs": 1, "nfev": 100, "n_events": 40, "n_events_exact": 80,
+            "err_event_s": 1e-9, "x_end_m": 0.1, "err_x_m": 1e-9
+        }))
+        .unwrap();
+        assert!(p.ok() && p.count_mismatch());
+        assert_eq!(p.error_in(Metric::EventTime), None);
+        assert!(scipy_curve(&[p.clone()], "p", "RK45", Metric::EventTime).is_empty());
+        p.n_events = Some(80);
+        assert_eq!(p.error_in(Metric::EventTime), Some(1e-9));
+        assert_eq!(p.error_in(Metric::XEnd), Some(1e-9));
     }
 
     #[test]
