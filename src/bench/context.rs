@@ -73,9 +73,14 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
     let machine = vec![
         (
             "stickslip",
-            format!("{} ({} build)", m.crate_version, m.profile),
+            format!(
+                "{} ({} build, Cargo's release profile), commit {}",
+                m.crate_version, m.profile, m.commit
+            ),
         ),
+        ("compiler", m.rustc.clone()),
         ("CPU", format!("{} × {}", m.nproc, m.cpu)),
+        ("load average (1, 5, 15 min)", m.load.clone()),
         ("OS", format!("{} {}", m.os, m.arch)),
         (
             "Python",

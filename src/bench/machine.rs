@@ -1,6 +1,7 @@
-//! The machine and the versions a benchmark ran on: timings mean nothing without them.
-//! rustc's version is not available at run time, so the crate version and the build profile
-//! stand in for it; Python and SciPy versions come from the peer probe.
+//! The machine and the versions a benchmark ran on: timings mean nothing without them. The
+//! compiler and the commit are asked of `rustc` and `git` on PATH at run time (the ones that
+//! built the binary when run from the checkout with cargo); the load average is read before
+//! the measurements; Python and SciPy versions come from the peer probe.
 
 use serde::Serialize;
 
@@ -11,6 +12,12 @@ pub struct Machine {
     pub crate_version: String,
     /// "release" or "debug" (debug timings are not comparable).
     pub profile: String,
+    /// `rustc --version`, or "unknown".
+    pub rustc: String,
+    /// `git describe --always --dirty` of the working directory, or "unknown".
+    pub commit: String,
+    /// The 1, 5 and 15 minute load averages before the measurements (/proc/loadavg).
+    pub load: String,
     /// Logical CPUs available to the process.
     pub nproc: usize,
     /// `model name` of /proc/cpuinfo, or "unknown".
@@ -34,6 +41,13 @@ impl Machine {
                 "release"
             }
             .to_string(),
+            rustc: command(&["rustc", "--version"]).unwrap_or_else(|| "unknown".to_string()),
+            commit: command(&["git", "describe", "--always", "--dirty"])
+                .unwrap_or_else(|| "unknown".to_string()),
+            load: std::fs::read_to_string("/proc/loadavg")
+                .ok()
+                .map(|l| l.split_whitespace().take(3).collect::<Vec<_>>().join(" "))
+                .unwrap_or_else(|| "unknown".to_string()),
             nproc: std::thread::available_parallelism().map_or(1, |n| n.get()),
             cpu: cpu_model().unwrap_or_else(|| "unknown".to_string()),
             os: std::env::consts::OS.to_string(),
@@ -43,6 +57,17 @@ impl Machine {
             scipy: None,
         }
     }
+}
+
+/// The first line a command prints, if it runs and succeeds.
+fn command(args: &[&str]) -> Option<String> {
+    let out = std::process::Command::new(args[0])
+        .args(&args[1..])
+        .output()
+        .ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    let line = text.lines().next()?.trim();
+    (out.status.success() && !line.is_empty()).then(|| line.to_string())
 }
 
 /// The first `model name` line of /proc/cpuinfo.
