@@ -590,6 +590,30 @@ mod tests {
         assert!(e.contains("--quantity") && e.contains("v_avg"), "{e}");
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(400))]
+
+        /// Any text made of formula pieces is read or refused with an error, never a panic,
+        /// and a formula that is read has a finite value or none.
+        #[test]
+        fn any_formula_text_is_read_or_refused_without_panicking(
+            pieces in proptest::collection::vec(proptest::sample::select(vec![
+                "phi", "T", "g", r"\varphi", r"\Theta", r"\frac", r"\sqrt", "[", "]", "{",
+                "}", "(", ")", "^", "_", "+", "-", "*", "/", "2", "0.5", "1e308", r"\left(",
+                r"\right)", r"\le", "<=", ">", "mu_s", r"\mu_s", "'", r"^{(I)}", " ", ",",
+                r"\cdot", "PI", "sqrt", r"\", "x", "é", "0",
+            ]), 0..12)
+        ) {
+            let text: String = pieces.concat();
+            let case = Model::PulledMass(PulledMassParams::default());
+            if let Ok(f) = Formula::parse(&text, &symbols(&case)) {
+                if let Some(v) = f.value(&case) {
+                    proptest::prop_assert!(v.is_finite());
+                }
+            }
+        }
+    }
+
     /// Undefined values are counted, not dropped: 1/(phi - phi) is nowhere defined.
     #[test]
     fn undefined_values_are_counted() {
