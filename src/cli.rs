@@ -194,7 +194,7 @@ pub struct CheckArgs {
     #[arg(
         value_name = "FORMULA",
         allow_hyphen_values = true,
-        required_unless_present = "formulas",
+        required_unless_present_any = ["formulas", "symbols"],
         requires = "quantity"
     )]
     pub formula: Option<String>,
@@ -212,6 +212,9 @@ pub struct CheckArgs {
     /// Seed of the draw.
     #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     pub seed: u64,
+    /// List the symbols a formula may use, with their values at the given parameters, and exit.
+    #[arg(long, conflicts_with_all = ["formula", "formulas"])]
+    pub symbols: bool,
     /// Also write the report as a page (check.html, check.md) and check.json to this folder.
     #[arg(long, value_name = "DIR")]
     pub out: Option<PathBuf>,

@@ -282,6 +282,9 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     reject_flag("check", "--periods", common.periods.is_some())?;
     let (case, _) = model_params(&model.args)?;
     let args = &model.extra;
+    if args.symbols {
+        return print_stdout(&crate::check::symbols_text(&case));
+    }
     let pairs = match (&args.formulas, &args.formula, &args.quantity) {
         (Some(file), _, _) => crate::check::read_formulas(file)?,
         (None, Some(formula), Some(quantity)) => vec![(formula.clone(), quantity.clone())],

@@ -108,35 +108,61 @@ pub struct Report {
     pub unmeasured_regimes: Vec<&'static str>,
 }
 
-/// The symbols of `case` by name, with their values: the parameters (by key and by symbol,
-/// `mass` and `m`), then every derived symbol of its worked steps (`phi`, `T`, `Gamma`,
-/// `tau_SL` …); `PI` is the evaluator's.
+/// The symbols of `case` by name, with their values: the parameters (by symbol, `m`), then
+/// every derived symbol of its worked steps (`phi`, `T`, `Gamma`, `tau_SL` …, NaN where its
+/// formula is undefined), then the parameters by key (`mass`); `PI` is the evaluator's.
 pub fn symbols(case: &Model) -> Vec<(String, f64)> {
-    fn params<M: Physics>(p: &M) -> Vec<(String, f64)> {
+    fn params<M: Physics>(p: &M) -> Vec<(String, f64, String)> {
         M::PARAMS
             .iter()
-            .filter_map(|s| {
-                let v = (s.get)(p)?;
-                Some([(s.key.to_string(), v), (latex::identifier(s.tex), v)])
-            })
-            .flatten()
+            .filter_map(|s| Some((latex::identifier(s.tex), (s.get)(p)?, s.key.to_string())))
             .collect()
     }
-    let mut out = with_model!(case, p => params(p));
+    let given = with_model!(case, p => params(p));
+    let mut out: Vec<(String, f64)> = given.iter().map(|(n, v, _)| (n.clone(), *v)).collect();
     for step in crate::worksheet::answer::steps(case) {
-        if let Some(v) = step.value {
-            let name = latex::identifier(step.symbol);
-            if name == "varphi" {
-                out.push(("phi".to_string(), v));
-            }
-            out.push((name, v));
+        // A derived symbol is its formula: defined also where the closed form does not describe
+        // the motion (τ_ST > 1 past the period); NaN where it is not (a formula using it is then
+        // undefined on that set, and counted so).
+        // A symbol, not an expression (the slip duration is written `t_{ST} - t_{SL}`, the
+        // boundary `1/\Theta`); `\bar v` is one symbol.
+        let plain = step.symbol.replace("\\bar ", "");
+        if plain.contains(' ') || plain.contains('/') {
+            continue;
         }
+        let v = step.value.unwrap_or_else(|| step.expr.eval());
+        let v = if v.is_finite() { v } else { f64::NAN };
+        let name = latex::identifier(step.symbol);
+        if name == "varphi" {
+            out.push(("phi".to_string(), v));
+        }
+        out.push((name, v));
     }
+    // The parameters' keys (`mass`, `force`) as well, last.
+    out.extend(given.into_iter().map(|(_, v, key)| (key, v)));
     let mut seen = std::collections::HashSet::new();
     out.retain(|(name, _)| {
         name.starts_with(|c: char| c.is_ascii_alphabetic()) && seen.insert(name.clone())
     });
     out
+}
+
+/// The symbols of `case` one per line with their values (`--symbols`).
+pub fn symbols_text(case: &Model) -> String {
+    let mut o = format!(
+        "symbols of the {} for a formula (value at the given parameters, SI; PI and E are the \
+         constants):\n",
+        case.id()
+    );
+    for (name, value) in symbols(case) {
+        let shown = if value.is_finite() {
+            crate::output::format::people(Some(value), 6)
+        } else {
+            "undefined here".to_string()
+        };
+        o.push_str(&format!("  {name:<14} {shown}\n"));
+    }
+    o
 }
 
 /// A comparison between two expressions: a condition, 1 where it holds and 0 where not.
@@ -219,10 +245,11 @@ impl Formula {
                 .filter(|v| !known.iter().any(|(k, _)| k == v))
                 .collect();
             if !unknown.is_empty() {
-                let mut names: Vec<&str> = known.iter().map(|(k, _)| k.as_str()).collect();
-                names.sort_unstable();
+                // In the order of `symbols`: the parameters first, then the derived symbols
+                // as a derivation reaches them; `--symbols` lists them all.
+                let names: Vec<&str> = known.iter().map(|(k, _)| k.as_str()).collect();
                 return Err(formula_error(format!(
-                    "unknown symbol {}; known: {}",
+                    "unknown symbol {} (all with --symbols); known: {}",
                     unknown.join(", "),
                     names.join(", ")
                 )));
@@ -582,9 +609,13 @@ mod tests {
         };
         let e = err("g*T*xi", "v_avg");
         assert!(
-            e.contains("unknown symbol xi") && e.contains("Gamma"),
+            e.contains("unknown symbol xi") && e.contains("--symbols") && e.contains("tau_SL"),
             "{e}"
         );
+        let all = symbols_text(&Model::PulledMass(PulledMassParams::default()));
+        for name in ["mu_s", "phi", "Theta", "Gamma", "tau_ST", "bar_v", "mass"] {
+            assert!(all.contains(&format!("  {name} ")), "{name}: {all}");
+        }
         assert!(err("g*T*(", "v_avg").contains("cannot be read"));
         let e = err("g*T", "speed");
         assert!(e.contains("--quantity") && e.contains("v_avg"), "{e}");
@@ -612,6 +643,15 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// Every derived symbol is known whatever the regime of the given set: τ_ST on a set that
+    /// slips continuously (the default pulled mass) still reads, and checks where it applies.
+    #[test]
+    fn derived_symbols_are_known_in_every_regime() {
+        let r = check("T*tau_ST", "t_stick");
+        assert!(r.agrees, "{}", text(&r));
+        assert!(r.given.formula.is_some());
     }
 
     /// Undefined values are counted, not dropped: 1/(phi - phi) is nowhere defined.
