@@ -7,8 +7,7 @@
 use serde::Serialize;
 
 use super::exercise::Exercise;
-use super::figure::{force_figure, v_figure};
-use super::lang::Lang;
+use super::figure::{time_spacing, v_figure};
 use super::question::{Kind, Question};
 use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
@@ -57,12 +56,11 @@ pub struct Answer {
     pub comparisons: Vec<Comparison>,
 }
 
-/// The answers of a case, with the figures.
+/// The answers of a case, with the key's figure (the sheet's is drawn in the sheet's language
+/// when it is rendered).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Answers {
     pub answers: Vec<Answer>,
-    /// SVG of the forces over a period, when a question reads it (on the student's sheet).
-    pub figure: Option<String>,
     /// SVG of v(t) of the linearized law from rest (in the answer key).
     pub key_figure: Option<String>,
 }
@@ -117,7 +115,6 @@ pub fn answer(
 ) -> Result<Option<Answers>> {
     let evaluated = evaluate(case, true)?;
     let mut answers = Vec::with_capacity(questions.len());
-    let mut figure = None;
     for &question in questions {
         let answer = match question.kind {
             Kind::ClosedForm(key) => measured(question, steps, &evaluated, key),
@@ -126,10 +123,7 @@ pub fn answer(
             }
             Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
             Kind::ReadFigure(key) => {
-                // The answers' figure is English; a sheet in another language redraws it.
-                let (svg, spacing) = force_figure(case, Lang::En)?;
-                figure = Some(svg);
-                let tolerance = 0.5 * spacing;
+                let tolerance = 0.5 * time_spacing(case)?;
                 measured(question, steps, &evaluated, key)
                     .filter(|a| matches!(a.value, Value::Number(v) if tolerance <= READABLE * v))
                     .map(|a| Answer {
@@ -149,7 +143,6 @@ pub fn answer(
     };
     Ok(Some(Answers {
         answers,
-        figure,
         key_figure,
     }))
 }

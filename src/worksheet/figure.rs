@@ -68,11 +68,16 @@ pub fn v_figure(run: &Run) -> Result<(String, f64)> {
 /// Samples of each force curve over the period (the pieces' ends are added).
 const FORCE_SAMPLES: usize = 800;
 
+/// The time step (s) of the forces figure's vertical grid: a round spacing of about a twentieth
+/// of the period. The reading tolerance of a time is half of it.
+pub fn time_spacing(case: &Model) -> Result<f64> {
+    Ok(fine_spacing(case.force_law(LawKind::Linear)?.period))
+}
+
 /// The forces of `case`'s linearized law over one period, on graph paper: the driving force
-/// and the friction limits μs·N and μd·N, labelled in `lang`'s words, and
-/// light vertical lines at a round time spacing (s), which is returned; the reading tolerance of
-/// a time is half of it.
-pub fn force_figure(case: &Model, lang: Lang) -> Result<(String, f64)> {
+/// and the friction limits μs·N and μd·N, and light vertical lines every [`time_spacing`], in
+/// `lang`'s words and decimal sign.
+pub fn force_figure(case: &Model, lang: Lang) -> Result<String> {
     let catalogue = lang.catalogue()?;
     let labels = catalogue.list(&format!("{}.force_labels", case.id()))?;
     let (Some(drive), Some(stat), Some(dynamic)) = (labels.first(), labels.get(1), labels.get(2))
@@ -110,7 +115,7 @@ pub fn force_figure(case: &Model, lang: Lang) -> Result<(String, f64)> {
         color,
         stroke,
     };
-    let spacing = fine_spacing(period);
+    let spacing = time_spacing(case)?;
     let grid = (1..)
         .map(|k| f64::from(k) * spacing)
         .take_while(|&t| t < period)
@@ -134,7 +139,7 @@ pub fn force_figure(case: &Model, lang: Lang) -> Result<(String, f64)> {
         markers: grid,
     };
     let svg = line_chart(&chart).map_err(|e| figure_error(e.to_string()))?;
-    Ok((svg, spacing))
+    lang.localize_svg(&svg)
 }
 
 #[cfg(test)]
@@ -144,7 +149,10 @@ mod tests {
     #[test]
     fn the_force_figure_has_the_three_forces_and_a_time_grid() {
         let case = Model::defaults()[0];
-        let (svg, spacing) = force_figure(&case, Lang::En).unwrap();
+        let (svg, spacing) = (
+            force_figure(&case, Lang::En).unwrap(),
+            time_spacing(&case).unwrap(),
+        );
         for label in ["pull F", "static limit", "dynamic limit", "force (N)"] {
             assert!(svg.contains(label), "{label}");
         }
@@ -155,7 +163,7 @@ mod tests {
         );
         // The time grid: light vertical lines, no marker labels.
         assert!(svg.matches("stroke=\"#E3E3E3\"").count() >= 10);
-        let (italian, _) = force_figure(&case, Lang::It).unwrap();
+        let italian = force_figure(&case, Lang::It).unwrap();
         assert!(italian.contains("trazione F") && italian.contains("forza (N)"));
     }
 

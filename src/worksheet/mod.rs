@@ -58,8 +58,6 @@ pub struct Student {
     pub number: u32,
     pub case: Model,
     pub answers: Vec<Answer>,
-    /// SVG of the forces over a period, when a question reads it (on the sheet).
-    pub figure: Option<String>,
     /// SVG of v(t) from rest (in the answer key).
     pub key_figure: Option<String>,
 }
@@ -198,7 +196,6 @@ pub fn student(
                 number,
                 case,
                 answers: a.answers,
-                figure: a.figure,
                 key_figure: a.key_figure,
             });
         }

@@ -127,8 +127,8 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
             c.text("moodle.figures_in", &[("n", &n), ("unit", unit)])?
         ),
     };
-    let image = match (&s.figure, q.kind) {
-        (Some(_), Kind::ReadFigure(_)) => format!(
+    let image = match q.kind {
+        Kind::ReadFigure(_) => format!(
             "<p><img src=\"@@PLUGINFILE@@/{FIGURE_FILE}\" alt=\"{}\" width=\"640\"></p>",
             tera::escape_html(&c.text("moodle.figure_alt", &[])?)
         ),
@@ -181,11 +181,8 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
                 _ => tolerance(*x),
             };
             v.tolerance = moodle_number(tol);
-            if let (Kind::ReadFigure(_), Some(svg)) = (kind, &s.figure) {
-                let svg = match words.lang {
-                    Lang::En => svg.clone(),
-                    lang => lang.localize_svg(&super::figure::force_figure(&s.case, lang)?.0)?,
-                };
+            if let Kind::ReadFigure(_) = kind {
+                let svg = super::figure::force_figure(&s.case, words.lang)?;
                 let data = base64::engine::general_purpose::STANDARD.encode(svg);
                 v.file = Some((FIGURE_FILE.to_string(), data));
             }

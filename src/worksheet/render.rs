@@ -161,25 +161,24 @@ fn with_unit(value: String, unit: &str) -> String {
 /// The words of one language for one model's sheets.
 pub(crate) struct Words {
     pub(crate) lang: Lang,
-    model_of: Model,
+    /// The model, whose id names its section of the catalogue (`pulled-mass`, `woodpecker`).
+    model: Model,
     pub(crate) catalogue: &'static Catalogue,
-    /// The model's section of the catalogue (`pulled-mass`, `woodpecker`).
-    model: &'static str,
 }
 
 impl Words {
     pub(crate) fn new(lang: Lang, model: Model) -> Result<Self> {
         Ok(Self {
             lang,
-            model_of: model,
+            model,
             catalogue: lang.catalogue()?,
-            model: model.id(),
         })
     }
 
     /// A text of the model's section.
     pub(crate) fn model_text(&self, key: &str) -> Result<String> {
-        self.catalogue.text(&format!("{}.{key}", self.model), &[])
+        self.catalogue
+            .text(&format!("{}.{key}", self.model.id()), &[])
     }
 
     pub(crate) fn prompt(&self, q: &Question) -> Result<String> {
@@ -276,20 +275,13 @@ fn sketch(case: &Model, lang: Lang) -> Result<String> {
     lang.localize_svg(&with_model!(case, p => p.sketch_givens()))
 }
 
-/// The forces figure of a sheet in the words of `words` (the one drawn with the answers is
-/// English).
-fn forces_figure(s: &Student, words: &Words) -> Result<Option<String>> {
-    match (&s.figure, words.lang) {
-        (None, _) => Ok(None),
-        (Some(svg), Lang::En) => Ok(Some(svg.clone())),
-        (Some(_), lang) => Ok(Some(
-            lang.localize_svg(&figure::force_figure(&s.case, lang)?.0)?,
-        )),
-    }
-}
-
-fn sheet_ctx(s: &Student, words: &Words) -> Result<SheetCtx> {
-    let figure = forces_figure(s, words)?;
+/// A sheet's context; `reads_figure`: a question reads the forces figure, drawn here.
+fn sheet_ctx(s: &Student, words: &Words, reads_figure: bool) -> Result<SheetCtx> {
+    let figure = if reads_figure {
+        Some(figure::force_figure(&s.case, words.lang)?)
+    } else {
+        None
+    };
     Ok(SheetCtx {
         sketch_svg: sketch(&s.case, words.lang)?,
         sketch_file: sketch_file(s.number),
@@ -356,7 +348,7 @@ fn answer_ctx(
         worked,
         result: match (&a.value, q.kind) {
             (Value::Text(regime), Kind::Regime(_)) => {
-                words.regime(question::regime_option(words.model_of, regime))
+                words.regime(question::regime_option(words.model, regime))
             }
             (value, _) => number(value, ANSWER_DIGITS, q.unit(), words),
         },
@@ -442,10 +434,14 @@ pub fn render(w: &Worksheets, formats: &[Format], lang: Lang) -> Result<Vec<OutF
     ctx.insert("css", &format!("{CSS}{WORKSHEET_CSS}"));
     ctx.insert("version", env!("CARGO_PKG_VERSION"));
     ctx.insert("questions", &questions_ctx(w.model, &w.questions, &words)?);
+    let reads_figure = w
+        .questions
+        .iter()
+        .any(|q| matches!(q.kind, Kind::ReadFigure(_)));
     let sheets = w
         .students
         .iter()
-        .map(|s| sheet_ctx(s, &words))
+        .map(|s| sheet_ctx(s, &words, reads_figure))
         .collect::<Result<Vec<_>>>()?;
     ctx.insert("sheets", &sheets);
     let keys = w
