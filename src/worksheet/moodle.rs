@@ -23,10 +23,10 @@ use serde::Serialize;
 use super::answer::{Answer, Value};
 use super::lang::Lang;
 use super::question::{self, Kind};
-use super::render::Words;
+use super::render::{parameters, Words};
 use super::{Student, Worksheets};
 use crate::error::Result;
-use crate::models::{with_model, Model, Physics};
+use crate::models::Model;
 use crate::report::render::{page, template_error};
 use crate::report::OutFile;
 
@@ -86,17 +86,6 @@ struct Category {
 /// A number as Moodle reads it: plain or with an exponent, shortest round trip.
 fn moodle_number(x: f64) -> String {
     crate::error::short(x)
-}
-
-/// (LaTeX symbol, value, unit) of the given parameters of a case.
-fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
-    fn of<M: Physics>(p: &M) -> Vec<(&'static str, f64, &'static str)> {
-        M::PARAMS
-            .iter()
-            .filter_map(|s| Some((s.tex, (s.get)(p)?, s.unit)))
-            .collect()
-    }
-    with_model!(case, p => of(p))
 }
 
 fn params_html(case: &Model, words: &Words) -> String {

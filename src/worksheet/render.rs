@@ -61,7 +61,7 @@ fn definitions(case: &Model, words: &Words) -> Vec<Math> {
 
 /// (LaTeX symbol, value as typed, unit) of a case's given parameters, in the order of the
 /// sheet (an unset optional parameter is not shown).
-fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
+pub(crate) fn parameters(case: &Model) -> Vec<(&'static str, f64, &'static str)> {
     fn of<M: Physics>(p: &M) -> Vec<(&'static str, f64, &'static str)> {
         M::PARAMS
             .iter()
