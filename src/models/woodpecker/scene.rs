@@ -232,13 +232,12 @@ fn tracked(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     Ok((chart, caption))
 }
 
-/// The symbol people read for a fitted parameter's name.
+/// The symbol people read for a fitted parameter's name (its key), from the registry.
 fn symbol(name: &str) -> &str {
-    match name {
-        "mu_d" => "μd",
-        "mu_s" => "μs",
-        other => other,
-    }
+    crate::models::woodpecker::params::PARAMS
+        .iter()
+        .find(|s| s.key == name)
+        .map_or(name, |s| s.symbol)
 }
 
 // ---------------------------------------------------------------------------------------------
