@@ -20,7 +20,7 @@ use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::Model;
 use stickslip::params::Scenario;
 
-const EXAMPLE: &str = "scenarios/tracked-toy-example.csv";
+const EXAMPLE: &str = stickslip::fit::synthetic::EXAMPLE_FILE;
 const FIG26: &str = "scenarios/fig26-tracked-toy.toml";
 
 fn stickslip() -> Command {
