@@ -56,18 +56,31 @@ fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Ou
 
 /// Share of pixels that are not (near) white in a PNG screenshot.
 fn ink_share(png_path: &Path) -> f64 {
-    let decoder = png::Decoder::new(std::fs::File::open(png_path).expect("screenshot exists"));
+    let (inked, _) = ink(png_path);
+    inked.iter().filter(|&&i| i).count() as f64 / inked.len() as f64
+}
+
+/// How far down the image its lowest inked pixel is (0 top, 1 bottom).
+fn ink_bottom(png_path: &Path) -> f64 {
+    let (inked, width) = ink(png_path);
+    let rows = inked.len() / width;
+    let last = inked.iter().rposition(|&i| i).map_or(0, |p| p / width + 1);
+    last as f64 / rows as f64
+}
+
+/// Per pixel of a PNG, row by row, whether it is ink (a channel below 200), and the width.
+fn ink(png_path: &Path) -> (Vec<bool>, usize) {
+    let decoder = png::Decoder::new(std::fs::File::open(png_path).expect("image exists"));
     let mut reader = decoder.read_info().expect("a PNG");
     let mut buf = vec![0; reader.output_buffer_size()];
     let info = reader.next_frame(&mut buf).expect("a frame");
     let channels = info.color_type.samples();
     let pixels = &buf[..info.buffer_size()];
-    let total = pixels.len() / channels;
-    let ink = pixels
+    let inked = pixels
         .chunks(channels)
-        .filter(|p| p.iter().take(3).any(|&c| c < 200))
-        .count();
-    ink as f64 / total as f64
+        .map(|p| p.iter().take(3).any(|&c| c < 200))
+        .collect();
+    (inked, info.width as usize)
 }
 
 #[test]
@@ -295,6 +308,21 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                     };
                     assert_eq!(field("Pages:"), "2", "{arg}: page count");
                     assert!(field("Page size:").ends_with("(A4)"), "{arg}: {info}");
+                    // Page 2 is filled: its last line of ink at least 70 % down the sheet
+                    // (the text ends at 97 %).
+                    let prefix = out.join("page");
+                    let shot = Command::new(pdfinfo.with_file_name("pdftoppm"))
+                        .args(["-r", "30", "-f", "2", "-l", "2", "-singlefile", "-png"])
+                        .arg(&pdf)
+                        .arg(&prefix)
+                        .output()
+                        .unwrap();
+                    assert!(shot.status.success(), "{arg}: {shot:?}");
+                    let bottom = ink_bottom(&prefix.with_extension("png"));
+                    assert!(
+                        bottom >= 0.7,
+                        "{arg}: page 2 ends {bottom:.2} down the sheet"
+                    );
                     let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
                     let text = String::from_utf8_lossy(&text.stdout);
                     let text = text.split_whitespace().collect::<Vec<_>>().join(" ");

@@ -19,7 +19,9 @@ use crate::error::{Error, Result};
 use crate::models::{with_model, Model};
 use crate::present::Present;
 use crate::report::context::{FigureCtx, SceneCtx};
-use crate::report::render::{claim_params, first_sentence, page, scene_context, templates, CSS};
+use crate::report::render::{
+    claim_params, figure_contexts, first_sentence, page, scene_context, templates, CSS,
+};
 use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
 use physics::Note;
 
@@ -117,10 +119,7 @@ pub fn build(scene: &Scene) -> Result<Handout> {
         figures: layout::kinds(scene),
         ..scene.clone()
     };
-    let mut ctx = scene_context(&with_figures, &claims)?;
-    for f in &mut ctx.figures {
-        f.caption = first_sentence(&f.caption).to_string();
-    }
+    let mut ctx = scene_context(&with_figures, &claims, Vec::new())?;
     // The finding of each claim states its numbers; the list of them stays in the report.
     for c in &mut ctx.claims {
         c.numbers.clear();
@@ -129,11 +128,19 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     ctx.verification
         .retain(|r| r.class == "pass" || r.class == "fail");
     let unchecked = checked - ctx.verification.len();
-    let page = layout::page_two(
-        std::mem::take(&mut ctx.figures),
+    let drawings = with_figures.build_figures()?;
+    let draw = |g| -> Result<Vec<FigureCtx>> {
+        let mut figures = figure_contexts(&drawings, g)?;
+        for f in &mut figures {
+            f.caption = first_sentence(&f.caption).to_string();
+        }
+        Ok(figures)
+    };
+    let page = layout::fill(
+        draw,
         ctx.verification.len(),
         std::mem::take(&mut ctx.claims),
-    );
+    )?;
     let mut placed: Vec<&layout::Numbered> = page.columns.iter().flatten().collect();
     placed.sort_by_key(|n| n.number);
     ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
