@@ -15,6 +15,8 @@ use std::process::Command;
 use stickslip::handout::{self, pdf::HEADLESS_FLAGS};
 use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
+use stickslip::worksheet::phrases::Translator;
+use stickslip::worksheet::Lang;
 
 fn find(names: &[&str]) -> Option<PathBuf> {
     names.iter().find_map(|n| {
@@ -261,8 +263,9 @@ fn no_page_references_the_network() {
     }
 }
 
-/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file: exactly two
-/// A4 pages, holding the scene's title and a result of its chain of formulas.
+/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file, in English
+/// and Italian: exactly two A4 pages, page 2 filled, holding the scene's title and a result of
+/// its chain of formulas.
 #[test]
 fn every_handout_prints_to_exactly_two_a4_pages() {
     let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
@@ -282,16 +285,23 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
         let arg = path.display().to_string();
         scenes.push((arg.clone(), handout::find_scene(&arg).unwrap()));
     }
+    // Every handout in English and in Italian (longer words: the layout must still fit).
+    let runs: Vec<(Lang, &String, &Scene)> = Lang::ALL
+        .iter()
+        .flat_map(|&lang| scenes.iter().map(move |(arg, scene)| (lang, arg, scene)))
+        .collect();
     // Two browsers at a time on this 2-core machine.
     std::thread::scope(|scope| {
-        for chunk in scenes.chunks(scenes.len().div_ceil(2)) {
+        for chunk in runs.chunks(runs.len().div_ceil(2)) {
             let (browser, pdfinfo, pdftotext) = (&browser, &pdfinfo, &pdftotext);
             let dir = dir.path();
             scope.spawn(move || {
-                for (arg, scene) in chunk {
-                    let out = dir.join(&scene.id);
+                for &(lang, arg, scene) in chunk {
+                    let out = dir.join(format!("{}-{}", scene.id, lang.code()));
                     let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
-                        .args(["handout", arg, "--pdf", "--format", "md", "--out"])
+                        .args(["handout", arg, "--pdf", "--format", "md", "--lang"])
+                        .arg(lang.code())
+                        .arg("--out")
                         .arg(&out)
                         .env("STICKSLIP_CHROMIUM", browser)
                         .output()
@@ -326,12 +336,14 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                     let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
                     let text = String::from_utf8_lossy(&text.stdout);
                     let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
-                    let title = scene.title.split_whitespace().collect::<Vec<_>>().join(" ");
+                    let words = Translator::new(lang).unwrap();
+                    let title = words.text(&scene.title);
+                    let title = title.split_whitespace().collect::<Vec<_>>().join(" ");
                     assert!(
                         text.contains(&title),
                         "{arg}: title {title:?} not in the PDF"
                     );
-                    let result = first_plain_result(scene);
+                    let result = lang.number(&first_plain_result(scene));
                     assert!(
                         text.contains(&result),
                         "{arg}: result {result} not in the PDF"
@@ -344,7 +356,7 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
 
 /// The first result of the handout's chain written as a plain decimal ("0.05886").
 fn first_plain_result(scene: &Scene) -> String {
-    handout::build(scene)
+    handout::build(scene, &Translator::new(Lang::En).unwrap())
         .unwrap()
         .steps
         .iter()

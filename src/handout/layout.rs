@@ -61,8 +61,8 @@ pub struct PageTwo {
     pub columns: [Vec<Numbered>; 2],
     /// The claims shown in full.
     pub claims: Vec<ClaimCtx>,
-    /// The claims that did not fit, one line each: "Claim 7: title — verdict".
-    pub brief: Vec<String>,
+    /// The claims that did not fit (named in one line).
+    pub brief: Vec<ClaimCtx>,
     /// Estimated room left at the foot of the page (mm; negative: the page overflows).
     pub room_mm: f64,
 }
@@ -125,11 +125,7 @@ pub fn page_two(candidates: Vec<FigureCtx>, rows: usize, mut claims: Vec<ClaimCt
     let shown = (0..=needs.len()).rev().find(|&k| fits(k)).unwrap_or(0);
     let brief_mm = if shown < needs.len() { BRIEF_MM } else { 0.0 };
     let room_mm = room - needs[..shown].iter().sum::<f64>() - brief_mm;
-    let brief = claims
-        .split_off(shown)
-        .iter()
-        .map(|c| format!("Claim {}: {} — {}", c.id, c.title, c.verdict))
-        .collect();
+    let brief = claims.split_off(shown);
     PageTwo {
         columns,
         claims,
@@ -218,6 +214,7 @@ mod tests {
             title: "A claim".to_string(),
             paper_says: "The paper says so.".to_string(),
             verdict: "refuted".to_string(),
+            verdict_class: "refuted".to_string(),
             finding: "x".repeat(finding_chars),
             numbers: Vec::new(),
         }
@@ -274,10 +271,7 @@ mod tests {
         );
         assert!(!page.claims.is_empty() && !page.brief.is_empty());
         assert_eq!(page.claims.len() + page.brief.len(), 6);
-        assert!(page.brief[0].starts_with(&format!(
-            "Claim {}: A claim — refuted",
-            page.claims.len() + 3
-        )));
+        assert_eq!(usize::from(page.brief[0].id), page.claims.len() + 3);
     }
 
     /// Two figures whose height follows the canvas's panel height, as charts do.
