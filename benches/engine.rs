@@ -59,6 +59,7 @@ fn integration(c: &mut Criterion) {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     for (name, kind) in [("linear", LawKind::Linear), ("harmonic", LawKind::Harmonic)] {
         let law = pulled_mass::force_law(&p, kind).expect("set B gives a valid force law");
@@ -74,6 +75,7 @@ fn steady_analysis(c: &mut Criterion) {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     let run = integrate(&pulled_mass::body(&p), &law, &opts).expect("set B integrates");
     c.bench_function(&format!("steady analysis of {PERIODS} periods"), |b| {
@@ -107,6 +109,7 @@ fn woodpecker_integration(c: &mut Criterion) {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     for (name, kind) in [("linear", LawKind::Linear), ("harmonic", LawKind::Harmonic)] {
         let law = woodpecker::force_law(&p, kind).expect("Fig. 15 gives a valid force law");

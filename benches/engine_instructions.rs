@@ -73,6 +73,7 @@ fn integrate_repeatedly(body: &Body, law: &ForceLaw, runs: u32) -> Run {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     let mut last = None;
     for _ in 0..runs {
@@ -158,6 +159,7 @@ fn random_fingerprints() {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     for law_kind in [LawKind::Linear, LawKind::Harmonic] {
         let mut rng = StdRng::seed_from_u64(14);

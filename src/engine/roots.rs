@@ -138,9 +138,6 @@ pub fn monotone_zero(
         } else {
             return t;
         }
-        if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(lo.abs()) {
-            break;
-        }
         let denominator = 2.0 * d1 * d1 - ft * d2;
         let step = if denominator != 0.0 {
             2.0 * ft * d1 / denominator
@@ -148,10 +145,14 @@ pub fn monotone_zero(
             f64::NAN
         };
         let next = t - step;
-        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0.
+        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0. Tested
+        // before the width of the bracket, whose fallback costs two more evaluations of f.
         let tol = 4.0 * f64::EPSILON * t.abs();
         if step.abs() <= tol && ft.abs() <= tol * d1.abs() {
             return next.clamp(lo, hi);
+        }
+        if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(lo.abs()) {
+            break;
         }
         t = if next > lo && next < hi {
             next

@@ -75,6 +75,9 @@ pub struct RunOptions {
     pub periods: u32,
     /// Keep every segment of the trajectory (for figures and time series).
     pub record_segments: bool,
+    /// Integrate the friction dissipation ∫ μd N_f |v| dt of each period (for the mean friction
+    /// power of the steady state); the events do not need it.
+    pub dissipation: bool,
 }
 
 /// The outcome of an integration.
@@ -92,7 +95,8 @@ pub struct Run {
     /// Position (m) and velocity (m/s) at the start of each period and at the end (periods + 1).
     pub x_at_period_start: Vec<f64>,
     pub v_at_period_start: Vec<f64>,
-    /// Friction dissipation ∫ μd N_f |v| dt in each period (J).
+    /// Friction dissipation ∫ μd N_f |v| dt in each period (J); empty unless asked for
+    /// ([`RunOptions::dissipation`]).
     pub dissipation: Vec<f64>,
     /// Recorded segments (empty unless asked for).
     pub segments: Vec<Segment>,
@@ -200,7 +204,7 @@ impl Recorder {
 struct Slide {
     /// Stick time (s, local), if the body came to rest.
     stick: Option<f64>,
-    /// ∫ N_f |v| dt over the slide (N·m).
+    /// ∫ N_f |v| dt over the slide (N·m), 0 when not asked for.
     normal_work: f64,
 }
 
@@ -222,7 +226,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let cap = periods as usize + 1;
     let mut x_at_period_start = Vec::with_capacity(cap);
     let mut v_at_period_start = Vec::with_capacity(cap);
-    let mut dissipation = Vec::with_capacity(cap);
+    let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
@@ -316,7 +320,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     &arc,
                     dir,
                     piece,
-                    normal_start,
+                    opts.dissipation.then_some(normal_start),
                     snap,
                     &mut accel_sign,
                     |tm| {
@@ -353,7 +357,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 }
             }
         }
-        dissipation.push(body.mu_d * normal_work);
+        if opts.dissipation {
+            dissipation.push(body.mu_d * normal_work);
+        }
     }
     x_at_period_start.push(x);
     v_at_period_start.push(v);
@@ -463,12 +469,12 @@ fn carry_over(
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
-/// a). `normal_start` is N_f at the start of the arc (for the friction work).
+/// a). `normal_start` is N_f at the start of the arc, given when the friction work is asked for.
 fn slide(
     arc: &Arc,
     dir: i8,
     piece: &Piece,
-    normal_start: f64,
+    normal_start: Option<f64>,
     snap: f64,
     accel_sign: &mut i8,
     mut on_max: impl FnMut(f64),
@@ -540,6 +546,8 @@ fn slide(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        normal_work: arc.integrate_normal_times_speed(normal_start, piece.normal.c1, end),
+        normal_work: normal_start.map_or(0.0, |n_c| {
+            arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
+        }),
     }
 }
