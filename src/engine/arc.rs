@@ -30,6 +30,18 @@ pub struct Start {
     pub a: f64,
 }
 
+/// The motion at one time of an arc ([`Arc::at`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Point {
+    /// Position (m), velocity (m/s), acceleration (m/s²) and its rate da/dt (m/s³).
+    pub x: f64,
+    pub v: f64,
+    pub a: f64,
+    pub jerk: f64,
+    /// b(t) − b(t_c) of the arc's basis, relative to the start (see [`Arc::db`]).
+    pub db: f64,
+}
+
 /// The motion from a start (t_c, x_c, v_c, a_c) under a slope A1 of a in b(t); t is time in the
 /// period.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,6 +85,21 @@ impl Arc {
 
     /// The arc from `start` whose acceleration has slope `a1` (m/s² per unit of b).
     pub fn from_start(basis: Basis, a1: f64, start: Start) -> Arc {
+        let phase = match basis {
+            Basis::Linear { .. } => (0.0, 1.0),
+            Basis::Cos { omega } => phase(omega, start.t),
+        };
+        Arc::from_start_at_phase(basis, a1, start, phase)
+    }
+
+    /// [`Arc::from_start`] with (sin θc, cos θc) = [`phase`]`(ω, t_c)` given (it is not used on
+    /// a linear basis): a piece's start has the same phase in every period.
+    pub fn from_start_at_phase(
+        basis: Basis,
+        a1: f64,
+        start: Start,
+        (sin_c, cos_c): (f64, f64),
+    ) -> Arc {
         let (t_c, t_lo) = (start.t.hi, start.t.lo);
         match basis {
             Basis::Linear { .. } => Arc::Poly {
@@ -83,24 +110,17 @@ impl Arc {
                 a_c: start.a,
                 jerk: a1,
             },
-            Basis::Cos { omega } => {
-                // θc = ωt_c in two parts: the rounding of ω·t_c and the low part of t_c, which
-                // a first-order correction of sin and cos takes in.
-                let theta = omega * t_c;
-                let theta_lo = omega.mul_add(t_c, -theta) + omega * t_lo;
-                let (sin, cos) = theta.sin_cos();
-                Arc::Trig {
-                    t_c,
-                    t_lo,
-                    x_c: start.x,
-                    v_c: start.v,
-                    a_c: start.a,
-                    a1,
-                    omega,
-                    sin_c: sin + cos * theta_lo,
-                    cos_c: cos - sin * theta_lo,
-                }
-            }
+            Basis::Cos { omega } => Arc::Trig {
+                t_c,
+                t_lo,
+                x_c: start.x,
+                v_c: start.v,
+                a_c: start.a,
+                a1,
+                omega,
+                sin_c,
+                cos_c,
+            },
         }
     }
 
@@ -127,10 +147,57 @@ impl Arc {
         }
     }
 
+    /// The motion at time t: position, velocity, acceleration, jerk and b(t) − b(t_c), from one
+    /// evaluation of the trigonometric kernels. The accessors below take one field each: always
+    /// inlined, the other fields cost nothing.
+    #[inline(always)]
+    pub fn at(&self, t: f64) -> Point {
+        let w = self.w(t);
+        match *self {
+            Arc::Poly {
+                x_c,
+                v_c,
+                a_c,
+                jerk,
+                ..
+            } => Point {
+                x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
+                v: v_c + w * (a_c + 0.5 * jerk * w),
+                a: a_c + jerk * w,
+                jerk,
+                db: w,
+            },
+            Arc::Trig {
+                x_c,
+                v_c,
+                a_c,
+                a1,
+                omega,
+                sin_c,
+                cos_c,
+                ..
+            } => {
+                let k = Kernels::new(omega * w);
+                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+                let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
+                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+                // sin(θc + δ)
+                let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
+                Point {
+                    x: x_c + (w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r),
+                    v: v_c + a_c * w + a1 / omega * p,
+                    a: a_c + a1 * q,
+                    jerk: -a1 * omega * sin_t,
+                    db: q,
+                }
+            }
+        }
+    }
+
     /// Acceleration a(t) (m/s²).
     #[inline]
     pub fn a(&self, t: f64) -> f64 {
-        self.a_at(self.w(t))
+        self.at(t).a
     }
 
     /// Acceleration (m/s²) a time w after the start.
@@ -153,85 +220,28 @@ impl Arc {
     }
 
     /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
+    #[inline]
     pub fn db(&self, t: f64) -> f64 {
-        let w = self.w(t);
-        match *self {
-            Arc::Poly { .. } => w,
-            Arc::Trig {
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                -cos_c * k.one_minus_cos - sin_c * k.sin
-            }
-        }
+        self.at(t).db
     }
 
     /// Velocity v(t) (m/s).
     #[inline]
     pub fn v(&self, t: f64) -> f64 {
-        self.v_a_jerk(t).0
+        self.at(t).v
     }
 
     /// Position x(t) (m).
     #[inline]
     pub fn x(&self, t: f64) -> f64 {
-        match *self {
-            Arc::Poly { x_c, .. } | Arc::Trig { x_c, .. } => x_c + self.dx(self.w(t)),
-        }
-    }
-
-    /// x(t_c + w) − x_c (m): the distance from the start, without the position it adds to.
-    fn dx(&self, w: f64) -> f64 {
-        match *self {
-            Arc::Poly { v_c, a_c, jerk, .. } => w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
-            Arc::Trig {
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
-                w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r
-            }
-        }
+        self.at(t).x
     }
 
     /// (v, a, da/dt) at t, for root finding.
     #[inline]
     pub fn v_a_jerk(&self, t: f64) -> (f64, f64, f64) {
-        let w = self.w(t);
-        match *self {
-            Arc::Poly { v_c, a_c, jerk, .. } => {
-                (v_c + w * (a_c + 0.5 * jerk * w), a_c + jerk * w, jerk)
-            }
-            Arc::Trig {
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-                let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
-                // sin(θc + δ)
-                let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
-                (
-                    v_c + a_c * w + a1 / omega * p,
-                    a_c + a1 * q,
-                    -a1 * omega * sin_t,
-                )
-            }
-        }
+        let point = self.at(t);
+        (point.v, point.a, point.jerk)
     }
 
     /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
@@ -321,6 +331,15 @@ impl Arc {
         };
         signed.abs()
     }
+}
+
+/// (sin θ, cos θ) at θ = ωt, t in two parts: the rounding of ω·t.hi and the low part of t, which
+/// a first-order correction of sin and cos takes in.
+pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
+    let theta = omega * t.hi;
+    let theta_lo = omega.mul_add(t.hi, -theta) + omega * t.lo;
+    let (sin, cos) = theta.sin_cos();
+    (sin + cos * theta_lo, cos - sin * theta_lo)
 }
 
 /// sin δ and 1 − cos δ from one sin_cos of δ/2 (both keep their relative accuracy for small δ),

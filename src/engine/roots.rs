@@ -76,12 +76,15 @@ pub fn first_up_crossing(
         Basis::Cos { omega } => {
             // At g = 0, look at the slope, and at the curvature where the slope vanishes too
             // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
-            let (sin, cos) = (omega * from).sin_cos();
+            // sin ωt only where g = 0.
+            let cos = (omega * from).cos();
             let g_from = g.at(cos);
-            let slope = -g.c1 * omega * sin;
-            let curvature = -g.c1 * omega * omega * cos;
-            let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
-            if g_from > 0.0 || (g_from == 0.0 && rising) {
+            let rising = || {
+                let slope = -g.c1 * omega * (omega * from).sin();
+                let curvature = -g.c1 * omega * omega * cos;
+                slope > 0.0 || (slope == 0.0 && curvature > 0.0)
+            };
+            if g_from > 0.0 || (g_from == 0.0 && rising()) {
                 return Some(Crossing::at_once(from));
             }
             // An up-crossing within snap before `from` happens at `from`.

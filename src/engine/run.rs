@@ -2,9 +2,9 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and
 //! friction dissipation.
 
-use super::arc::{Arc, Start};
+use super::arc::{phase, Arc, Start};
 use super::dd::Dd;
-use super::law::{Affine, Body, ForceLaw, Piece};
+use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{first_up_crossing, monotone_zero, Crossing};
 use crate::error::{Error, Result};
 
@@ -228,6 +228,15 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
+    // The phase of each piece's start, the same in every period (for arcs that start there).
+    let start_phases: Vec<(f64, f64)> = law
+        .pieces
+        .iter()
+        .map(|p| match p.basis {
+            Basis::Linear { .. } => (0.0, 1.0),
+            Basis::Cos { omega } => phase(omega, Dd::from(p.start)),
+        })
+        .collect();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
     let mut dir: i8 = 0;
@@ -263,7 +272,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for piece in &law.pieces {
+        for (piece, &start_phase) in law.pieces.iter().zip(&start_phases) {
             let mut t = piece.start;
             let mut transitions = 0;
             loop {
@@ -315,7 +324,11 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 let slope = body
                     .slip_acceleration_affine(piece.drive, piece.normal, s)
                     .c1;
-                let arc = Arc::from_start(piece.basis, slope, start);
+                let arc = if t_start == Dd::from(piece.start) {
+                    Arc::from_start_at_phase(piece.basis, slope, start, start_phase)
+                } else {
+                    Arc::from_start(piece.basis, slope, start)
+                };
                 let slide = slide(
                     &arc,
                     dir,
@@ -324,13 +337,15 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     snap,
                     &mut accel_sign,
                     |tm| {
-                        rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
+                        let at_max = arc.at(tm);
+                        rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
                     },
                 );
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
                 record(t, t_end, Motion::Slide { arc });
-                x = arc.x(t_end);
+                let end = arc.at(t_end);
+                x = end.x;
                 match slide.stick {
                     // A slip from rest that sticks where it started is shorter than the event
                     // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
@@ -349,9 +364,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         t = t_stick;
                     }
                     None => {
-                        v = arc.v(t_end);
-                        let normal_end = normal_start + piece.normal.c1 * arc.db(t_end);
-                        carried = Some((piece, arc.a(t_end), normal_end));
+                        v = end.v;
+                        let normal_end = normal_start + piece.normal.c1 * end.db;
+                        carried = Some((piece, end.a, normal_end));
                         break;
                     }
                 }
@@ -502,15 +517,23 @@ fn slide(
     // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
     let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
+    // The sign of s·a on the last part, which changes at each zero of a (all simple).
+    let mut part_sign: i8 = 0;
     for (i, &q) in bounds.iter().enumerate() {
-        // The sign of a on (p, q) at its midpoint; on the first part measured from the arc's
-        // exact start (its time has a low part), so that a sub-ulp part is not misjudged.
-        let w_mid = if i == 0 {
-            0.5 * arc.w(q)
+        // The sign of a on (p, q): the opposite of the last part's past a zero of a, else at its
+        // midpoint; on the first part measured from the arc's exact start (its time has a low
+        // part), so that a sub-ulp part is not misjudged.
+        let sign = if part_sign != 0 {
+            -part_sign
         } else {
-            arc.w(0.5 * (p + q))
+            let w_mid = if i == 0 {
+                0.5 * arc.w(q)
+            } else {
+                arc.w(0.5 * (p + q))
+            };
+            (s * arc.a_at(w_mid)).signum() as i8
         };
-        let sign = (s * arc.a_at(w_mid)).signum() as i8;
+        part_sign = sign;
         if *accel_sign > 0 && sign < 0 {
             on_max(p);
         }
