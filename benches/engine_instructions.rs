@@ -20,7 +20,8 @@
 //! last run, and with the argument `fingerprint` the same over 4 × 2000 seeded random sets of both
 //! models and both laws (drawn as in tests/reference.rs, μd = μs and φ down to 1e-9 included):
 //! a change to the engine that should keep every event bit for bit is checked by comparing the
-//! fingerprints before and after it.
+//! fingerprints before and after it. The argument `list` prints every event of those runs (to
+//! compare two versions event by event where they differ).
 
 use std::hint::black_box;
 
@@ -93,6 +94,18 @@ fn fingerprint(h: u64, run: &Run) -> u64 {
         .fold(h, |h, x| (h ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3))
 }
 
+/// The events of a run, one line each: the set, the kind and t, x, v (or the error).
+fn print_events(set: &str, run: &stickslip::error::Result<Run>) {
+    match run {
+        Ok(run) => {
+            for e in &run.events {
+                println!("{set}: {:?} {:e} {:e} {:e}", e.kind, e.t, e.x, e.v);
+            }
+        }
+        Err(error) => println!("{set}: {error}"),
+    }
+}
+
 /// The FNV-1a offset basis.
 const FNV_START: u64 = 0xcbf2_9ce4_8422_2325;
 
@@ -154,8 +167,10 @@ fn random_woodpecker(rng: &mut StdRng, i: usize) -> WoodpeckerParams {
 }
 
 /// Fingerprints of 20-period runs of the random sets, per model and law (a set whose law is
-/// undefined or whose run fails adds a marker instead).
-fn random_fingerprints() {
+/// undefined or whose run fails adds a marker instead); with `list`, every event of every run
+/// instead, one line each (set, kind, t, x, v), to compare two versions of the engine event by
+/// event.
+fn random_fingerprints(list: bool) {
     let opts = RunOptions {
         periods: PERIODS,
         record_segments: false,
@@ -168,11 +183,20 @@ fn random_fingerprints() {
             let p = random_pulled_mass(&mut rng, i);
             let run = pulled_mass::force_law(&p, law_kind)
                 .and_then(|law| integrate(&pulled_mass::body(&p), &law, &opts));
+            if list {
+                print_events(&format!("{law_kind:?} pulled mass {i}"), &run);
+            }
             pulled = run.map_or(pulled ^ 1, |r| fingerprint(pulled, &r));
             let w = random_woodpecker(&mut rng, i);
             let run = woodpecker::force_law(&w, law_kind)
                 .and_then(|law| integrate(&woodpecker::body(&w), &law, &opts));
+            if list {
+                print_events(&format!("{law_kind:?} woodpecker {i}"), &run);
+            }
             wood = run.map_or(wood ^ 1, |r| fingerprint(wood, &r));
+        }
+        if list {
+            continue;
         }
         println!("{RANDOM_SETS} random sets, {law_kind:?} law: pulled mass {pulled:016x}, woodpecker {wood:016x}");
     }
@@ -185,8 +209,8 @@ fn main() {
         .filter(|a| !a.starts_with("--"))
         .collect();
     let only = args.first().map(String::as_str);
-    if only == Some("fingerprint") {
-        random_fingerprints();
+    if let Some(mode @ ("fingerprint" | "list")) = only {
+        random_fingerprints(mode == "list");
         return;
     }
     let runs = args

@@ -110,8 +110,11 @@ pub fn first_up_crossing(
 }
 
 /// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `f` returns (f, f', f'')
-/// and the bracket ends come with their values of f. Halley steps (cubic convergence) are
-/// accepted while they stay inside the shrinking bracket, bisection otherwise.
+/// and the bracket ends come with their values of f, the end `hi` with f' and f'' too. The
+/// search starts from the zero of the Taylor parabola at `hi` (exact when f is a quadratic, as
+/// the speed on a polynomial arc), or the secant where that parabola has no zero in the bracket.
+/// Halley steps (cubic convergence) are accepted while they stay inside the shrinking bracket,
+/// bisection otherwise.
 ///
 /// Convergence is a Halley step below a few ulps of t whose Newton step f/f′ is as small: near
 /// a tangency (f′ ≈ 0, e.g. a speed maximum at the end of the bracket) the Halley step
@@ -121,14 +124,21 @@ pub fn first_up_crossing(
 pub fn monotone_zero(
     f: impl Fn(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
-    (hi, f_hi): (f64, f64),
+    (hi, (f_hi, d1_hi, d2_hi)): (f64, (f64, f64, f64)),
 ) -> f64 {
     let (mut lo, mut hi) = (lo, hi);
     if f_hi == 0.0 {
         return hi;
     }
-    // Start from a secant guess.
-    let mut t = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+    // f_hi + f'·h + f''·h²/2 = 0 at the root h ≤ 0 nearest to hi (its form without
+    // cancellation), else the secant.
+    let root = (d1_hi * d1_hi - 2.0 * d2_hi * f_hi).sqrt();
+    let parabola = hi - 2.0 * f_hi / (d1_hi - root);
+    let mut t = if parabola > lo && parabola < hi {
+        parabola
+    } else {
+        lo + (hi - lo) * f_lo / (f_lo - f_hi)
+    };
     for _ in 0..200 {
         if !(t > lo && t < hi) {
             t = 0.5 * (lo + hi);
@@ -259,7 +269,7 @@ mod tests {
     #[test]
     fn monotone_zero_reaches_machine_precision() {
         let f = |t: f64| (2.0 - t.exp(), -t.exp(), -t.exp());
-        let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0).0));
+        let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0)));
         assert!((t - 2f64.ln()).abs() <= 2.0 * f64::EPSILON);
     }
 
@@ -271,7 +281,7 @@ mod tests {
         let v_m = 3.3e-19;
         let f = |t: f64| (v_m - (t - 1.0).powi(2), -2.0 * (t - 1.0), -2.0);
         let (lo, hi) = (1.0, 1.0 + 1e-3);
-        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi).0));
+        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi)));
         let root = 1.0 + v_m.sqrt();
         assert!((t - root).abs() <= 4.0 * f64::EPSILON, "{t} vs {root}");
     }
@@ -301,7 +311,7 @@ mod tests {
                 calls.set(calls.get() + 1);
                 g(t)
             };
-            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi).0));
+            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi)));
             assert!(g(t).0.abs() <= 4.0 * f64::EPSILON, "residual at {t}");
             assert!(calls.get() <= 6, "{} evaluations", calls.get());
         }

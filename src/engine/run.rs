@@ -13,6 +13,9 @@ use crate::error::{Error, Result};
 /// memory for runs of up to 10⁶ periods.
 const KEEP_FIRST: u32 = 2;
 const KEEP_LAST: u32 = 10;
+/// Room for this many events per kept period is reserved at the start (two slip-stick cycles
+/// with their speed maxima, and two more), so that the list seldom grows during a run.
+const EVENTS_RESERVED_PER_PERIOD: usize = 8;
 /// A local minimum of s·v below this fraction of the speed before it is a tangential stick.
 const TOUCH_REL: f64 = 1e-13;
 /// More transitions than this inside one piece means the state machine cannot advance.
@@ -215,8 +218,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let periods = opts.periods;
     let first = &law.pieces[0];
     let immediate_slip = first.drive_at(0.0).abs() > body.mu_s * first.normal_at(0.0);
+    let kept_periods = periods.min(KEEP_FIRST + KEEP_LAST) as usize;
     let mut rec = Recorder {
-        events: Vec::new(),
+        events: Vec::with_capacity(EVENTS_RESERVED_PER_PERIOD * kept_periods),
         periods,
         period,
         snap,
@@ -545,7 +549,8 @@ fn slide(
             continue;
         }
         let at_p = speed_p.unwrap_or_else(|| speed(p));
-        let at_q = speed(q);
+        let point_q = arc.at(q);
+        let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
@@ -554,7 +559,8 @@ fn slide(
                 let (v, a, jerk) = arc.v_a_jerk(t);
                 (s * v, s * a, s * jerk)
             };
-            Some(monotone_zero(f, (p, at_p), (q, at_q)))
+            let hi = (at_q, s * point_q.a, s * point_q.jerk);
+            Some(monotone_zero(f, (p, at_p), (q, hi)))
         } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
             Some(q)
         } else {
