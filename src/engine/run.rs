@@ -232,14 +232,10 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
-    // The phase of each piece's start, the same in every period (for arcs that start there).
-    let start_phases: Vec<(f64, f64)> = law
+    let constants: Vec<PieceConstants> = law
         .pieces
         .iter()
-        .map(|p| match p.basis {
-            Basis::Linear { .. } => (0.0, 1.0),
-            Basis::Cos { omega } => phase(omega, Dd::from(p.start)),
-        })
+        .map(|p| PieceConstants::new(p, snap))
         .collect();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
@@ -276,7 +272,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for (piece, &start_phase) in law.pieces.iter().zip(&start_phases) {
+        for (piece, constants) in law.pieces.iter().zip(&constants) {
             let mut t = piece.start;
             let mut transitions = 0;
             loop {
@@ -288,7 +284,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(body, piece, t, snap);
+                    let onset = slip_onset(body, piece, constants.basis_range, t, snap);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     record(t, t_end, Motion::Rest { x });
                     let Some((crossing, s)) = onset else { break };
@@ -329,7 +325,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     .slip_acceleration_affine(piece.drive, piece.normal, s)
                     .c1;
                 let arc = if t_start == Dd::from(piece.start) {
-                    Arc::from_start_at_phase(piece.basis, slope, start, start_phase)
+                    Arc::from_start_at_phase(piece.basis, slope, start, constants.start_phase)
                 } else {
                     Arc::from_start(piece.basis, slope, start)
                 };
@@ -395,16 +391,51 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     })
 }
 
+/// What a run computes once for each piece of the force law: the same in every period.
+struct PieceConstants {
+    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
+    /// there ((0, 1) on a linear basis, where it is not used).
+    start_phase: (f64, f64),
+    /// The range of the basis over the piece and the resolution `snap` before it
+    /// ([`Piece::basis_range`]).
+    basis_range: (f64, f64),
+}
+
+impl PieceConstants {
+    fn new(piece: &Piece, snap: f64) -> PieceConstants {
+        PieceConstants {
+            start_phase: match piece.basis {
+                Basis::Linear { .. } => (0.0, 1.0),
+                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
+            },
+            basis_range: piece.basis_range(snap),
+        }
+    }
+}
+
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp.
-fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
+/// better than its ulp. A direction in which g stays below zero by more than its rounding over
+/// the whole `basis_range` of the piece is not searched (the direction opposite to the drive).
+fn slip_onset(
+    body: &Body,
+    piece: &Piece,
+    (b_min, b_max): (f64, f64),
+    from: f64,
+    snap: f64,
+) -> Option<(Crossing, i8)> {
     [1i8, -1]
         .into_iter()
         .filter_map(|s| {
             // g > 0 ⇔ the static friction cannot hold the body in direction s.
             let sf = f64::from(s);
             let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+            let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
+            let rounding =
+                8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
+            if g_lo.max(g_hi) < -rounding {
+                return None;
+            }
             let exact = || {
                 let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
                 (
