@@ -152,6 +152,25 @@ impl Arc {
     /// inlined, the other fields cost nothing.
     #[inline(always)]
     pub fn at(&self, t: f64) -> Point {
+        self.at_with(t, Kernels::new)
+    }
+
+    /// [`Arc::at`] at a time close to the last one evaluated with the same `seed`, as in a root
+    /// search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the kernels
+    /// follow from the seed's by the angle-addition formulas, without sin and cos (each
+    /// addition adds about an ulp to them). The seed is then moved to t.
+    #[inline]
+    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
+        self.at_with(t, |delta| {
+            let kernels = Kernels::near(delta, *seed);
+            *seed = Some(kernels.half);
+            kernels
+        })
+    }
+
+    /// The motion at time t, with the kernels of a trigonometric arc from `kernels(δ)`.
+    #[inline(always)]
+    fn at_with(&self, t: f64, kernels: impl FnOnce(f64) -> Kernels) -> Point {
         let w = self.w(t);
         match *self {
             Arc::Poly {
@@ -177,7 +196,7 @@ impl Arc {
                 cos_c,
                 ..
             } => {
-                let k = Kernels::new(omega * w);
+                let k = kernels(omega * w);
                 let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
                 let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
                 let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
@@ -348,16 +367,74 @@ struct Kernels {
     delta: f64,
     sin: f64,
     one_minus_cos: f64,
+    /// sin and cos of δ/2, from which the others are formed.
+    half: HalfAngle,
 }
+
+/// sin and cos of half the angle δ = ωw an arc has turned through since its start: the seed of
+/// [`Arc::at_near`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HalfAngle {
+    angle: f64,
+    sin: f64,
+    cos: f64,
+}
+
+/// The largest change of δ/2 taken by the angle-addition formulas: there the Taylor sums of
+/// [`SIN_TAYLOR`] and [`ONE_MINUS_COS_TAYLOR`] are exact to a relative 3e-18.
+pub const ADDITION_MAX: f64 = 0.1;
+
+/// sin e / e = Σ (−1)^k e^{2k}/(2k+1)!, to e^8.
+const SIN_TAYLOR: [f64; 5] = [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0];
+
+/// (1 − cos e) / e² = Σ (−1)^k e^{2k}/(2k+2)!, to e^8.
+const ONE_MINUS_COS_TAYLOR: [f64; 5] = [
+    0.5,
+    -1.0 / 24.0,
+    1.0 / 720.0,
+    -1.0 / 40320.0,
+    1.0 / 3_628_800.0,
+];
 
 impl Kernels {
     #[inline]
     fn new(delta: f64) -> Kernels {
-        let (sh, ch) = (0.5 * delta).sin_cos();
+        let angle = 0.5 * delta;
+        let (sin, cos) = angle.sin_cos();
+        Kernels::from_half(delta, HalfAngle { angle, sin, cos })
+    }
+
+    /// The kernels at δ from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
+    /// sin(x + e) = sin x + (cos x sin e − sin x (1 − cos e)) and
+    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`].
+    #[inline]
+    fn near(delta: f64, seed: Option<HalfAngle>) -> Kernels {
+        let angle = 0.5 * delta;
+        match seed {
+            Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
+                let e = angle - x.angle;
+                let (sin_e, one_minus_cos_e) = (
+                    e * series(e * e, &SIN_TAYLOR),
+                    e * e * series(e * e, &ONE_MINUS_COS_TAYLOR),
+                );
+                let half = HalfAngle {
+                    angle,
+                    sin: x.sin + (x.cos * sin_e - x.sin * one_minus_cos_e),
+                    cos: x.cos - (x.sin * sin_e + x.cos * one_minus_cos_e),
+                };
+                Kernels::from_half(delta, half)
+            }
+            _ => Kernels::new(delta),
+        }
+    }
+
+    #[inline]
+    fn from_half(delta: f64, half: HalfAngle) -> Kernels {
         Kernels {
             delta,
-            sin: 2.0 * sh * ch,
-            one_minus_cos: 2.0 * sh * sh,
+            sin: 2.0 * half.sin * half.cos,
+            one_minus_cos: 2.0 * half.sin * half.sin,
+            half,
         }
     }
 

@@ -122,7 +122,7 @@ pub fn first_up_crossing(
 /// comes before the bracket test, so a sub-ulp step that lands on a bracket end ends the search
 /// instead of restarting it by bisection.
 pub fn monotone_zero(
-    f: impl Fn(f64) -> (f64, f64, f64),
+    mut f: impl FnMut(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
     (hi, (f_hi, d1_hi, d2_hi)): (f64, (f64, f64, f64)),
 ) -> f64 {

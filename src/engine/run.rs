@@ -2,7 +2,7 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and
 //! friction dissipation.
 
-use super::arc::{phase, Arc, Start};
+use super::arc::{phase, Arc, Point, Start};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{first_up_crossing, monotone_zero, Crossing};
@@ -207,6 +207,8 @@ impl Recorder {
 struct Slide {
     /// Stick time (s, local), if the body came to rest.
     stick: Option<f64>,
+    /// The motion at the stick, or at the end of the piece.
+    end: Point,
     /// ∫ N_f |v| dt over the slide (N·m), 0 when not asked for.
     normal_work: f64,
 }
@@ -232,10 +234,10 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
-    let constants: Vec<PieceConstants> = law
+    let prepared: Vec<PreparedPiece> = law
         .pieces
         .iter()
-        .map(|p| PieceConstants::new(p, snap))
+        .map(|piece| PreparedPiece::new(piece, snap))
         .collect();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
@@ -272,7 +274,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for (piece, constants) in law.pieces.iter().zip(&constants) {
+        for prepared in &prepared {
+            let piece = prepared.piece;
             let mut t = piece.start;
             let mut transitions = 0;
             loop {
@@ -284,7 +287,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(body, piece, constants.basis_range, t, snap);
+                    let onset = slip_onset(body, prepared, t, snap);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     record(t, t_end, Motion::Rest { x });
                     let Some((crossing, s)) = onset else { break };
@@ -325,14 +328,14 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     .slip_acceleration_affine(piece.drive, piece.normal, s)
                     .c1;
                 let arc = if t_start == Dd::from(piece.start) {
-                    Arc::from_start_at_phase(piece.basis, slope, start, constants.start_phase)
+                    Arc::from_start_at_phase(piece.basis, slope, start, prepared.start_phase)
                 } else {
                     Arc::from_start(piece.basis, slope, start)
                 };
                 let slide = slide(
                     &arc,
                     dir,
-                    piece,
+                    prepared,
                     opts.dissipation.then_some(normal_start),
                     snap,
                     &mut accel_sign,
@@ -344,7 +347,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
                 record(t, t_end, Motion::Slide { arc });
-                let end = arc.at(t_end);
+                let end = slide.end;
                 x = end.x;
                 match slide.stick {
                     // A slip from rest that sticks where it started is shorter than the event
@@ -391,8 +394,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     })
 }
 
-/// What a run computes once for each piece of the force law: the same in every period.
-struct PieceConstants {
+/// A piece of the force law with what a run computes once for it: the same in every period.
+struct PreparedPiece<'a> {
+    piece: &'a Piece,
     /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
     /// there ((0, 1) on a linear basis, where it is not used).
     start_phase: (f64, f64),
@@ -401,9 +405,10 @@ struct PieceConstants {
     basis_range: (f64, f64),
 }
 
-impl PieceConstants {
-    fn new(piece: &Piece, snap: f64) -> PieceConstants {
-        PieceConstants {
+impl PreparedPiece<'_> {
+    fn new(piece: &Piece, snap: f64) -> PreparedPiece<'_> {
+        PreparedPiece {
+            piece,
             start_phase: match piece.basis {
                 Basis::Linear { .. } => (0.0, 1.0),
                 Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
@@ -416,14 +421,15 @@ impl PieceConstants {
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
 /// better than its ulp. A direction in which g stays below zero by more than its rounding over
-/// the whole `basis_range` of the piece is not searched (the direction opposite to the drive).
+/// the whole range of the basis over the piece is not searched (the direction opposite to the
+/// drive).
 fn slip_onset(
     body: &Body,
-    piece: &Piece,
-    (b_min, b_max): (f64, f64),
+    prepared: &PreparedPiece,
     from: f64,
     snap: f64,
 ) -> Option<(Crossing, i8)> {
+    let (piece, (b_min, b_max)) = (prepared.piece, prepared.basis_range);
     [1i8, -1]
         .into_iter()
         .filter_map(|s| {
@@ -523,13 +529,13 @@ fn carry_over(
 fn slide(
     arc: &Arc,
     dir: i8,
-    piece: &Piece,
+    prepared: &PreparedPiece,
     normal_start: Option<f64>,
     snap: f64,
     accel_sign: &mut i8,
     mut on_max: impl FnMut(f64),
 ) -> Slide {
-    let s = f64::from(dir);
+    let (s, piece) = (f64::from(dir), prepared.piece);
     let from = arc.t_start();
     let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
@@ -552,6 +558,9 @@ fn slide(
     // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
     let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
+    // The half angle of the last evaluation on a trigonometric arc, from which the root search
+    // and the motion at the stick step on without sin and cos.
+    let mut seed = None;
     // The sign of s·a on the last part, which changes at each zero of a (all simple).
     let mut part_sign: i8 = 0;
     for (i, &q) in bounds.iter().enumerate() {
@@ -580,15 +589,15 @@ fn slide(
             continue;
         }
         let at_p = speed_p.unwrap_or_else(|| speed(p));
-        let point_q = arc.at(q);
+        let point_q = arc.at_near(q, &mut seed);
         let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                let (v, a, jerk) = arc.v_a_jerk(t);
-                (s * v, s * a, s * jerk)
+                let at = arc.at_near(t, &mut seed);
+                (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
             Some(monotone_zero(f, (p, at_p), (q, hi)))
@@ -606,6 +615,7 @@ fn slide(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
+        end: arc.at_near(end, &mut seed),
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
         }),
