@@ -138,6 +138,22 @@ impl Arc {
         }
     }
 
+    /// Acceleration at the start (m/s²).
+    pub fn a_start(&self) -> f64 {
+        match *self {
+            Arc::Poly { a_c, .. } | Arc::Trig { a_c, .. } => a_c,
+        }
+    }
+
+    /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
+    /// basis.
+    pub fn jerk_bound(&self) -> f64 {
+        match *self {
+            Arc::Poly { jerk, .. } => jerk.abs(),
+            Arc::Trig { a1, omega, .. } => (a1 * omega).abs(),
+        }
+    }
+
     /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
     /// (Sterbenz), and t_c.lo is then subtracted.
     #[inline]

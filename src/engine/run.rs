@@ -563,12 +563,18 @@ fn slide(
     let mut seed = None;
     // The sign of s·a on the last part, which changes at each zero of a (all simple).
     let mut part_sign: i8 = 0;
+    // a keeps the sign of a_c from the start for longer than the zeros of a left out before
+    // `after`, and than its rounding (about eps·|da/dt|·T, below jerk_bound·snap).
+    let start_sign = arc.a_start().abs() > 2.0 * arc.jerk_bound() * (after - from + snap);
     for (i, &q) in bounds.iter().enumerate() {
-        // The sign of a on (p, q): the opposite of the last part's past a zero of a, else at its
-        // midpoint; on the first part measured from the arc's exact start (its time has a low
-        // part), so that a sub-ulp part is not misjudged.
+        // The sign of a on (p, q): the opposite of the last part's past a zero of a, that of a_c
+        // on the first part where it holds, else at the midpoint; on the first part measured
+        // from the arc's exact start (its time has a low part), so that a sub-ulp part is not
+        // misjudged.
         let sign = if part_sign != 0 {
             -part_sign
+        } else if i == 0 && start_sign {
+            (s * arc.a_start()).signum() as i8
         } else {
             let w_mid = if i == 0 {
                 0.5 * arc.w(q)
