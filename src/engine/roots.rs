@@ -18,6 +18,9 @@ pub struct Crossing {
     /// The basis value b(t) at a located root, where g = 0 exactly; `None` where g is positive
     /// already at the start of the search (or crossed zero within the resolution before it).
     pub root_b: Option<Dd>,
+    /// (sin ωt, cos ωt) at a located root on a cos basis, from its basis value cos ωt = b: the
+    /// phase of the arc that starts there, without sin and cos.
+    pub phase: Option<(f64, f64)>,
 }
 
 impl Crossing {
@@ -25,6 +28,7 @@ impl Crossing {
         Crossing {
             t: Dd::from(t),
             root_b: None,
+            phase: None,
         }
     }
 }
@@ -60,6 +64,7 @@ pub fn first_up_crossing(
                     Some(Crossing {
                         t: Dd::from(t_ref) + b,
                         root_b: Some(b),
+                        phase: None,
                     })
                 } else {
                     None
@@ -99,11 +104,17 @@ pub fn first_up_crossing(
             let b = root_b();
             let refined = cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY)[index];
             Some(match refined {
-                Some((t, _)) => Crossing { t, root_b: Some(b) },
-                None => Crossing {
-                    t: Dd::from(t),
-                    root_b: None,
-                },
+                Some((t, _)) => {
+                    // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
+                    // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
+                    let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
+                    Crossing {
+                        t,
+                        root_b: Some(b),
+                        phase: Some((if index == 0 { sin } else { -sin }, b.value())),
+                    }
+                }
+                None => Crossing::at_once(t),
             })
         }
     }

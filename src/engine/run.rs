@@ -244,8 +244,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut dir: i8 = 0;
     // Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
     let mut accel_sign: i8 = 0;
-    // The start (t, a, N_f) of the slip that begins at a located onset, for the next arc.
-    let mut onset_start: Option<(Dd, f64, f64)> = None;
+    // The onset (its crossing, a, N_f) where the slip begins, for the next arc.
+    let mut onset_start: Option<(Crossing, f64, f64)> = None;
 
     for n in 0..periods {
         let period_start = f64::from(n) * period;
@@ -296,14 +296,14 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     accel_sign = 0;
                     t = crossing.t.hi;
                     let (a, normal) = onset_acceleration(body, piece, &crossing, f64::from(s));
-                    onset_start = Some((crossing.t, a, normal));
+                    onset_start = Some((crossing, a, normal));
                     continue;
                 }
                 let s = f64::from(dir);
                 // From an onset, or through a piece boundary (and after a reversal) where the
                 // acceleration is Newton's (D − s μd N_f)/M at that instant.
-                let (t_start, a_start, normal_start) = match onset_start.take() {
-                    Some(start) => start,
+                let (t_start, a_start, normal_start, phase) = match onset_start.take() {
+                    Some((crossing, a, normal)) => (crossing.t, a, normal, crossing.phase),
                     None => {
                         let (a, normal) = carried
                             .take()
@@ -315,7 +315,13 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                                 let normal = piece.normal.at(b);
                                 (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                             });
-                        (Dd::from(t), a, normal)
+                        let at_piece_start = t == piece.start;
+                        (
+                            Dd::from(t),
+                            a,
+                            normal,
+                            at_piece_start.then_some(prepared.start_phase),
+                        )
                     }
                 };
                 let start = Start {
@@ -327,10 +333,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 let slope = body
                     .slip_acceleration_affine(piece.drive, piece.normal, s)
                     .c1;
-                let arc = if t_start == Dd::from(piece.start) {
-                    Arc::from_start_at_phase(piece.basis, slope, start, prepared.start_phase)
-                } else {
-                    Arc::from_start(piece.basis, slope, start)
+                let arc = match phase {
+                    Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
+                    None => Arc::from_start(piece.basis, slope, start),
                 };
                 let slide = slide(
                     &arc,
