@@ -518,32 +518,6 @@ const MINUS_COS: [f64; 11] = [
     1.0 / 620_448_401_733_239_439_360_000.0,
 ];
 
-/// Solutions in [lo, hi) of c0 + c1 cos ωt = 0 with t in [0, 2π/ω], each with the sign of the
-/// derivative there (+1 up-crossing, −1 down-crossing), ascending. A tangency (|c0| = |c1|) is
-/// not a crossing and is not returned.
-pub fn cos_level_crossings(
-    c0: f64,
-    c1: f64,
-    omega: f64,
-    lo: f64,
-    hi: f64,
-) -> [Option<(f64, i8)>; 2] {
-    if c1 == 0.0 {
-        return [None, None];
-    }
-    let r = -c0 / c1;
-    if !(r > -1.0 && r < 1.0) {
-        return [None, None];
-    }
-    let theta = r.acos();
-    let period = std::f64::consts::TAU / omega;
-    // d/dt (c1 cos ωt) = −c1 ω sin ωt: sin > 0 on (0, π), < 0 on (π, 2π).
-    let first = theta / omega;
-    let second = period - first;
-    let up_first: i8 = if c1 < 0.0 { 1 } else { -1 };
-    [(first, up_first), (second, -up_first)].map(|(t, dir)| (t >= lo && t < hi).then_some((t, dir)))
-}
-
 /// Solutions t = θ/ω and (2π − θ)/ω in [lo, hi) of cos ωt = r, −1 < r < 1, as double-doubles,
 /// each with the sign of d(cos ωt)/dt there (−1 for the first, +1 for the second).
 pub fn cos_level_crossings_dd(r: Dd, omega: f64, lo: f64, hi: f64) -> [Option<(Dd, i8)>; 2] {
@@ -601,13 +575,14 @@ mod tests {
     fn cos_crossings_have_the_right_direction() {
         let omega = 2.0;
         let period = std::f64::consts::TAU / omega;
-        // g = 0.5 − cos ωt: up-crossing at ωt = π/3, down-crossing at 5π/3.
-        let c = cos_level_crossings(0.5, -1.0, omega, 0.0, period).map(Option::unwrap);
-        assert!((c[0].0 - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
-        assert_eq!((c[0].1, c[1].1), (1, -1));
+        // cos ωt = 0.5 at ωt = π/3 (cos falling) and 5π/3 (rising).
+        let c = cos_level_crossings_dd(Dd::from(0.5), omega, 0.0, period).map(Option::unwrap);
+        assert!((c[0].0.value() - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
+        assert!((c[1].0.value() - 5.0 * std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
+        assert_eq!((c[0].1, c[1].1), (-1, 1));
         // Tangency is not a crossing.
         assert_eq!(
-            cos_level_crossings(1.0, 1.0, omega, 0.0, period),
+            cos_level_crossings_dd(Dd::from(1.0), omega, 0.0, period),
             [None, None]
         );
     }

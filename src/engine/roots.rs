@@ -5,7 +5,7 @@
 //! derivative and a bracket on which the function is monotone: Newton's method safeguarded by
 //! bisection converges in a few steps to the last bit (about 1e-16 relative).
 
-use super::arc::{cos_level_crossings, cos_level_crossings_dd};
+use super::arc::cos_level_crossings_dd;
 use super::dd::Dd;
 use super::law::{Affine, Basis};
 
@@ -92,29 +92,27 @@ pub fn first_up_crossing(
             if g_from > 0.0 || (g_from == 0.0 && rising()) {
                 return Some(Crossing::at_once(from));
             }
-            // An up-crossing within snap before `from` happens at `from`.
-            let (index, t) = cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
+            // The crossings θ/ω and (2π − θ)/ω of cos ωt = b, in two parts; g = c0 + c1 cos ωt
+            // rises where c1·d(cos ωt)/dt > 0. An up-crossing within snap before `from` happens
+            // at `from`.
+            let b = root_b();
+            let (index, t) = cos_level_crossings_dd(b, omega, from - snap, to - snap)
                 .into_iter()
                 .enumerate()
-                .find_map(|(i, c)| c.filter(|&(_, dir)| dir > 0).map(|(t, _)| (i, t)))?;
-            if t < from {
+                .find_map(|(i, c)| {
+                    c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
+                        .map(|(t, _)| (i, t))
+                })?;
+            if t.value() < from {
                 return Some(Crossing::at_once(from));
             }
-            // The same crossing (θ/ω or (2π − θ)/ω), in two parts.
-            let b = root_b();
-            let refined = cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY)[index];
-            Some(match refined {
-                Some((t, _)) => {
-                    // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
-                    // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
-                    let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
-                    Crossing {
-                        t,
-                        root_b: Some(b),
-                        phase: Some((if index == 0 { sin } else { -sin }, b.value())),
-                    }
-                }
-                None => Crossing::at_once(t),
+            // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
+            // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
+            let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
+            Some(Crossing {
+                t,
+                root_b: Some(b),
+                phase: Some((if index == 0 { sin } else { -sin }, b.value())),
             })
         }
     }
