@@ -10,6 +10,20 @@
 //! Targets: closed forms < 1 µs; 20 periods of either law < 20 µs. The woodpecker (Fig. 15
 //! set): all closed forms of both phases < 2 µs; 20 periods of either law < 30 µs. The whole
 //! default report (rendered in memory) < 2 s.
+//!
+//! The engine at its floor (issue 14): 20 periods within 1.5× a lean closed-form engine in C
+//! (1.1 / 8.4 / 2.1 / 21 µs for the pulled mass linear / harmonic and the woodpecker linear /
+//! harmonic), i.e. ≤ 1.65 / 12.6 / 3.15 / 31.5 µs, and the harmonic woodpecker ≤ 15 µs. On a
+//! shared machine the timings follow its load (quote `uptime` with them); the instruction counts
+//! of benches/engine_instructions.rs do not, and compare versions of the engine:
+//!
+//! ```text
+//! instructions per 20-period run       before   after    libm calls per period (before → after)
+//! pulled mass, linear law              44 430   35 534   0
+//! pulled mass, harmonic law            98 625   77 755   23.1 → 11.2
+//! woodpecker, linear law               81 649   69 598   0
+//! woodpecker, harmonic law            237 437  166 374   53.0 → 19.4  (sincos counted once)
+//! ```
 
 use std::hint::black_box;
 

@@ -38,7 +38,7 @@ pub struct Point {
     pub v: f64,
     pub a: f64,
     pub jerk: f64,
-    /// b(t) − b(t_c) of the arc's basis, relative to the start (see [`Arc::db`]).
+    /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
     pub db: f64,
 }
 
@@ -254,12 +254,6 @@ impl Arc {
         }
     }
 
-    /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
-    #[inline]
-    pub fn db(&self, t: f64) -> f64 {
-        self.at(t).db
-    }
-
     /// Velocity v(t) (m/s).
     #[inline]
     pub fn v(&self, t: f64) -> f64 {
@@ -270,13 +264,6 @@ impl Arc {
     #[inline]
     pub fn x(&self, t: f64) -> f64 {
         self.at(t).x
-    }
-
-    /// (v, a, da/dt) at t, for root finding.
-    #[inline]
-    pub fn v_a_jerk(&self, t: f64) -> (f64, f64, f64) {
-        let point = self.at(t);
-        (point.v, point.a, point.jerk)
     }
 
     /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no

@@ -1,6 +1,6 @@
 //! The driver: walks the force law piece by piece through the requested periods, switching
-//! between STUCK and SLIP at located events, and records events, per-period positions and
-//! friction dissipation.
+//! between STUCK and SLIP at located events, and records events, per-period positions and (when
+//! asked for) friction dissipation.
 
 use super::arc::{phase, Arc, Point, Start};
 use super::dd::Dd;
