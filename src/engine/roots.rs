@@ -269,6 +269,16 @@ mod tests {
         let c = crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
         assert!((c.t.value() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         assert_eq!(c.root_b, Some(Dd::from(0.0)));
+        assert_eq!(c.phase, Some((1.0, 0.0)));
+        // g = 0.5 − cos t rises through zero at t = π/3, where sin t > 0; g = cos t − 0.5 at
+        // 5π/3, where sin t < 0: the phase of each root is sin and cos of its time.
+        for (c0, c1, from) in [(0.5, -1.0, 0.0), (-0.5, 1.0, 3.0)] {
+            let c = crossing(basis, g(c0, c1), from, tau, 1e-15).unwrap();
+            let (sin, cos) = c.phase.unwrap();
+            let (sin_t, cos_t) = c.t.value().sin_cos();
+            assert!((sin - sin_t).abs() < 4.0 * f64::EPSILON, "{sin} vs {sin_t}");
+            assert!((cos - cos_t).abs() < 4.0 * f64::EPSILON, "{cos} vs {cos_t}");
+        }
         // g = cos t − 1 ≤ 0 touches zero at 0: never positive.
         assert_eq!(at(crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)), None);
         // g = cos t, starting at 0 where g > 0: at once.
