@@ -364,7 +364,7 @@ pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
     (sin + cos * theta_lo, cos - sin * theta_lo)
 }
 
-/// sin δ and 1 − cos δ from one sin_cos of δ/2 (both keep their relative accuracy for small δ),
+/// sin δ and 1 − cos δ from sin and cos of δ/2 (both keep their relative accuracy for small δ),
 /// and the higher differences δ − sin δ and δ²/2 − (1 − cos δ).
 struct Kernels {
     delta: f64,
@@ -431,6 +431,7 @@ impl Kernels {
         }
     }
 
+    /// The kernels at δ from sin and cos of δ/2.
     #[inline]
     fn from_half(delta: f64, half: HalfAngle) -> Kernels {
         Kernels {

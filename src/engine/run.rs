@@ -411,6 +411,8 @@ struct PreparedPiece<'a> {
 }
 
 impl PreparedPiece<'_> {
+    /// The piece with its start's phase and its range of the basis (widened by `snap` before
+    /// the start).
     fn new(piece: &Piece, snap: f64) -> PreparedPiece<'_> {
         PreparedPiece {
             piece,
