@@ -15,6 +15,7 @@ fn run(body: &Body, law: &ForceLaw, periods: u32) -> Run {
         &RunOptions {
             periods,
             record_segments: true,
+            dissipation: true,
         },
     )
     .expect("integration")

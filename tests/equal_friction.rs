@@ -15,6 +15,7 @@ const SETS: usize = 400;
 const OPTS: RunOptions = RunOptions {
     periods: 12,
     record_segments: false,
+    dissipation: false,
 };
 
 fn log_uniform(rng: &mut StdRng, lo: f64, hi: f64) -> f64 {

@@ -274,6 +274,7 @@ fn engine_matches_a_40_digit_integration() {
         let opts = RunOptions {
             periods: PERIODS,
             record_segments: false,
+            dissipation: true,
         };
         let run = match integrate(&case.body, &case.law, &opts) {
             Ok(run) => run,

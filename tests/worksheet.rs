@@ -93,6 +93,7 @@ fn sticks_by_half_period(p: &WoodpeckerParams) -> bool {
     let opts = RunOptions {
         periods: 1,
         record_segments: false,
+        dissipation: false,
     };
     let run = integrate(&wp_model::body(p), &law, &opts).unwrap();
     assert!(!run.immediate_slip);

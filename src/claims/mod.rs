@@ -213,6 +213,7 @@ fn steady_run(body: &Body, law: &ForceLaw) -> Result<Integrated> {
     let opts = RunOptions {
         periods: DEFAULT_PERIODS,
         record_segments: false,
+        dissipation: true,
     };
     let run = integrate(body, law, &opts)?;
     let steady = analyse(&run);

@@ -30,6 +30,18 @@ pub struct Start {
     pub a: f64,
 }
 
+/// The motion at one time of an arc ([`Arc::at`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Point {
+    /// Position (m), velocity (m/s), acceleration (m/s²) and its rate da/dt (m/s³).
+    pub x: f64,
+    pub v: f64,
+    pub a: f64,
+    pub jerk: f64,
+    /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
+    pub db: f64,
+}
+
 /// The motion from a start (t_c, x_c, v_c, a_c) under a slope A1 of a in b(t); t is time in the
 /// period.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,6 +85,21 @@ impl Arc {
 
     /// The arc from `start` whose acceleration has slope `a1` (m/s² per unit of b).
     pub fn from_start(basis: Basis, a1: f64, start: Start) -> Arc {
+        let phase = match basis {
+            Basis::Linear { .. } => (0.0, 1.0),
+            Basis::Cos { omega } => phase(omega, start.t),
+        };
+        Arc::from_start_at_phase(basis, a1, start, phase)
+    }
+
+    /// [`Arc::from_start`] with (sin θc, cos θc) = [`phase`]`(ω, t_c)` given (it is not used on
+    /// a linear basis): a piece's start has the same phase in every period.
+    pub fn from_start_at_phase(
+        basis: Basis,
+        a1: f64,
+        start: Start,
+        (sin_c, cos_c): (f64, f64),
+    ) -> Arc {
         let (t_c, t_lo) = (start.t.hi, start.t.lo);
         match basis {
             Basis::Linear { .. } => Arc::Poly {
@@ -83,24 +110,17 @@ impl Arc {
                 a_c: start.a,
                 jerk: a1,
             },
-            Basis::Cos { omega } => {
-                // θc = ωt_c in two parts: the rounding of ω·t_c and the low part of t_c, which
-                // a first-order correction of sin and cos takes in.
-                let theta = omega * t_c;
-                let theta_lo = omega.mul_add(t_c, -theta) + omega * t_lo;
-                let (sin, cos) = theta.sin_cos();
-                Arc::Trig {
-                    t_c,
-                    t_lo,
-                    x_c: start.x,
-                    v_c: start.v,
-                    a_c: start.a,
-                    a1,
-                    omega,
-                    sin_c: sin + cos * theta_lo,
-                    cos_c: cos - sin * theta_lo,
-                }
-            }
+            Basis::Cos { omega } => Arc::Trig {
+                t_c,
+                t_lo,
+                x_c: start.x,
+                v_c: start.v,
+                a_c: start.a,
+                a1,
+                omega,
+                sin_c,
+                cos_c,
+            },
         }
     }
 
@@ -118,6 +138,22 @@ impl Arc {
         }
     }
 
+    /// Acceleration at the start (m/s²).
+    pub fn a_start(&self) -> f64 {
+        match *self {
+            Arc::Poly { a_c, .. } | Arc::Trig { a_c, .. } => a_c,
+        }
+    }
+
+    /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
+    /// basis.
+    pub fn jerk_bound(&self) -> f64 {
+        match *self {
+            Arc::Poly { jerk, .. } => jerk.abs(),
+            Arc::Trig { a1, omega, .. } => (a1 * omega).abs(),
+        }
+    }
+
     /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
     /// (Sterbenz), and t_c.lo is then subtracted.
     #[inline]
@@ -127,10 +163,76 @@ impl Arc {
         }
     }
 
+    /// The motion at time t: position, velocity, acceleration, jerk and b(t) − b(t_c), from one
+    /// evaluation of the trigonometric kernels. The accessors below take one field each: always
+    /// inlined, the other fields cost nothing.
+    #[inline(always)]
+    pub fn at(&self, t: f64) -> Point {
+        self.at_with(t, Kernels::new)
+    }
+
+    /// [`Arc::at`] at a time close to the last one evaluated with the same `seed`, as in a root
+    /// search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the kernels
+    /// follow from the seed's by the angle-addition formulas, without sin and cos (each
+    /// addition adds about an ulp to them). The seed is then moved to t.
+    #[inline]
+    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
+        self.at_with(t, |delta| {
+            let kernels = Kernels::near(delta, *seed);
+            *seed = Some(kernels.half);
+            kernels
+        })
+    }
+
+    /// The motion at time t, with the kernels of a trigonometric arc from `kernels(δ)`.
+    #[inline(always)]
+    fn at_with(&self, t: f64, kernels: impl FnOnce(f64) -> Kernels) -> Point {
+        let w = self.w(t);
+        match *self {
+            Arc::Poly {
+                x_c,
+                v_c,
+                a_c,
+                jerk,
+                ..
+            } => Point {
+                x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
+                v: v_c + w * (a_c + 0.5 * jerk * w),
+                a: a_c + jerk * w,
+                jerk,
+                db: w,
+            },
+            Arc::Trig {
+                x_c,
+                v_c,
+                a_c,
+                a1,
+                omega,
+                sin_c,
+                cos_c,
+                ..
+            } => {
+                let k = kernels(omega * w);
+                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+                let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
+                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+                // sin(θc + δ)
+                let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
+                Point {
+                    x: x_c + (w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r),
+                    v: v_c + a_c * w + a1 / omega * p,
+                    a: a_c + a1 * q,
+                    jerk: -a1 * omega * sin_t,
+                    db: q,
+                }
+            }
+        }
+    }
+
     /// Acceleration a(t) (m/s²).
     #[inline]
     pub fn a(&self, t: f64) -> f64 {
-        self.a_at(self.w(t))
+        self.at(t).a
     }
 
     /// Acceleration (m/s²) a time w after the start.
@@ -152,86 +254,16 @@ impl Arc {
         }
     }
 
-    /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
-    pub fn db(&self, t: f64) -> f64 {
-        let w = self.w(t);
-        match *self {
-            Arc::Poly { .. } => w,
-            Arc::Trig {
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                -cos_c * k.one_minus_cos - sin_c * k.sin
-            }
-        }
-    }
-
     /// Velocity v(t) (m/s).
     #[inline]
     pub fn v(&self, t: f64) -> f64 {
-        self.v_a_jerk(t).0
+        self.at(t).v
     }
 
     /// Position x(t) (m).
     #[inline]
     pub fn x(&self, t: f64) -> f64 {
-        match *self {
-            Arc::Poly { x_c, .. } | Arc::Trig { x_c, .. } => x_c + self.dx(self.w(t)),
-        }
-    }
-
-    /// x(t_c + w) − x_c (m): the distance from the start, without the position it adds to.
-    fn dx(&self, w: f64) -> f64 {
-        match *self {
-            Arc::Poly { v_c, a_c, jerk, .. } => w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
-            Arc::Trig {
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
-                w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r
-            }
-        }
-    }
-
-    /// (v, a, da/dt) at t, for root finding.
-    #[inline]
-    pub fn v_a_jerk(&self, t: f64) -> (f64, f64, f64) {
-        let w = self.w(t);
-        match *self {
-            Arc::Poly { v_c, a_c, jerk, .. } => {
-                (v_c + w * (a_c + 0.5 * jerk * w), a_c + jerk * w, jerk)
-            }
-            Arc::Trig {
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-                let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
-                // sin(θc + δ)
-                let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
-                (
-                    v_c + a_c * w + a1 / omega * p,
-                    a_c + a1 * q,
-                    -a1 * omega * sin_t,
-                )
-            }
-        }
+        self.at(t).x
     }
 
     /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
@@ -323,22 +355,90 @@ impl Arc {
     }
 }
 
-/// sin δ and 1 − cos δ from one sin_cos of δ/2 (both keep their relative accuracy for small δ),
+/// (sin θ, cos θ) at θ = ωt, t in two parts: the rounding of ω·t.hi and the low part of t, which
+/// a first-order correction of sin and cos takes in.
+pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
+    let theta = omega * t.hi;
+    let theta_lo = omega.mul_add(t.hi, -theta) + omega * t.lo;
+    let (sin, cos) = theta.sin_cos();
+    (sin + cos * theta_lo, cos - sin * theta_lo)
+}
+
+/// sin δ and 1 − cos δ from sin and cos of δ/2 (both keep their relative accuracy for small δ),
 /// and the higher differences δ − sin δ and δ²/2 − (1 − cos δ).
 struct Kernels {
     delta: f64,
     sin: f64,
     one_minus_cos: f64,
+    /// sin and cos of δ/2, from which the others are formed.
+    half: HalfAngle,
 }
+
+/// sin and cos of half the angle δ = ωw an arc has turned through since its start: the seed of
+/// [`Arc::at_near`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HalfAngle {
+    angle: f64,
+    sin: f64,
+    cos: f64,
+}
+
+/// The largest change of δ/2 taken by the angle-addition formulas: there the Taylor sums of
+/// [`SIN_TAYLOR`] and [`ONE_MINUS_COS_TAYLOR`] are exact to a relative 3e-18.
+pub const ADDITION_MAX: f64 = 0.1;
+
+/// sin e / e = Σ (−1)^k e^{2k}/(2k+1)!, to e^8.
+const SIN_TAYLOR: [f64; 5] = [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0];
+
+/// (1 − cos e) / e² = Σ (−1)^k e^{2k}/(2k+2)!, to e^8.
+const ONE_MINUS_COS_TAYLOR: [f64; 5] = [
+    0.5,
+    -1.0 / 24.0,
+    1.0 / 720.0,
+    -1.0 / 40320.0,
+    1.0 / 3_628_800.0,
+];
 
 impl Kernels {
     #[inline]
     fn new(delta: f64) -> Kernels {
-        let (sh, ch) = (0.5 * delta).sin_cos();
+        let angle = 0.5 * delta;
+        let (sin, cos) = angle.sin_cos();
+        Kernels::from_half(delta, HalfAngle { angle, sin, cos })
+    }
+
+    /// The kernels at δ from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
+    /// sin(x + e) = sin x + (cos x sin e − sin x (1 − cos e)) and
+    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`].
+    #[inline]
+    fn near(delta: f64, seed: Option<HalfAngle>) -> Kernels {
+        let angle = 0.5 * delta;
+        match seed {
+            Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
+                let e = angle - x.angle;
+                let (sin_e, one_minus_cos_e) = (
+                    e * series(e * e, &SIN_TAYLOR),
+                    e * e * series(e * e, &ONE_MINUS_COS_TAYLOR),
+                );
+                let half = HalfAngle {
+                    angle,
+                    sin: x.sin + (x.cos * sin_e - x.sin * one_minus_cos_e),
+                    cos: x.cos - (x.sin * sin_e + x.cos * one_minus_cos_e),
+                };
+                Kernels::from_half(delta, half)
+            }
+            _ => Kernels::new(delta),
+        }
+    }
+
+    /// The kernels at δ from sin and cos of δ/2.
+    #[inline]
+    fn from_half(delta: f64, half: HalfAngle) -> Kernels {
         Kernels {
             delta,
-            sin: 2.0 * sh * ch,
-            one_minus_cos: 2.0 * sh * sh,
+            sin: 2.0 * half.sin * half.cos,
+            one_minus_cos: 2.0 * half.sin * half.sin,
+            half,
         }
     }
 
@@ -406,32 +506,6 @@ const MINUS_COS: [f64; 11] = [
     1.0 / 620_448_401_733_239_439_360_000.0,
 ];
 
-/// Solutions in [lo, hi) of c0 + c1 cos ωt = 0 with t in [0, 2π/ω], each with the sign of the
-/// derivative there (+1 up-crossing, −1 down-crossing), ascending. A tangency (|c0| = |c1|) is
-/// not a crossing and is not returned.
-pub fn cos_level_crossings(
-    c0: f64,
-    c1: f64,
-    omega: f64,
-    lo: f64,
-    hi: f64,
-) -> [Option<(f64, i8)>; 2] {
-    if c1 == 0.0 {
-        return [None, None];
-    }
-    let r = -c0 / c1;
-    if !(r > -1.0 && r < 1.0) {
-        return [None, None];
-    }
-    let theta = r.acos();
-    let period = std::f64::consts::TAU / omega;
-    // d/dt (c1 cos ωt) = −c1 ω sin ωt: sin > 0 on (0, π), < 0 on (π, 2π).
-    let first = theta / omega;
-    let second = period - first;
-    let up_first: i8 = if c1 < 0.0 { 1 } else { -1 };
-    [(first, up_first), (second, -up_first)].map(|(t, dir)| (t >= lo && t < hi).then_some((t, dir)))
-}
-
 /// Solutions t = θ/ω and (2π − θ)/ω in [lo, hi) of cos ωt = r, −1 < r < 1, as double-doubles,
 /// each with the sign of d(cos ωt)/dt there (−1 for the first, +1 for the second).
 pub fn cos_level_crossings_dd(r: Dd, omega: f64, lo: f64, hi: f64) -> [Option<(Dd, i8)>; 2] {
@@ -489,13 +563,14 @@ mod tests {
     fn cos_crossings_have_the_right_direction() {
         let omega = 2.0;
         let period = std::f64::consts::TAU / omega;
-        // g = 0.5 − cos ωt: up-crossing at ωt = π/3, down-crossing at 5π/3.
-        let c = cos_level_crossings(0.5, -1.0, omega, 0.0, period).map(Option::unwrap);
-        assert!((c[0].0 - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
-        assert_eq!((c[0].1, c[1].1), (1, -1));
+        // cos ωt = 0.5 at ωt = π/3 (cos falling) and 5π/3 (rising).
+        let c = cos_level_crossings_dd(Dd::from(0.5), omega, 0.0, period).map(Option::unwrap);
+        assert!((c[0].0.value() - std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
+        assert!((c[1].0.value() - 5.0 * std::f64::consts::FRAC_PI_3 / omega).abs() < 1e-15);
+        assert_eq!((c[0].1, c[1].1), (-1, 1));
         // Tangency is not a crossing.
         assert_eq!(
-            cos_level_crossings(1.0, 1.0, omega, 0.0, period),
+            cos_level_crossings_dd(Dd::from(1.0), omega, 0.0, period),
             [None, None]
         );
     }
@@ -540,6 +615,35 @@ mod tests {
             ((got - simpson) / simpson).abs() < 1e-12,
             "{got} vs {simpson}"
         );
+    }
+
+    /// The root search steps by angle addition from its last evaluation: a few steps of
+    /// decreasing size, as Halley's method takes them, agree with sin and cos of each time to a
+    /// few ulps of the motion, and a step beyond ADDITION_MAX evaluates sin and cos afresh.
+    #[test]
+    fn angle_addition_steps_agree_with_direct_evaluation() {
+        let arc = Arc::new(
+            Basis::Cos { omega: 37.8 },
+            Affine::new(0.2, -1.1),
+            0.07,
+            0.01,
+            0.4,
+        );
+        let mut seed = None;
+        let times = [0.0944, 0.0893, 0.08887, 0.088_871_2, 0.088_871_136, 0.03];
+        for t in times {
+            let (near, direct) = (arc.at_near(t, &mut seed), arc.at(t));
+            let scale = |d: f64| 8.0 * f64::EPSILON * d.abs().max(1.0);
+            assert!((near.v - direct.v).abs() <= scale(direct.v), "v at {t}");
+            assert!((near.a - direct.a).abs() <= scale(direct.a), "a at {t}");
+            assert!((near.x - direct.x).abs() <= scale(direct.x), "x at {t}");
+            assert!(
+                (near.jerk - direct.jerk).abs() <= scale(direct.jerk),
+                "jerk at {t}"
+            );
+        }
+        // The last step (δ/2 moves by about 1.1) is evaluated afresh.
+        assert_eq!(arc.at_near(0.03, &mut seed), arc.at(0.03));
     }
 
     #[test]

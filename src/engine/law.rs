@@ -74,6 +74,34 @@ impl Piece {
     pub fn normal_at(&self, t: f64) -> f64 {
         self.normal.at(self.basis.eval(t))
     }
+
+    /// An interval [b_min, b_max] that holds b(t) for t in [start − before, end], b computed in
+    /// floating point included: the exact range widened by |db/dt|·`before` and a few ulps.
+    pub fn basis_range(&self, before: f64) -> (f64, f64) {
+        let (lo, hi, rate) = match self.basis {
+            Basis::Linear { t_ref } => (self.start - t_ref, self.end - t_ref, 1.0),
+            Basis::Cos { omega } => {
+                let (theta_start, theta_end) = (omega * self.start, omega * self.end);
+                let (b_start, b_end) = (theta_start.cos(), theta_end.cos());
+                // cos θ = ±1 at θ = kπ inside: +1 for even k, −1 for odd k.
+                let pi = std::f64::consts::PI;
+                let (k_first, k_last) = ((theta_start / pi).ceil(), (theta_end / pi).floor());
+                let has = |parity: f64| {
+                    let k = if k_first.rem_euclid(2.0) == parity {
+                        k_first
+                    } else {
+                        k_first + 1.0
+                    };
+                    k <= k_last
+                };
+                let lo = if has(1.0) { -1.0 } else { b_start.min(b_end) };
+                let hi = if has(0.0) { 1.0 } else { b_start.max(b_end) };
+                (lo, hi, omega.abs())
+            }
+        };
+        let widen = rate * before + 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1.0);
+        (lo - widen, hi + widen)
+    }
 }
 
 /// A periodic force law: pieces tiling [0, period).
@@ -194,6 +222,36 @@ mod tests {
         // On coefficients: D = 3 + 0.5 b, N_f = 4 − 2 b.
         let a = body.slip_acceleration_affine(Affine::new(3.0, 0.5), Affine::new(4.0, -2.0), 1.0);
         assert_eq!(a, Affine::new(1.0, 0.5));
+    }
+
+    #[test]
+    fn basis_range_holds_the_basis_over_the_piece() {
+        let omega = 3.0;
+        let pieces = [(0.2, 0.9), (0.9, 1.4), (0.0, 2.5), (1.2, 1.3)];
+        for (start, end) in pieces {
+            for basis in [Basis::Cos { omega }, Basis::Linear { t_ref: 0.7 }] {
+                let piece = Piece {
+                    start,
+                    end,
+                    basis,
+                    drive: Affine::new(0.0, 1.0),
+                    normal: Affine::new(1.0, 0.0),
+                };
+                let (lo, hi) = piece.basis_range(0.0);
+                let samples = (0..=1000).map(|i| start + (end - start) * f64::from(i) / 1000.0);
+                let (min, max) = samples
+                    .map(|t| basis.eval(t))
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                        (a.min(x), b.max(x))
+                    });
+                assert!(lo <= min && max <= hi, "{basis:?} on [{start}, {end}]");
+                // Tight: within the sampling resolution of the extremes.
+                assert!(
+                    min - lo < 1e-5 && hi - max < 1e-5,
+                    "{basis:?} on [{start}, {end}]"
+                );
+            }
+        }
     }
 
     #[test]

@@ -5,7 +5,7 @@
 //! derivative and a bracket on which the function is monotone: Newton's method safeguarded by
 //! bisection converges in a few steps to the last bit (about 1e-16 relative).
 
-use super::arc::{cos_level_crossings, cos_level_crossings_dd};
+use super::arc::cos_level_crossings_dd;
 use super::dd::Dd;
 use super::law::{Affine, Basis};
 
@@ -18,6 +18,9 @@ pub struct Crossing {
     /// The basis value b(t) at a located root, where g = 0 exactly; `None` where g is positive
     /// already at the start of the search (or crossed zero within the resolution before it).
     pub root_b: Option<Dd>,
+    /// (sin ωt, cos ωt) at a located root on a cos basis, from its basis value cos ωt = b: the
+    /// phase of the arc that starts there, without sin and cos.
+    pub phase: Option<(f64, f64)>,
 }
 
 impl Crossing {
@@ -25,6 +28,7 @@ impl Crossing {
         Crossing {
             t: Dd::from(t),
             root_b: None,
+            phase: None,
         }
     }
 }
@@ -60,6 +64,7 @@ pub fn first_up_crossing(
                     Some(Crossing {
                         t: Dd::from(t_ref) + b,
                         root_b: Some(b),
+                        phase: None,
                     })
                 } else {
                     None
@@ -76,39 +81,49 @@ pub fn first_up_crossing(
         Basis::Cos { omega } => {
             // At g = 0, look at the slope, and at the curvature where the slope vanishes too
             // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
-            let (sin, cos) = (omega * from).sin_cos();
+            // sin ωt only where g = 0.
+            let cos = (omega * from).cos();
             let g_from = g.at(cos);
-            let slope = -g.c1 * omega * sin;
-            let curvature = -g.c1 * omega * omega * cos;
-            let rising = slope > 0.0 || (slope == 0.0 && curvature > 0.0);
-            if g_from > 0.0 || (g_from == 0.0 && rising) {
+            let rising = || {
+                let slope = -g.c1 * omega * (omega * from).sin();
+                let curvature = -g.c1 * omega * omega * cos;
+                slope > 0.0 || (slope == 0.0 && curvature > 0.0)
+            };
+            if g_from > 0.0 || (g_from == 0.0 && rising()) {
                 return Some(Crossing::at_once(from));
             }
-            // An up-crossing within snap before `from` happens at `from`.
-            let (index, t) = cos_level_crossings(g.c0, g.c1, omega, from - snap, to - snap)
+            // The crossings θ/ω and (2π − θ)/ω of cos ωt = b, in two parts; g = c0 + c1 cos ωt
+            // rises where c1·d(cos ωt)/dt > 0. An up-crossing within snap before `from` happens
+            // at `from`.
+            let b = root_b();
+            let (index, t) = cos_level_crossings_dd(b, omega, from - snap, to - snap)
                 .into_iter()
                 .enumerate()
-                .find_map(|(i, c)| c.filter(|&(_, dir)| dir > 0).map(|(t, _)| (i, t)))?;
-            if t < from {
+                .find_map(|(i, c)| {
+                    c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
+                        .map(|(t, _)| (i, t))
+                })?;
+            if t.value() < from {
                 return Some(Crossing::at_once(from));
             }
-            // The same crossing (θ/ω or (2π − θ)/ω), in two parts.
-            let b = root_b();
-            let refined = cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY)[index];
-            Some(match refined {
-                Some((t, _)) => Crossing { t, root_b: Some(b) },
-                None => Crossing {
-                    t: Dd::from(t),
-                    root_b: None,
-                },
+            // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
+            // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
+            let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
+            Some(Crossing {
+                t,
+                root_b: Some(b),
+                phase: Some((if index == 0 { sin } else { -sin }, b.value())),
             })
         }
     }
 }
 
 /// Zero of f on [lo, hi] where f(lo) > 0 ≥ f(hi) and f is monotone; `f` returns (f, f', f'')
-/// and the bracket ends come with their values of f. Halley steps (cubic convergence) are
-/// accepted while they stay inside the shrinking bracket, bisection otherwise.
+/// and the bracket ends come with their values of f, the end `hi` with f' and f'' too. The
+/// search starts from the zero of the Taylor parabola at `hi` (exact when f is a quadratic, as
+/// the speed on a polynomial arc), or the secant where that parabola has no zero in the bracket.
+/// Halley steps (cubic convergence) are accepted while they stay inside the shrinking bracket,
+/// bisection otherwise.
 ///
 /// Convergence is a Halley step below a few ulps of t whose Newton step f/f′ is as small: near
 /// a tangency (f′ ≈ 0, e.g. a speed maximum at the end of the bracket) the Halley step
@@ -116,16 +131,23 @@ pub fn first_up_crossing(
 /// comes before the bracket test, so a sub-ulp step that lands on a bracket end ends the search
 /// instead of restarting it by bisection.
 pub fn monotone_zero(
-    f: impl Fn(f64) -> (f64, f64, f64),
+    mut f: impl FnMut(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
-    (hi, f_hi): (f64, f64),
+    (hi, (f_hi, d1_hi, d2_hi)): (f64, (f64, f64, f64)),
 ) -> f64 {
     let (mut lo, mut hi) = (lo, hi);
     if f_hi == 0.0 {
         return hi;
     }
-    // Start from a secant guess.
-    let mut t = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+    // f_hi + f'·h + f''·h²/2 = 0 at the root h ≤ 0 nearest to hi (its form without
+    // cancellation), else the secant.
+    let root = (d1_hi * d1_hi - 2.0 * d2_hi * f_hi).sqrt();
+    let parabola = hi - 2.0 * f_hi / (d1_hi - root);
+    let mut t = if parabola > lo && parabola < hi {
+        parabola
+    } else {
+        lo + (hi - lo) * f_lo / (f_lo - f_hi)
+    };
     for _ in 0..200 {
         if !(t > lo && t < hi) {
             t = 0.5 * (lo + hi);
@@ -138,9 +160,6 @@ pub fn monotone_zero(
         } else {
             return t;
         }
-        if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(lo.abs()) {
-            break;
-        }
         let denominator = 2.0 * d1 * d1 - ft * d2;
         let step = if denominator != 0.0 {
             2.0 * ft * d1 / denominator
@@ -148,10 +167,14 @@ pub fn monotone_zero(
             f64::NAN
         };
         let next = t - step;
-        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0.
+        // Cubic convergence: a step below a few ulps is the last one, unless f′ ≈ 0. Tested
+        // before the width of the bracket, whose fallback costs two more evaluations of f.
         let tol = 4.0 * f64::EPSILON * t.abs();
         if step.abs() <= tol && ft.abs() <= tol * d1.abs() {
             return next.clamp(lo, hi);
+        }
+        if hi - lo <= 2.0 * f64::EPSILON * hi.abs().max(lo.abs()) {
+            break;
         }
         t = if next > lo && next < hi {
             next
@@ -246,6 +269,16 @@ mod tests {
         let c = crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();
         assert!((c.t.value() - std::f64::consts::FRAC_PI_2).abs() < 1e-15);
         assert_eq!(c.root_b, Some(Dd::from(0.0)));
+        assert_eq!(c.phase, Some((1.0, 0.0)));
+        // g = 0.5 − cos t rises through zero at t = π/3, where sin t > 0; g = cos t − 0.5 at
+        // 5π/3, where sin t < 0: the phase of each root is sin and cos of its time.
+        for (c0, c1, from) in [(0.5, -1.0, 0.0), (-0.5, 1.0, 3.0)] {
+            let c = crossing(basis, g(c0, c1), from, tau, 1e-15).unwrap();
+            let (sin, cos) = c.phase.unwrap();
+            let (sin_t, cos_t) = c.t.value().sin_cos();
+            assert!((sin - sin_t).abs() < 4.0 * f64::EPSILON, "{sin} vs {sin_t}");
+            assert!((cos - cos_t).abs() < 4.0 * f64::EPSILON, "{cos} vs {cos_t}");
+        }
         // g = cos t − 1 ≤ 0 touches zero at 0: never positive.
         assert_eq!(at(crossing(basis, g(-1.0, 1.0), 0.1, tau, 1e-15)), None);
         // g = cos t, starting at 0 where g > 0: at once.
@@ -255,7 +288,7 @@ mod tests {
     #[test]
     fn monotone_zero_reaches_machine_precision() {
         let f = |t: f64| (2.0 - t.exp(), -t.exp(), -t.exp());
-        let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0).0));
+        let t = monotone_zero(f, (0.0, f(0.0).0), (2.0, f(2.0)));
         assert!((t - 2f64.ln()).abs() <= 2.0 * f64::EPSILON);
     }
 
@@ -267,7 +300,7 @@ mod tests {
         let v_m = 3.3e-19;
         let f = |t: f64| (v_m - (t - 1.0).powi(2), -2.0 * (t - 1.0), -2.0);
         let (lo, hi) = (1.0, 1.0 + 1e-3);
-        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi).0));
+        let t = monotone_zero(f, (lo, f(lo).0), (hi, f(hi)));
         let root = 1.0 + v_m.sqrt();
         assert!((t - root).abs() <= 4.0 * f64::EPSILON, "{t} vs {root}");
     }
@@ -297,7 +330,7 @@ mod tests {
                 calls.set(calls.get() + 1);
                 g(t)
             };
-            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi).0));
+            let t = monotone_zero(f, (lo, g(lo).0), (hi, g(hi)));
             assert!(g(t).0.abs() <= 4.0 * f64::EPSILON, "residual at {t}");
             assert!(calls.get() <= 6, "{} evaluations", calls.get());
         }

@@ -1,10 +1,10 @@
 //! The driver: walks the force law piece by piece through the requested periods, switching
-//! between STUCK and SLIP at located events, and records events, per-period positions and
-//! friction dissipation.
+//! between STUCK and SLIP at located events, and records events, per-period positions and (when
+//! asked for) friction dissipation.
 
-use super::arc::{Arc, Start};
+use super::arc::{phase, Arc, Point, Start};
 use super::dd::Dd;
-use super::law::{Affine, Body, ForceLaw, Piece};
+use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{first_up_crossing, monotone_zero, Crossing};
 use crate::error::{Error, Result};
 
@@ -13,6 +13,9 @@ use crate::error::{Error, Result};
 /// memory for runs of up to 10⁶ periods.
 const KEEP_FIRST: u32 = 2;
 const KEEP_LAST: u32 = 10;
+/// Room for this many events per kept period is reserved at the start (two slip-stick cycles
+/// with their speed maxima, and two more), so that the list seldom grows during a run.
+const EVENTS_RESERVED_PER_PERIOD: usize = 8;
 /// A local minimum of s·v below this fraction of the speed before it is a tangential stick.
 const TOUCH_REL: f64 = 1e-13;
 /// More transitions than this inside one piece means the state machine cannot advance.
@@ -75,6 +78,9 @@ pub struct RunOptions {
     pub periods: u32,
     /// Keep every segment of the trajectory (for figures and time series).
     pub record_segments: bool,
+    /// Integrate the friction dissipation ∫ μd N_f |v| dt of each period (for the mean friction
+    /// power of the steady state); the events do not need it.
+    pub dissipation: bool,
 }
 
 /// The outcome of an integration.
@@ -92,7 +98,8 @@ pub struct Run {
     /// Position (m) and velocity (m/s) at the start of each period and at the end (periods + 1).
     pub x_at_period_start: Vec<f64>,
     pub v_at_period_start: Vec<f64>,
-    /// Friction dissipation ∫ μd N_f |v| dt in each period (J).
+    /// Friction dissipation ∫ μd N_f |v| dt in each period (J); empty unless asked for
+    /// ([`RunOptions::dissipation`]).
     pub dissipation: Vec<f64>,
     /// Recorded segments (empty unless asked for).
     pub segments: Vec<Segment>,
@@ -200,7 +207,9 @@ impl Recorder {
 struct Slide {
     /// Stick time (s, local), if the body came to rest.
     stick: Option<f64>,
-    /// ∫ N_f |v| dt over the slide (N·m).
+    /// The motion at the stick, or at the end of the piece.
+    end: Point,
+    /// ∫ N_f |v| dt over the slide (N·m), 0 when not asked for.
     normal_work: f64,
 }
 
@@ -211,8 +220,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let periods = opts.periods;
     let first = &law.pieces[0];
     let immediate_slip = first.drive_at(0.0).abs() > body.mu_s * first.normal_at(0.0);
+    let kept_periods = periods.min(KEEP_FIRST + KEEP_LAST) as usize;
     let mut rec = Recorder {
-        events: Vec::new(),
+        events: Vec::with_capacity(EVENTS_RESERVED_PER_PERIOD * kept_periods),
         periods,
         period,
         snap,
@@ -222,15 +232,20 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let cap = periods as usize + 1;
     let mut x_at_period_start = Vec::with_capacity(cap);
     let mut v_at_period_start = Vec::with_capacity(cap);
-    let mut dissipation = Vec::with_capacity(cap);
+    let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
+    let prepared: Vec<PreparedPiece> = law
+        .pieces
+        .iter()
+        .map(|piece| PreparedPiece::new(piece, snap))
+        .collect();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
     let mut dir: i8 = 0;
     // Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
     let mut accel_sign: i8 = 0;
-    // The start (t, a, N_f) of the slip that begins at a located onset, for the next arc.
-    let mut onset_start: Option<(Dd, f64, f64)> = None;
+    // The onset (its crossing, a, N_f) where the slip begins, for the next arc.
+    let mut onset_start: Option<(Crossing, f64, f64)> = None;
 
     for n in 0..periods {
         let period_start = f64::from(n) * period;
@@ -259,7 +274,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for piece in &law.pieces {
+        for prepared in &prepared {
+            let piece = prepared.piece;
             let mut t = piece.start;
             let mut transitions = 0;
             loop {
@@ -271,7 +287,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(body, piece, t, snap);
+                    let onset = slip_onset(body, prepared, t, snap);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     record(t, t_end, Motion::Rest { x });
                     let Some((crossing, s)) = onset else { break };
@@ -280,14 +296,14 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     accel_sign = 0;
                     t = crossing.t.hi;
                     let (a, normal) = onset_acceleration(body, piece, &crossing, f64::from(s));
-                    onset_start = Some((crossing.t, a, normal));
+                    onset_start = Some((crossing, a, normal));
                     continue;
                 }
                 let s = f64::from(dir);
                 // From an onset, or through a piece boundary (and after a reversal) where the
                 // acceleration is Newton's (D − s μd N_f)/M at that instant.
-                let (t_start, a_start, normal_start) = match onset_start.take() {
-                    Some(start) => start,
+                let (t_start, a_start, normal_start, phase) = match onset_start.take() {
+                    Some((crossing, a, normal)) => (crossing.t, a, normal, crossing.phase),
                     None => {
                         let (a, normal) = carried
                             .take()
@@ -299,7 +315,13 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                                 let normal = piece.normal.at(b);
                                 (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                             });
-                        (Dd::from(t), a, normal)
+                        let at_piece_start = t == piece.start;
+                        (
+                            Dd::from(t),
+                            a,
+                            normal,
+                            at_piece_start.then_some(prepared.start_phase),
+                        )
                     }
                 };
                 let start = Start {
@@ -311,22 +333,27 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 let slope = body
                     .slip_acceleration_affine(piece.drive, piece.normal, s)
                     .c1;
-                let arc = Arc::from_start(piece.basis, slope, start);
+                let arc = match phase {
+                    Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
+                    None => Arc::from_start(piece.basis, slope, start),
+                };
                 let slide = slide(
                     &arc,
                     dir,
-                    piece,
-                    normal_start,
+                    prepared,
+                    opts.dissipation.then_some(normal_start),
                     snap,
                     &mut accel_sign,
                     |tm| {
-                        rec.push(n, tm, EventKind::SpeedMax, arc.x(tm), arc.v(tm));
+                        let at_max = arc.at(tm);
+                        rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
                     },
                 );
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
                 record(t, t_end, Motion::Slide { arc });
-                x = arc.x(t_end);
+                let end = slide.end;
+                x = end.x;
                 match slide.stick {
                     // A slip from rest that sticks where it started is shorter than the event
                     // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
@@ -345,15 +372,17 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         t = t_stick;
                     }
                     None => {
-                        v = arc.v(t_end);
-                        let normal_end = normal_start + piece.normal.c1 * arc.db(t_end);
-                        carried = Some((piece, arc.a(t_end), normal_end));
+                        v = end.v;
+                        let normal_end = normal_start + piece.normal.c1 * end.db;
+                        carried = Some((piece, end.a, normal_end));
                         break;
                     }
                 }
             }
         }
-        dissipation.push(body.mu_d * normal_work);
+        if opts.dissipation {
+            dissipation.push(body.mu_d * normal_work);
+        }
     }
     x_at_period_start.push(x);
     v_at_period_start.push(v);
@@ -370,16 +399,56 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     })
 }
 
+/// A piece of the force law with what a run computes once for it: the same in every period.
+struct PreparedPiece<'a> {
+    piece: &'a Piece,
+    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
+    /// there ((0, 1) on a linear basis, where it is not used).
+    start_phase: (f64, f64),
+    /// The range of the basis over the piece and the resolution `snap` before it
+    /// ([`Piece::basis_range`]).
+    basis_range: (f64, f64),
+}
+
+impl PreparedPiece<'_> {
+    /// The piece with its start's phase and its range of the basis (widened by `snap` before
+    /// the start).
+    fn new(piece: &Piece, snap: f64) -> PreparedPiece<'_> {
+        PreparedPiece {
+            piece,
+            start_phase: match piece.basis {
+                Basis::Linear { .. } => (0.0, 1.0),
+                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
+            },
+            basis_range: piece.basis_range(snap),
+        }
+    }
+}
+
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp.
-fn slip_onset(body: &Body, piece: &Piece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
+/// better than its ulp. A direction in which g stays below zero by more than its rounding over
+/// the whole range of the basis over the piece is not searched (the direction opposite to the
+/// drive).
+fn slip_onset(
+    body: &Body,
+    prepared: &PreparedPiece,
+    from: f64,
+    snap: f64,
+) -> Option<(Crossing, i8)> {
+    let (piece, (b_min, b_max)) = (prepared.piece, prepared.basis_range);
     [1i8, -1]
         .into_iter()
         .filter_map(|s| {
             // g > 0 ⇔ the static friction cannot hold the body in direction s.
             let sf = f64::from(s);
             let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+            let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
+            let rounding =
+                8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
+            if g_lo.max(g_hi) < -rounding {
+                return None;
+            }
             let exact = || {
                 let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
                 (
@@ -463,17 +532,17 @@ fn carry_over(
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
-/// a). `normal_start` is N_f at the start of the arc (for the friction work).
+/// a). `normal_start` is N_f at the start of the arc, given when the friction work is asked for.
 fn slide(
     arc: &Arc,
     dir: i8,
-    piece: &Piece,
-    normal_start: f64,
+    prepared: &PreparedPiece,
+    normal_start: Option<f64>,
     snap: f64,
     accel_sign: &mut i8,
     mut on_max: impl FnMut(f64),
 ) -> Slide {
-    let s = f64::from(dir);
+    let (s, piece) = (f64::from(dir), prepared.piece);
     let from = arc.t_start();
     let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
@@ -496,15 +565,32 @@ fn slide(
     // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
     let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
+    // The half angle of the last evaluation on a trigonometric arc, from which the root search
+    // and the motion at the stick step on without sin and cos.
+    let mut seed = None;
+    // The sign of s·a on the last part, which changes at each zero of a (all simple).
+    let mut part_sign: i8 = 0;
+    // a keeps the sign of a_c from the start for longer than the zeros of a left out before
+    // `after`, and than its rounding (about eps·|da/dt|·T, below jerk_bound·snap).
+    let start_sign = arc.a_start().abs() > 2.0 * arc.jerk_bound() * (after - from + snap);
     for (i, &q) in bounds.iter().enumerate() {
-        // The sign of a on (p, q) at its midpoint; on the first part measured from the arc's
-        // exact start (its time has a low part), so that a sub-ulp part is not misjudged.
-        let w_mid = if i == 0 {
-            0.5 * arc.w(q)
+        // The sign of a on (p, q): the opposite of the last part's past a zero of a, that of a_c
+        // on the first part where it holds, else at the midpoint; on the first part measured
+        // from the arc's exact start (its time has a low part), so that a sub-ulp part is not
+        // misjudged.
+        let sign = if part_sign != 0 {
+            -part_sign
+        } else if i == 0 && start_sign {
+            (s * arc.a_start()).signum() as i8
         } else {
-            arc.w(0.5 * (p + q))
+            let w_mid = if i == 0 {
+                0.5 * arc.w(q)
+            } else {
+                arc.w(0.5 * (p + q))
+            };
+            (s * arc.a_at(w_mid)).signum() as i8
         };
-        let sign = (s * arc.a_at(w_mid)).signum() as i8;
+        part_sign = sign;
         if *accel_sign > 0 && sign < 0 {
             on_max(p);
         }
@@ -516,16 +602,18 @@ fn slide(
             continue;
         }
         let at_p = speed_p.unwrap_or_else(|| speed(p));
-        let at_q = speed(q);
+        let point_q = arc.at_near(q, &mut seed);
+        let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                let (v, a, jerk) = arc.v_a_jerk(t);
-                (s * v, s * a, s * jerk)
+                let at = arc.at_near(t, &mut seed);
+                (s * at.v, s * at.a, s * at.jerk)
             };
-            Some(monotone_zero(f, (p, at_p), (q, at_q)))
+            let hi = (at_q, s * point_q.a, s * point_q.jerk);
+            Some(monotone_zero(f, (p, at_p), (q, hi)))
         } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
             Some(q)
         } else {
@@ -540,6 +628,9 @@ fn slide(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        normal_work: arc.integrate_normal_times_speed(normal_start, piece.normal.c1, end),
+        end: arc.at_near(end, &mut seed),
+        normal_work: normal_start.map_or(0.0, |n_c| {
+            arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
+        }),
     }
 }

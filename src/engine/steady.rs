@@ -96,7 +96,8 @@ pub struct Steady {
     pub slips_per_period: u32,
     pub sticks_per_period: u32,
     /// Mean advance per period over the orbit (m), mean speed (m/s), mean friction power (W);
-    /// `None` when there is no periodic orbit.
+    /// `None` when there is no periodic orbit, the friction power also when the run did not
+    /// integrate the dissipation ([`RunOptions::dissipation`](super::RunOptions)).
     pub advance_per_period: Option<f64>,
     pub v_avg: Option<f64>,
     pub friction_power: Option<f64>,
@@ -182,13 +183,13 @@ pub fn analyse(run: &Run) -> Steady {
         let n_usize = n as usize;
         let xs = &run.x_at_period_start;
         let advance = (xs[xs.len() - 1] - xs[xs.len() - 1 - n_usize]) / f64::from(n);
-        let energy: f64 = run.dissipation[run.dissipation.len() - n_usize..]
-            .iter()
-            .sum();
         steady.kind = OrbitKind::Periodic { multiplicity: n };
         steady.advance_per_period = Some(advance);
         steady.v_avg = Some(advance / run.period);
-        steady.friction_power = Some(energy / (f64::from(n) * run.period));
+        if let Some(last) = run.dissipation.len().checked_sub(n_usize) {
+            let energy: f64 = run.dissipation[last..].iter().sum();
+            steady.friction_power = Some(energy / (f64::from(n) * run.period));
+        }
     }
     steady
 }

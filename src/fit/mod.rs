@@ -246,6 +246,7 @@ fn steady_state(p: &WoodpeckerParams) -> Result<(&'static str, Option<f64>)> {
     let opts = RunOptions {
         periods: DEFAULT_PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     let law = woodpecker::force_law(p, LawKind::Harmonic)?;
     let steady = analyse(&integrate(&woodpecker::body(p), &law, &opts)?);

@@ -80,6 +80,7 @@ pub fn track(p: &WoodpeckerParams, shift: f64, dt: &[f64]) -> Result<Track> {
             &RunOptions {
                 periods,
                 record_segments: true,
+                dissipation: false,
             },
         )
     };
@@ -261,6 +262,7 @@ mod tests {
             &RunOptions {
                 periods: (start / period + 0.0371 * 3000.0) as u32 + 2,
                 record_segments: true,
+                dissipation: false,
             },
         )
         .unwrap();

@@ -932,6 +932,7 @@ mod tests {
             &crate::engine::RunOptions {
                 periods: 3,
                 record_segments: false,
+                dissipation: false,
             },
         )
         .unwrap();

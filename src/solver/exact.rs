@@ -22,6 +22,7 @@ impl Method for Exact {
             &RunOptions {
                 periods,
                 record_segments: true,
+                dissipation: false,
             },
         )?;
         // Events of every period are needed: the run keeps the first and last ones only, so

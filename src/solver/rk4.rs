@@ -313,6 +313,7 @@ mod tests {
             &crate::engine::RunOptions {
                 periods: 3,
                 record_segments: true,
+                dissipation: false,
             },
         )
         .unwrap();

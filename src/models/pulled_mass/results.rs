@@ -67,6 +67,7 @@ pub fn evaluate_with_runs(
     let opts = RunOptions {
         periods,
         record_segments,
+        dissipation: true,
     };
     let body = pulled_mass::body(p);
     let run_of = |law| -> Result<Run> { integrate(&body, &pulled_mass::force_law(p, law)?, &opts) };

@@ -273,6 +273,7 @@ fn harmonic_category(p: &PulledMassParams, mu_s: f64, mu_d: f64) -> u8 {
     let opts = RunOptions {
         periods: MAP_PERIODS,
         record_segments: false,
+        dissipation: false,
     };
     match integrate(&pulled_mass::body(&q), &law, &opts) {
         Ok(run) if run.immediate_slip => 1,

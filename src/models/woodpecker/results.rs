@@ -93,6 +93,7 @@ pub fn evaluate_with_runs(
     let opts = RunOptions {
         periods,
         record_segments,
+        dissipation: true,
     };
     let body = woodpecker::body(p);
     let run_of = |law| -> Result<Run> { integrate(&body, &woodpecker::force_law(p, law)?, &opts) };

@@ -357,6 +357,7 @@ fn linear_run(p: &WoodpeckerParams, n: u32) -> Result<Run> {
     let opts = RunOptions {
         periods: n + 2,
         record_segments: true,
+        dissipation: false,
     };
     integrate(&woodpecker::body(p), &law, &opts)
 }
@@ -936,6 +937,7 @@ fn positions(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
     let opts = RunOptions {
         periods: 2,
         record_segments: true,
+        dissipation: false,
     };
     let run = integrate(&woodpecker::body(p), &law, &opts)?;
     let s = sample(&run, range.0, range.1, SAMPLES);
@@ -1006,6 +1008,7 @@ fn integrated_cell(p: &WoodpeckerParams, kind: LawKind, mu_d: f64, z0: f64, peri
     let opts = RunOptions {
         periods,
         record_segments: false,
+        dissipation: false,
     };
     let run = woodpecker::force_law(&q, kind)
         .and_then(|law| integrate(&woodpecker::body(&q), &law, &opts));

@@ -20,6 +20,7 @@ pub fn sticks_by_half_period(p: &WoodpeckerParams, mu_d: f64) -> Result<Option<b
     let opts = RunOptions {
         periods: 1,
         record_segments: false,
+        dissipation: false,
     };
     let run = integrate(
         &wp_model::body(&q),
