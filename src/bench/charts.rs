@@ -167,7 +167,7 @@ pub fn work_precision<'a>(
         x_label: if by_work {
             "log10 work (rhs evaluations)".to_string()
         } else {
-            "log10 time (s), best of N runs".to_string()
+            "log10 time (s), median of N runs".to_string()
         },
         x_range: x_range(xs.into_iter()),
         panels,

@@ -7,6 +7,7 @@ use super::charts;
 use super::cost_tables;
 use super::failures::reversal_slope;
 use super::tables::{self, Table};
+use super::sweep::SweepPoint;
 use super::BenchResults;
 use crate::error::{Error, Result};
 use crate::report::figures::chart::line_chart;
@@ -93,7 +94,12 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         ),
         (
             "timing",
-            format!("best of {} run(s) after a warm-up, sequential", r.repeats),
+            format!(
+                "median of {} run(s) after a warm-up, sequential; spread (slowest − fastest) / \
+                 median: {}; the exact engine timed as `integrate` without recording segments",
+                r.repeats,
+                spread(&r.sweep)
+            ),
         ),
     ]
     .into_iter()
@@ -114,7 +120,7 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         wp_figures.push(figure(
             &format!("wp-{}", p.id),
             format!(
-                "{}: error against time (log10 both; best of {} runs), one curve per method{}. The exact engine \
+                "{}: error against time (log10 both; median of {} runs), one curve per method{}. The exact engine \
                  is the reference (its error is 0, drawn as a marker at its time). Errors below 1e-16 are drawn at 1e-16.",
                 p.title,
                 r.repeats,
@@ -194,9 +200,13 @@ fn protocol(r: &BenchResults) -> Vec<String> {
          the mismatch is recorded), |x(t_end) − x_exact| and |v̄ − v̄_exact| with v̄ the mean speed of the last period."
             .into(),
         format!(
-            "Time: minimum of {} timed run(s) after an untimed warm-up, one run if a run exceeds 1 s; every point is \
-             timed alone on one thread. Work: rhs evaluations counted by the method itself.",
-            r.repeats
+            "Time: median of {} timed run(s) after an untimed warm-up, one run if a run exceeds 1 s; every point is \
+             timed alone on one thread; the spread of each point (fastest and slowest run) is in results.csv, its \
+             median over the points {}. The exact engine is timed as `integrate` alone, as a user calls it; \
+             recording the segments its event list is read from is not timed. Work: rhs evaluations counted by \
+             the method itself (for the exact engine: segments).",
+            r.repeats,
+            spread(&r.sweep)
         ),
     ]
 }
@@ -234,4 +244,52 @@ fn failure_figures(r: &BenchResults) -> Result<Vec<FigureCtx>> {
             &charts::missed_chart(&s.missed),
         )?,
     ])
+}
+
+/// The median over the timed points of (slowest − fastest) / median, as a percentage ("—"
+/// when no point has more than one run).
+fn spread(sweep: &[SweepPoint]) -> String {
+    let mut spreads: Vec<f64> = sweep
+        .iter()
+        .filter(|p| p.runs > 1)
+        .filter_map(|p| Some((p.time_max_s? - p.time_min_s?) / p.time_s?))
+        .filter(|s| s.is_finite())
+        .collect();
+    if spreads.is_empty() {
+        return "—".to_string();
+    }
+    spreads.sort_by(f64::total_cmp);
+    format!("{:.0} %", 100.0 * spreads[spreads.len() / 2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_spread_is_the_median_over_points_of_range_over_median() {
+        let point = |min: f64, median: f64, max: f64, runs: u32| {
+            let mut p: SweepPoint = serde_json::from_value(serde_json::json!({
+                "problem": "p", "method": "m", "setting_kind": "step", "tolerance": null,
+                "h_s": 0.1, "steps_per_period": 10.0, "status": "ok", "error": null,
+                "time_s": median, "runs": runs, "rhs_evals": 1, "steps": 1, "accepted": null,
+                "rejected": null, "n_events": 1, "n_events_exact": 1, "n_matched": 1,
+                "kind_mismatches": 0, "reversals": 0, "err_event_s": 0.0, "err_x_m": 0.0,
+                "err_vbar_m_s": 0.0, "x_end_m": 0.0, "v_end_m_s": 0.0
+            }))
+            .unwrap();
+            p.time_min_s = Some(min);
+            p.time_max_s = Some(max);
+            p
+        };
+        let sweep = [
+            point(1.0, 1.1, 1.2, 20),
+            point(1.0, 1.0, 1.5, 20),
+            point(2.0, 2.0, 2.2, 20),
+            point(1.0, 1.0, 9.0, 1),
+        ];
+        // (0.2/1.1, 0.5, 0.1): median 0.18; the single run is left out.
+        assert_eq!(spread(&sweep), "18 %");
+        assert_eq!(spread(&sweep[3..]), "—");
+    }
 }

@@ -23,7 +23,7 @@ const TEMPLATES: &[(&str, &str)] = &[
 
 /// Columns of results.csv, units in the names.
 pub const CSV_HEADER: &str = "problem,method,setting_kind,tolerance,h_s,steps_per_period,status,\
-time_s,runs,rhs_evals,steps,accepted,rejected,n_events,n_events_exact,n_matched,kind_mismatches,\
+time_s,time_min_s,time_max_s,runs,rhs_evals,steps,accepted,rejected,n_events,n_events_exact,n_matched,kind_mismatches,\
 reversals,err_event_s,err_x_m,err_vbar_m_s,x_end_m,v_end_m_s,error";
 
 /// Renders the benchmark's files.
@@ -102,6 +102,8 @@ pub fn csv(sweep: &[SweepPoint]) -> String {
             f(p.steps_per_period),
             p.status.clone(),
             f(p.time_s),
+            f(p.time_min_s),
+            f(p.time_max_s),
             p.runs.to_string(),
             u(p.rhs_evals),
             u(p.steps),

@@ -115,8 +115,14 @@ pub struct SweepPoint {
     /// "ok", or "error" with the method's message in `error`.
     pub status: String,
     pub error: Option<String>,
-    /// Minimum wall time over `runs` timed runs (s).
+    /// Median wall time over `runs` timed runs (s); for the exact engine, of `integrate`
+    /// alone ([`crate::solver::Method::solve_timed`]).
     pub time_s: Option<f64>,
+    /// The fastest and the slowest of those runs (s): the spread of the timing.
+    #[serde(default)]
+    pub time_min_s: Option<f64>,
+    #[serde(default)]
+    pub time_max_s: Option<f64>,
     pub runs: u32,
     pub rhs_evals: Option<u64>,
     pub steps: Option<u64>,
@@ -192,30 +198,49 @@ fn describe(
     }
 }
 
-/// Best of `repeats` timed runs after the untimed one that took `first`; a run longer than
-/// [`LONG_RUN`] ends the series. Returns (best time in s, timed runs).
+/// The timed runs of one setting: their median and extremes (s).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Timing {
+    pub median_s: f64,
+    pub min_s: f64,
+    pub max_s: f64,
+    pub runs: u32,
+}
+
+/// `repeats` timed runs of [`Method::solve_timed`] after the untimed one that took `first`; a
+/// run longer than [`LONG_RUN`] ends the series.
 fn time_runs(
     method: &dyn Method,
     problem: &Problem,
     setting: Setting,
     first: Duration,
     repeats: u32,
-) -> (f64, u32) {
+) -> Timing {
     let n = if first > LONG_RUN { 1 } else { repeats.max(1) };
-    let mut best = Duration::MAX;
-    let mut runs = 0;
+    let mut times = Vec::with_capacity(n as usize);
     for _ in 0..n {
         let start = Instant::now();
-        let out = method.solve(black_box(problem), black_box(setting));
+        let out = method.solve_timed(black_box(problem), black_box(setting));
         let took = start.elapsed();
         black_box(out).ok();
-        best = best.min(took);
-        runs += 1;
+        times.push(took.as_secs_f64());
         if took > LONG_RUN {
             break;
         }
     }
-    (best.as_secs_f64(), runs)
+    times.sort_by(f64::total_cmp);
+    let mid = times.len() / 2;
+    let median_s = if times.len() % 2 == 1 {
+        times[mid]
+    } else {
+        0.5 * (times[mid - 1] + times[mid])
+    };
+    Timing {
+        median_s,
+        min_s: times[0],
+        max_s: times[times.len() - 1],
+        runs: times.len() as u32,
+    }
 }
 
 /// Runs one point of the sweep. A method's error is recorded in the point, never propagated.
@@ -238,6 +263,8 @@ pub fn measure(
         status: "error".to_string(),
         error: None,
         time_s: None,
+        time_min_s: None,
+        time_max_s: None,
         runs: 0,
         rhs_evals: None,
         steps: None,
@@ -264,11 +291,13 @@ pub fn measure(
             return point;
         }
     };
-    let (time, runs) = time_runs(method, &bp.problem, setting, took, repeats);
+    let timing = time_runs(method, &bp.problem, setting, took, repeats);
     let shorter = method.solve(&bp.one_period_shorter(), setting).ok();
     fill(&mut point, &sol, shorter.as_ref(), reference, bp.period());
-    point.time_s = Some(time);
-    point.runs = runs;
+    point.time_s = Some(timing.median_s);
+    point.time_min_s = Some(timing.min_s);
+    point.time_max_s = Some(timing.max_s);
+    point.runs = timing.runs;
     point
 }
 
@@ -325,6 +354,34 @@ mod tests {
         assert!((m.max_err.unwrap() - 0.1).abs() < 1e-12);
         assert_eq!(m.kind_mismatches, 1);
         assert_eq!(match_events(&[], &exact).max_err, None);
+    }
+
+    /// A method whose timed runs take 1, 2, … ms in turn (the untimed first run aside).
+    struct Slower(std::sync::atomic::AtomicU64);
+
+    impl Method for Slower {
+        fn name(&self) -> &'static str {
+            "slower"
+        }
+        fn solve(&self, _: &Problem, _: Setting) -> crate::error::Result<Solution> {
+            unreachable!("only the timed runs are called")
+        }
+        fn solve_timed(&self, _: &Problem, _: Setting) -> crate::error::Result<()> {
+            let n = self.0.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+            std::thread::sleep(Duration::from_millis(n));
+            Ok(())
+        }
+    }
+
+    #[test]
+    fn timing_is_the_median_of_the_timed_runs_with_their_extremes() {
+        let problem = crate::solver::test_support::set_b(crate::models::LawKind::Linear, 1.0);
+        let method = Slower(0.into());
+        let t = time_runs(&method, &problem, Setting::Step(1.0), Duration::ZERO, 5);
+        assert_eq!(t.runs, 5);
+        // 1..5 ms: the median is the third run, sleeps only ever last longer.
+        assert!(t.min_s >= 1e-3 && t.min_s < t.median_s && t.median_s < t.max_s);
+        assert!(t.median_s >= 3e-3 && t.median_s < 4e-3 + 2e-3, "{t:?}");
     }
 
     #[test]

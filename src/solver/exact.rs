@@ -14,17 +14,7 @@ impl Method for Exact {
     }
 
     fn solve(&self, problem: &Problem, _setting: Setting) -> Result<Solution> {
-        let period = problem.law.period;
-        let periods = (problem.t_end / period).ceil().max(1.0) as u32;
-        let run = integrate(
-            &problem.body,
-            &problem.law,
-            &RunOptions {
-                periods,
-                record_segments: true,
-                dissipation: false,
-            },
-        )?;
+        let run = integrate(&problem.body, &problem.law, &options(problem, true))?;
         // Events of every period are needed: the run keeps the first and last ones only, so
         // they are read off the recorded segments: rest → slide is a slip (also at t = 0, an
         // immediate slip), slide → rest a stick, slide → slide in the other direction a reversal.
@@ -62,6 +52,22 @@ impl Method for Exact {
             ..Stats::default()
         };
         Ok(Solution::new(events, x_end, v_end, stats))
+    }
+
+    /// [`integrate`] alone, as a user calls it: the same events located, without recording
+    /// the segments `solve` reads every period's events from.
+    fn solve_timed(&self, problem: &Problem, _setting: Setting) -> Result<()> {
+        integrate(&problem.body, &problem.law, &options(problem, false)).map(drop)
+    }
+}
+
+/// The run of `problem`: whole periods to its end, segments recorded or not.
+fn options(problem: &Problem, record_segments: bool) -> RunOptions {
+    let periods = (problem.t_end / problem.law.period).ceil().max(1.0) as u32;
+    RunOptions {
+        periods,
+        record_segments,
+        dissipation: false,
     }
 }
 

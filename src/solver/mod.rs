@@ -152,6 +152,11 @@ pub trait Method: Sync {
     fn name(&self) -> &'static str;
     /// Solves `problem` with the given accuracy setting.
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution>;
+    /// The work the benchmark times: [`Method::solve`], unless the method does the same
+    /// integration with less bookkeeping for its output (the exact engine).
+    fn solve_timed(&self, problem: &Problem, setting: Setting) -> Result<()> {
+        self.solve(problem, setting).map(drop)
+    }
 }
 
 /// Helpers shared by the methods' tests: the problems they solve and how they compare.
