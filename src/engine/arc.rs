@@ -19,6 +19,7 @@
 
 use super::dd::{self, Dd};
 use super::law::{Affine, Basis};
+use crate::fmath;
 
 /// The state at the start of an arc: time t_c (s, within the period, as hi + lo), position
 /// (m), velocity (m/s) and acceleration (m/s²).
@@ -88,7 +89,7 @@ impl Arc {
                 // a first-order correction of sin and cos takes in.
                 let theta = omega * t_c;
                 let theta_lo = omega.mul_add(t_c, -theta) + omega * t_lo;
-                let (sin, cos) = theta.sin_cos();
+                let (sin, cos) = fmath::sin_cos(theta);
                 Arc::Trig {
                     t_c,
                     t_lo,
@@ -334,7 +335,7 @@ struct Kernels {
 impl Kernels {
     #[inline]
     fn new(delta: f64) -> Kernels {
-        let (sh, ch) = (0.5 * delta).sin_cos();
+        let (sh, ch) = fmath::sin_cos(0.5 * delta);
         Kernels {
             delta,
             sin: 2.0 * sh * ch,
@@ -423,7 +424,7 @@ pub fn cos_level_crossings(
     if !(r > -1.0 && r < 1.0) {
         return [None, None];
     }
-    let theta = r.acos();
+    let theta = fmath::acos(r);
     let period = std::f64::consts::TAU / omega;
     // d/dt (c1 cos ωt) = −c1 ω sin ωt: sin > 0 on (0, π), < 0 on (π, 2π).
     let first = theta / omega;

@@ -1,6 +1,7 @@
 //! Force laws as data: a period tiled by pieces on which the driving force D and the
 //! friction-bearing normal force N_f are affine in one basis function b(t).
 
+use crate::fmath;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
@@ -22,7 +23,7 @@ impl Basis {
     pub fn eval(&self, t: f64) -> f64 {
         match *self {
             Basis::Linear { t_ref } => t - t_ref,
-            Basis::Cos { omega } => (omega * t).cos(),
+            Basis::Cos { omega } => fmath::cos(omega * t),
         }
     }
 }

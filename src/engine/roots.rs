@@ -8,6 +8,7 @@
 use super::arc::{cos_level_crossings, cos_level_crossings_dd};
 use super::dd::Dd;
 use super::law::{Affine, Basis};
+use crate::fmath;
 
 /// Where a switching function starts to be positive (see [`first_up_crossing`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -76,7 +77,7 @@ pub fn first_up_crossing(
         Basis::Cos { omega } => {
             // At g = 0, look at the slope, and at the curvature where the slope vanishes too
             // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
-            let (sin, cos) = (omega * from).sin_cos();
+            let (sin, cos) = fmath::sin_cos(omega * from);
             let g_from = g.at(cos);
             let slope = -g.c1 * omega * sin;
             let curvature = -g.c1 * omega * omega * cos;
