@@ -7,10 +7,12 @@ use crate::models::pulled_mass::formula::{ClosedForm, Regime};
 use crate::models::pulled_mass::map::{
     harmonic_category, linear_category, top, HARMONIC_CATEGORIES, LINEAR_CATEGORIES,
 };
+use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::Evaluation;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
 use crate::output::format::people;
+use crate::results::quantity::{Quantity, Registry};
 use crate::results::Applicability;
 
 /// Significant digits of the numbers in the regime sentence (those of the report's tables).
@@ -31,6 +33,13 @@ pub fn regime_reason(c: &ClosedForm, mu_s: f64) -> String {
 }
 
 impl Explore for PulledMassParams {
+    const NAME: &'static str = "pulled mass";
+    const POSITION: &'static str = "x";
+
+    fn quantities() -> Vec<&'static Quantity> {
+        Key::ENTRIES.iter().map(|e| &e.quantity).collect()
+    }
+
     fn regime(e: &Evaluation) -> RegimeText {
         RegimeText {
             id: e.closed_form.regime.id(),

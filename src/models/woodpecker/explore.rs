@@ -5,10 +5,12 @@ use crate::engine::ForceLaw;
 use crate::explore::{Explore, MapAxis, RegimeText};
 use crate::models::woodpecker::formula::OrbitRegime;
 use crate::models::woodpecker::map::{integrated_cell, linear_cell, ranges, MAP_PERIODS, REGIMES};
+use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::Evaluation;
 use crate::models::woodpecker::{spring_coordinate, WoodpeckerParams};
 use crate::models::LawKind;
 use crate::output::format::people;
+use crate::results::quantity::{Quantity, Registry};
 use crate::results::Applicability;
 
 /// Significant digits of the numbers in the regime sentence (those of the report's tables).
@@ -67,6 +69,13 @@ fn regime_reason(e: &Evaluation) -> String {
 }
 
 impl Explore for WoodpeckerParams {
+    const NAME: &'static str = "woodpecker";
+    const POSITION: &'static str = "y_S";
+
+    fn quantities() -> Vec<&'static Quantity> {
+        Key::ENTRIES.iter().map(|e| &e.quantity).collect()
+    }
+
     fn regime(e: &Evaluation) -> RegimeText {
         RegimeText {
             id: e.closed_form.regime.id(),

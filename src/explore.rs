@@ -21,6 +21,7 @@ use crate::error::{Error, Result};
 use crate::models::param::invalid;
 use crate::models::{with_model, LawKind, Model, Physics};
 use crate::params::{validate_periods, DEFAULT_PERIODS};
+use crate::results::quantity::Quantity;
 use crate::results::Applicability;
 
 /// Periods the page shows by default.
@@ -54,6 +55,12 @@ pub struct MapAxis {
 
 /// What the explorer asks of a model beyond [`Physics`].
 pub trait Explore: Physics {
+    /// The model in a few words ("pulled mass").
+    const NAME: &'static str;
+    /// The symbol of the body's position in the figures ("x", "y_S").
+    const POSITION: &'static str;
+    /// The closed-form quantities of the model's registry, in its order.
+    fn quantities() -> Vec<&'static Quantity>;
     /// The closed forms' regime in words with the inequality that decides it.
     fn regime(e: &Self::Evaluation) -> RegimeText;
     /// Which closed forms describe the motion (the others are greyed).
