@@ -303,3 +303,164 @@ pub fn integration_regimes() -> Vec<LawText> {
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn request(json: &str) -> Request {
+        parse(json.as_bytes()).unwrap()
+    }
+
+    #[test]
+    fn the_evaluation_is_the_eval_commands_json_for_the_same_set() {
+        let r = request(
+            r#"{"model": "woodpecker", "params": {"mu_d": 0.3}, "choices": {"counterpart": "extremes"}}"#,
+        );
+        let got = explore(&r).unwrap();
+        let mut p = crate::models::woodpecker::WoodpeckerParams {
+            mu_d: 0.3,
+            ..Default::default()
+        };
+        p.counterpart = crate::models::woodpecker::formula::Counterpart::Extremes;
+        let want = serde_json::to_string_pretty(&p.evaluate(DEFAULT_PERIODS).unwrap()).unwrap();
+        assert_eq!(got.evaluation, want);
+        let extras: serde_json::Value = serde_json::from_str(&got.extras).unwrap();
+        // Phase I's halt threshold is 0.513 here: the slips merge.
+        assert_eq!(extras["closed_form"]["id"], "double_slip_no_halt");
+        let why = extras["closed_form"]["why"].as_str().unwrap();
+        assert!(why.starts_with("μd = 0.3 < μd,HALT(I) = 0.51260062;"), "{why}");
+        assert!(extras["applicability"].as_array().unwrap().len() > 10);
+    }
+
+    #[test]
+    fn curves_hold_both_laws_over_the_shown_periods_in_time_order() {
+        let got = explore(&request(
+            r#"{"model": "pulled-mass", "shown": 2, "samples": 50}"#,
+        ))
+        .unwrap();
+        let c = &got.curves;
+        let (lin, har) = (c[0] as usize, c[1] as usize);
+        assert!(lin >= 50 && har >= 50, "{lin} {har}");
+        assert_eq!(c.len(), 2 + SAMPLE_WIDTH * (lin + har));
+        let period = crate::models::pulled_mass::PulledMassParams::default().period();
+        for law in [&c[2..2 + SAMPLE_WIDTH * lin], &c[2 + SAMPLE_WIDTH * lin..]] {
+            let t: Vec<f64> = law.chunks(SAMPLE_WIDTH).map(|s| s[0]).collect();
+            assert_eq!(t[0], 0.0);
+            assert!((t[t.len() - 1] - 2.0 * period).abs() < 1e-12);
+            assert!(t.windows(2).all(|w| w[0] <= w[1]));
+            assert!(law.iter().all(|x| x.is_finite()));
+        }
+    }
+
+    #[test]
+    fn a_missing_linear_law_has_no_curve_but_the_harmonic_one_does() {
+        // z0 ≤ −d0: the spring never changes sign, the zeros counterpart is undefined.
+        let r = request(r#"{"model": "woodpecker", "params": {"z0": -0.012}}"#);
+        let got = explore(&r).unwrap();
+        assert_eq!(got.curves[0], 0.0);
+        assert!(got.curves[1] > 0.0);
+        assert!(got.evaluation.contains("\"linear\": null"));
+    }
+
+    #[test]
+    fn map_rows_cover_the_requested_rows_with_listed_categories() {
+        for (model, law) in [
+            ("pulled-mass", "linear"),
+            ("pulled-mass", "harmonic"),
+            ("woodpecker", "linear"),
+            ("woodpecker", "harmonic"),
+        ] {
+            let json =
+                format!(r#"{{"model": "{model}", "law": "{law}", "cells": 6, "rows": [2, 5]}}"#);
+            let (info, cells) = map(&parse(json.as_bytes()).unwrap()).unwrap();
+            assert_eq!(cells.len(), 3 * 6, "{model} {law}");
+            assert!(cells
+                .iter()
+                .all(|&c| usize::from(c) < info.categories.len()));
+            assert!(info.x.range.0 < info.x.range.1 && info.y.range.0 < info.y.range.1);
+            assert_eq!(info.x.key, "mu_d");
+        }
+    }
+
+    #[test]
+    fn the_maps_cell_at_the_default_set_is_its_regime() {
+        // The woodpecker's defaults are in double slip-stick under both laws.
+        let p = crate::models::woodpecker::WoodpeckerParams::default();
+        for law in [LawKind::Linear, LawKind::Harmonic] {
+            let cell = p.map_cell(law, p.mu_d, p.z0);
+            let label = crate::models::woodpecker::WoodpeckerParams::map_categories(law)
+                [usize::from(cell)]
+            .0;
+            assert_eq!(label, "2 slips, 2 sticks", "{law:?}");
+        }
+    }
+
+    #[test]
+    fn bad_requests_are_refused_with_one_line_messages() {
+        let refused = |json: &str| match parse::<Request>(json.as_bytes()).and_then(|r| explore(&r))
+        {
+            Err(e) => e.to_string(),
+            Ok(_) => panic!("{json} accepted"),
+        };
+        assert!(refused("not json").starts_with("invalid value 'not json' for request"));
+        assert!(refused(r#"{"model": "seesaw"}"#).contains("pulled-mass, woodpecker"));
+        assert!(refused(r#"{"model": "woodpecker", "params": {"F": 1}}"#).contains("for parameter"));
+        assert!(
+            refused(r#"{"model": "woodpecker", "choices": {"omega": "x"}}"#).contains("for option")
+        );
+        assert!(
+            refused(r#"{"model": "pulled-mass", "params": {"mu_d": 2}}"#)
+                .starts_with("invalid parameter mu_d = 2")
+        );
+        assert!(refused(r#"{"model": "pulled-mass", "samples": 1}"#).contains("samples"));
+        assert!(refused(r#"{"model": "pulled-mass", "shown": 0}"#).contains("periods"));
+        let map_refused = |json: &str| {
+            parse::<MapRequest>(json.as_bytes())
+                .and_then(|r| map(&r))
+                .unwrap_err()
+                .to_string()
+        };
+        assert!(
+            map_refused(r#"{"model": "pulled-mass", "law": "x", "cells": 4, "rows": [0, 4]}"#)
+                .contains("for law")
+        );
+        assert!(map_refused(
+            r#"{"model": "pulled-mass", "law": "linear", "cells": 4, "rows": [3, 5]}"#
+        )
+        .contains("cells"));
+        assert!(map_refused(
+            r#"{"model": "pulled-mass", "law": "linear", "cells": 0, "rows": [0, 0]}"#
+        )
+        .contains("cells"));
+    }
+
+    #[test]
+    fn extreme_parameters_are_refused_or_explored_never_a_panic() {
+        for value in [f64::MIN_POSITIVE, 1e-300, 1e-40, 1e40, 1e300, f64::MAX] {
+            for model in Model::defaults() {
+                for key in model.param_keys() {
+                    let mut setup = Setup {
+                        model: model.id().to_string(),
+                        ..Setup::default()
+                    };
+                    setup.params.insert(key.to_string(), value);
+                    let r = Request {
+                        setup: setup.clone(),
+                        periods: 2,
+                        shown: 1,
+                        samples: 8,
+                    };
+                    let _ = explore(&r);
+                    let m = MapRequest {
+                        setup,
+                        law: "harmonic".to_string(),
+                        cells: 2,
+                        rows: (0, 2),
+                    };
+                    let _ = map(&m);
+                }
+            }
+        }
+    }
+}
