@@ -329,7 +329,10 @@ mod tests {
         // Phase I's halt threshold is 0.513 here: the slips merge.
         assert_eq!(extras["closed_form"]["id"], "double_slip_no_halt");
         let why = extras["closed_form"]["why"].as_str().unwrap();
-        assert!(why.starts_with("μd = 0.3 < μd,HALT(I) = 0.51260062;"), "{why}");
+        assert!(
+            why.starts_with("μd = 0.3 < μd,HALT(I) = 0.51260062;"),
+            "{why}"
+        );
         assert!(extras["applicability"].as_array().unwrap().len() > 10);
     }
 

@@ -361,7 +361,26 @@
     const cursor = svgEl("line", { class: "cursor", x1: px(state.time), x2: px(state.time), y1: y0, y2: y1,
       stroke: "#606060", "stroke-width": 1, "stroke-dasharray": "5,4" });
     svg.append(cursor);
+    // A dot on each law's curve, moved with the animation's time.
+    svg.dots = [...DATA.laws].reverse().filter((law) => view.curves[law.id].length).map((law) => {
+      const dot = svgEl("circle", { r: 4.5, fill: law.color, stroke: "#fff", "stroke-width": 1.5 });
+      svg.append(dot);
+      return { dot, points: view.curves[law.id] };
+    });
     svg.cursorX = px;
+    svg.cursorY = (v) => py(v * scale);
+    svg.column = column;
+  }
+
+  /** Column `column` of `points` at time t, between the nearest samples. */
+  function valueAt(points, column, t) {
+    let lo = 0;
+    let hi = points.length - 1;
+    while (hi - lo > 1) { const mid = (lo + hi) >> 1; if (points[mid][0] <= t) lo = mid; else hi = mid; }
+    const a = points[lo];
+    const b = points[hi];
+    const f = b[0] > a[0] ? Math.min(1, Math.max(0, (t - a[0]) / (b[0] - a[0]))) : 0;
+    return a[column] + (b[column] - a[column]) * f;
   }
 
   function drawPlots() {
@@ -373,14 +392,21 @@
     $("plot-v-title").textContent = `Speed in mm/s against time over ${DATA.shown} periods, both force laws`;
     $("plots-caption").textContent = `Exact integration from rest over ${DATA.shown} periods (T = ${fmt(e.params.T, 4)} s): `
       + `harmonic law (solid) against the linearized law (dashed)${view.curves.linear.length ? "" : "; the linearized law does not exist for these parameters"}. `
-      + "The dashed vertical line is the time of the animation.";
+      + "The dashed vertical line and the dots follow the time of the animation.";
   }
 
   function moveCursors() {
     for (const id of ["plot-x", "plot-v"]) {
       const svg = $(id);
       const line = svg.querySelector("line.cursor");
-      if (line && svg.cursorX) { const x = svg.cursorX(state.time); line.setAttribute("x1", x); line.setAttribute("x2", x); }
+      if (!line || !svg.cursorX) continue;
+      const x = svg.cursorX(state.time);
+      line.setAttribute("x1", x);
+      line.setAttribute("x2", x);
+      for (const { dot, points } of svg.dots) {
+        dot.setAttribute("cx", x);
+        dot.setAttribute("cy", svg.cursorY(valueAt(points, svg.column, state.time)));
+      }
     }
   }
 
@@ -398,16 +424,23 @@
   function drawRegime() {
     const e = view.evaluation;
     const c = view.extras.closed_form;
+    const lines = [
+      ["Closed forms (linearized law)", `${c.words}, because ${c.why}.`],
+      ["Exact integration, linearized law", lawWords(e.linear)],
+      ["Exact integration, harmonic law", lawWords(e.harmonic)],
+    ];
     const box = $("regime");
     box.replaceChildren();
-    const line = (law, text) => {
+    for (const [law, text] of lines) {
       const p = el("p");
       p.append(el("span", { class: "law" }, `${law}: `), text);
       box.append(p);
-    };
-    line("Closed forms (linearized law)", `${c.words}, because ${c.why}.`);
-    line("Exact integration, linearized law", lawWords(e.linear));
-    line("Exact integration, harmonic law", lawWords(e.harmonic));
+    }
+    // The live region says the regimes in words only, and only when they change, so that a
+    // screen reader announces a new regime, not every step of a slider.
+    const words = (s) => (s ? (DATA.integration_regimes.find((q) => q.id === s.regime) || { words: s.regime }).words : "none");
+    const live = `Regime of the closed forms: ${c.words}. Linearized law: ${words(e.linear)}. Harmonic law: ${words(e.harmonic)}.`;
+    if ($("regime-live").textContent !== live) $("regime-live").textContent = live;
   }
 
   // ---------------------------------------------------------------------------------------
@@ -455,14 +488,7 @@
   /** (x, v, apparatus) of the animation's law at time t, between the nearest samples. */
   function stateAt(t) {
     const points = view.curves[state.law].length ? view.curves[state.law] : view.curves.harmonic;
-    let lo = 0;
-    let hi = points.length - 1;
-    while (hi - lo > 1) { const mid = (lo + hi) >> 1; if (points[mid][0] <= t) lo = mid; else hi = mid; }
-    const a = points[lo];
-    const b = points[hi];
-    const f = b[0] > a[0] ? Math.min(1, Math.max(0, (t - a[0]) / (b[0] - a[0]))) : 0;
-    const mix = (i) => a[i] + (b[i] - a[i]) * f;
-    return { x: mix(1), v: mix(2), z: mix(3), points };
+    return { x: valueAt(points, 1, t), v: valueAt(points, 2, t), z: valueAt(points, 3, t), points };
   }
 
   function extent(points, i) {
