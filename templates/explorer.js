@@ -416,9 +416,11 @@
   function lawWords(summary) {
     if (!summary) return "does not exist for these parameters";
     const r = DATA.integration_regimes.find((q) => q.id === summary.regime);
-    const counts = `${summary.slips_per_period} slip(s) and ${summary.sticks_per_period} stick(s) per period`;
-    const start = summary.immediate_slip ? "; slips at t = 0" : "";
-    return `${r ? r.words : summary.regime} (${counts}${start}); mean speed ${summary.v_avg === null ? "—" : fmt(summary.v_avg * 1e3, 4) + " mm/s"}`;
+    const counts = summary.slips_per_period + summary.sticks_per_period > 0
+      ? [`${summary.slips_per_period} slip(s) and ${summary.sticks_per_period} stick(s) per period`] : [];
+    if (summary.immediate_slip) counts.push("slips at t = 0");
+    const speed = summary.v_avg === null ? "no steady mean speed" : `mean speed ${fmt(summary.v_avg * 1e3, 4)} mm/s`;
+    return `${r ? r.words : summary.regime}${counts.length ? ` (${counts.join("; ")})` : ""}; ${speed}`;
   }
 
   function drawRegime() {
@@ -448,35 +450,41 @@
 
   function drawTable() {
     const e = view.evaluation;
-    const quantities = Object.fromEntries(model().quantities.map((q) => [q.id, q]));
     const applies = Object.fromEntries(view.extras.applicability.map((a) => [a.quantity, a]));
+    const checks = Object.fromEntries(e.checks.map((c) => [c.quantity, c]));
     const rows = $("check-rows");
     rows.replaceChildren();
-    for (const c of e.checks) {
-      const q = quantities[c.quantity];
-      const a = applies[c.quantity];
+    const row = (q, id, c) => {
+      const a = applies[id];
       const na = a && !a.applies;
-      const verdict = c.pass === true ? "pass" : c.pass === false ? "FAIL" : "n/a";
-      const cls = na ? "na" : c.pass === true ? "pass" : c.pass === false ? "fail" : "na";
-      const tr = el("tr", { class: cls, "data-quantity": c.quantity });
+      const value = c ? c.closed_form : e.closed_form[id];
+      const verdict = !c ? "—" : na ? "n/a" : c.pass === true ? "pass" : c.pass === false ? "FAIL" : "n/a";
+      const cls = na ? "na" : !c ? "none" : c.pass === true ? "pass" : c.pass === false ? "fail" : "na";
+      const tr = el("tr", { class: cls, "data-quantity": id });
       const cell = (text, extra = {}) => tr.append(el("td", extra, text));
-      const sym = el("td", { title: q ? q.words : c.quantity });
-      sym.textContent = q ? q.symbol : c.quantity;
-      tr.append(sym);
-      cell(q ? `${c.equation} ${q.tag}` : c.equation);
-      cell(fmt(c.closed_form), { class: "num", "data-exact": String(c.closed_form) });
-      cell(fmt(c.numeric), { class: "num", "data-exact": String(c.numeric) });
+      cell(q ? q.symbol : id, { title: q ? q.words : id });
+      cell(q ? `${c ? c.equation : q.equation} ${q.tag}` : c.equation);
+      cell(fmt(value), { class: "num", "data-exact": String(value) });
+      cell(c ? fmt(c.numeric) : "—", { class: "num", "data-exact": c ? String(c.numeric) : "" });
       cell(q ? q.unit : "");
-      cell(c.rel_error === null ? "—" : c.rel_error.toExponential(1), { class: "num" });
-      cell(na ? "n/a" : verdict, { class: "verdict" });
-      cell([na ? a.reason : "", c.note || ""].filter(Boolean).join("; "), { class: "note" });
+      cell(!c || c.rel_error === null ? "—" : c.rel_error.toExponential(1), { class: "num" });
+      cell(verdict, { class: "verdict" });
+      const notes = [na ? a.reason : "", c ? c.note || "" : "no counterpart in the integration"];
+      cell(notes.filter(Boolean).join("; "), { class: "note" });
       rows.append(tr);
+    };
+    // Every closed form of the registry in its order, with its check where it has one (as the
+    // report's verification table), then the checks of the periodic orbit.
+    for (const q of model().quantities) {
+      if (q.id in checks || q.id in e.closed_form) row(q, q.id, checks[q.id]);
     }
+    const known = new Set(model().quantities.map((q) => q.id));
+    for (const c of e.checks) if (!known.has(c.quantity)) row(null, c.quantity, c);
     $("periods").textContent = String(e.params.periods);
     $("json").textContent = probe.evaluation;
     const req = probe.request;
-    const flags = Object.entries(req.params).map(([k, v]) => `--${k.replace(/_/g, "-")} ${v}`)
-      .concat(Object.entries(req.choices).map(([k, v]) => `--${k} ${v}`));
+    const flags = Object.entries(req.params).map(([k, v]) => `--${k.replace(/_/g, "-")}=${v}`)
+      .concat(Object.entries(req.choices).map(([k, v]) => `--${k}=${v}`));
     $("cli-line").textContent = `stickslip eval ${req.model} ${flags.join(" ")} --json`;
   }
 
