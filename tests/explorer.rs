@@ -3,7 +3,8 @@
 //! leaving file:/data:/blob:, renders both models, follows sliders (mouse and keyboard), map
 //! clicks (mouse and keyboard), options and presets, shows the one-line error of an invalid
 //! value, has no console error and no serious accessibility violation; every parameter set it
-//! visited gives the same bytes as `stickslip eval … --json`. Prints the measured size, first
+//! visited gives the same bytes as `stickslip eval … --json`; honours `prefers-reduced-motion`
+//! and fits a phone's width. Prints the measured size, first
 //! render and redraw times and checks them against the budgets (with a margin for a loaded
 //! machine). `SCREENSHOTS=1` saves docs/screenshots/explorer-*.png.
 //!
@@ -16,7 +17,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use stickslip::report::{builtin_scenes, explorer};
+use stickslip::report::{builtin_scenes, classroom, explorer, Format};
 
 /// Budgets of the issue: page size, first render, one redraw.
 const MAX_BYTES: usize = 1_500_000;
@@ -104,6 +105,18 @@ fn the_page_is_one_small_file_without_network_references() {
 }
 
 #[test]
+fn the_default_report_writes_and_links_the_explorer_with_its_html() {
+    let scenes = builtin_scenes().unwrap();
+    let (files, links) = classroom::material(&scenes, &[Format::Html]).unwrap();
+    let page = explorer::render(&scenes).unwrap();
+    assert!(files.contains(&page));
+    assert!(links.iter().any(|l| l.html == explorer::FILE));
+    let (files, links) = classroom::material(&scenes, &[Format::Md]).unwrap();
+    assert!(files.iter().all(|f| f.path != Path::new(explorer::FILE)));
+    assert!(links.iter().all(|l| l.html != explorer::FILE));
+}
+
+#[test]
 fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
     let Some((browser, node, modules)) = tools() else {
         return;
@@ -171,6 +184,14 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
         .contains("two slips and two sticks"));
     assert!(checks["woodTable"].as_u64().unwrap() >= 10, "{checks}");
     assert_ne!(checks["animationTime"], "t = 0 s", "the animation ran");
+    // Under prefers-reduced-motion the time moves in steps of T/8, one a second (1.5 s: one
+    // step, two on a slow machine), and a phone never scrolls sideways.
+    let steps = checks["reducedMotionStep"].as_f64().unwrap();
+    assert!(
+        (steps - steps.round()).abs() < 0.01 && (1.0..=2.0).contains(&steps.round()),
+        "{steps}"
+    );
+    assert_eq!(checks["phoneOverflow"], 0, "{checks}");
 
     // Every set the page visited: the same bytes as the command line.
     let visited = r["visited"].as_array().unwrap();

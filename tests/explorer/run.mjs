@@ -118,15 +118,28 @@ try {
   if (shots) await page.locator("#motion").screenshot({ path: path.join(shots, "explorer-animation.png") });
   await page.click("#play");
 
-  // Accessibility, at desktop and phone width.
+  // Reduced motion: no smooth animation, an eighth of a period per second.
+  await page.emulateMedia({ reducedMotion: "reduce" });
+  const before = await page.evaluate(() => document.getElementById("time-out").textContent);
+  await page.click("#play");
+  await page.waitForTimeout(1500);
+  await page.click("#play");
+  const after = await page.evaluate(() => document.getElementById("time-out").textContent);
+  const period = JSON.parse(await page.evaluate(() => window.stickslipExplorer.evaluation)).params.T;
+  const seconds = (s) => Number(s.replace(/^t = /, "").replace(/ s$/, ""));
+  out.checks.reducedMotionStep = (seconds(after) - seconds(before)) / (period / 8);
+
+  // Accessibility at desktop and phone width, light and dark; no sideways scrolling on a phone.
   out.axe = [];
-  for (const [width, height] of [[1280, 1000], [390, 844]]) {
+  for (const [width, height, colorScheme] of [[1280, 1000, "light"], [390, 844, "light"], [390, 844, "dark"]]) {
     await page.setViewportSize({ width, height });
+    await page.emulateMedia({ colorScheme });
     await page.addScriptTag({ content: axeSource });
     const result = await page.evaluate(async () => await window.axe.run(document));
     out.axe.push(...result.violations
       .filter((v) => v.impact === "serious" || v.impact === "critical")
-      .map((v) => ({ id: v.id, impact: v.impact, width, nodes: v.nodes.map((n) => n.target.join(" ")).slice(0, 3) })));
+      .map((v) => ({ id: v.id, impact: v.impact, width, colorScheme, nodes: v.nodes.map((n) => n.target.join(" ")).slice(0, 3) })));
+    if (width < 500) out.checks.phoneOverflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
   }
 } finally {
   await browser.close();
