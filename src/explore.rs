@@ -239,6 +239,58 @@ fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
     })
 }
 
+/// What one call of the wasm exports leaves for the page ([`crate::wasm`]): the status (0 done,
+/// 1 refused), the text out and the numbers out.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Answer {
+    pub status: u32,
+    /// Done: `explore`: the §7 evaluation JSON, a NUL byte, the extras JSON; `map`: the map's
+    /// [`MapInfo`] as JSON. Refused: the one-line error message.
+    pub text: Vec<u8>,
+    /// Done: `explore`: [`Explored::curves`]; `map`: the cells' categories. Refused: empty.
+    pub data: Vec<f64>,
+}
+
+impl Answer {
+    fn of(outcome: Result<(Vec<u8>, Vec<f64>)>) -> Self {
+        match outcome {
+            Ok((text, data)) => Answer {
+                status: 0,
+                text,
+                data,
+            },
+            Err(e) => Answer {
+                status: 1,
+                text: e.to_string().into_bytes(),
+                data: Vec::new(),
+            },
+        }
+    }
+}
+
+/// The answer to the page's `explore` call with the request `bytes` (JSON of [`Request`]).
+pub fn answer_explore(bytes: &[u8]) -> Answer {
+    Answer::of(parse::<Request>(bytes).and_then(|r| explore(&r)).map(|e| {
+        let mut text = e.evaluation.into_bytes();
+        text.push(0);
+        text.extend(e.extras.into_bytes());
+        (text, e.curves)
+    }))
+}
+
+/// The answer to the page's `map` call with the request `bytes` (JSON of [`MapRequest`]).
+pub fn answer_map(bytes: &[u8]) -> Answer {
+    Answer::of(
+        parse::<MapRequest>(bytes)
+            .and_then(|r| map(&r))
+            .and_then(|(info, cells)| {
+                let text =
+                    serde_json::to_vec(&info).map_err(|e| Error::InvalidLaw(e.to_string()))?;
+                Ok((text, cells.into_iter().map(f64::from).collect()))
+            }),
+    )
+}
+
 /// The axes and the legend of a map (JSON), for the page.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct MapInfo {
@@ -307,6 +359,36 @@ pub fn integration_regimes() -> Vec<LawText> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_answers_of_the_wasm_calls_are_laid_out_as_documented() {
+        let done = answer_explore(br#"{"model": "pulled-mass"}"#);
+        assert_eq!(done.status, 0);
+        let text = String::from_utf8(done.text).unwrap();
+        let (evaluation, extras) = text.split_once('\0').unwrap();
+        let p = crate::models::pulled_mass::PulledMassParams::default();
+        let want = serde_json::to_string_pretty(&p.evaluate(DEFAULT_PERIODS).unwrap()).unwrap();
+        assert_eq!(evaluation, want);
+        assert!(serde_json::from_str::<serde_json::Value>(extras).is_ok());
+        assert_eq!(
+            done.data[0] as usize + done.data[1] as usize,
+            (done.data.len() - 2) / 4
+        );
+
+        let refused = answer_explore(br#"{"model": "pulled-mass", "params": {"k": -1}}"#);
+        assert_eq!(refused.status, 1);
+        assert!(refused.data.is_empty());
+        assert!(String::from_utf8(refused.text)
+            .unwrap()
+            .starts_with("invalid parameter k = -1"));
+
+        let map =
+            answer_map(br#"{"model": "woodpecker", "law": "linear", "cells": 3, "rows": [0, 3]}"#);
+        assert_eq!((map.status, map.data.len()), (0, 9));
+        let info: serde_json::Value = serde_json::from_slice(&map.text).unwrap();
+        assert_eq!(info["y"]["key"], "z0");
+        assert_eq!(answer_map(b"").status, 1);
+    }
 
     fn request(json: &str) -> Request {
         parse(json.as_bytes()).unwrap()

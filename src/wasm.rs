@@ -1,6 +1,7 @@
 //! The explorer page's entry points in WebAssembly (`wasm32-unknown-unknown`, built by
 //! `.ci/wasm` into `src/explorer/engine.wasm`): thin `extern "C"` wrappers around
-//! [`crate::explore`], which holds the logic and is tested natively.
+//! [`crate::explore`], which holds the logic and the layout of the answers
+//! ([`explore::answer_explore`], [`explore::answer_map`]) and is tested natively.
 //!
 //! The ABI, all numbers little-endian wasm32 (`usize` and pointers are 32 bits):
 //!
@@ -23,7 +24,7 @@
 
 use std::cell::RefCell;
 
-use crate::explore::{self, MapRequest, Request};
+use crate::explore::{self, Answer};
 
 thread_local! {
     /// The text and numbers of the last call (wasm32 without threads has one thread).
@@ -56,17 +57,9 @@ pub unsafe extern "C" fn free(ptr: *mut u8, len: usize) {
 #[no_mangle]
 pub unsafe extern "C" fn explore(ptr: *const u8, len: usize) -> u32 {
     // SAFETY: the caller passes `len` initialised bytes at `ptr`.
-    let bytes = unsafe { std::slice::from_raw_parts(ptr, len) };
-    answer(
-        explore::parse::<Request>(bytes)
-            .and_then(|r| explore::explore(&r))
-            .map(|e| {
-                let mut text = e.evaluation.into_bytes();
-                text.push(0);
-                text.extend(e.extras.into_bytes());
-                (text, e.curves)
-            }),
-    )
+    store(explore::answer_explore(unsafe {
+        std::slice::from_raw_parts(ptr, len)
+    }))
 }
 
 /// Computes the rows of a regime map asked for by the request at `ptr` (`len` bytes).
@@ -76,26 +69,15 @@ pub unsafe extern "C" fn explore(ptr: *const u8, len: usize) -> u32 {
 #[no_mangle]
 pub unsafe extern "C" fn map(ptr: *const u8, len: usize) -> u32 {
     // SAFETY: the caller passes `len` initialised bytes at `ptr`.
-    let bytes = unsafe { std::slice::from_raw_parts(ptr, len) };
-    answer(
-        explore::parse::<MapRequest>(bytes)
-            .and_then(|r| explore::map(&r))
-            .and_then(|(info, cells)| {
-                let text = serde_json::to_vec(&info)
-                    .map_err(|e| crate::error::Error::InvalidLaw(e.to_string()))?;
-                Ok((text, cells.into_iter().map(f64::from).collect()))
-            }),
-    )
+    store(explore::answer_map(unsafe {
+        std::slice::from_raw_parts(ptr, len)
+    }))
 }
 
-/// Stores the outcome of a call; 0 when it succeeded, 1 with the message when refused.
-fn answer(outcome: crate::error::Result<(Vec<u8>, Vec<f64>)>) -> u32 {
-    let (status, out) = match outcome {
-        Ok(out) => (0, out),
-        Err(e) => (1, (e.to_string().into_bytes(), Vec::new())),
-    };
-    OUT.with(|o| *o.borrow_mut() = out);
-    status
+/// Keeps the outputs of a call for the page to read; returns its status.
+fn store(answer: Answer) -> u32 {
+    OUT.with(|o| *o.borrow_mut() = (answer.text, answer.data));
+    answer.status
 }
 
 /// The text out of the last call.

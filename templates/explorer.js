@@ -22,18 +22,30 @@
   // The engine
 
   let engine = null;
+  let compiled = null;
 
   async function startEngine() {
     const text = $("explorer-engine").textContent.trim();
     const binary = atob(text);
     const bytes = new Uint8Array(binary.length);
     for (let i = 0; i < binary.length; i++) bytes[i] = binary.charCodeAt(i);
-    const { instance } = await WebAssembly.instantiate(bytes, {});
+    const { module, instance } = await WebAssembly.instantiate(bytes, {});
+    compiled = module;
     engine = instance.exports;
   }
 
-  /** Calls export `fn` with `request` as JSON; returns {ok, text, data}. */
+  /** Calls export `fn` with `request` as JSON; returns {ok, text, data}. An engine that traps
+   *  (a bug: it refuses bad input with a message) is started afresh and the call refused. */
   function call(fn, request) {
+    try {
+      return callEngine(fn, request);
+    } catch (e) {
+      engine = new WebAssembly.Instance(compiled, {}).exports;
+      return { ok: false, text: `the engine failed on these parameters (${e.message})`, data: new Float64Array(0) };
+    }
+  }
+
+  function callEngine(fn, request) {
     const bytes = encoder.encode(JSON.stringify(request));
     const ptr = engine.alloc(bytes.length);
     new Uint8Array(engine.memory.buffer, ptr, bytes.length).set(bytes);
