@@ -630,7 +630,9 @@
   // ---------------------------------------------------------------------------------------
   // The regime map: computed a few rows at a time, so that sliders stay responsive
 
-  const MAP = { w: 400, h: 400 };
+  // The canvas: the cells in a square of `size` px at (left, top), tick labels and axis
+  // titles around it.
+  const MAP = { w: 484, h: 456, left: 60, top: 10, size: 400 };
   let mapJob = 0;
   let mapTimer = null;
   let map = null; // {info, cells, n}
@@ -672,18 +674,47 @@
     const canvas = $("map");
     const ctx = canvas.getContext("2d");
     const { info, cells, n } = map;
-    const w = MAP.w / n;
-    const h = MAP.h / n;
-    ctx.clearRect(0, 0, MAP.w, MAP.h);
+    const { left, top, size } = MAP;
+    const cell = size / n;
+    ctx.fillStyle = "#fff";
+    ctx.fillRect(0, 0, MAP.w, MAP.h);
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
         const cat = info.categories[cells[j * n + i]];
         ctx.fillStyle = cat ? DATA.fills[cat[1] % DATA.fills.length] : "#dddddd";
-        ctx.fillRect(Math.floor(i * w), Math.floor(MAP.h - (j + 1) * h), Math.ceil(w), Math.ceil(h));
+        ctx.fillRect(Math.floor(left + i * cell), Math.floor(top + size - (j + 1) * cell), Math.ceil(cell), Math.ceil(cell));
       }
     }
-    const px = (x) => ((x - info.x.range[0]) / (info.x.range[1] - info.x.range[0])) * MAP.w;
-    const py = (y) => MAP.h - ((y - info.y.range[0]) / (info.y.range[1] - info.y.range[0])) * MAP.h;
+    const fx = (x) => (x - info.x.range[0]) / (info.x.range[1] - info.x.range[0]);
+    const fy = (y) => (y - info.y.range[0]) / (info.y.range[1] - info.y.range[0]);
+    const px = (x) => left + fx(x) * size;
+    const py = (y) => top + size - fy(y) * size;
+    const xp = axisParam(info.x.key);
+    const yp = axisParam(info.y.key);
+    // Frame, ticks at the ends, quarters and middle, axis titles.
+    ctx.strokeStyle = "#000";
+    ctx.lineWidth = 1;
+    ctx.strokeRect(left - 0.5, top - 0.5, size + 1, size + 1);
+    ctx.fillStyle = "#000";
+    ctx.font = "12px DejaVu Sans, Helvetica, Arial, sans-serif";
+    for (let k = 0; k <= 4; k++) {
+      const f = k / 4;
+      const xv = info.x.range[0] + f * (info.x.range[1] - info.x.range[0]);
+      const yv = info.y.range[0] + f * (info.y.range[1] - info.y.range[0]);
+      ctx.textAlign = "center";
+      ctx.fillText(fmt(xv * xp.factor, 3), left + f * size, top + size + 16);
+      ctx.textAlign = "right";
+      ctx.fillText(fmt(yv * yp.factor, 3), left - 6, top + size - f * size + 4);
+    }
+    const title = (p) => `${p.symbol}${p.unit ? ` (${p.unit})` : ""}`;
+    ctx.font = "13px DejaVu Sans, Helvetica, Arial, sans-serif";
+    ctx.textAlign = "center";
+    ctx.fillText(title(xp), left + size / 2, top + size + 38);
+    ctx.save();
+    ctx.translate(14, top + size / 2);
+    ctx.rotate(-Math.PI / 2);
+    ctx.fillText(title(yp), 0, 0);
+    ctx.restore();
     const values = view.evaluation.params;
     const cx = px(values[info.x.key]);
     const cy = py(values[info.y.key]);
@@ -697,7 +728,7 @@
       const [i, j] = state.mapCursor;
       ctx.strokeStyle = "#000";
       ctx.lineWidth = 2;
-      ctx.strokeRect(i * w, MAP.h - (j + 1) * h, w, h);
+      ctx.strokeRect(left + i * cell, top + size - (j + 1) * cell, cell, cell);
     }
     const legend = $("map-legend");
     legend.replaceChildren();
@@ -708,12 +739,10 @@
       li.append(sw, label);
       legend.append(li);
     }
-    const xp = axisParam(info.x.key);
-    const yp = axisParam(info.y.key);
     const range = (p, r) => `${p.symbol} from ${fmt(r[0] * p.factor, 3)} to ${fmt(r[1] * p.factor, 3)}${unitText(p.unit)}`;
     const here = (() => {
-      const i = Math.floor((cx / MAP.w) * n);
-      const j = Math.floor(((MAP.h - cy) / MAP.h) * n);
+      const i = Math.floor(fx(values[info.x.key]) * n);
+      const j = Math.floor(fy(values[info.y.key]) * n);
       const cat = i >= 0 && i < n && j >= 0 && j < n ? info.categories[cells[j * n + i]] : null;
       return cat ? `; the current set lies in "${cat[0]}"` : "; the current set lies outside the map";
     })();
@@ -740,8 +769,11 @@
     canvas.addEventListener("click", (ev) => {
       if (!map) return;
       const r = canvas.getBoundingClientRect();
-      const i = Math.floor(((ev.clientX - r.left) / r.width) * map.n);
-      const j = Math.floor((1 - (ev.clientY - r.top) / r.height) * map.n);
+      const x = ((ev.clientX - r.left) / r.width) * MAP.w - MAP.left;
+      const y = ((ev.clientY - r.top) / r.height) * MAP.h - MAP.top;
+      if (x < 0 || y < 0 || x >= MAP.size || y >= MAP.size) return;
+      const i = Math.floor((x / MAP.size) * map.n);
+      const j = Math.floor((1 - y / MAP.size) * map.n);
       state.mapCursor = [Math.min(map.n - 1, Math.max(0, i)), Math.min(map.n - 1, Math.max(0, j))];
       pickCell(...state.mapCursor);
     });
