@@ -283,6 +283,9 @@ pub struct HandoutArgs {
     /// Formats, comma-separated.
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
     pub format: Vec<Format>,
+    /// Language of the handout (words, figure labels and decimal sign).
+    #[arg(long, value_enum, default_value_t = Lang::En)]
+    pub lang: Lang,
 }
 
 /// Options shared by every model.

@@ -252,7 +252,7 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     };
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
     let scene = handout::find_scene(id)?;
-    let files = handout::render(&scene, &args.format, browser.as_deref())?;
+    let files = handout::render(&scene, &args.format, browser.as_deref(), args.lang)?;
     let written = report::write_all(&args.out, &files)?;
     print_stdout(&format!(
         "wrote {} files for {} to {}\n",

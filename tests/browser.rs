@@ -15,6 +15,8 @@ use std::process::Command;
 use stickslip::handout::{self, pdf::HEADLESS_FLAGS};
 use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
+use stickslip::worksheet::phrases::Translator;
+use stickslip::worksheet::Lang;
 
 fn find(names: &[&str]) -> Option<PathBuf> {
     names.iter().find_map(|n| {
@@ -56,18 +58,31 @@ fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Ou
 
 /// Share of pixels that are not (near) white in a PNG screenshot.
 fn ink_share(png_path: &Path) -> f64 {
-    let decoder = png::Decoder::new(std::fs::File::open(png_path).expect("screenshot exists"));
+    let (inked, _) = ink(png_path);
+    inked.iter().filter(|&&i| i).count() as f64 / inked.len() as f64
+}
+
+/// How far down the image its lowest inked pixel is (0 top, 1 bottom).
+fn ink_bottom(png_path: &Path) -> f64 {
+    let (inked, width) = ink(png_path);
+    let rows = inked.len() / width;
+    let last = inked.iter().rposition(|&i| i).map_or(0, |p| p / width + 1);
+    last as f64 / rows as f64
+}
+
+/// Per pixel of a PNG, row by row, whether it is ink (a channel below 200), and the width.
+fn ink(png_path: &Path) -> (Vec<bool>, usize) {
+    let decoder = png::Decoder::new(std::fs::File::open(png_path).expect("image exists"));
     let mut reader = decoder.read_info().expect("a PNG");
     let mut buf = vec![0; reader.output_buffer_size()];
     let info = reader.next_frame(&mut buf).expect("a frame");
     let channels = info.color_type.samples();
     let pixels = &buf[..info.buffer_size()];
-    let total = pixels.len() / channels;
-    let ink = pixels
+    let inked = pixels
         .chunks(channels)
-        .filter(|p| p.iter().take(3).any(|&c| c < 200))
-        .count();
-    ink as f64 / total as f64
+        .map(|p| p.iter().take(3).any(|&c| c < 200))
+        .collect();
+    (inked, info.width as usize)
 }
 
 #[test]
@@ -248,8 +263,9 @@ fn no_page_references_the_network() {
     }
 }
 
-/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file: exactly two
-/// A4 pages, holding the scene's title and a result of its chain of formulas.
+/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file, in English
+/// and Italian: exactly two A4 pages, page 2 filled, holding the scene's title and a result of
+/// its chain of formulas.
 #[test]
 fn every_handout_prints_to_exactly_two_a4_pages() {
     let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
@@ -269,16 +285,23 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
         let arg = path.display().to_string();
         scenes.push((arg.clone(), handout::find_scene(&arg).unwrap()));
     }
+    // Every handout in English and in Italian (longer words: the layout must still fit).
+    let runs: Vec<(Lang, &String, &Scene)> = Lang::ALL
+        .iter()
+        .flat_map(|&lang| scenes.iter().map(move |(arg, scene)| (lang, arg, scene)))
+        .collect();
     // Two browsers at a time on this 2-core machine.
     std::thread::scope(|scope| {
-        for chunk in scenes.chunks(scenes.len().div_ceil(2)) {
+        for chunk in runs.chunks(runs.len().div_ceil(2)) {
             let (browser, pdfinfo, pdftotext) = (&browser, &pdfinfo, &pdftotext);
             let dir = dir.path();
             scope.spawn(move || {
-                for (arg, scene) in chunk {
-                    let out = dir.join(&scene.id);
+                for &(lang, arg, scene) in chunk {
+                    let out = dir.join(format!("{}-{}", scene.id, lang.code()));
                     let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
-                        .args(["handout", arg, "--pdf", "--format", "md", "--out"])
+                        .args(["handout", arg, "--pdf", "--format", "md", "--lang"])
+                        .arg(lang.code())
+                        .arg("--out")
                         .arg(&out)
                         .env("STICKSLIP_CHROMIUM", browser)
                         .output()
@@ -295,15 +318,32 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                     };
                     assert_eq!(field("Pages:"), "2", "{arg}: page count");
                     assert!(field("Page size:").ends_with("(A4)"), "{arg}: {info}");
+                    // Page 2 is filled: its last line of ink at least 70 % down the sheet
+                    // (the text ends at 97 %).
+                    let prefix = out.join("page");
+                    let shot = Command::new(pdfinfo.with_file_name("pdftoppm"))
+                        .args(["-r", "30", "-f", "2", "-l", "2", "-singlefile", "-png"])
+                        .arg(&pdf)
+                        .arg(&prefix)
+                        .output()
+                        .unwrap();
+                    assert!(shot.status.success(), "{arg}: {shot:?}");
+                    let bottom = ink_bottom(&prefix.with_extension("png"));
+                    assert!(
+                        bottom >= 0.7,
+                        "{arg}: page 2 ends {bottom:.2} down the sheet"
+                    );
                     let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
                     let text = String::from_utf8_lossy(&text.stdout);
                     let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
-                    let title = scene.title.split_whitespace().collect::<Vec<_>>().join(" ");
+                    let words = Translator::new(lang).unwrap();
+                    let title = words.text(&scene.title);
+                    let title = title.split_whitespace().collect::<Vec<_>>().join(" ");
                     assert!(
                         text.contains(&title),
                         "{arg}: title {title:?} not in the PDF"
                     );
-                    let result = first_plain_result(scene);
+                    let result = lang.number(&first_plain_result(scene));
                     assert!(
                         text.contains(&result),
                         "{arg}: result {result} not in the PDF"
@@ -316,7 +356,7 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
 
 /// The first result of the handout's chain written as a plain decimal ("0.05886").
 fn first_plain_result(scene: &Scene) -> String {
-    handout::build(scene)
+    handout::build(scene, &Translator::new(Lang::En).unwrap())
         .unwrap()
         .steps
         .iter()

@@ -12,6 +12,8 @@ use stickslip::models::Model;
 use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use stickslip::report::{builtin_scenes, Format, Scene};
 use stickslip::results::{Check, CheckValue};
+use stickslip::worksheet::phrases::Translator;
+use stickslip::worksheet::Lang;
 
 use common::rendered;
 
@@ -61,7 +63,7 @@ fn same_to_4_figures(a: f64, b: f64) -> bool {
 fn every_builtin_scene_renders_a_complete_self_contained_handout() {
     for scene in builtin_scenes().unwrap() {
         let id = &scene.id;
-        let files = handout::render(&scene, &[Format::Html, Format::Md], None).unwrap();
+        let files = handout::render(&scene, &[Format::Html, Format::Md], None, Lang::En).unwrap();
         let html = rendered(&files, &format!("{id}.html"));
         let md = rendered(&files, &format!("{id}.md"));
         assert!(html.contains("<style>") && html.contains("@page"), "{id}");
@@ -75,7 +77,7 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
         assert!(html.contains("<math"), "{id}: MathML");
         assert_eq!(html.matches("<section class=\"page\"").count(), 2, "{id}");
         assert!(html.contains("break-after: page"), "{id}: page break");
-        let handout: Handout = handout::build(&scene).unwrap();
+        let handout: Handout = handout::build(&scene, &Translator::new(Lang::En).unwrap()).unwrap();
         // The figures and the sketch of the apparatus.
         let svgs = html.matches("<svg").count();
         assert!((3..=4).contains(&svgs), "{id}: {svgs} figures");
@@ -139,16 +141,21 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
 #[test]
 fn the_handout_is_deterministic() {
     let scene = handout::find_scene("fig15-double-slip-stick").unwrap();
-    let render = || handout::render(&scene, &[Format::Html, Format::Md], None).unwrap();
+    let render = || handout::render(&scene, &[Format::Html, Format::Md], None, Lang::En).unwrap();
     assert_eq!(render(), render());
 }
 
 #[test]
 fn markdown_handout_matches_its_snapshot() {
     let scene = handout::find_scene("fig10-linear-slip-stick").unwrap();
-    let files = handout::render(&scene, &[Format::Md], None).unwrap();
+    let files = handout::render(&scene, &[Format::Md], None, Lang::En).unwrap();
     insta::assert_snapshot!(
         "handout_fig10_md",
+        rendered(&files, "fig10-linear-slip-stick.md")
+    );
+    let files = handout::render(&scene, &[Format::Md], None, Lang::It).unwrap();
+    insta::assert_snapshot!(
+        "handout_fig10_md_it",
         rendered(&files, "fig10-linear-slip-stick.md")
     );
 }
@@ -243,4 +250,35 @@ fn an_unwritable_output_folder_is_refused() {
     let mut cmd = stickslip();
     cmd.args(["handout", "fig05-immediate-slip"]);
     common::unwritable(cmd);
+}
+
+/// Every built-in handout in Italian: every phrase translated (the list of the missing ones
+/// is printed, numbers masked, as `[phrases]` keys of templates/lang/it.toml), the page in
+/// Italian with decimal commas.
+#[test]
+fn every_builtin_handout_is_entirely_in_italian() {
+    let words = Translator::new(Lang::It).unwrap();
+    for scene in builtin_scenes().unwrap() {
+        handout::build(&scene, &words).unwrap();
+    }
+    let missing = words.missing();
+    if !missing.is_empty() {
+        let keys: Vec<String> = missing.iter().map(|m| format!("{m:?} = \"\"")).collect();
+        panic!(
+            "{} phrases without Italian:\n{}",
+            missing.len(),
+            keys.join("\n")
+        );
+    }
+    let scene = builtin_scenes()
+        .unwrap()
+        .into_iter()
+        .find(|s| s.id == "fig10-linear-slip-stick")
+        .unwrap();
+    let files = handout::render(&scene, &[Format::Html], None, Lang::It).unwrap();
+    let html = rendered(&files, "fig10-linear-slip-stick.html");
+    assert!(html.contains("<html lang=\"it\">"));
+    assert!(html.contains("Equazione del moto") && html.contains("legge armonica"));
+    // The weight W = m g = 0.5886 N with a decimal comma, in the parameters and the chain.
+    assert!(html.contains("0,5886"), "no decimal comma");
 }

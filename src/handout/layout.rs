@@ -1,31 +1,36 @@
 //! Page 2 of the handout: which figures (the scene's own, then the motion, the forces and a
-//! third figure of its model), how they share two columns, and how many claims fit below the
-//! verification table, so that the page prints on one A4 sheet.
+//! third figure of its model), how they share two columns, how tall they are drawn, and how
+//! many claims fit below the verification table, so that the page prints on one A4 sheet and
+//! fills it.
 //!
-//! Heights are estimated in mm from the figure sizes and the text lengths, with constants
-//! measured on Chromium's print of `templates/handout.css` (A4, 9 mm margins, DejaVu fonts);
-//! the browser test prints every built-in scene and checks that it takes exactly two pages.
+//! Figures are drawn on the column canvas ([`Geometry::COLUMN`]: legends and labels print at
+//! 8.2 pt), then taller while the page keeps its figures and claims ([`fill`]). Heights are
+//! estimated in mm from the figure sizes and the text lengths, with constants measured on
+//! Chromium's print of `templates/handout.css` (A4, 9 mm margins, DejaVu fonts); the browser
+//! test prints every built-in scene and checks that it takes exactly two pages and that page 2
+//! is filled.
 
 use serde::Serialize;
+
+use crate::error::Result;
 
 use crate::models::with_model;
 use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx};
+use crate::report::figures::style::Geometry;
 use crate::report::scene::FigureKind;
 use crate::report::Scene;
 
-/// At most this many figures: the two columns, and one below the shorter.
-const MAX_FIGURES: usize = 3;
+/// At most this many figures: two side by side, and each further one below the shorter column.
+const MAX_FIGURES: usize = 4;
 /// Printed height of page 2's content: A4 less the margins, less room for font differences.
 const PAGE_MM: f64 = 297.0 - 2.0 * 9.0 - 12.0;
-/// A figure column is 90.5 mm wide and the SVGs 900 px.
-const MM_PER_PX: f64 = 90.5 / 900.0;
+/// A figure column is 90.5 mm wide, its SVGs drawn on the column canvas.
+const MM_PER_PX: f64 = 90.5 / Geometry::COLUMN.width as f64;
 /// A caption line (6.5 pt over a column) and its characters; the figure's margins.
 const CAPTION_LINE_MM: f64 = 2.8;
 const CAPTION_LINE_CHARS: usize = 75;
 const FIGURE_MARGIN_MM: f64 = 3.5;
-/// A third figure may make its column this much taller than the other one.
-const SLACK_MM: f64 = 40.0;
 /// The verification table: heading and summary, then each row (the header row too).
 const TABLE_MM: f64 = 17.1;
 const TABLE_ROW_MM: f64 = 3.93;
@@ -36,6 +41,10 @@ const CLAIM_LINE_CHARS: usize = 135;
 const CLAIM_MARGIN_MM: f64 = 1.0;
 /// The line naming the claims that do not fit.
 const BRIEF_MM: f64 = 8.0;
+/// The figures grow by this share of the column canvas's panel and map heights at a time, at
+/// most this many times.
+const STRETCH_STEP: f64 = 0.1;
+const MAX_STRETCH_STEPS: u32 = 15;
 
 /// A figure of the handout with its number.
 #[derive(Clone, Debug, Serialize)]
@@ -52,8 +61,10 @@ pub struct PageTwo {
     pub columns: [Vec<Numbered>; 2],
     /// The claims shown in full.
     pub claims: Vec<ClaimCtx>,
-    /// The claims that did not fit, one line each: "Claim 7: title — verdict".
-    pub brief: Vec<String>,
+    /// The claims that did not fit (named in one line).
+    pub brief: Vec<ClaimCtx>,
+    /// Estimated room left at the foot of the page (mm; negative: the page overflows).
+    pub room_mm: f64,
 }
 
 /// The candidate figure kinds: the scene's own, then the motion and the forces of its model
@@ -72,44 +83,67 @@ pub fn kinds(scene: &Scene) -> Vec<FigureKind> {
     kinds
 }
 
-/// Lays out page 2: the figures (a third one only where it fits and leaves room for every
-/// claim), then as many claims in full as the page holds below a table of `rows` rows.
+/// Lays out page 2 with the figures `draw` draws on the column canvas, then on ever taller
+/// canvases (steps of [`STRETCH_STEP`]) as long as the page keeps its figures and claims and
+/// still fits: the figures take the room the text leaves.
+pub fn fill(
+    draw: impl Fn(Geometry) -> Result<Vec<FigureCtx>>,
+    rows: usize,
+    claims: Vec<ClaimCtx>,
+) -> Result<PageTwo> {
+    let mut best = page_two(draw(Geometry::COLUMN)?, rows, claims.clone());
+    for step in 1..=MAX_STRETCH_STEPS {
+        let g = Geometry::COLUMN.taller(1.0 + STRETCH_STEP * f64::from(step));
+        let page = page_two(draw(g)?, rows, claims.clone());
+        let figures = |p: &PageTwo| p.columns[0].len() + p.columns[1].len();
+        if page.room_mm < 0.0
+            || figures(&page) < figures(&best)
+            || page.claims.len() < best.claims.len()
+        {
+            break;
+        }
+        best = page;
+    }
+    Ok(best)
+}
+
+/// Lays out page 2: the figures, each further one only where it leaves room for every claim
+/// below a table of `rows` rows, then as many claims in full as the page holds.
 pub fn page_two(candidates: Vec<FigureCtx>, rows: usize, mut claims: Vec<ClaimCtx>) -> PageTwo {
     let needs: Vec<f64> = claims.iter().map(claim_mm).collect();
-    let room = |[left, right]: [f64; 2]| {
-        PAGE_MM - left.max(right) - TABLE_MM - TABLE_ROW_MM * (rows + 1) as f64 - CLAIMS_MM
-    };
-    let (mut columns, mut heights) = place(candidates.clone(), MAX_FIGURES);
-    if columns[0].len() + columns[1].len() > 2 && room(heights) < needs.iter().sum() {
-        (columns, heights) = place(candidates, 2);
-    }
+    let table = TABLE_MM + TABLE_ROW_MM * (rows + 1) as f64 + CLAIMS_MM;
+    let all_claims: f64 = needs.iter().sum();
+    let (columns, heights) = place(candidates, |figures| {
+        PAGE_MM - figures - table >= all_claims
+    });
+    let room = PAGE_MM - heights[0].max(heights[1]) - table;
     // The most leading claims that fit in full, and a line naming the others if any.
     let fits = |k: usize| {
         let brief = if k < needs.len() { BRIEF_MM } else { 0.0 };
-        needs[..k].iter().sum::<f64>() + brief <= room(heights)
+        needs[..k].iter().sum::<f64>() + brief <= room
     };
     let shown = (0..=needs.len()).rev().find(|&k| fits(k)).unwrap_or(0);
-    let brief = claims
-        .split_off(shown)
-        .iter()
-        .map(|c| format!("Claim {}: {} — {}", c.id, c.title, c.verdict))
-        .collect();
+    let brief_mm = if shown < needs.len() { BRIEF_MM } else { 0.0 };
+    let room_mm = room - needs[..shown].iter().sum::<f64>() - brief_mm;
+    let brief = claims.split_off(shown);
     PageTwo {
         columns,
         claims,
         brief,
+        room_mm,
     }
 }
 
-/// Places `candidates` in order: the first two side by side, then at most `limit − 2` more,
-/// each under the shorter column if that column stays within [`SLACK_MM`] of the other.
-/// Returns the columns (figures numbered in the order placed) and their heights (mm).
-fn place(candidates: Vec<FigureCtx>, limit: usize) -> ([Vec<Numbered>; 2], [f64; 2]) {
+/// Places `candidates` in order: the first two side by side, then up to [`MAX_FIGURES`] in
+/// all, each under the shorter column when `fits(height of the taller column, mm)`; one that
+/// does not fit is skipped for the next. Returns the columns (figures numbered in the order
+/// placed) and their heights (mm).
+fn place(candidates: Vec<FigureCtx>, fits: impl Fn(f64) -> bool) -> ([Vec<Numbered>; 2], [f64; 2]) {
     let mut columns: [Vec<Numbered>; 2] = [Vec::new(), Vec::new()];
     let mut heights = [0.0_f64; 2];
     let mut placed = 0;
     for figure in candidates {
-        if placed == limit {
+        if placed == MAX_FIGURES {
             break;
         }
         let height = figure_mm(&figure);
@@ -117,7 +151,7 @@ fn place(candidates: Vec<FigureCtx>, limit: usize) -> ([Vec<Numbered>; 2], [f64;
             placed
         } else {
             let shorter = usize::from(heights[1] < heights[0]);
-            if heights[shorter] + height > heights[1 - shorter] + SLACK_MM {
+            if !fits((heights[shorter] + height).max(heights[1 - shorter])) {
                 continue;
             }
             shorter
@@ -180,6 +214,7 @@ mod tests {
             title: "A claim".to_string(),
             paper_says: "The paper says so.".to_string(),
             verdict: "refuted".to_string(),
+            verdict_class: "refuted".to_string(),
             finding: "x".repeat(finding_chars),
             numbers: Vec::new(),
         }
@@ -195,18 +230,20 @@ mod tests {
     }
 
     #[test]
-    fn a_third_figure_goes_under_the_shorter_column_only_when_it_fits() {
+    fn further_figures_go_under_the_shorter_column_when_the_claims_still_fit() {
         let candidates = vec![
-            figure("motion", 864),
-            figure("forces", 344),
-            figure("map", 900),
-            figure("compare", 584),
+            figure("motion", 500),
+            figure("forces", 250),
+            figure("map", 600),
+            figure("compare", 300),
         ];
         let page = page_two(candidates, 11, vec![claim(1, 300)]);
+        // The map would leave no room for the claim under the forces: skipped for the next.
         assert_eq!(ids(&page)[0], [(1, "motion")]);
         assert_eq!(ids(&page)[1], [(2, "forces"), (3, "compare")]);
+        assert!(page.brief.is_empty() && page.room_mm >= 0.0);
         let page = page_two(
-            vec![figure("a", 592), figure("b", 592), figure("c", 864)],
+            vec![figure("a", 900), figure("b", 900), figure("c", 300)],
             18,
             Vec::new(),
         );
@@ -216,9 +253,9 @@ mod tests {
 
     #[test]
     fn claims_that_do_not_fit_are_named_in_one_line_each_and_a_third_figure_yields_first() {
-        let candidates = vec![figure("a", 624), figure("b", 344), figure("c", 344)];
-        let all = vec![claim(3, 700), claim(8, 500)];
-        let page = page_two(candidates.clone(), 18, all.clone());
+        let candidates = vec![figure("a", 624), figure("b", 344), figure("c", 200)];
+        let both = vec![claim(3, 700), claim(8, 500)];
+        let page = page_two(candidates.clone(), 8, both);
         assert_eq!(
             page.columns[1].len(),
             2,
@@ -226,7 +263,7 @@ mod tests {
         );
         assert!(page.brief.is_empty());
         let many: Vec<ClaimCtx> = (3..=8).map(|id| claim(id, 600)).collect();
-        let page = page_two(candidates, 18, many);
+        let page = page_two(candidates, 8, many);
         assert_eq!(
             page.columns[1].len(),
             1,
@@ -234,9 +271,30 @@ mod tests {
         );
         assert!(!page.claims.is_empty() && !page.brief.is_empty());
         assert_eq!(page.claims.len() + page.brief.len(), 6);
-        assert!(page.brief[0].starts_with(&format!(
-            "Claim {}: A claim — refuted",
-            page.claims.len() + 3
+        assert_eq!(usize::from(page.brief[0].id), page.claims.len() + 3);
+    }
+
+    /// Two figures whose height follows the canvas's panel height, as charts do.
+    fn draw(g: Geometry) -> Result<Vec<FigureCtx>> {
+        Ok(vec![
+            figure("two panels", 2 * g.panel_height + 60),
+            figure("one panel", g.panel_height + 60),
+        ])
+    }
+
+    #[test]
+    fn the_figures_grow_into_the_room_the_page_leaves_and_no_further() {
+        let column = page_two(draw(Geometry::COLUMN).unwrap(), 8, Vec::new());
+        let filled = fill(draw, 8, Vec::new()).unwrap();
+        assert!(filled.room_mm >= 0.0 && filled.room_mm < column.room_mm);
+        let height = |p: &PageTwo| svg_height(&p.columns[0][0].figure.svg);
+        assert!(height(&filled) > height(&column));
+        // A page with no room left keeps the column canvas.
+        let full = fill(draw, 40, Vec::new()).unwrap();
+        let first = &full.columns[0][0].figure.svg;
+        assert!(first.contains(&format!(
+            "height=\"{}\"",
+            2 * Geometry::COLUMN.panel_height + 60
         )));
     }
 }

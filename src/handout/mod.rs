@@ -18,9 +18,13 @@ use crate::claims::{self, Sample};
 use crate::error::{Error, Result};
 use crate::models::{with_model, Model};
 use crate::present::Present;
-use crate::report::context::{FigureCtx, SceneCtx};
-use crate::report::render::{claim_params, first_sentence, page, scene_context, templates, CSS};
-use crate::report::{builtin_scenes, math, Format, OutFile, Scene};
+use crate::report::context::{ClaimCtx, FigureCtx, SceneCtx};
+use crate::report::render::{
+    claim_params, figure_contexts, first_sentence, page, scene_context, templates, CSS,
+};
+use crate::report::{builtin_scenes, Format, OutFile, Scene};
+use crate::worksheet::phrases::Translator;
+use crate::worksheet::Lang;
 use physics::Note;
 
 mod layout;
@@ -71,8 +75,8 @@ pub struct Handout {
     pub scene: SceneCtx,
     /// The same figures as laid out on page 2: two columns.
     pub figure_columns: [Vec<layout::Numbered>; 2],
-    /// Claims of the scene that did not fit on page 2, one line each.
-    pub claims_brief: Vec<String>,
+    /// Claims of the scene that did not fit on page 2, named in one line.
+    pub claims_brief: Vec<ClaimCtx>,
     /// The regime of the closed forms (linearized law) and the inequality that decides it.
     pub regime: String,
     pub regime_why: String,
@@ -109,18 +113,16 @@ pub fn list() -> Result<String> {
         .collect())
 }
 
-/// The handout of `scene`: context, figures and claims.
-pub fn build(scene: &Scene) -> Result<Handout> {
+/// The handout of `scene` in `lang`: context, figures and claims. Phrases without a
+/// translation stay in English and are listed by `words` ([`Translator::missing`]).
+pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
     let (pulled, wood) = claim_params(scene);
     let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
     let with_figures = Scene {
         figures: layout::kinds(scene),
         ..scene.clone()
     };
-    let mut ctx = scene_context(&with_figures, &claims)?;
-    for f in &mut ctx.figures {
-        f.caption = first_sentence(&f.caption).to_string();
-    }
+    let mut ctx = scene_context(&with_figures, &claims, Vec::new())?;
     // The finding of each claim states its numbers; the list of them stays in the report.
     for c in &mut ctx.claims {
         c.numbers.clear();
@@ -129,11 +131,22 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     ctx.verification
         .retain(|r| r.class == "pass" || r.class == "fail");
     let unchecked = checked - ctx.verification.len();
-    let page = layout::page_two(
-        std::mem::take(&mut ctx.figures),
+    // Translated before the layout, which measures the text.
+    translate_scene(&mut ctx, words);
+    let drawings = with_figures.build_figures()?;
+    let draw = |g| -> Result<Vec<FigureCtx>> {
+        let mut figures = figure_contexts(&drawings, g)?;
+        for f in &mut figures {
+            f.caption = words.text(first_sentence(&f.caption));
+            f.svg = words.svg(&f.svg);
+        }
+        Ok(figures)
+    };
+    let page = layout::fill(
+        draw,
         ctx.verification.len(),
         std::mem::take(&mut ctx.claims),
-    );
+    )?;
     let mut placed: Vec<&layout::Numbered> = page.columns.iter().flatten().collect();
     placed.sort_by_key(|n| n.number);
     ctx.figures = placed.into_iter().map(|n| n.figure.clone()).collect();
@@ -141,9 +154,9 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     let (regime, regime_why) = ctx
         .regimes
         .first()
-        .map(|r| (r.regime.clone(), r.why.clone()))
+        .map(|r| (words.text(&r.regime), words.text(&r.why)))
         .unwrap_or_default();
-    let (steps, omitted) = chain(&scene.setup);
+    let (steps, omitted) = chain(&scene.setup, words);
     Ok(Handout {
         scene: ctx,
         figure_columns: page.columns,
@@ -156,12 +169,61 @@ pub fn build(scene: &Scene) -> Result<Handout> {
     })
 }
 
+/// The words of the scene's context in the language of `words` (nothing for English):
+/// title, captions, parameter names, the equation of motion's notes, the sketch, the
+/// verification table's words and numbers, and the claims.
+fn translate_scene(ctx: &mut SceneCtx, words: &Translator) {
+    let lang = words.lang();
+    if lang == Lang::En {
+        return;
+    }
+    for text in [
+        &mut ctx.title,
+        &mut ctx.caption,
+        &mut ctx.model,
+        &mut ctx.description,
+    ] {
+        *text = words.text(text);
+    }
+    ctx.domain_note = words.text(&ctx.domain_note);
+    ctx.sketch.caption = words.text(&ctx.sketch.caption);
+    ctx.sketch.svg = words.svg(&ctx.sketch.svg);
+    for p in &mut ctx.params {
+        p.name = words.text(&p.name);
+        p.value = lang.number(&p.value);
+    }
+    for line in &mut ctx.motion {
+        line.note = words.text(&line.note);
+    }
+    for r in &mut ctx.verification {
+        for text in [
+            &mut r.symbol,
+            &mut r.closed_form,
+            &mut r.numeric,
+            &mut r.rel_error,
+            &mut r.verdict,
+        ] {
+            *text = words.text(text);
+        }
+    }
+    for c in &mut ctx.claims {
+        for text in [
+            &mut c.title,
+            &mut c.paper_says,
+            &mut c.finding,
+            &mut c.verdict,
+        ] {
+            *text = words.text(text);
+        }
+    }
+}
+
 /// The chain of formulas of `setup`'s model: the steps of [`crate::derivation`] the handout
 /// explains ([`physics::note`]), in order. A step that does not describe this motion shows its
 /// reason in place of the result the first time that reason comes up; later steps with the
 /// same reason, and definitions that do not apply, are left out and named in one line per
 /// reason ("t_ST, v̄: why").
-fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
+fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
     let steps = with_model!(setup, p => p.derivation());
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
@@ -198,29 +260,36 @@ fn chain(setup: &Model) -> (Vec<StepCtx>, Vec<String>) {
             ],
         };
         pieces.extend(step.result_tex().map(|r| format!("= {r}")));
+        let lang = words.lang();
         shown.push(StepCtx {
             key: step.key.id().to_string(),
             equation: step.equation.to_string(),
-            pieces: pieces.iter().map(|p| math::mathml(p)).collect(),
-            tex: pieces.join(" "),
-            reason: step.reason.clone().unwrap_or_default(),
-            note: text.to_string(),
+            pieces: pieces.iter().map(|p| lang.mathml(p)).collect(),
+            tex: lang.tex(&pieces.join(" ")),
+            reason: words.text(step.reason.as_deref().unwrap_or_default()),
+            note: words.text(text),
             class: class.to_string(),
-            heading: heading.take().unwrap_or_default().to_string(),
+            heading: words.text(heading.take().unwrap_or_default()),
         });
     }
     let omitted = left_out
         .into_iter()
-        .map(|(reason, symbols)| format!("{}: {reason}", symbols.join(", ")))
+        .map(|(reason, symbols)| format!("{}: {}", symbols.join(", "), words.text(reason)))
         .collect();
     (shown, omitted)
 }
 
 /// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) and, with
 /// a `browser`, prints the HTML to `<id>.pdf`. Nothing is written here.
-pub fn render(scene: &Scene, formats: &[Format], browser: Option<&Path>) -> Result<Vec<OutFile>> {
-    let handout = build(scene)?;
+pub fn render(
+    scene: &Scene,
+    formats: &[Format],
+    browser: Option<&Path>,
+    lang: Lang,
+) -> Result<Vec<OutFile>> {
+    let handout = build(scene, &Translator::new(lang)?)?;
     let mut ctx = tera::Context::new();
+    ctx.insert("words", &lang.catalogue()?.section("handout")?);
     ctx.insert("scene", &handout.scene);
     ctx.insert("handout", &handout);
     ctx.insert("css", &format!("{CSS}{HANDOUT_CSS}"));

@@ -1,7 +1,8 @@
 //! The classroom material of the default report: the explorer page (`explorer.html`), lecture
-//! handouts of two scenes (one per model) and a worksheet of each model with its answer key,
-//! written under `handouts/` and `worksheets/` beside the scene pages and linked from the index
-//! with the speed and accuracy study (`bench/`, written by `stickslip bench`).
+//! handouts of two scenes (one per model, in English and Italian) and a worksheet of each model
+//! with its answer key, written under `handouts/` and `worksheets/` beside the scene pages and
+//! linked from the index with the speed and accuracy study (`bench/`, written by
+//! `stickslip bench`).
 
 use std::path::Path;
 
@@ -9,7 +10,8 @@ use super::render::Material;
 use super::{Format, OutFile, Scene};
 use crate::error::Result;
 use crate::models::Model;
-use crate::worksheet::{self, Request};
+use crate::worksheet::phrases::Translator;
+use crate::worksheet::{self, Lang, Request};
 
 /// The scenes with a handout, and what each teaches.
 const HANDOUTS: &[(&str, &str)] = &[
@@ -42,13 +44,25 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         };
         files.extend(under(
             "handouts",
-            crate::handout::render(scene, formats, None)?,
+            crate::handout::render(scene, formats, None, Lang::En)?,
+        ));
+        // The same handout in Italian, beside it.
+        files.extend(under(
+            "handouts/it",
+            crate::handout::render(scene, formats, None, Lang::It)?,
         ));
         links.push(Material {
             html: format!("handouts/{id}.html"),
             md: format!("handouts/{id}.md"),
             title: format!("Handout: {}", scene.title),
             what: what.to_string(),
+        });
+        let italian = Translator::new(Lang::It)?;
+        links.push(Material {
+            html: format!("handouts/it/{id}.html"),
+            md: format!("handouts/it/{id}.md"),
+            title: format!("Dispensa: {}", italian.text(&scene.title)),
+            what: "the same handout in Italian (words, figure labels, decimal commas)".to_string(),
         });
     }
     for model in Model::defaults() {
@@ -65,9 +79,9 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         let folder = format!("worksheets/{}", model.id());
         files.extend(under(
             &folder,
-            worksheet::render(&sheets, formats, worksheet::Lang::En)?,
+            worksheet::render(&sheets, formats, Lang::En)?,
         ));
-        let title = worksheet::Lang::En
+        let title = Lang::En
             .catalogue()?
             .text(&format!("{}.title", model.id()), &[])?;
         links.push(Material {

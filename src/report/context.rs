@@ -98,6 +98,9 @@ pub struct ClaimCtx {
     pub title: String,
     pub paper_says: String,
     pub verdict: String,
+    /// The verdict's id (`confirmed`, `refuted`, …) for the page's style, whatever the
+    /// language of `verdict`.
+    pub verdict_class: String,
     pub finding: String,
     pub numbers: Vec<String>,
 }
@@ -194,6 +197,7 @@ pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
         id: c.id,
         title: c.title.clone(),
         paper_says: c.paper_says.clone(),
+        verdict_class: verdict.clone(),
         verdict,
         finding: c.finding.clone(),
         numbers,

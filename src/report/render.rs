@@ -6,9 +6,9 @@ use serde::Serialize;
 use tera::Tera;
 
 use super::context::{claim, scene_tables, FigureCtx, SceneCtx};
-use super::figures::style::with_text;
+use super::figures::style::{with_text, Geometry};
 use super::figures::{chart, map};
-use super::scene::{Drawing, Part, Scene};
+use super::scene::{Drawing, Figure, Part, Scene};
 use super::writer::OutFile;
 use crate::claims::{self, Claims, Sample};
 use crate::error::{Error, Result};
@@ -155,11 +155,11 @@ pub(crate) fn template_error(name: &str, e: &tera::Error) -> Error {
     }
 }
 
-/// SVG of a drawing.
-fn draw(id: &str, drawing: &Drawing) -> Result<String> {
+/// SVG of a drawing on the canvas `g`.
+fn draw(id: &str, drawing: &Drawing, g: Geometry) -> Result<String> {
     let svg = match drawing {
-        Drawing::Chart(c) => chart::line_chart(c),
-        Drawing::Map(m) => map::category_map(m),
+        Drawing::Chart(c) => chart::line_chart_in(c, g),
+        Drawing::Map(m) => map::category_map_in(m, g),
     };
     svg.map_err(|e| Error::Figure {
         id: id.to_string(),
@@ -182,25 +182,14 @@ pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams
     crate::claims::params_for(&scene.setup)
 }
 
-/// The full context of a scene: tables, drawn figures and its claims.
-pub(crate) fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> {
+/// The full context of a scene: tables, `figures` and its claims.
+pub(crate) fn scene_context(
+    scene: &Scene,
+    claims: &Claims,
+    figures: Vec<FigureCtx>,
+) -> Result<SceneCtx> {
     let mut ctx = scene_tables(scene)?;
-    ctx.figures = scene
-        .build_figures()?
-        .par_iter()
-        .map(|f| {
-            Ok(FigureCtx {
-                id: f.id.clone(),
-                caption: f.caption.clone(),
-                svg: with_text(
-                    &draw(&f.id, &f.drawing)?,
-                    first_sentence(&f.caption),
-                    &f.caption,
-                ),
-                file: format!("figures/{}.svg", f.id),
-            })
-        })
-        .collect::<Result<_>>()?;
+    ctx.figures = figures;
     ctx.claims = claims
         .claims
         .iter()
@@ -208,6 +197,25 @@ pub(crate) fn scene_context(scene: &Scene, claims: &Claims) -> Result<SceneCtx> 
         .map(claim)
         .collect();
     Ok(ctx)
+}
+
+/// `figures` drawn on the canvas `g`, each with its caption as the SVG's title and description.
+pub(crate) fn figure_contexts(figures: &[Figure], g: Geometry) -> Result<Vec<FigureCtx>> {
+    figures
+        .par_iter()
+        .map(|f| {
+            Ok(FigureCtx {
+                id: f.id.clone(),
+                caption: f.caption.clone(),
+                svg: with_text(
+                    &draw(&f.id, &f.drawing, g)?,
+                    first_sentence(&f.caption),
+                    &f.caption,
+                ),
+                file: format!("figures/{}.svg", f.id),
+            })
+        })
+        .collect()
 }
 
 #[derive(Serialize)]
@@ -329,7 +337,11 @@ pub fn render_with(
         .map(|s| {
             let pair = claim_params(s);
             let i = pairs.iter().position(|p| *p == pair).unwrap_or(0);
-            scene_context(s, &all_claims[i])
+            scene_context(
+                s,
+                &all_claims[i],
+                figure_contexts(&s.build_figures()?, Geometry::REPORT)?,
+            )
         })
         .collect::<Result<_>>()?;
     let version = env!("CARGO_PKG_VERSION");

@@ -75,6 +75,12 @@ impl Lang {
 }
 
 impl Lang {
+    /// MathML of `tex` with this language's decimal sign: `0{,}25` comes out of the converter
+    /// as two numbers around a comma operator, joined here into one number again.
+    pub fn mathml(self, tex: &str) -> String {
+        crate::report::math::mathml(&self.tex(tex)).replace("</mn><mrow><mo>,</mo></mrow><mn>", ",")
+    }
+
     /// An SVG drawn in English (a sketch of the apparatus) in this language: every phrase of
     /// the English catalogue's `[sketch]` section replaced by this language's, longest first,
     /// and this language's decimal sign, in text content only (never in attributes or CSS).
@@ -89,27 +95,12 @@ impl Lang {
             .filter_map(|(k, en)| Some((en.as_str(), here.get(k)?.as_str())))
             .collect();
         pairs.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
-        let mut out = String::with_capacity(svg.len());
-        let mut in_style = false;
-        let mut rest = svg;
-        while let Some(open) = rest.find('<') {
-            let text = &rest[..open];
-            if in_style {
-                out.push_str(text);
-            } else {
-                let translated = pairs
-                    .iter()
-                    .fold(text.to_string(), |t, (en, here)| t.replace(en, here));
-                out.push_str(&self.number(&translated));
-            }
-            let close = rest[open..].find('>').map_or(rest.len(), |c| open + c + 1);
-            let tag = &rest[open..close];
-            in_style = tag.starts_with("<style");
-            out.push_str(tag);
-            rest = &rest[close..];
-        }
-        out.push_str(rest);
-        Ok(out)
+        Ok(super::phrases::map_text_nodes(svg, |text| {
+            let translated = pairs
+                .iter()
+                .fold(text.to_string(), |t, (en, here)| t.replace(en, here));
+            self.number(&translated)
+        }))
     }
 }
 
@@ -156,6 +147,16 @@ impl Catalogue {
         Ok(args.iter().fold(text.to_string(), |t, (name, value)| {
             t.replace(&format!("{{{name}}}"), value)
         }))
+    }
+
+    /// The phrase table (`[phrases]`: English with numbers masked → this language), empty
+    /// when the catalogue has none (English).
+    pub fn phrases(&self) -> &toml::Table {
+        static EMPTY: OnceLock<toml::Table> = OnceLock::new();
+        self.table
+            .get("phrases")
+            .and_then(toml::Value::as_table)
+            .unwrap_or_else(|| EMPTY.get_or_init(toml::Table::new))
     }
 
     /// The text at `path` if the catalogue has one.
@@ -219,10 +220,16 @@ mod tests {
 
     #[test]
     fn every_catalogue_parses_and_has_every_key_of_the_english_one() {
-        let english = Lang::En.catalogue().unwrap().paths();
+        // The phrase tables are keyed by the English: not a key of en.toml.
+        let paths = |lang: Lang| -> Vec<String> {
+            let mut paths = lang.catalogue().unwrap().paths();
+            paths.retain(|p| !p.starts_with("phrases."));
+            paths
+        };
+        let english = paths(Lang::En);
         assert!(english.len() > 40, "{}", english.len());
         for lang in Lang::ALL {
-            let mut paths = lang.catalogue().unwrap().paths();
+            let mut paths = paths(lang);
             paths.sort();
             let mut want = english.clone();
             want.sort();

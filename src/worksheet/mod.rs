@@ -17,6 +17,7 @@ pub mod figure;
 pub mod json;
 pub mod lang;
 pub mod moodle;
+pub mod phrases;
 pub mod question;
 pub mod render;
 pub mod sample;

@@ -206,11 +206,9 @@ impl Words {
     }
 
     fn math(&self, tex: &str) -> Math {
-        let tex = self.lang.tex(tex);
         Math {
-            // `0{,}25` comes out as two numbers around a comma operator: one number again.
-            mathml: mathml(&tex).replace("</mn><mrow><mo>,</mo></mrow><mn>", ","),
-            tex,
+            mathml: self.lang.mathml(tex),
+            tex: self.lang.tex(tex),
         }
     }
 

@@ -13,11 +13,11 @@ use plotters::style::{ShapeStyle, WHITE};
 use super::spec::{LineChart, Panel};
 pub use super::style::FigureError;
 use super::style::{
-    curve_color, draw_curve, draw_err, draw_legend, draw_stroked, finish_svg, font, legend_size,
-    text_width, tick_label, LegendEntry, AXIS_COLOR, CURVE_WIDTH, FIGURE_WIDTH, FRAME_WIDTH,
-    GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR, MARKER_DASH, MARKER_FONT_PX,
-    MARKER_WIDTH, PANEL_HEIGHT, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN, TICK_FONT_PX,
-    X_LABEL_AREA, Y_LABEL_AREA,
+    curve_color, draw_curve, draw_err, draw_legend, draw_legend_in, draw_stroked, finish_svg, font,
+    legend_columns, legend_size, legend_size_in, text_width, tick_label, Geometry, LegendEntry,
+    AXIS_COLOR, CURVE_WIDTH, FRAME_WIDTH, GRID_COLOR, LABEL_FONT_PX, LEGEND_FONT_PX, MARKER_COLOR,
+    MARKER_DASH, MARKER_FONT_PX, MARKER_WIDTH, REFERENCE_COLOR, REFERENCE_WIDTH, RIGHT_MARGIN,
+    TICK_FONT_PX, X_LABEL_AREA, Y_LABEL_AREA,
 };
 
 /// At most this many points of one curve are drawn (first, last and local extrema kept).
@@ -34,6 +34,8 @@ const MARKER_MIN_SEPARATION: f64 = 60.0;
 const Y_MARGIN: f64 = 0.06;
 /// Distance of the legend box from the plot frame (px).
 const LEGEND_INSET: i32 = 10;
+/// Space around a legend below its panel (px, half above and half below).
+const LEGEND_BELOW_GAP: u32 = 12;
 
 type Point = (f64, f64);
 type Px = (i32, i32);
@@ -45,11 +47,16 @@ pub(super) struct Bounds {
     pub hi: Point,
 }
 
-/// Renders `spec` as an SVG document.
+/// Renders `spec` as an SVG document on the report's canvas ([`Geometry::REPORT`]).
+pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
+    line_chart_in(spec, Geometry::REPORT)
+}
+
+/// Renders `spec` as an SVG document on the canvas `g`.
 ///
 /// Errors: no panel, an invalid x range, or a plotters failure. Curves without finite points
 /// and panels without curves are drawn empty, never a panic.
-pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
+pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureError> {
     if spec.panels.is_empty() {
         return Err(FigureError::NoPanels);
     }
@@ -61,7 +68,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
     let panels = spec
         .panels
         .iter()
-        .map(|p| PreparedPanel::new(p, clip))
+        .map(|p| PreparedPanel::new(p, clip, g))
         .collect::<Result<Vec<_>, _>>()?;
 
     let (grid, markers): (Vec<_>, Vec<_>) = spec
@@ -70,7 +77,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
         .filter(|m| m.x.is_finite() && m.x >= x.0 && m.x <= x.1)
         .partition(|m| m.label.is_empty());
     // Rows are chosen before the layout exists, with the same affine map plotters will use.
-    let plot_width = f64::from(FIGURE_WIDTH - Y_LABEL_AREA - RIGHT_MARGIN);
+    let plot_width = f64::from(plot_width(g));
     let approx_px = |v: f64| f64::from(Y_LABEL_AREA) + (v - x.0) / (x.1 - x.0) * plot_width;
     let rows = stagger(
         &markers
@@ -80,21 +87,34 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
     );
     let n_rows = rows.iter().max().map_or(0, |r| r + 1) as u32;
     let strip = TOP_MARGIN + n_rows * MARKER_ROW;
-    let n = panels.len() as u32;
-    let height = strip + n * PANEL_HEIGHT + X_LABEL_AREA;
-    // Every plotting area is PANEL_HEIGHT − 2·PANEL_GAP tall; the bottom one also gets the x labels.
+    // Every plotting area is g.panel_height − 2·PANEL_GAP tall; the bottom one also gets the
+    // x labels. A legend that goes below its panel gets a band under it (under the x labels
+    // for the bottom panel).
+    let mut tops = Vec::with_capacity(panels.len());
+    let mut height = strip;
+    for (i, panel) in panels.iter().enumerate() {
+        tops.push(height);
+        height += g.panel_height + panel.legend_band;
+        if i + 1 == panels.len() {
+            height += X_LABEL_AREA;
+        }
+    }
 
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (FIGURE_WIDTH, height)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (g.width, height)).into_drawing_area();
         root.fill(&WHITE).map_err(draw_err)?;
-        let areas: Vec<_> = (0..n)
-            .map(|i| {
-                let extra = if i + 1 == n { X_LABEL_AREA } else { 0 };
-                root.clone().shrink(
-                    (0, strip + i * PANEL_HEIGHT),
-                    (FIGURE_WIDTH, PANEL_HEIGHT + extra),
-                )
+        let areas: Vec<_> = tops
+            .iter()
+            .enumerate()
+            .map(|(i, &top)| {
+                let extra = if i + 1 == panels.len() {
+                    X_LABEL_AREA
+                } else {
+                    0
+                };
+                root.clone()
+                    .shrink((0, top), (g.width, g.panel_height + extra))
             })
             .collect();
 
@@ -127,7 +147,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
                 6
             };
             let mut mesh = chart.configure_mesh();
-            mesh.x_labels(10)
+            mesh.x_labels(g.x_labels)
                 .y_labels(y_ticks)
                 .max_light_lines(0)
                 .x_label_formatter(&x_fmt)
@@ -204,7 +224,7 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
             let line = [(px, base + 3), (px, bottom)];
             draw_stroked(&root, &line, MARKER_COLOR, MARKER_WIDTH, &MARKER_DASH)?;
             let half = (text_width(&marker.label, MARKER_FONT_PX) / 2.0).ceil() as i32;
-            let tx = px.clamp(half + 2, FIGURE_WIDTH as i32 - half - 2);
+            let tx = px.clamp(half + 2, g.width as i32 - half - 2);
             root.draw(&Text::new(
                 marker.label.clone(),
                 (tx, base),
@@ -213,18 +233,36 @@ pub fn line_chart(spec: &LineChart) -> Result<String, FigureError> {
             .map_err(draw_err)?;
         }
 
-        for ((panel, frame), lines) in panels.iter().zip(&frames).zip(&drawn) {
+        for (i, ((panel, frame), lines)) in panels.iter().zip(&frames).zip(&drawn).enumerate() {
             let border = ShapeStyle::from(&AXIS_COLOR).stroke_width(FRAME_WIDTH);
             root.draw(&Rectangle::new([frame.0, frame.1], border))
                 .map_err(draw_err)?;
             let entries = legend_entries(panel.spec);
-            if let Some((at, _)) = legend_corner(&entries, *frame, lines) {
+            if panel.legend_band > 0 {
+                let below = if i + 1 == panels.len() {
+                    X_LABEL_AREA
+                } else {
+                    0
+                };
+                let top = tops[i] + g.panel_height + below + LEGEND_BELOW_GAP / 2;
+                draw_legend_in(
+                    &root,
+                    (frame.0 .0, top as i32),
+                    &entries,
+                    panel.legend_columns,
+                )?;
+            } else if let Some((at, _)) = legend_corner(&entries, *frame, lines) {
                 draw_legend(&root, at, &entries)?;
             }
         }
         root.present().map_err(draw_err)?;
     }
     Ok(finish_svg(svg))
+}
+
+/// Width (px) of the plotting area on the canvas `g`.
+fn plot_width(g: Geometry) -> i32 {
+    (g.width - Y_LABEL_AREA - RIGHT_MARGIN) as i32
 }
 
 /// A panel with its curves cut into drawable runs and its y range chosen.
@@ -235,10 +273,14 @@ struct PreparedPanel<'a> {
     y: (f64, f64),
     /// Every value drawn is a whole number (a count): ticks only at whole numbers.
     counts: bool,
+    /// Height (px) of the band below the panel holding its legend, 0 when the legend sits in
+    /// a corner of the plot, and the legend's columns there.
+    legend_band: u32,
+    legend_columns: usize,
 }
 
 impl<'a> PreparedPanel<'a> {
-    fn new(spec: &'a Panel, clip: Bounds) -> Result<Self, FigureError> {
+    fn new(spec: &'a Panel, clip: Bounds, g: Geometry) -> Result<Self, FigureError> {
         let runs: Vec<_> = spec
             .curves
             .iter()
@@ -251,7 +293,20 @@ impl<'a> PreparedPanel<'a> {
             .map(|p| p.1)
             .chain(spec.h_lines.iter().map(|h| h.0).filter(|y| y.is_finite()));
         let y = padded_range("y", ys, Y_MARGIN)?;
-        let y = with_legend_room(spec, &runs, (clip.lo.0, clip.hi.0), y);
+        let (y, legend_below) = with_legend_room(spec, &runs, (clip.lo.0, clip.hi.0), y, g);
+        let legend_columns = if legend_below {
+            legend_columns(&legend_entries(spec), plot_width(g))
+        } else {
+            1
+        };
+        let legend_band = if legend_below {
+            legend_size_in(&legend_entries(spec), legend_columns)
+                .1
+                .max(0) as u32
+                + LEGEND_BELOW_GAP
+        } else {
+            0
+        };
         let mut values = runs.iter().flatten().flatten().map(|p| p.1).peekable();
         let counts = values.peek().is_some() && values.all(|v| v.fract() == 0.0);
         Ok(Self {
@@ -259,12 +314,15 @@ impl<'a> PreparedPanel<'a> {
             runs,
             y,
             counts,
+            legend_band,
+            legend_columns,
         })
     }
 }
 
 /// Raises the top of the y range when the legend would hide data in every corner, so that
-/// the data leave a band free for it along the top of the panel.
+/// the data leave a band free for it along the top of the panel; when that band would take
+/// most of the panel, keeps the range and says the legend goes below the panel (`true`).
 ///
 /// The pixel box is the one the layout will give (same constants); off by at most a pixel.
 fn with_legend_room(
@@ -272,13 +330,14 @@ fn with_legend_room(
     runs: &[Vec<Vec<Point>>],
     x: (f64, f64),
     y: (f64, f64),
-) -> (f64, f64) {
+    g: Geometry,
+) -> ((f64, f64), bool) {
     let entries = legend_entries(spec);
     if entries.is_empty() {
-        return y;
+        return (y, false);
     }
-    let w = f64::from(FIGURE_WIDTH - Y_LABEL_AREA - RIGHT_MARGIN);
-    let h = f64::from(PANEL_HEIGHT - 2 * PANEL_GAP);
+    let w = f64::from(plot_width(g));
+    let h = f64::from(g.panel_height - 2 * PANEL_GAP);
     let to_px = |p: &Point| {
         (
             ((p.0 - x.0) / (x.1 - x.0) * w).round() as i32,
@@ -296,12 +355,15 @@ fn with_legend_room(
     let hidden = legend_corner(&entries, frame, &lines).map_or(0, |(_, hidden)| hidden);
     // Legend height, its inset from the frame, and the 3 px the corner test adds around it.
     let band = f64::from(legend_size(&entries).1 + LEGEND_INSET + 4);
-    if hidden == 0 || band >= 0.6 * h {
-        return y;
+    if hidden == 0 {
+        return (y, false);
+    }
+    if band >= 0.6 * h {
+        return (y, true);
     }
     // Keep the data (and the lower margin) in the lower h − band pixels.
     let top = y.0 + (y.1 - y.0) * h / (h - band);
-    (y.0, top)
+    ((y.0, top), false)
 }
 
 /// The x range: given, or spanned by the finite points of all curves.
@@ -648,6 +710,53 @@ mod tests {
         assert!(svg.contains("viewBox=\"0 0 900 "));
         assert!(svg.contains("font-size=\"14\""));
         assert_eq!(svg, line_chart(&spec).expect("renders again"));
+    }
+
+    #[test]
+    fn a_legend_that_would_hide_data_in_every_corner_of_a_short_panel_goes_below_it() {
+        // Five curves filling the panel: every corner is covered.
+        let crowded = |panels: usize| LineChart {
+            x_label: "t (s)".to_string(),
+            x_range: None,
+            panels: vec![
+                Panel {
+                    y_label: "F (N)".to_string(),
+                    curves: (0..5)
+                        .map(|i| {
+                            let phase = f64::from(i as u32);
+                            curve(&format!("force number {i}"), i, Stroke::Solid, move |t| {
+                                (7.0 * t + phase).sin()
+                            })
+                        })
+                        .collect(),
+                    h_lines: vec![],
+                };
+                panels
+            ],
+            markers: vec![],
+        };
+        let height = |svg: &str| svg_height(svg);
+        let g = Geometry::COLUMN;
+        let one = line_chart_in(&crowded(1), g).unwrap();
+        let band = height(&one) - f64::from(TOP_MARGIN + g.panel_height + X_LABEL_AREA);
+        let entries = legend_entries(&crowded(1).panels[0]);
+        let legend = legend_size_in(&entries, legend_columns(&entries, plot_width(g))).1;
+        assert_eq!(band, f64::from(legend.max(0) as u32 + LEGEND_BELOW_GAP));
+        // A band under each panel; on the report's taller canvas the legend stays inside.
+        let two = line_chart_in(&crowded(2), g).unwrap();
+        assert_eq!(
+            height(&two),
+            height(&one) + f64::from(g.panel_height) + band
+        );
+        let report = line_chart(&crowded(1)).unwrap();
+        let inside = TOP_MARGIN + Geometry::REPORT.panel_height + X_LABEL_AREA;
+        assert_eq!(height(&report), f64::from(inside));
+    }
+
+    /// The `height` attribute of an SVG root.
+    fn svg_height(svg: &str) -> f64 {
+        let rest = svg.split_once(" height=\"").expect("a height").1;
+        rest.split('"').next().unwrap().parse().unwrap()
     }
 
     #[test]

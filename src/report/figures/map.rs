@@ -1,5 +1,6 @@
 //! Category maps: a grid of cells filled by category (light palette fills), analytic boundary
-//! curves on top, and a legend right of the plot listing the categories and the curves.
+//! curves on top, and a legend listing the categories and the curves: right of the plot, or
+//! below it where a narrow canvas leaves no room beside it.
 //!
 //! A row's horizontal runs of one category become one rectangle, so a 200 × 200 map with a few
 //! regions costs a few thousand elements rather than 40 000.
@@ -12,42 +13,55 @@ use super::chart::{checked_range, clipped_runs, thin, to_pixels, Bounds, MAX_POI
 use super::spec::CategoryMap;
 pub use super::style::FigureError;
 use super::style::{
-    curve_color, draw_curve, draw_err, draw_legend, fill_color, finish_svg, font, legend_size,
-    tick_label, LegendEntry, LegendKey, AXIS_COLOR, FIGURE_WIDTH, FRAME_WIDTH, LABEL_FONT_PX,
-    MAP_CURVE_WIDTH, MAP_PLOT_HEIGHT, RIGHT_MARGIN, TICK_FONT_PX, UNKNOWN_FILL, X_LABEL_AREA,
-    Y_LABEL_AREA,
+    curve_color, draw_curve, draw_err, draw_legend_in, fill_color, finish_svg, font,
+    legend_columns, legend_size, legend_size_in, tick_label, Geometry, LegendEntry, LegendKey,
+    AXIS_COLOR, FRAME_WIDTH, LABEL_FONT_PX, MAP_CURVE_WIDTH, RIGHT_MARGIN, TICK_FONT_PX,
+    UNKNOWN_FILL, X_LABEL_AREA, Y_LABEL_AREA,
 };
 
 /// Space above the plotting area (px).
 const MAP_TOP: u32 = 14;
 /// Gap between the plot frame and the legend (px).
 const LEGEND_GAP: u32 = 20;
-/// The legend column never takes more than this share of the figure width.
+/// A legend wider than this share of the figure goes below the plot.
 const MAX_LEGEND_SHARE: f64 = 0.4;
 
-/// Renders `spec` as an SVG document.
+/// Renders `spec` as an SVG document on the report's canvas ([`Geometry::REPORT`]).
+pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
+    category_map_in(spec, Geometry::REPORT)
+}
+
+/// Renders `spec` as an SVG document on the canvas `g`.
 ///
 /// Errors: an empty or non-finite axis range, or a plotters failure. Ragged rows are drawn as
 /// far as they go; a cell value without a category gets a neutral grey.
-pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
+pub fn category_map_in(spec: &CategoryMap, g: Geometry) -> Result<String, FigureError> {
     let x = checked_range("x", spec.x_range)?;
     let y = checked_range("y", spec.y_range)?;
     let entries = legend_entries(spec);
-    let (legend_w, legend_h) = legend_size(&entries);
-    let legend_col = if entries.is_empty() {
-        RIGHT_MARGIN
+    let beside = legend_size(&entries).0.max(0) as u32 + LEGEND_GAP + 8;
+    let below = !entries.is_empty() && f64::from(beside) > f64::from(g.width) * MAX_LEGEND_SHARE;
+    let columns = if below {
+        legend_columns(&entries, (g.width - Y_LABEL_AREA - RIGHT_MARGIN) as i32)
     } else {
-        let max = (f64::from(FIGURE_WIDTH) * MAX_LEGEND_SHARE) as u32;
-        (legend_w.max(0) as u32 + LEGEND_GAP + 8).min(max)
+        1
     };
-    let plot_h = MAP_PLOT_HEIGHT.max(legend_h.max(0) as u32);
-    let height = MAP_TOP + plot_h + X_LABEL_AREA;
+    let legend_h = legend_size_in(&entries, columns).1.max(0) as u32;
+    let (legend_col, plot_h, legend_band) = if entries.is_empty() {
+        (RIGHT_MARGIN, g.map_plot_height, 0)
+    } else if below {
+        (RIGHT_MARGIN, g.map_plot_height, legend_h + LEGEND_GAP / 2)
+    } else {
+        (beside, g.map_plot_height.max(legend_h), 0)
+    };
+    let height = MAP_TOP + plot_h + X_LABEL_AREA + legend_band;
 
     let mut svg = String::new();
     {
-        let root = SVGBackend::with_string(&mut svg, (FIGURE_WIDTH, height)).into_drawing_area();
+        let root = SVGBackend::with_string(&mut svg, (g.width, height)).into_drawing_area();
+        let plot = root.clone().shrink((0, 0), (g.width, height - legend_band));
         root.fill(&WHITE).map_err(draw_err)?;
-        let mut chart = ChartBuilder::on(&root)
+        let mut chart = ChartBuilder::on(&plot)
             .margin_top(MAP_TOP)
             .margin_right(legend_col)
             .x_label_area_size(X_LABEL_AREA)
@@ -59,7 +73,7 @@ pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
         chart
             .configure_mesh()
             .disable_mesh()
-            .x_labels(10)
+            .x_labels(g.x_labels)
             .y_labels(8)
             .x_label_formatter(&x_fmt)
             .y_label_formatter(&y_fmt)
@@ -113,8 +127,12 @@ pub fn category_map(spec: &CategoryMap) -> Result<String, FigureError> {
         let border = ShapeStyle::from(&AXIS_COLOR).stroke_width(FRAME_WIDTH);
         root.draw(&Rectangle::new(frame, border))
             .map_err(draw_err)?;
-        let at = (frame[1].0 + LEGEND_GAP as i32, frame[0].1);
-        draw_legend(&root, at, &entries)?;
+        let at = if below {
+            (frame[0].0, (height - legend_h) as i32)
+        } else {
+            (frame[1].0 + LEGEND_GAP as i32, frame[0].1)
+        };
+        draw_legend_in(&root, at, &entries, columns)?;
         root.present().map_err(draw_err)?;
     }
     // Crisp edges: anti-aliased neighbouring cells would show hairline seams between them.

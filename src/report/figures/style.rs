@@ -13,12 +13,49 @@ use plotters::style::{Color, IntoFont, RGBColor, ShapeStyle, TextStyle};
 
 use super::spec::{Curve, Stroke};
 
-/// Width of every figure (px of the SVG user space).
-pub const FIGURE_WIDTH: u32 = 900;
-/// Height of one panel of a stacked chart, label areas included.
-pub const PANEL_HEIGHT: u32 = 260;
-/// Height of the plotting area of a category map.
-pub const MAP_PLOT_HEIGHT: u32 = 520;
+/// The canvas of a figure (px of the SVG user space). Text keeps its size in px whatever the
+/// canvas, so a narrower canvas prints its text larger at the same printed width.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Geometry {
+    /// Width of the figure.
+    pub width: u32,
+    /// Height of one panel of a stacked chart, label areas included.
+    pub panel_height: u32,
+    /// Height of the plotting area of a category map.
+    pub map_plot_height: u32,
+    /// Tick labels asked for along the x axis.
+    pub x_labels: usize,
+}
+
+impl Geometry {
+    /// The report's figures: the page's width on screen, 17-19 cm printed.
+    pub const REPORT: Geometry = Geometry {
+        width: 900,
+        panel_height: 260,
+        map_plot_height: 520,
+        x_labels: 10,
+    };
+    /// A column of a two-column A4 print (90.5 mm): 14 px text prints at 8.2 pt, as the
+    /// report's figures do across the page.
+    pub const COLUMN: Geometry = Geometry {
+        width: 440,
+        panel_height: 170,
+        map_plot_height: 260,
+        x_labels: 6,
+    };
+
+    /// The same canvas with panels and maps `factor` times as tall (whole px), plotting areas
+    /// at most square.
+    pub fn taller(self, factor: f64) -> Geometry {
+        let square = self.width - Y_LABEL_AREA - RIGHT_MARGIN;
+        let scale = |px: u32| ((f64::from(px) * factor).round() as u32).min(square);
+        Geometry {
+            panel_height: scale(self.panel_height),
+            map_plot_height: scale(self.map_plot_height),
+            ..self
+        }
+    }
+}
 /// Room left of a plotting area for tick labels and the rotated y label.
 pub const Y_LABEL_AREA: u32 = 80;
 /// Room below the bottom plotting area for tick labels and the x label.
@@ -88,6 +125,9 @@ const LEGEND_ROW: i32 = 21;
 const LEGEND_SWATCH: i32 = 15;
 /// Extra space between the filled squares and the line samples of one legend.
 const LEGEND_GROUP_GAP: i32 = 6;
+/// Space between legend columns (px), and the most columns a legend takes.
+const LEGEND_COLUMN_GAP: i32 = 16;
+const MAX_LEGEND_COLUMNS: usize = 3;
 
 const fn towards_white(c: RGBColor) -> RGBColor {
     const fn mix(v: u8) -> u8 {
@@ -344,27 +384,70 @@ fn legend_rows(entries: &[LegendEntry]) -> (Vec<i32>, i32) {
     (centres, y + LEGEND_PAD - 2)
 }
 
-/// Width and height (px) of the framed legend box for `entries`.
+/// Width and height (px) of the framed legend box for `entries` in one column.
 pub fn legend_size(entries: &[LegendEntry]) -> (i32, i32) {
+    legend_size_in(entries, 1)
+}
+
+/// Width and height (px) of the framed legend box for `entries` in `columns` columns.
+pub fn legend_size_in(entries: &[LegendEntry], columns: usize) -> (i32, i32) {
+    let column = legend_column_width(entries);
+    let height = legend_chunks(entries, columns)
+        .map(|chunk| legend_rows(chunk).1)
+        .max()
+        .unwrap_or_else(|| legend_rows(&[]).1);
+    let n = legend_chunks(entries, columns).count().max(1) as i32;
+    (
+        2 * LEGEND_PAD + n * column + (n - 1) * LEGEND_COLUMN_GAP,
+        height,
+    )
+}
+
+/// The most columns (at most [`MAX_LEGEND_COLUMNS`]) that keep the legend of `entries` within
+/// `max_width` px; 1 if even one column is wider.
+pub fn legend_columns(entries: &[LegendEntry], max_width: i32) -> usize {
+    (1..=MAX_LEGEND_COLUMNS.min(entries.len()))
+        .rev()
+        .find(|&c| legend_size_in(entries, c).0 <= max_width)
+        .unwrap_or(1)
+}
+
+/// Width of one legend column: sample, gap and the widest text.
+fn legend_column_width(entries: &[LegendEntry]) -> i32 {
     let text = entries
         .iter()
         .map(|e| text_width(&e.label, LEGEND_FONT_PX).ceil() as i32)
         .max()
         .unwrap_or(0);
-    let (_, height) = legend_rows(entries);
-    (2 * LEGEND_PAD + LEGEND_SAMPLE + LEGEND_GAP + text, height)
+    LEGEND_SAMPLE + LEGEND_GAP + text
 }
 
-/// Draws the framed legend with its upper-left corner at `at` (backend coordinates).
+/// The entries of each column, filled column by column.
+fn legend_chunks(entries: &[LegendEntry], columns: usize) -> std::slice::Chunks<'_, LegendEntry> {
+    entries.chunks(entries.len().div_ceil(columns.max(1)).max(1))
+}
+
+/// Draws the framed legend in one column with its upper-left corner at `at` (backend
+/// coordinates).
 pub fn draw_legend(
     root: &DrawingArea<SVGBackend, Shift>,
     at: (i32, i32),
     entries: &[LegendEntry],
 ) -> Result<(), FigureError> {
+    draw_legend_in(root, at, entries, 1)
+}
+
+/// Draws the framed legend in `columns` columns with its upper-left corner at `at`.
+pub fn draw_legend_in(
+    root: &DrawingArea<SVGBackend, Shift>,
+    at: (i32, i32),
+    entries: &[LegendEntry],
+    columns: usize,
+) -> Result<(), FigureError> {
     if entries.is_empty() {
         return Ok(());
     }
-    let (w, h) = legend_size(entries);
+    let (w, h) = legend_size_in(entries, columns);
     let (x, y) = at;
     let corners = [(x, y), (x + w, y + h)];
     root.draw(&Rectangle::new(corners, plotters::style::WHITE.filled()))
@@ -375,10 +458,24 @@ pub fn draw_legend(
     ))
     .map_err(draw_err)?;
     let text_style = font(LEGEND_FONT_PX).pos(Pos::new(HPos::Left, VPos::Center));
+    let column = legend_column_width(entries) + LEGEND_COLUMN_GAP;
+    for (k, chunk) in legend_chunks(entries, columns).enumerate() {
+        let x0 = x + LEGEND_PAD + k as i32 * column;
+        draw_legend_column(root, (x0, y), chunk, &text_style)?;
+    }
+    Ok(())
+}
+
+/// The rows of one legend column, samples starting at `x0`, the box's top at `y`.
+fn draw_legend_column(
+    root: &DrawingArea<SVGBackend, Shift>,
+    (x0, y): (i32, i32),
+    entries: &[LegendEntry],
+    text_style: &TextStyle,
+) -> Result<(), FigureError> {
     let (centres, _) = legend_rows(entries);
     for (entry, centre) in entries.iter().zip(centres) {
         let cy = y + centre;
-        let x0 = x + LEGEND_PAD;
         match entry.key {
             LegendKey::Line {
                 color,
