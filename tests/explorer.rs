@@ -184,8 +184,8 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
         .contains("two slips and two sticks"));
     assert!(checks["woodTable"].as_u64().unwrap() >= 10, "{checks}");
     assert_ne!(checks["animationTime"], "t = 0 s", "the animation ran");
-    // Under prefers-reduced-motion the time moves in steps of T/8, one a second (1.5 s: one
-    // step, two on a slow machine), and a phone never scrolls sideways.
+    // Under prefers-reduced-motion the time moves in steps of T/8, one a second (2.5 s: two
+    // steps, one on a machine too busy to draw), and a phone never scrolls sideways.
     let steps = checks["reducedMotionStep"].as_f64().unwrap();
     assert!(
         (steps - steps.round()).abs() < 0.01 && (1.0..=2.0).contains(&steps.round()),

@@ -122,7 +122,7 @@ try {
   await page.emulateMedia({ reducedMotion: "reduce" });
   const before = await page.evaluate(() => document.getElementById("time-out").textContent);
   await page.click("#play");
-  await page.waitForTimeout(1500);
+  await page.waitForTimeout(2500);
   await page.click("#play");
   const after = await page.evaluate(() => document.getElementById("time-out").textContent);
   const period = JSON.parse(await page.evaluate(() => window.stickslipExplorer.evaluation)).params.T;
