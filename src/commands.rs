@@ -234,7 +234,10 @@ fn report(args: &ReportArgs) -> Result<()> {
 
 /// `stickslip explorer`: the page, with the built-in scenes as presets.
 fn explorer(args: &ExplorerArgs) -> Result<()> {
-    let page = report::explorer::render(&report::builtin_scenes()?)?;
+    let page = report::explorer::render(
+        &report::builtin_scenes()?,
+        report::explorer::Placement::Alone,
+    )?;
     report::write_all(&args.out, std::slice::from_ref(&page))?;
     print_stdout(&format!(
         "wrote {} to {}\n",

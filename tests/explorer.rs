@@ -17,6 +17,7 @@ mod common;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use stickslip::report::explorer::Placement;
 use stickslip::report::{builtin_scenes, classroom, explorer, Format};
 
 /// Budgets of the issue: page size, first render, one redraw.
@@ -86,7 +87,7 @@ fn cli_eval(request: &serde_json::Value) -> String {
 
 #[test]
 fn the_page_is_one_small_file_without_network_references() {
-    let page = explorer::render(&builtin_scenes().unwrap()).unwrap();
+    let page = explorer::render(&builtin_scenes().unwrap(), Placement::Alone).unwrap();
     let text = String::from_utf8(page.bytes.clone()).unwrap();
     eprintln!(
         "explorer.html: {} bytes (budget {MAX_BYTES})",
@@ -100,7 +101,9 @@ fn the_page_is_one_small_file_without_network_references() {
     }
     assert_eq!(
         page.bytes,
-        explorer::render(&builtin_scenes().unwrap()).unwrap().bytes
+        explorer::render(&builtin_scenes().unwrap(), Placement::Alone)
+            .unwrap()
+            .bytes
     );
 }
 
@@ -108,7 +111,7 @@ fn the_page_is_one_small_file_without_network_references() {
 fn the_default_report_writes_and_links_the_explorer_with_its_html() {
     let scenes = builtin_scenes().unwrap();
     let (files, links) = classroom::material(&scenes, &[Format::Html]).unwrap();
-    let page = explorer::render(&scenes).unwrap();
+    let page = explorer::render(&scenes, Placement::InReport).unwrap();
     assert!(files.contains(&page));
     assert!(links.iter().any(|l| l.html == explorer::FILE));
     let (files, links) = classroom::material(&scenes, &[Format::Md]).unwrap();

@@ -35,7 +35,10 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
     let mut files = Vec::new();
     let mut links = Vec::new();
     if formats.contains(&Format::Html) {
-        files.push(super::explorer::render(scenes)?);
+        files.push(super::explorer::render(
+            scenes,
+            super::explorer::Placement::InReport,
+        )?);
         links.push(super::explorer::material());
     }
     for (id, what) in HANDOUTS {

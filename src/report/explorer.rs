@@ -58,8 +58,15 @@ pub fn material() -> Material {
     }
 }
 
+/// Where the page is written: beside the report's index (which it then links), or alone.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Placement {
+    InReport,
+    Alone,
+}
+
 /// The page, with the built-in `scenes` as presets.
-pub fn render(scenes: &[Scene]) -> Result<OutFile> {
+pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
     let data = PageData {
         models: Model::defaults()
             .iter()
@@ -85,6 +92,7 @@ pub fn render(scenes: &[Scene]) -> Result<OutFile> {
     })?;
     let mut ctx = tera::Context::new();
     ctx.insert("version", env!("CARGO_PKG_VERSION"));
+    ctx.insert("in_report", &(placement == Placement::InReport));
     ctx.insert("css", CSS);
     ctx.insert("style", STYLE);
     ctx.insert("script", &script_safe(SCRIPT));
