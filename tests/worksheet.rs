@@ -756,3 +756,33 @@ fn italian_sheets_have_italian_words_and_decimal_commas() {
         .code(2)
         .stderr(predicates::str::contains("--lang"));
 }
+
+/// docs/examples holds the Moodle XML and GIFT of a 3-student pulled-mass set (the issue's
+/// example for teachers): exactly what `stickslip worksheet --model pulled-mass --students 3
+/// --format moodle,gift` writes today.
+#[test]
+fn the_committed_moodle_example_is_what_the_command_writes() {
+    let dir = tempfile::tempdir().unwrap();
+    worksheet(
+        dir.path(),
+        &[
+            "--model",
+            "pulled-mass",
+            "--students",
+            "3",
+            "--format",
+            "moodle,gift",
+        ],
+    );
+    for (written, example) in [
+        ("worksheets.moodle.xml", "pulled-mass-3-students.moodle.xml"),
+        ("worksheets.gift.txt", "pulled-mass-3-students.gift.txt"),
+    ] {
+        let fresh = fs::read_to_string(dir.path().join(written)).unwrap();
+        let committed = fs::read_to_string(Path::new("docs/examples").join(example)).unwrap();
+        assert!(
+            fresh == committed,
+            "docs/examples/{example} is stale: regenerate it"
+        );
+    }
+}

@@ -133,12 +133,19 @@ pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
     let unchecked = checked - ctx.verification.len();
     // Translated before the layout, which measures the text.
     translate_scene(&mut ctx, words);
-    let drawings = with_figures.build_figures()?;
+    let mut drawings = with_figures.build_figures()?;
+    // Labels translated before drawing, so that legends are sized for them.
+    for f in &mut drawings {
+        f.caption = words.text(&f.caption);
+        for label in f.drawing.labels_mut() {
+            *label = words.text(label);
+        }
+    }
     let draw = |g| -> Result<Vec<FigureCtx>> {
         let mut figures = figure_contexts(&drawings, g)?;
         for f in &mut figures {
-            f.caption = words.text(first_sentence(&f.caption));
-            f.svg = words.svg(&f.svg);
+            f.caption = first_sentence(&f.caption).to_string();
+            f.svg = words.svg_numbers(&f.svg);
         }
         Ok(figures)
     };

@@ -167,12 +167,12 @@ fn draw(id: &str, drawing: &Drawing, g: Geometry) -> Result<String> {
     })
 }
 
-/// The first sentence of `text` (to the first ". " that does not end "Fig." or "Figs."), the
-/// whole text if it has one.
+/// The first sentence of `text` (to the first ". " that does not end "Fig.", "Figs." or the
+/// Italian "Figg."), the whole text if it has one.
 pub(crate) fn first_sentence(text: &str) -> &str {
     text.match_indices(". ")
         .map(|(i, _)| &text[..=i])
-        .find(|head| !(head.ends_with("Fig.") || head.ends_with("Figs.")))
+        .find(|head| !["Fig.", "Figs.", "Figg."].iter().any(|f| head.ends_with(f)))
         .unwrap_or(text)
 }
 

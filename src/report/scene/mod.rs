@@ -54,6 +54,31 @@ pub enum Drawing {
     Map(CategoryMap),
 }
 
+impl Drawing {
+    /// Every text the drawing shows: axis labels, legend entries, reference-line and marker
+    /// labels (to write them in another language before the legend is sized).
+    pub fn labels_mut(&mut self) -> Vec<&mut String> {
+        match self {
+            Drawing::Chart(c) => {
+                let mut labels = vec![&mut c.x_label];
+                for panel in &mut c.panels {
+                    labels.push(&mut panel.y_label);
+                    labels.extend(panel.curves.iter_mut().map(|c| &mut c.label));
+                    labels.extend(panel.h_lines.iter_mut().map(|h| &mut h.1));
+                }
+                labels.extend(c.markers.iter_mut().map(|m| &mut m.label));
+                labels
+            }
+            Drawing::Map(m) => {
+                let mut labels = vec![&mut m.x_label, &mut m.y_label];
+                labels.extend(m.categories.iter_mut().map(|c| &mut c.0));
+                labels.extend(m.curves.iter_mut().map(|c| &mut c.label));
+                labels
+            }
+        }
+    }
+}
+
 /// One figure of a scene: a file-name id, a caption and the drawing.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Figure {
