@@ -76,6 +76,18 @@ pub enum Command {
     /// the answer key: every answer worked out from the closed forms and confirmed by the exact
     /// integration (worksheets.*, answer-key.*, answer-key.json in --out).
     Worksheet(WorksheetArgs),
+    /// The explorer: one self-contained HTML page (explorer.html in --out) with sliders over
+    /// both models, the exact motion of both force laws, every closed form checked live, the
+    /// regime map and the apparatus animated; it works offline, from file://.
+    Explorer(ExplorerArgs),
+}
+
+/// Options of `stickslip explorer`.
+#[derive(Debug, Args)]
+pub struct ExplorerArgs {
+    /// Output folder.
+    #[arg(long, default_value = "reports")]
+    pub out: PathBuf,
 }
 
 /// Options of `stickslip fit`; the woodpecker flags and `--scenario` give the fixed values and

@@ -6,8 +6,8 @@ use std::io::Write;
 use anyhow::{Context, Result};
 
 use crate::cli::{
-    BenchArgs, CheckArgs, Cli, Command, CommonArgs, FitArgs, HandoutArgs, ModelArgs, ModelCommand,
-    NoArgs, ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
+    BenchArgs, CheckArgs, Cli, Command, CommonArgs, ExplorerArgs, FitArgs, HandoutArgs, ModelArgs,
+    ModelCommand, NoArgs, ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
 };
 use crate::error::Error;
 use crate::export::CsvDialect;
@@ -33,6 +33,7 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Check { model } => check(&model),
         Command::Fit(args) => fit(&args),
         Command::Worksheet(args) => worksheet(&args),
+        Command::Explorer(args) => explorer(&args),
     }
 }
 
@@ -227,6 +228,20 @@ fn report(args: &ReportArgs) -> Result<()> {
         "wrote {} files for {} scenes to {}\n",
         written.len(),
         scenes.len(),
+        shown(&args.out)
+    ))
+}
+
+/// `stickslip explorer`: the page, with the built-in scenes as presets.
+fn explorer(args: &ExplorerArgs) -> Result<()> {
+    let page = report::explorer::render(
+        &report::builtin_scenes()?,
+        report::explorer::Placement::Alone,
+    )?;
+    report::write_all(&args.out, std::slice::from_ref(&page))?;
+    print_stdout(&format!(
+        "wrote {} to {}\n",
+        page.path.display(),
         shown(&args.out)
     ))
 }

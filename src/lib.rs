@@ -17,7 +17,8 @@
 //!
 //! The `cli` feature (default) adds the presentation layer: command line, reports, figures,
 //! handouts, worksheets, sweeps, fits and benchmarks. Without it the core (params, models,
-//! engine, results, claims, solvers) builds on its own, for wasm32 too.
+//! engine, results, claims, solvers, explore) builds on its own, for wasm32 too; there
+//! [`wasm`] exports the explorer page's entry points (`stickslip explorer`).
 
 #[cfg(feature = "cli")]
 pub mod bench;
@@ -33,10 +34,12 @@ pub mod derivation;
 pub mod draws;
 pub mod engine;
 pub mod error;
+pub mod explore;
 #[cfg(feature = "cli")]
 pub mod export;
 #[cfg(feature = "cli")]
 pub mod fit;
+pub mod fmath;
 #[cfg(feature = "cli")]
 pub mod handout;
 pub mod models;
@@ -50,5 +53,7 @@ pub mod results;
 pub mod solver;
 #[cfg(feature = "cli")]
 pub mod sweep;
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;
 #[cfg(feature = "cli")]
 pub mod worksheet;

@@ -19,6 +19,7 @@
 
 use super::dd::{self, Dd};
 use super::law::{Affine, Basis};
+use crate::fmath;
 
 /// The state at the start of an arc: time t_c (s, within the period, as hi + lo), position
 /// (m), velocity (m/s) and acceleration (m/s²).
@@ -360,7 +361,7 @@ impl Arc {
 pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
     let theta = omega * t.hi;
     let theta_lo = omega.mul_add(t.hi, -theta) + omega * t.lo;
-    let (sin, cos) = theta.sin_cos();
+    let (sin, cos) = fmath::sin_cos(theta);
     (sin + cos * theta_lo, cos - sin * theta_lo)
 }
 
@@ -403,7 +404,7 @@ impl Kernels {
     #[inline]
     fn new(delta: f64) -> Kernels {
         let angle = 0.5 * delta;
-        let (sin, cos) = angle.sin_cos();
+        let (sin, cos) = fmath::sin_cos(angle);
         Kernels::from_half(delta, HalfAngle { angle, sin, cos })
     }
 

@@ -4,6 +4,8 @@
 //!
 //! Error-free transformations: two-sum (Knuth) and two-product (fused multiply-add).
 
+use crate::fmath;
+
 /// π − fl(π).
 const PI_LO: f64 = 1.224_646_799_147_353_2e-16;
 
@@ -119,14 +121,14 @@ pub fn acos(r: Dd) -> Option<Dd> {
     if r.hi.abs() <= 0.5 {
         // Well-conditioned: acos r.hi, and the first-order term of r.lo.
         let root = ((1.0 - r.hi) * (1.0 + r.hi)).sqrt();
-        return Some(Dd::from(r.hi.acos() - r.lo / root));
+        return Some(Dd::from(fmath::acos(r.hi) - r.lo / root));
     }
     if r.hi > 0.0 {
         let u = (1.0 - r.hi) - r.lo;
-        (u > 0.0).then(|| Dd::from(2.0 * (0.5 * u).sqrt().asin()))
+        (u > 0.0).then(|| Dd::from(2.0 * fmath::asin((0.5 * u).sqrt())))
     } else {
         let u = (1.0 + r.hi) + r.lo;
-        (u > 0.0).then(|| Dd::PI + Dd::from(-2.0 * (0.5 * u).sqrt().asin()))
+        (u > 0.0).then(|| Dd::PI + Dd::from(-2.0 * fmath::asin((0.5 * u).sqrt())))
     }
 }
 

@@ -1,6 +1,7 @@
 //! Force laws as data: a period tiled by pieces on which the driving force D and the
 //! friction-bearing normal force N_f are affine in one basis function b(t).
 
+use crate::fmath;
 use serde::Serialize;
 
 use crate::error::{Error, Result};
@@ -22,7 +23,7 @@ impl Basis {
     pub fn eval(&self, t: f64) -> f64 {
         match *self {
             Basis::Linear { t_ref } => t - t_ref,
-            Basis::Cos { omega } => (omega * t).cos(),
+            Basis::Cos { omega } => fmath::cos(omega * t),
         }
     }
 }
@@ -82,7 +83,7 @@ impl Piece {
             Basis::Linear { t_ref } => (self.start - t_ref, self.end - t_ref, 1.0),
             Basis::Cos { omega } => {
                 let (theta_start, theta_end) = (omega * self.start, omega * self.end);
-                let (b_start, b_end) = (theta_start.cos(), theta_end.cos());
+                let (b_start, b_end) = (fmath::cos(theta_start), fmath::cos(theta_end));
                 // cos θ = ±1 at θ = kπ inside: +1 for even k, −1 for odd k.
                 let pi = std::f64::consts::PI;
                 let (k_first, k_last) = ((theta_start / pi).ceil(), (theta_end / pi).floor());

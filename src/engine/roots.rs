@@ -8,6 +8,7 @@
 use super::arc::cos_level_crossings_dd;
 use super::dd::Dd;
 use super::law::{Affine, Basis};
+use crate::fmath;
 
 /// Where a switching function starts to be positive (see [`first_up_crossing`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -82,10 +83,10 @@ pub fn first_up_crossing(
             // At g = 0, look at the slope, and at the curvature where the slope vanishes too
             // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
             // sin ωt only where g = 0.
-            let cos = (omega * from).cos();
+            let cos = fmath::cos(omega * from);
             let g_from = g.at(cos);
             let rising = || {
-                let slope = -g.c1 * omega * (omega * from).sin();
+                let slope = -g.c1 * omega * fmath::sin(omega * from);
                 let curvature = -g.c1 * omega * omega * cos;
                 slope > 0.0 || (slope == 0.0 && curvature > 0.0)
             };

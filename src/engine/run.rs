@@ -131,6 +131,25 @@ impl Run {
     }
 }
 
+/// (t, x, v, a) of `run` on [t0, t1] (absolute s): `n` uniform points plus the times of the
+/// run's events inside the window, in time order. Times the run does not cover are skipped.
+pub fn sample(run: &Run, t0: f64, t1: f64, n: usize) -> Vec<[f64; 4]> {
+    let mut times: Vec<f64> = (0..n)
+        .map(|i| t0 + (t1 - t0) * i as f64 / (n.max(2) - 1) as f64)
+        .collect();
+    times.extend(
+        run.events
+            .iter()
+            .map(|e: &Event| e.t)
+            .filter(|&t| t > t0 && t < t1),
+    );
+    times.sort_by(f64::total_cmp);
+    times
+        .into_iter()
+        .filter_map(|t| run.state_at(t).map(|(x, v, a)| [t, x, v, a]))
+        .collect()
+}
+
 /// Keeps the events that are needed and merges a stick and a slip at the same instant.
 struct Recorder {
     events: Vec<Event>,

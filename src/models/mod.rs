@@ -104,8 +104,7 @@ registry! {$
     Woodpecker(woodpecker::WoodpeckerParams),
 }
 
-// The presentation layer dispatches on the model too; the core needs only the methods below.
-#[cfg(feature = "cli")]
+// The explorer and the presentation layer dispatch on the model too.
 pub(crate) use with_model;
 
 impl Model {

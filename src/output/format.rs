@@ -1,5 +1,7 @@
 //! Number formatting shared by the terminal output and the reports.
 
+use crate::fmath;
+
 /// `x` to `digits` significant digits: plain decimals for 1e-3 ≤ |x| < 1e6, scientific
 /// otherwise; "—" for a missing value.
 pub fn sig(x: Option<f64>, digits: usize) -> String {
@@ -12,7 +14,7 @@ pub fn sig(x: Option<f64>, digits: usize) -> String {
     if !x.is_finite() {
         return x.to_string();
     }
-    let exponent = x.abs().log10().floor() as i32;
+    let exponent = fmath::log10(x.abs()).floor() as i32;
     if (-3..6).contains(&exponent) {
         let decimals = (digits as i32 - 1 - exponent).max(0) as usize;
         format!("{x:.decimals$}")

@@ -1,7 +1,8 @@
-//! The classroom material of the default report: lecture handouts of two scenes (one per
-//! model, in English and Italian) and a worksheet of each model with its answer key, written under `handouts/` and
-//! `worksheets/` beside the scene pages and linked from the index with the speed and accuracy
-//! study (`bench/`, written by `stickslip bench`).
+//! The classroom material of the default report: the explorer page (`explorer.html`), lecture
+//! handouts of two scenes (one per model, in English and Italian) and a worksheet of each model
+//! with its answer key, written under `handouts/` and `worksheets/` beside the scene pages and
+//! linked from the index with the speed and accuracy study (`bench/`, written by
+//! `stickslip bench`).
 
 use std::path::Path;
 
@@ -33,6 +34,13 @@ const SEED: u64 = 1;
 pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, Vec<Material>)> {
     let mut files = Vec::new();
     let mut links = Vec::new();
+    if formats.contains(&Format::Html) {
+        files.push(super::explorer::render(
+            scenes,
+            super::explorer::Placement::InReport,
+        )?);
+        links.push(super::explorer::material());
+    }
     for (id, what) in HANDOUTS {
         let Some(scene) = scenes.iter().find(|s| s.id == *id) else {
             continue;

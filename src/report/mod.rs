@@ -8,6 +8,7 @@
 
 pub mod classroom;
 pub mod context;
+pub mod explorer;
 pub mod figures;
 pub mod math;
 pub mod render;

@@ -7,6 +7,8 @@
 //! formula.rs     the closed forms of §1.3–1.5, one pure function per quantity
 //! quantity.rs    the registry of the quantities: key, symbol, unit, equation, regimes
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
+//! map.rs         the (μd, μs) domain maps, cell by cell (report and explorer)
+//! explore.rs     what the explorer page asks of the model (regime sentence, apparatus)
 //! claims.rs      the paper's claims about this model (claims 1, 2)
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
 //! scene.rs       the report's figures of this model
@@ -18,7 +20,9 @@ pub(crate) mod claims;
 pub mod derivation;
 #[cfg(feature = "cli")]
 mod exercise;
+pub mod explore;
 pub mod formula;
+pub mod map;
 pub mod params;
 #[cfg(feature = "cli")]
 mod present;

@@ -3,9 +3,10 @@
 
 use rayon::prelude::*;
 
-use crate::engine::{analyse, integrate, IntegrationRegime, RunOptions};
+use crate::engine::analyse;
 use crate::error::Result;
 use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
+use crate::models::pulled_mass::map::{self, harmonic_category, linear_category, MAP_PERIODS};
 use crate::models::pulled_mass::results::{evaluate_with_runs, Runs};
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::{pulled_mass, LawKind};
@@ -18,8 +19,6 @@ const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);
 const LINEAR: (usize, Stroke) = (1, Stroke::Dashed);
 /// Cells per side of the domain maps.
 const GRID: usize = 200;
-/// Periods integrated per map cell: enough to see a late stick and a settled orbit.
-const MAP_PERIODS: u32 = 6;
 
 /// The figures of one kind for the pulled mass `p` (other models' kinds give none).
 pub fn figures(scene_id: &str, p: &PulledMassParams, kind: FigureKind) -> Result<Vec<Figure>> {
@@ -248,47 +247,9 @@ fn compare(p: &PulledMassParams) -> Result<(LineChart, String)> {
     Ok((chart, caption))
 }
 
-/// Category of a (μd, μs) cell for the linearized law (closed form, §1.5).
-fn linear_category(phi: f64, mu_s: f64, mu_d: f64) -> u8 {
-    if mu_d > mu_s {
-        return 0;
-    }
-    match cf::regime(phi, mu_s, mu_d) {
-        Regime::ImmediateContinuousSlip => 1,
-        Regime::ContinuousSlip => 2,
-        Regime::SlipStickLate => 3,
-        Regime::SlipStick => 4,
-    }
-}
-
-/// Category of a (μd, μs) cell for the harmonic law (exact integration).
-fn harmonic_category(p: &PulledMassParams, mu_s: f64, mu_d: f64) -> u8 {
-    if mu_d > mu_s {
-        return 0;
-    }
-    let q = PulledMassParams { mu_s, mu_d, ..*p };
-    let Ok(law) = pulled_mass::force_law(&q, LawKind::Harmonic) else {
-        return 4;
-    };
-    let opts = RunOptions {
-        periods: MAP_PERIODS,
-        record_segments: false,
-        dissipation: false,
-    };
-    match integrate(&pulled_mass::body(&q), &law, &opts) {
-        Ok(run) if run.immediate_slip => 1,
-        Ok(run) => match analyse(&run).regime() {
-            IntegrationRegime::ContinuousSlip => 2,
-            IntegrationRegime::SingleSlipStick | IntegrationRegime::DoubleSlipNoHalt => 3,
-            _ => 4,
-        },
-        Err(_) => 4,
-    }
-}
-
 fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
     let phi = p.phi();
-    let top = (2.2 * phi).max(0.1);
+    let top = map::top(phi);
     let step = top / GRID as f64;
     let centre = |i: usize| (i as f64 + 0.5) * step;
     let grid = |cell: &(dyn Fn(f64, f64) -> u8 + Sync)| -> Vec<Vec<u8>> {
@@ -320,28 +281,14 @@ fn domain(p: &PulledMassParams) -> Result<[(CategoryMap, String); 2]> {
         categories,
         curves: curves.clone(),
     };
-    let label = |s: &str, i: usize| (s.to_string(), i);
-    let invalid = label("μd > μs (not allowed)", 7);
-    let linear = map(
-        linear_cells,
-        vec![
-            invalid.clone(),
-            label("immediate continuous slip", 3),
-            label("continuous slip", 1),
-            label("late stick (next period)", 4),
-            label("slip-stick within the period (20)", 2),
-        ],
-    );
-    let harmonic = map(
-        harmonic_cells,
-        vec![
-            invalid,
-            label("immediate continuous slip", 3),
-            label("continuous slip", 1),
-            label("sticks once per period", 2),
-            label("other (not periodic)", 6),
-        ],
-    );
+    let labels = |categories: &[(&str, usize)]| {
+        categories
+            .iter()
+            .map(|&(label, fill)| (label.to_string(), fill))
+            .collect()
+    };
+    let linear = map(linear_cells, labels(&map::LINEAR_CATEGORIES));
+    let harmonic = map(harmonic_cells, labels(&map::HARMONIC_CATEGORIES));
     let about = format!(
         "Grid of {GRID}×{GRID} cells for φ = F/W = {phi:.4}. Curves: the boundary of (20) \
          (same-period stick), the boundary φ = φ_c of any stick (late stick), and the immediate-slip \

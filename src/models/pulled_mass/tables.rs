@@ -3,7 +3,8 @@
 
 use std::fmt::Write;
 
-use super::formula::{ClosedForm, Regime};
+use super::explore::regime_reason as report_regime_reason;
+use super::formula::Regime;
 use super::results::{self as pulled_mass, Evaluation};
 use super::{quantity as pm, PulledMassParams};
 use crate::error::Result;
@@ -13,7 +14,7 @@ use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
 use crate::report::context::{
-    blank, count, fill_checks, input, integration_regime, laws_table, num, row, RegimeRow, SceneCtx,
+    blank, count, fill_checks, input, integration_regime, laws_table, row, RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
 
@@ -35,7 +36,7 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
         count("periods integrated", pp.periods),
     ];
     let c = &e.closed_form;
-    let why = pulled_regime_reason(c, p.mu_s);
+    let why = report_regime_reason(c, p.mu_s);
     ctx.regimes = vec![
         RegimeRow {
             law: "linearized law, closed forms".to_string(),
@@ -54,18 +55,6 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
         pp.period,
     );
     Ok(ctx)
-}
-
-/// The §1.5 inequality that decides the pulled-mass regime, with numbers.
-fn pulled_regime_reason(c: &ClosedForm, mu_s: f64) -> String {
-    let (phi, stick, cont) = (num(c.phi), num(c.phi_stick_max), num(c.phi_continuous));
-    let two_mu_s = num(2.0 * mu_s);
-    match c.regime {
-        Regime::ImmediateContinuousSlip => format!("φ = {phi} > 2μs = {two_mu_s}"),
-        Regime::SlipStick => format!("φ = {phi} ≤ 1/Θ = {stick} (20)"),
-        Regime::SlipStickLate => format!("1/Θ = {stick} < φ = {phi} ≤ φ_c = {cont}"),
-        Regime::ContinuousSlip => format!("φ_c = {cont} < φ = {phi} ≤ 2μs = {two_mu_s}"),
-    }
 }
 
 /// Renders a pulled-mass evaluation as plain-text tables.

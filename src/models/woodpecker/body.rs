@@ -9,6 +9,7 @@
 
 use crate::engine::{Affine, Basis, Body, ForceLaw, Piece};
 use crate::error::{Error, Result};
+use crate::fmath;
 use crate::models::woodpecker::formula::{self as formula, counterpart};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
@@ -66,7 +67,7 @@ fn harmonic(p: &WoodpeckerParams) -> Result<ForceLaw> {
     let mut cuts = vec![0.0];
     if p.z0.abs() < p.d0 {
         // F_e = 0 where cos ωt = −z0/d0.
-        let t1 = (-p.z0 / p.d0).acos() / omega;
+        let t1 = fmath::acos(-p.z0 / p.d0) / omega;
         cuts.extend([t1, period - t1]);
     }
     cuts.push(period);
@@ -104,7 +105,7 @@ fn linear(p: &WoodpeckerParams, zeta0: f64, delta0: f64) -> Result<ForceLaw> {
 /// The spring coordinate z(t) (m) of the chosen law, for figures and y_W = y_S + z.
 pub fn spring_coordinate(p: &WoodpeckerParams, law: LawKind, t: f64) -> Option<f64> {
     match law {
-        LawKind::Harmonic => Some(p.z0 + p.d0 * (p.omega() * t).cos()),
+        LawKind::Harmonic => Some(p.z0 + p.d0 * fmath::cos(p.omega() * t)),
         LawKind::Linear => {
             let (zeta0, delta0) = linear_amplitudes(p)?;
             formula::spring_coordinate(t, 0.25 * p.period(), zeta0).map(|zeta| delta0 + zeta)

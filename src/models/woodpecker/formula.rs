@@ -24,6 +24,7 @@
 //! Quantities of the speed maximum in lobe B (t_M, v_M, S, t_ST, Γ, y) exist only when u_B > 0;
 //! otherwise a > 0 on the whole of lobe B and they are `None` (as for u_d^(−) < 0, λ = 1).
 
+use crate::fmath;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::FRAC_2_PI;
 
@@ -90,7 +91,7 @@ pub fn counterpart(z0: f64, d0: f64, c: Counterpart) -> Option<(f64, f64)> {
 
 fn arcsin_ratio(z0: f64, d0: f64) -> Option<f64> {
     let ratio = div(z0, d0)?;
-    (ratio.abs() <= 1.0).then(|| ratio.asin())
+    (ratio.abs() <= 1.0).then(|| fmath::asin(ratio))
 }
 
 // ---------------------------------------------------------------------------------------------

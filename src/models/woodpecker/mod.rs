@@ -6,6 +6,8 @@
 //! body.rs        the sleeve as a body and the force laws (harmonic, linearized) for the engine
 //! formula.rs     the closed forms of §3, one pure function per quantity
 //! lobe.rs        the lobe engine: the periodic orbit of the linearized law in every regime
+//! map.rs         the regime maps in the (μd, z0) plane, cell by cell (report and explorer)
+//! explore.rs     what the explorer page asks of the model (regime sentence, apparatus)
 //! quantity.rs    the registry of the quantities: key, symbol, unit, equation, scope
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! claims.rs      the paper's claims about this model (claims 4, 6); halt.rs claim 5, lever.rs claim 8
@@ -19,10 +21,12 @@ pub(crate) mod claims;
 pub mod derivation;
 #[cfg(feature = "cli")]
 mod exercise;
+pub mod explore;
 pub mod formula;
 pub(crate) mod halt;
 pub(crate) mod lever;
 pub mod lobe;
+pub mod map;
 pub mod params;
 #[cfg(feature = "cli")]
 mod present;

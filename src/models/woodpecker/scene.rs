@@ -11,7 +11,7 @@ use rayon::prelude::*;
 
 use std::path::Path;
 
-use crate::engine::{analyse, integrate, EventKind, IntegrationRegime, Run, RunOptions};
+use crate::engine::{integrate, EventKind, Run, RunOptions};
 use crate::error::{Error, Result};
 use crate::fit::data::{parse, ReadOptions, Unit};
 use crate::fit::synthetic::{Synthetic, EXAMPLE_FILE};
@@ -21,6 +21,8 @@ use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, OrbitRegime, Phase,
     WoodpeckerClosedForm,
 };
+use crate::models::woodpecker::map;
+use crate::models::woodpecker::map::{integrated_cell, linear_cell, MAP_PERIODS, REGIMES};
 use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
@@ -40,80 +42,10 @@ const MM: f64 = 1e3;
 const STEADY_PERIOD: u32 = 2;
 /// Cells per side of the regime maps.
 const MAP_CELLS: usize = 200;
-/// Periods integrated per cell of the harmonic regime map.
-const MAP_PERIODS: u32 = 8;
-/// Smallest μd of the regime maps; the largest is μs.
-const MAP_MU_D_MIN: f64 = 0.05;
-/// z0 range of the regime maps in units of d0.
-const MAP_Z0: (f64, f64) = (-0.5, 0.99);
 /// Points of each analytic boundary curve on the maps.
 const BOUNDARY_POINTS: usize = 400;
 /// Factors of μd,MIN in the μd sweep.
 const SWEEP: [f64; 3] = [0.8, 1.0, 1.2];
-
-/// A category of the regime maps: a regime of the integration (an orbit of the closed forms that
-/// is one takes its category, so that the same regime is one category on both maps), an orbit
-/// regime the integration has no name for, or a failed integration.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Category {
-    Integrated(IntegrationRegime),
-    Orbit(OrbitRegime),
-    Failed,
-}
-
-impl Category {
-    /// The category of a closed-form orbit regime.
-    fn orbit(r: OrbitRegime) -> Self {
-        r.integrated()
-            .map_or(Category::Orbit(r), Category::Integrated)
-    }
-}
-
-/// The categories of both maps, in legend order: legend label and fill. The same regime has the
-/// same fill on both maps (and continuous motion the same fill, whichever regime names it).
-const REGIMES: [(Category, &str, usize); 9] = [
-    (
-        Category::Integrated(IntegrationRegime::DoubleSlipStick),
-        "2 slips, 2 sticks",
-        2,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::DoubleSlipNoHalt),
-        "1 slip, 2 maxima",
-        4,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::SingleSlipStick),
-        "1 slip, 1 maximum",
-        5,
-    ),
-    (
-        Category::Orbit(OrbitRegime::ContinuousOrMultiperiod),
-        "no halt (continuous)",
-        3,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::ContinuousSlip),
-        "continuous slip",
-        3,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::Multiperiod),
-        "multi-period orbit",
-        1,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::NotPeriodic),
-        "not periodic",
-        7,
-    ),
-    (
-        Category::Integrated(IntegrationRegime::NoSlip),
-        "never slips",
-        6,
-    ),
-    (Category::Failed, "integration failed", 0),
-];
 
 /// The figures of one kind for the woodpecker `p` (other models' kinds give none).
 pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: FigureKind) -> Result<Vec<Figure>> {
@@ -981,43 +913,6 @@ fn positions(p: &WoodpeckerParams) -> Result<(LineChart, String)> {
 // ---------------------------------------------------------------------------------------------
 // Regime maps in the (μd, z0) plane
 
-/// Index of a category in [`REGIMES`] (one not listed counts as failed).
-fn regime_index(category: Category) -> u8 {
-    let i = REGIMES
-        .iter()
-        .position(|r| r.0 == category)
-        .unwrap_or(REGIMES.len() - 1);
-    i as u8
-}
-
-/// Regime of the linear orbit from the closed forms (§3.6); outside their domain, from the exact
-/// integration of the linear law, so that no part of the map is left without a regime.
-fn linear_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64) -> u8 {
-    let q = WoodpeckerParams { mu_d, z0, ..*p };
-    match closed_form(&q).regime {
-        OrbitRegime::OutsideClosedFormDomain => {
-            integrated_cell(p, LawKind::Linear, mu_d, z0, MAP_PERIODS)
-        }
-        regime => regime_index(Category::orbit(regime)),
-    }
-}
-
-/// Regime of the law `kind` by exact integration over `periods` periods.
-fn integrated_cell(p: &WoodpeckerParams, kind: LawKind, mu_d: f64, z0: f64, periods: u32) -> u8 {
-    let q = WoodpeckerParams { mu_d, z0, ..*p };
-    let opts = RunOptions {
-        periods,
-        record_segments: false,
-        dissipation: false,
-    };
-    let run = woodpecker::force_law(&q, kind)
-        .and_then(|law| integrate(&woodpecker::body(&q), &law, &opts));
-    match run {
-        Ok(run) => regime_index(Category::Integrated(analyse(&run).regime())),
-        Err(_) => regime_index(Category::Failed),
-    }
-}
-
 /// The cells of one map (rows of z0 from the bottom, columns of μd) and its legend, holding
 /// only the regimes that occur, in the order of [`REGIMES`].
 fn map_cells(
@@ -1152,8 +1047,8 @@ fn domain_edge(p: &WoodpeckerParams, (lo, hi): (f64, f64)) -> Option<f64> {
 
 fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
     p.validate()?;
-    let x = (MAP_MU_D_MIN.min(0.5 * p.mu_s), p.mu_s);
-    let y = (MM * MAP_Z0.0 * p.d0, MM * MAP_Z0.1 * p.d0);
+    let (x, (z_lo, z_hi)) = map::ranges(p);
+    let y = (MM * z_lo, MM * z_hi);
     let curves = map_curves(p, x, y);
     let map = |(cells, categories)| CategoryMap {
         x_label: "μd".to_string(),
@@ -1234,6 +1129,7 @@ fn regime_maps(p: &WoodpeckerParams) -> Result<[(CategoryMap, String); 2]> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::woodpecker::map::{regime_index, Category, MAP_MU_D_MIN};
     use std::time::Instant;
 
     const WOOD_KINDS: [FigureKind; 8] = [

@@ -1,0 +1,147 @@
+// Drives the explorer page in headless Chromium (playwright-core, Debian's chromium) and prints
+// one JSON object: the parameter sets it visited with the page's evaluation of each (the Rust
+// test compares them with `stickslip eval … --json`), timings, requests, console errors and the
+// serious or critical axe violations. Usage:
+//   node run.mjs CHROMIUM NODE_MODULES PAGE [SCREENSHOT_DIR]
+// Called by tests/explorer.rs.
+import { createRequire } from "node:module";
+import path from "node:path";
+
+const [chromium, modules, file, shots] = process.argv.slice(2);
+const require = createRequire(path.join(path.resolve(modules), "noop.js"));
+const { chromium: launcher } = require("playwright-core");
+const axeSource = require("fs").readFileSync(require.resolve("axe-core/axe.min.js"), "utf8");
+
+const out = { visited: [], requests: [], errors: [], checks: {}, timings: {} };
+const browser = await launcher.launch({ executablePath: chromium, args: ["--no-sandbox"] });
+try {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 1000 } });
+  page.on("request", (r) => out.requests.push(r.url().slice(0, 60)));
+  page.on("console", (m) => { if (m.type() === "error") out.errors.push(m.text()); });
+  page.on("pageerror", (e) => out.errors.push(String(e)));
+  const probe = () => page.evaluate(() => {
+    const p = window.stickslipExplorer;
+    return { evaluation: p.evaluation, request: p.request, curves: p.curves, error: p.error,
+      mapCells: p.mapCells, table: document.querySelectorAll("#check-rows tr").length,
+      greyed: document.querySelectorAll("#check-rows tr.na").length,
+      regime: document.getElementById("regime").textContent,
+      path: document.querySelector("#plot-x path") ? document.querySelector("#plot-x path").getAttribute("d").length : 0 };
+  });
+  const visit = async (what) => { const p = await probe(); out.visited.push({ what, request: p.request, evaluation: p.evaluation }); return p; };
+  const mapDone = async (before) => page.waitForFunction((n) => window.stickslipExplorer.mapCells > n, before, { timeout: 20000 });
+
+  await page.goto("file://" + path.resolve(file));
+  await page.waitForFunction(() => window.stickslipExplorer && window.stickslipExplorer.ready, null, { timeout: 20000 });
+  out.timings.firstRender = await page.evaluate(() => window.stickslipExplorer.timings.firstRender);
+  const first = await visit("pulled mass, defaults");
+  out.checks.firstRegime = first.regime;
+  out.checks.firstTable = first.table;
+  await mapDone(0);
+
+  // Keyboard: the μd slider, five steps right.
+  await page.focus("#s-mu_d");
+  for (let i = 0; i < 5; i++) await page.keyboard.press("ArrowRight");
+  const keyed = await visit("pulled mass, μd moved by keyboard");
+  out.checks.keyboardChanged = keyed.evaluation !== first.evaluation && keyed.path > 0;
+
+  // A slider dragged: 30 moves of F, each timed from the input event to the page laid out
+  // again (engine, both laws' curves, regime, apparatus, table; style and layout), and to the
+  // next frame (which also waits for the display's refresh).
+  const drag = await page.evaluate(async () => {
+    const slider = document.getElementById("s-force");
+    const layout = [];
+    const frames = [];
+    for (let i = 0; i < 30; i++) {
+      slider.value = String(300 + 10 * i);
+      const t0 = performance.now();
+      slider.dispatchEvent(new Event("input", { bubbles: true }));
+      void document.body.offsetHeight;
+      layout.push(performance.now() - t0);
+      await new Promise((r) => requestAnimationFrame(() => setTimeout(r, 0)));
+      frames.push(performance.now() - t0);
+    }
+    return { layout, frames };
+  });
+  out.timings.layout = drag.layout;
+  out.timings.frames = drag.frames;
+  out.timings.redraws = await page.evaluate(() => window.stickslipExplorer.timings.redraws.slice(-30));
+  const dragged = await visit("pulled mass, F dragged");
+  out.checks.dragChanged = dragged.evaluation !== keyed.evaluation
+    && JSON.stringify(dragged.curves) !== JSON.stringify(keyed.curves);
+
+  // A click on the map sets (μd, μs).
+  let maps = await page.evaluate(() => window.stickslipExplorer.mapCells);
+  await mapDone(maps - 1);
+  const box = await page.locator("#map").boundingBox();
+  await page.locator("#map").click({ position: { x: box.width * 0.2, y: box.height * 0.3 } });
+  const clicked = await visit("pulled mass, map clicked");
+  out.checks.mapChanged = clicked.request.params.mu_d !== dragged.request.params.mu_d
+    && clicked.request.params.mu_s !== dragged.request.params.mu_s;
+  maps = await page.evaluate(() => window.stickslipExplorer.mapCells);
+  // The map by keyboard: focus, move, Enter.
+  await page.focus("#map");
+  await page.keyboard.press("ArrowUp");
+  await page.keyboard.press("ArrowRight");
+  await page.keyboard.press("Enter");
+  const mapKeyed = await visit("pulled mass, map by keyboard");
+  out.checks.mapKeyboard = mapKeyed.evaluation !== clicked.evaluation;
+
+  // An invalid value typed in: the one-line error, no console error.
+  await page.fill("#n-mu_d", "5");
+  await page.press("#n-mu_d", "Enter");
+  out.checks.invalidMessage = (await probe()).error;
+  await page.click("#reset");
+
+  // A preset, then the woodpecker.
+  await mapDone(maps);
+  if (shots) await page.screenshot({ path: path.join(shots, "explorer-pulled-mass.png"), fullPage: true });
+  await page.check("#model-woodpecker");
+  const wood = await visit("woodpecker, defaults");
+  out.checks.woodRegime = wood.regime;
+  out.checks.woodTable = wood.table;
+  out.checks.woodGreyed = wood.greyed;
+  await page.selectOption("#c-counterpart", "extremes");
+  await page.focus("#s-z0");
+  for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowLeft");
+  const moved = await visit("woodpecker, counterpart and z0 changed");
+  out.checks.woodChanged = moved.evaluation !== wood.evaluation;
+  await page.selectOption("#preset", "fig26-tracked-toy");
+  await visit("woodpecker, preset fig26-tracked-toy");
+  maps = await page.evaluate(() => window.stickslipExplorer.mapCells);
+  await mapDone(maps);
+  if (shots) await page.screenshot({ path: path.join(shots, "explorer-woodpecker.png"), fullPage: true });
+
+  // The animation: play, half a second, pause.
+  await page.click("#play");
+  await page.waitForTimeout(600);
+  out.checks.animationTime = await page.evaluate(() => document.getElementById("time-out").textContent);
+  if (shots) await page.locator("#motion").screenshot({ path: path.join(shots, "explorer-animation.png") });
+  await page.click("#play");
+
+  // Reduced motion: no smooth animation, an eighth of a period per second.
+  await page.emulateMedia({ reducedMotion: "reduce" });
+  const before = await page.evaluate(() => document.getElementById("time-out").textContent);
+  await page.click("#play");
+  await page.waitForTimeout(2500);
+  await page.click("#play");
+  const after = await page.evaluate(() => document.getElementById("time-out").textContent);
+  const period = JSON.parse(await page.evaluate(() => window.stickslipExplorer.evaluation)).params.T;
+  const seconds = (s) => Number(s.replace(/^t = /, "").replace(/ s$/, ""));
+  out.checks.reducedMotionStep = (seconds(after) - seconds(before)) / (period / 8);
+
+  // Accessibility at desktop and phone width, light and dark; no sideways scrolling on a phone.
+  out.axe = [];
+  for (const [width, height, colorScheme] of [[1280, 1000, "light"], [390, 844, "light"], [390, 844, "dark"]]) {
+    await page.setViewportSize({ width, height });
+    await page.emulateMedia({ colorScheme });
+    await page.addScriptTag({ content: axeSource });
+    const result = await page.evaluate(async () => await window.axe.run(document));
+    out.axe.push(...result.violations
+      .filter((v) => v.impact === "serious" || v.impact === "critical")
+      .map((v) => ({ id: v.id, impact: v.impact, width, colorScheme, nodes: v.nodes.map((n) => n.target.join(" ")).slice(0, 3) })));
+    if (width < 500) out.checks.phoneOverflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+  }
+} finally {
+  await browser.close();
+}
+console.log(JSON.stringify(out));
