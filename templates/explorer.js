@@ -460,6 +460,15 @@
   // ---------------------------------------------------------------------------------------
   // Every closed form against the integration
 
+  // A value of the table: a number formatted, a regime id in words (the report's words).
+  function inWords(value) {
+    if (typeof value !== "string") return fmt(value);
+    const closed = view.extras.closed_form;
+    if (value === closed.id) return closed.words;
+    const r = DATA.integration_regimes.find((q) => q.id === value);
+    return r ? r.words : value;
+  }
+
   function drawTable() {
     const e = view.evaluation;
     const applies = Object.fromEntries(view.extras.applicability.map((a) => [a.quantity, a]));
@@ -476,8 +485,8 @@
       const cell = (text, extra = {}) => tr.append(el("td", extra, text));
       cell(q ? q.symbol : id, { title: q ? q.words : id });
       cell(q ? `${c ? c.equation : q.equation} ${q.tag}` : c.equation);
-      cell(fmt(value), { class: "num", "data-exact": String(value) });
-      cell(c ? fmt(c.numeric) : "—", { class: "num", "data-exact": c ? String(c.numeric) : "" });
+      cell(inWords(value), { class: "num", "data-exact": String(value) });
+      cell(c ? inWords(c.numeric) : "—", { class: "num", "data-exact": c ? String(c.numeric) : "" });
       cell(q ? q.unit : "");
       cell(!c || c.rel_error === null ? "—" : c.rel_error.toExponential(1), { class: "num" });
       cell(verdict, { class: "verdict" });
