@@ -255,8 +255,19 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     };
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
     let scene = handout::find_scene(id)?;
-    let files = handout::render(&scene, &args.format, browser.as_deref(), args.lang)?;
+    let words = crate::worksheet::phrases::Translator::new(args.lang)?;
+    let files = handout::render(&scene, &args.format, browser.as_deref(), &words)?;
     let written = report::write_all(&args.out, &files)?;
+    let missing = words.missing();
+    if !missing.is_empty() {
+        // A scenario file's own words, or a claim worded for parameters the catalogue has not met.
+        eprintln!(
+            "note: {} phrase(s) have no {} translation and stay in English, e.g. {:?}",
+            missing.len(),
+            args.lang.code(),
+            missing[0]
+        );
+    }
     print_stdout(&format!(
         "wrote {} files for {} to {}\n",
         written.len(),

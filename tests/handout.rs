@@ -55,6 +55,10 @@ fn result_of(tex: &str) -> f64 {
 }
 
 /// `a` and `b` agree to 4 significant figures.
+fn english() -> Translator {
+    Translator::new(Lang::En).unwrap()
+}
+
 fn same_to_4_figures(a: f64, b: f64) -> bool {
     (a - b).abs() <= 5e-4 * b.abs()
 }
@@ -63,7 +67,7 @@ fn same_to_4_figures(a: f64, b: f64) -> bool {
 fn every_builtin_scene_renders_a_complete_self_contained_handout() {
     for scene in builtin_scenes().unwrap() {
         let id = &scene.id;
-        let files = handout::render(&scene, &[Format::Html, Format::Md], None, Lang::En).unwrap();
+        let files = handout::render(&scene, &[Format::Html, Format::Md], None, &english()).unwrap();
         let html = rendered(&files, &format!("{id}.html"));
         let md = rendered(&files, &format!("{id}.md"));
         assert!(html.contains("<style>") && html.contains("@page"), "{id}");
@@ -77,7 +81,7 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
         assert!(html.contains("<math"), "{id}: MathML");
         assert_eq!(html.matches("<section class=\"page\"").count(), 2, "{id}");
         assert!(html.contains("break-after: page"), "{id}: page break");
-        let handout: Handout = handout::build(&scene, &Translator::new(Lang::En).unwrap()).unwrap();
+        let handout: Handout = handout::build(&scene, &english()).unwrap();
         // The figures and the sketch of the apparatus.
         let svgs = html.matches("<svg").count();
         assert!((3..=4).contains(&svgs), "{id}: {svgs} figures");
@@ -141,19 +145,25 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
 #[test]
 fn the_handout_is_deterministic() {
     let scene = handout::find_scene("fig15-double-slip-stick").unwrap();
-    let render = || handout::render(&scene, &[Format::Html, Format::Md], None, Lang::En).unwrap();
+    let render = || handout::render(&scene, &[Format::Html, Format::Md], None, &english()).unwrap();
     assert_eq!(render(), render());
 }
 
 #[test]
 fn markdown_handout_matches_its_snapshot() {
     let scene = handout::find_scene("fig10-linear-slip-stick").unwrap();
-    let files = handout::render(&scene, &[Format::Md], None, Lang::En).unwrap();
+    let files = handout::render(&scene, &[Format::Md], None, &english()).unwrap();
     insta::assert_snapshot!(
         "handout_fig10_md",
         rendered(&files, "fig10-linear-slip-stick.md")
     );
-    let files = handout::render(&scene, &[Format::Md], None, Lang::It).unwrap();
+    let files = handout::render(
+        &scene,
+        &[Format::Md],
+        None,
+        &Translator::new(Lang::It).unwrap(),
+    )
+    .unwrap();
     insta::assert_snapshot!(
         "handout_fig10_md_it",
         rendered(&files, "fig10-linear-slip-stick.md")
@@ -162,6 +172,45 @@ fn markdown_handout_matches_its_snapshot() {
 
 fn stickslip() -> Command {
     Command::cargo_bin("stickslip").unwrap()
+}
+
+/// In Italian, a scenario file's own words stay as written, and the command says so on stderr.
+#[test]
+fn a_scenario_file_in_italian_names_the_phrases_left_in_english() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("my-set.toml");
+    std::fs::write(
+        &file,
+        "model = \"pulled-mass\"\ntitle = \"My own set\"\n[params]\nmu_d = 0.3\n",
+    )
+    .unwrap();
+    let out = stickslip()
+        .args(["handout", "--lang", "it", "--format", "md", "--out"])
+        .arg(dir.path().join("out"))
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "{out:?}");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains("have no it translation and stay in English"),
+        "{stderr}"
+    );
+    let md = std::fs::read_to_string(dir.path().join("out/my-set.md")).unwrap();
+    assert!(md.contains("# My own set") && md.contains("## Equazione del moto"));
+    // The shipped scenario files are entirely in Italian: nothing to note.
+    let out = stickslip()
+        .args([
+            "handout",
+            "scenarios/fig06-continuous-slip.toml",
+            "--lang",
+            "it",
+            "--out",
+        ])
+        .arg(dir.path().join("fig06"))
+        .output()
+        .unwrap();
+    assert!(out.status.success() && out.stderr.is_empty(), "{out:?}");
 }
 
 #[test]
@@ -258,7 +307,16 @@ fn an_unwritable_output_folder_is_refused() {
 #[test]
 fn every_builtin_handout_is_entirely_in_italian() {
     let words = Translator::new(Lang::It).unwrap();
-    for scene in builtin_scenes().unwrap() {
+    let mut scenes = builtin_scenes().unwrap();
+    // The scenario files shipped in scenarios/ too (their titles and descriptions, and the
+    // tool's default caption for a file).
+    for entry in std::fs::read_dir("scenarios").unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_some_and(|e| e == "toml") {
+            scenes.push(Scene::from_file(&path).unwrap());
+        }
+    }
+    for scene in scenes {
         handout::build(&scene, &words).unwrap();
     }
     let missing = words.missing();
@@ -275,7 +333,13 @@ fn every_builtin_handout_is_entirely_in_italian() {
         .into_iter()
         .find(|s| s.id == "fig10-linear-slip-stick")
         .unwrap();
-    let files = handout::render(&scene, &[Format::Html], None, Lang::It).unwrap();
+    let files = handout::render(
+        &scene,
+        &[Format::Html],
+        None,
+        &Translator::new(Lang::It).unwrap(),
+    )
+    .unwrap();
     let html = rendered(&files, "fig10-linear-slip-stick.html");
     assert!(html.contains("<html lang=\"it\">"));
     assert!(html.contains("Equazione del moto") && html.contains("legge armonica"));

@@ -286,15 +286,17 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
     (shown, omitted)
 }
 
-/// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) and, with
-/// a `browser`, prints the HTML to `<id>.pdf`. Nothing is written here.
+/// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) in the
+/// language of `words` and, with a `browser`, prints the HTML to `<id>.pdf`. Nothing is written
+/// here; the phrases left in English are in `words`.
 pub fn render(
     scene: &Scene,
     formats: &[Format],
     browser: Option<&Path>,
-    lang: Lang,
+    words: &Translator,
 ) -> Result<Vec<OutFile>> {
-    let handout = build(scene, &Translator::new(lang)?)?;
+    let lang = words.lang();
+    let handout = build(scene, words)?;
     let mut ctx = tera::Context::new();
     ctx.insert("words", &lang.catalogue()?.section("handout")?);
     ctx.insert("scene", &handout.scene);

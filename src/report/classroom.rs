@@ -47,12 +47,12 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         };
         files.extend(under(
             "handouts",
-            crate::handout::render(scene, formats, None, Lang::En)?,
+            crate::handout::render(scene, formats, None, &Translator::new(Lang::En)?)?,
         ));
         // The same handout in Italian, beside it.
         files.extend(under(
             "handouts/it",
-            crate::handout::render(scene, formats, None, Lang::It)?,
+            crate::handout::render(scene, formats, None, &Translator::new(Lang::It)?)?,
         ));
         links.push(Material {
             html: format!("handouts/{id}.html"),

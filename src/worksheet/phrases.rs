@@ -95,8 +95,11 @@ fn has_word(text: &str) -> bool {
         .any(|run| run.len() >= 3)
 }
 
-/// `text` with each number (digits, a decimal part) replaced by `#i` in order, and the
-/// numbers.
+/// The characters of a power written after its number.
+const SUPERSCRIPTS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹⁻";
+
+/// `text` with each number (digits, a decimal part, a power in superscripts) replaced by `#i`
+/// in order, and the numbers.
 pub fn mask(text: &str) -> (String, Vec<String>) {
     let mut key = String::with_capacity(text.len());
     let mut numbers = Vec::new();
@@ -108,12 +111,17 @@ pub fn mask(text: &str) -> (String, Vec<String>) {
         }
         let mut end = start + 1;
         let mut seen_point = false;
+        let mut exponent = false;
         while let Some(&(i, next)) = chars.peek() {
-            let decimal_point = next == '.'
+            let decimal_point = !exponent
+                && next == '.'
                 && !seen_point
                 && text[i + 1..].starts_with(|d: char| d.is_ascii_digit());
-            if next.is_ascii_digit() || decimal_point {
+            // A power written in superscripts belongs to its number (10⁻¹⁶, 2³).
+            let superscript = SUPERSCRIPTS.contains(next);
+            if (!exponent && next.is_ascii_digit()) || decimal_point || superscript {
                 seen_point |= decimal_point;
+                exponent |= superscript;
                 end = i + next.len_utf8();
                 chars.next();
             } else {
@@ -185,6 +193,9 @@ mod tests {
         assert_eq!(key, "The pull F = #0 N against (#1), Fig. #2.");
         assert_eq!(numbers, ["0.1", "20", "10"]);
         assert_eq!(mask("μs² and D^{3/2}").0, "μs² and D^{#0/#1}");
+        let (key, numbers) = mask("error 1.6 × 10⁻¹⁶, 2³ not 2²");
+        assert_eq!(key, "error #0 × #1, #2 not #3");
+        assert_eq!(numbers, ["1.6", "10⁻¹⁶", "2³", "2²"]);
     }
 
     #[test]
