@@ -8,6 +8,7 @@
 //! Without them the test is skipped locally but fails on CI (CI=true).
 
 mod common;
+use common::find;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -17,15 +18,6 @@ use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
 use stickslip::worksheet::phrases::Translator;
 use stickslip::worksheet::Lang;
-
-fn find(names: &[&str]) -> Option<PathBuf> {
-    names.iter().find_map(|n| {
-        let out = Command::new("which").arg(n).output().ok()?;
-        out.status
-            .success()
-            .then(|| PathBuf::from(String::from_utf8_lossy(&out.stdout).trim()))
-    })
-}
 
 /// Chromium, pdftotext and pdfinfo; `None` (the test skips) when one is missing, which CI
 /// (CI=true) does not allow.

@@ -13,6 +13,7 @@
 //! test is skipped locally but fails on CI (CI=true).
 
 mod common;
+use common::find;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -26,15 +27,6 @@ const FIRST_RENDER_MS: f64 = 1000.0;
 const REDRAW_MS: f64 = 16.0;
 /// Margin on the time budgets for a machine shared with other builds.
 const MARGIN: f64 = 3.0;
-
-fn find(names: &[&str]) -> Option<PathBuf> {
-    names.iter().find_map(|n| {
-        let out = Command::new("which").arg(n).output().ok()?;
-        out.status
-            .success()
-            .then(|| PathBuf::from(String::from_utf8_lossy(&out.stdout).trim()))
-    })
-}
 
 /// Chromium, node and the folder of axe-core and playwright-core; `None` (skip) when one is
 /// missing, which CI (CI=true) does not allow.

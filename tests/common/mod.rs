@@ -2,10 +2,20 @@
 // Each test binary compiles this module and uses only some of it.
 #![allow(dead_code)]
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
 use stickslip::report::OutFile;
+
+/// The first of the programs `names` on PATH (the browser tests' tools).
+pub fn find(names: &[&str]) -> Option<PathBuf> {
+    names.iter().find_map(|n| {
+        let out = std::process::Command::new("which").arg(n).output().ok()?;
+        out.status
+            .success()
+            .then(|| PathBuf::from(String::from_utf8_lossy(&out.stdout).trim()))
+    })
+}
 
 /// The text of the rendered file `name` among `files`.
 pub fn rendered<'a>(files: &'a [OutFile], name: &str) -> &'a str {
