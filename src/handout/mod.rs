@@ -113,8 +113,8 @@ pub fn list() -> Result<String> {
         .collect())
 }
 
-/// The handout of `scene` in `lang`: context, figures and claims. Phrases without a
-/// translation stay in English and are listed by `words` ([`Translator::missing`]).
+/// The handout of `scene` in the language of `words`: context, figures and claims. Phrases
+/// without a translation stay in English and are listed by `words` ([`Translator::missing`]).
 pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
     let (pulled, wood) = claim_params(scene);
     let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
@@ -197,7 +197,7 @@ fn translate_scene(ctx: &mut SceneCtx, words: &Translator) {
     ctx.sketch.svg = words.svg(&ctx.sketch.svg);
     for p in &mut ctx.params {
         p.name = words.text(&p.name);
-        p.value = lang.number(&p.value);
+        p.value = words.text(&p.value);
     }
     for line in &mut ctx.motion {
         line.note = words.text(&line.note);
