@@ -254,6 +254,63 @@ fn textbook_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats)
     last
 }
 
+/// FNV-1a over the bits of every event time, the final state and the work counters of `dopri5`
+/// on both models, both laws and the tolerances 1e-2 … 1e-12, printed per problem: a change
+/// meant to keep the method's results bit for bit is checked by comparing the output before
+/// and after it.
+fn fingerprints() {
+    use stickslip::models::woodpecker::{self, WoodpeckerParams};
+    let mut problems = vec![
+        ("slide".to_string(), pulled(0.5)),
+        ("late stick".to_string(), pulled(0.185)),
+    ];
+    for (name, law) in [("linear", LawKind::Linear), ("harmonic", LawKind::Harmonic)] {
+        let p = PulledMassParams {
+            mu_s: 0.4,
+            mu_d: 0.35,
+            force: 0.10,
+            ..PulledMassParams::default()
+        };
+        let law_p = pulled_mass::force_law(&p, law).expect("a valid force law");
+        problems.push((
+            format!("set B {name}"),
+            Problem {
+                body: pulled_mass::body(&p),
+                t_end: PERIODS * law_p.period,
+                law: law_p,
+            },
+        ));
+        let w = WoodpeckerParams::default();
+        let law_w = woodpecker::force_law(&w, law).expect("a valid force law");
+        problems.push((
+            format!("woodpecker {name}"),
+            Problem {
+                body: woodpecker::body(&w),
+                t_end: PERIODS * law_w.period,
+                law: law_w,
+            },
+        ));
+    }
+    for (name, problem) in &problems {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut mix = |x: u64| h = (h ^ x).wrapping_mul(0x0100_0000_01b3);
+        let mut steps = Vec::new();
+        for k in 2..=12 {
+            let tol = 10f64.powi(-k);
+            let s = Dopri5.solve(problem, Setting::Tolerance(tol)).expect("integrates");
+            s.events.iter().for_each(|e| mix(e.t.to_bits()));
+            mix(s.x_end.to_bits());
+            mix(s.v_end.to_bits());
+            let st = s.stats;
+            for x in [st.rhs_evals, st.steps, st.accepted, st.rejected, st.events] {
+                mix(x);
+            }
+            steps.push(st.accepted);
+        }
+        println!("{name}: {h:016x}, accepted steps at 1e-2 … 1e-12 {steps:?}");
+    }
+}
+
 fn main() {
     // `cargo bench` passes `--bench`; the positional arguments are the mode, tol and runs.
     let args: Vec<String> = std::env::args()
@@ -277,6 +334,9 @@ fn main() {
             "textbook: x_end {:e} m, v_end {:e} m/s, {stats:?}",
             y[0], y[1]
         );
+    }
+    if mode == "fingerprint" {
+        fingerprints();
     }
     if mode == "set-b" {
         let s = ours_repeatedly(&pulled(0.10), tol, runs);
