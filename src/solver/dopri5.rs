@@ -366,6 +366,66 @@ fn smooth(
     Ok(run.y)
 }
 
+/// D(t) and N_f(t) of a problem, bit for bit [`Problem::forces`], with the period index k and
+/// the piece of the previous call remembered: the right-hand side is evaluated many times per
+/// piece, so the general lookup (a `rem_euclid`, a search over the pieces, and once for D and
+/// once for N_f) is done only when t leaves the piece.
+///
+/// ```text
+/// fast path: τ = fma(−k, T, t) (one rounding of t − kT); if τ ∈ [start, end) of the piece,
+///            τ is exactly t mod T and the piece is the one containing it
+/// ```
+///
+/// Why bit for bit: t mod T (`fmod`) is the exactly representable t − nT with n = ⌊t/T⌋ for
+/// t ≥ 0. The fused τ is the rounding of the real t − kT; rounding is monotone and the piece
+/// bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T), hence
+/// k = n, the real value is representable and τ equals it. The piece containing τ is the one
+/// [`crate::engine::ForceLaw::piece_at`] picks.
+struct Forces<'a> {
+    problem: &'a Problem,
+    /// Period index k (as f64) and piece index of the last general lookup (NaN: none yet).
+    cache: std::cell::Cell<(f64, usize)>,
+}
+
+impl<'a> Forces<'a> {
+    fn new(problem: &'a Problem) -> Self {
+        Self {
+            problem,
+            cache: std::cell::Cell::new((f64::NAN, 0)),
+        }
+    }
+
+    /// (D, N_f) at absolute time t (N).
+    #[inline]
+    fn at(&self, t: f64) -> (f64, f64) {
+        let law = &self.problem.law;
+        let (k, i) = self.cache.get();
+        if let Some(piece) = law.pieces.get(i) {
+            let local = (-k).mul_add(law.period, t);
+            if local >= piece.start && local < piece.end {
+                let b = piece.basis.eval(local);
+                return (piece.drive.at(b), piece.normal.at(b));
+            }
+        }
+        self.lookup(t)
+    }
+
+    /// The general path: [`Problem::forces`], remembering k and the piece.
+    #[cold]
+    fn lookup(&self, t: f64) -> (f64, f64) {
+        let law = &self.problem.law;
+        let local = t.rem_euclid(law.period);
+        let i = law
+            .pieces
+            .partition_point(|p| p.end <= local)
+            .min(law.pieces.len() - 1);
+        self.cache.set((((t - local) / law.period).round(), i));
+        let piece = &law.pieces[i];
+        let b = piece.basis.eval(local);
+        (piece.drive.at(b), piece.normal.at(b))
+    }
+}
+
 /// Switching-function checks per accepted step: the interpolant is sampled at this many
 /// equally spaced points (the last one is the step end), plus every zero of its derivative
 /// found between samples.
@@ -460,6 +520,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
     let mut dir = 0.0_f64;
     let mut at_same_time = (t, 0u32);
     let mut record = |t: f64, kind: &'static str| events.push(MethodEvent { t, kind });
+    let forces = Forces::new(problem);
     'phases: while t < problem.t_end {
         if at_same_time.0 == t {
             at_same_time.1 += 1;
@@ -473,9 +534,9 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             at_same_time = (t, 0);
         }
         if dir == 0.0 {
-            let mut stuck = Stuck::new(problem, t, x, &mut stats);
+            let mut stuck = Stuck::new(&forces, t, x, &mut stats);
             loop {
-                match stuck.advance(problem, opts, &mut stats)? {
+                match stuck.advance(&forces, opts, &mut stats)? {
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
                         record(onset, "slip");
@@ -491,7 +552,11 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             }
         }
         let s = dir;
-        let f = move |t: f64, y: State| [y[1], problem.slip_acceleration(t, s)];
+        let body = problem.body;
+        let f = |t: f64, y: State| {
+            let (d, n) = forces.at(t);
+            [y[1], body.slip_acceleration(d, n, s)]
+        };
         let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, &mut stats);
         loop {
             match slip_advance(&mut slide, s, problem, opts, &mut stats)? {
@@ -603,8 +668,8 @@ struct Stuck {
 }
 
 impl Stuck {
-    fn new(problem: &Problem, t: f64, x: f64, stats: &mut Stats) -> Self {
-        let g = margin(problem, t, stats);
+    fn new(forces: &Forces, t: f64, x: f64, stats: &mut Stats) -> Self {
+        let g = margin(forces, t, stats);
         Self {
             t,
             x,
@@ -612,7 +677,8 @@ impl Stuck {
         }
     }
 
-    fn advance(&mut self, problem: &Problem, opts: &Options, stats: &mut Stats) -> Result<Advance> {
+    fn advance(&mut self, forces: &Forces, opts: &Options, stats: &mut Stats) -> Result<Advance> {
+        let problem = forces.problem;
         let (t0, g0) = self.last[1];
         if t0 == self.t && g0 > 0.0 {
             return Ok(Advance::Event { t: t0, x: self.x });
@@ -635,11 +701,11 @@ impl Stuck {
             } else {
                 self.t + (stop - self.t) * f64::from(j) / f64::from(STUCK_SAMPLES)
             };
-            let gj = margin(problem, tj, stats);
+            let gj = margin(forces, tj, stats);
             let [(ta, ga), (tb, gb)] = self.last;
             if gj > 0.0 {
                 let te = locate(
-                    |t| stuck_side(margin(problem, t, stats)),
+                    |t| stuck_side(margin(forces, t, stats)),
                     (tb, -gb),
                     (tj, -gj),
                 );
@@ -647,9 +713,9 @@ impl Stuck {
             }
             if gb > ga && gb > gj {
                 // A sampled maximum below 0: look for the true maximum between the neighbours.
-                let (tm, gm) = maximize(|t| margin(problem, t, stats), ta, (tb, gb), tj);
+                let (tm, gm) = maximize(|t| margin(forces, t, stats), ta, (tb, gb), tj);
                 if gm > 0.0 {
-                    let side = |t| stuck_side(margin(problem, t, stats));
+                    let side = |t| stuck_side(margin(forces, t, stats));
                     let te = locate(side, (ta, -ga), (tm, -gm));
                     return Ok(Advance::Event { t: te, x: self.x });
                 }
@@ -670,10 +736,10 @@ fn stuck_side(g: f64) -> (bool, f64) {
 }
 
 /// G(t) = |D| − μs N_f (N), counted as one right-hand-side evaluation.
-fn margin(problem: &Problem, t: f64, stats: &mut Stats) -> f64 {
+fn margin(forces: &Forces, t: f64, stats: &mut Stats) -> f64 {
     stats.rhs_evals += 1;
-    let (d, n) = problem.forces(t);
-    d.abs() - problem.body.mu_s * n
+    let (d, n) = forces.at(t);
+    d.abs() - forces.problem.body.mu_s * n
 }
 
 /// Golden-section search for the maximum of f on [a, c] given fb = f(b) ≥ f(a), f(c), to
