@@ -127,6 +127,26 @@ impl Dense {
         })
     }
 
+    /// True when component `i` of the interpolant times `s` is positive on the whole step by
+    /// a margin that covers the rounding of any evaluation of it: its Bernstein coefficients
+    /// on θ ∈ [0, 1] (the polynomial lies in their convex hull) all exceed 64 ε Σ|r_j|.
+    ///
+    /// ```text
+    /// p = r1 + θ r2 + θ(1−θ) r3 + θ²(1−θ) r4 + θ²(1−θ)² r5      degree 4, Bernstein:
+    /// c0 = r1                    c1 = r1 + (r2 + r3)/4           c2 = r1 + r2/2 + r3/3 + (r4 + r5)/6
+    /// c3 = r1 + 3r2/4 + (r3 + r4)/4                              c4 = r1 + r2
+    /// ```
+    fn positive(&self, i: usize, s: f64) -> bool {
+        let [r1, r2, r3, r4, r5] = self.r.map(|r| s * r[i]);
+        let margin =
+            64.0 * f64::EPSILON * (r1.abs() + r2.abs() + r3.abs() + r4.abs() + r5.abs());
+        let c1 = r1 + 0.25 * (r2 + r3);
+        let c2 = r1 + 0.5 * r2 + r3 / 3.0 + (r4 + r5) / 6.0;
+        let c3 = r1 + 0.75 * r2 + 0.25 * (r3 + r4);
+        let c4 = r1 + r2;
+        r1.min(c1).min(c2).min(c3).min(c4) > margin
+    }
+
     /// Time derivative of the interpolant at time t.
     fn dy(&self, t: f64) -> State {
         let th = (t - self.t0) / self.h;
@@ -614,6 +634,11 @@ fn slip_advance<F: Fn(f64, State) -> State>(
 /// bracketed between them (d(s·v)/dt from − to +): a dip of s·v below 0 and back inside one
 /// step is seen (SciPy issue 9228 is this dip missed).
 fn first_stick(dense: &Dense, s: f64, samples: u32) -> Option<f64> {
+    // Most steps are far from a stick: s·v > 0 on the whole step, so every sample below
+    // would be positive and nothing would be found.
+    if dense.positive(1, s) {
+        return None;
+    }
     let g = |t: f64| s * dense.y(t)[1];
     let dg = |t: f64| s * dense.dy(t)[1];
     let t0 = dense.t0;
@@ -868,6 +893,45 @@ mod tests {
             "a blow-up is reported, not hidden: {nan:?}"
         );
         assert!(try_solve_smooth(|_, y| [y[1] * y[1], 0.0], 0.0, [0.0, 1e300], 1.0, 1e-6).is_err());
+    }
+
+    #[test]
+    fn the_positivity_test_of_the_interpolant_uses_its_bernstein_coefficients() {
+        let r = [[0.0, 0.3], [0.0, -0.7], [0.0, 1.9], [0.0, -2.3], [0.0, 4.1]];
+        let dense = Dense {
+            t0: 0.0,
+            t1: 1.0,
+            h: 1.0,
+            r,
+            y1: [0.0, -0.4],
+        };
+        // The coefficients of the doc comment, against p(θ) written in the Bernstein basis.
+        let [r1, r2, r3, r4, r5] = r.map(|r| r[1]);
+        let c = [
+            r1,
+            r1 + 0.25 * (r2 + r3),
+            r1 + 0.5 * r2 + r3 / 3.0 + (r4 + r5) / 6.0,
+            r1 + 0.75 * r2 + 0.25 * (r3 + r4),
+            r1 + r2,
+        ];
+        for th in [0.0, 0.1, 0.37, 0.5, 0.81, 1.0] {
+            let u: f64 = 1.0 - th;
+            let bernstein: f64 = (0..5)
+                .map(|k| {
+                    let binomial = [1.0, 4.0, 6.0, 4.0, 1.0][k];
+                    c[k] * binomial * th.powi(k as i32) * u.powi(4 - k as i32)
+                })
+                .sum();
+            let p = r1 + th * (r2 + u * (r3 + th * (r4 + u * r5)));
+            assert!((bernstein - p).abs() < 1e-14, "θ = {th}: {bernstein} vs {p}");
+        }
+        assert!(!dense.positive(1, 1.0), "p(1) = −0.4");
+        let lifted = Dense {
+            r: [[0.0, 3.0], r[1], r[2], r[3], r[4]],
+            ..dense
+        };
+        assert!(lifted.positive(1, 1.0), "every coefficient > 0: {c:?} + 2.7");
+        assert!(!lifted.positive(1, -1.0));
     }
 
     #[test]
