@@ -386,43 +386,45 @@ fn smooth(
     Ok(run.y)
 }
 
-/// D(t) and N_f(t) of a problem, bit for bit [`Problem::forces`], with the period index k and
-/// the piece of the previous call remembered: the right-hand side is evaluated many times per
-/// piece, so the general lookup (a `rem_euclid`, a search over the pieces, and once for D and
-/// once for N_f) is done only when t leaves the piece.
+/// D(t) and N_f(t) of a problem, bit for bit [`Problem::forces`], with the period and the
+/// piece of the previous call remembered: the right-hand side is evaluated many times per
+/// piece, so the general lookup (a `rem_euclid`, a search over the pieces, and all of it once
+/// for D and once for N_f) is done only when t leaves the piece.
 ///
 /// ```text
-/// fast path: τ = fma(−k, T, t) (one rounding of t − kT); if τ ∈ [start, end) of the piece,
-///            τ is exactly t mod T and the piece is the one containing it
+/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), once per lookup)
+/// fast path: τ = (t − hi) − lo; taken when t − hi is exact (hi = 0 or hi/2 ≤ t ≤ 2 hi,
+///            Sterbenz) and τ ∈ [start, end) of the remembered piece
 /// ```
 ///
 /// Why bit for bit: t mod T (`fmod`) is the exactly representable t − nT with n = ⌊t/T⌋ for
-/// t ≥ 0. The fused τ is the rounding of the real t − kT; rounding is monotone and the piece
-/// bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T), hence
-/// k = n, the real value is representable and τ equals it. The piece containing τ is the one
-/// [`crate::engine::ForceLaw::piece_at`] picks.
+/// t ≥ 0. With t − hi exact, τ is the one rounding of the real t − kT; rounding is monotone
+/// and the piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈
+/// [0, T), hence k = n, the real value is representable and τ equals it; the piece containing
+/// τ is the one [`crate::engine::ForceLaw::piece_at`] picks.
 struct Forces<'a> {
     problem: &'a Problem,
-    /// Period index k (as f64) and piece index of the last general lookup (NaN: none yet).
-    cache: std::cell::Cell<(f64, usize)>,
+    /// hi, lo of the last general lookup (NaN: none yet) and its piece.
+    cache: std::cell::Cell<(f64, f64, usize)>,
 }
 
 impl<'a> Forces<'a> {
     fn new(problem: &'a Problem) -> Self {
         Self {
             problem,
-            cache: std::cell::Cell::new((f64::NAN, 0)),
+            cache: std::cell::Cell::new((f64::NAN, 0.0, 0)),
         }
     }
 
     /// (D, N_f) at absolute time t (N).
     #[inline]
     fn at(&self, t: f64) -> (f64, f64) {
-        let law = &self.problem.law;
-        let (k, i) = self.cache.get();
-        if let Some(piece) = law.pieces.get(i) {
-            let local = (-k).mul_add(law.period, t);
-            if local >= piece.start && local < piece.end {
+        let (hi, lo, i) = self.cache.get();
+        let pieces = &self.problem.law.pieces;
+        if let Some(piece) = pieces.get(i) {
+            let local = (t - hi) - lo;
+            let exact = hi == 0.0 || (0.5 * hi <= t && t <= 2.0 * hi);
+            if exact && local >= piece.start && local < piece.end {
                 let b = piece.basis.eval(local);
                 return (piece.drive.at(b), piece.normal.at(b));
             }
@@ -430,7 +432,7 @@ impl<'a> Forces<'a> {
         self.lookup(t)
     }
 
-    /// The general path: [`Problem::forces`], remembering k and the piece.
+    /// The general path: [`Problem::forces`], remembering the period and the piece.
     #[cold]
     fn lookup(&self, t: f64) -> (f64, f64) {
         let law = &self.problem.law;
@@ -439,7 +441,9 @@ impl<'a> Forces<'a> {
             .pieces
             .partition_point(|p| p.end <= local)
             .min(law.pieces.len() - 1);
-        self.cache.set((((t - local) / law.period).round(), i));
+        let k = ((t - local) / law.period).round();
+        let hi = k * law.period;
+        self.cache.set((hi, k.mul_add(law.period, -hi), i));
         let piece = &law.pieces[i];
         let b = piece.basis.eval(local);
         (piece.drive.at(b), piece.normal.at(b))
@@ -578,8 +582,9 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             [y[1], body.slip_acceleration(d, n, s)]
         };
         let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, &mut stats);
+        let mut stop = f64::NAN;
         loop {
-            match slip_advance(&mut slide, s, problem, opts, &mut stats)? {
+            match slip_advance(&mut slide, &mut stop, s, problem, opts, &mut stats)? {
                 Advance::Step => {}
                 Advance::Event { t: te, x: xe } => {
                     (t, x) = (te, xe);
@@ -607,15 +612,20 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
 
 /// One accepted slipping step up to the next breakpoint of the force law or t_end, with the
 /// stick switching function s·v checked on the step's interpolant.
+/// `stop` is the end of the previous step's search (NaN at the start of a slip): it is still
+/// the next breakpoint while it lies beyond the slack of [`next_breakpoint`].
 fn slip_advance<F: Fn(f64, State) -> State>(
     run: &mut Integrator<F>,
+    stop: &mut f64,
     s: f64,
     problem: &Problem,
     opts: &Options,
     stats: &mut Stats,
 ) -> Result<Advance> {
-    let stop = next_breakpoint(problem, run.t).min(problem.t_end);
-    let dense = run.step(stop, opts.h_max, stats)?;
+    if !(*stop > run.t + 4.0 * f64::EPSILON * run.t.abs()) {
+        *stop = next_breakpoint(problem, run.t).min(problem.t_end);
+    }
+    let dense = run.step(*stop, opts.h_max, stats)?;
     let samples = if opts.interior_checks { SAMPLES } else { 1 };
     if let Some(te) = first_stick(&dense, s, samples) {
         return Ok(Advance::Event {
