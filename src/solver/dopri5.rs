@@ -392,16 +392,17 @@ fn smooth(
 /// for D and once for N_f) is done only when t leaves the piece.
 ///
 /// ```text
-/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), once per lookup)
-/// fast path: τ = (t − hi) − lo; taken when t − hi is exact (hi = 0 or hi/2 ≤ t ≤ 2 hi,
-///            Sterbenz) and τ ∈ [start, end) of the remembered piece
+/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), once per lookup, for t ≥ 0)
+/// fast path: τ = (t − hi) − lo, taken when τ ∈ [start, end) of the remembered piece
 /// ```
 ///
-/// Why bit for bit: t mod T (`fmod`) is the exactly representable t − nT with n = ⌊t/T⌋ for
-/// t ≥ 0. With t − hi exact, τ is the one rounding of the real t − kT; rounding is monotone
-/// and the piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈
-/// [0, T), hence k = n, the real value is representable and τ equals it; the piece containing
-/// τ is the one [`crate::engine::ForceLaw::piece_at`] picks.
+/// Why bit for bit: t mod T (`fmod`, what `rem_euclid` is for t ≥ 0) is the exactly
+/// representable t − nT with n = ⌊t/T⌋. τ is the one rounding of the real t − kT: either
+/// lo = 0 (k = 0, 1, 2, …: kT exact), or k ≥ 3 and t − hi is exact (Sterbenz) unless t < hi/2
+/// or t > 2 hi, where |t − hi| ≥ hi/2 > T puts τ outside [0, T). Rounding is monotone and the
+/// piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T),
+/// hence k = n, the real value is representable and τ equals it; the piece containing τ is
+/// the one [`crate::engine::ForceLaw::piece_at`] picks.
 struct Forces<'a> {
     problem: &'a Problem,
     /// hi, lo of the last general lookup (NaN: none yet) and its piece.
@@ -423,8 +424,7 @@ impl<'a> Forces<'a> {
         let pieces = &self.problem.law.pieces;
         if let Some(piece) = pieces.get(i) {
             let local = (t - hi) - lo;
-            let exact = hi == 0.0 || (0.5 * hi <= t && t <= 2.0 * hi);
-            if exact && local >= piece.start && local < piece.end {
+            if local >= piece.start && local < piece.end {
                 let b = piece.basis.eval(local);
                 return (piece.drive.at(b), piece.normal.at(b));
             }
@@ -441,9 +441,11 @@ impl<'a> Forces<'a> {
             .pieces
             .partition_point(|p| p.end <= local)
             .min(law.pieces.len() - 1);
-        let k = ((t - local) / law.period).round();
-        let hi = k * law.period;
-        self.cache.set((hi, k.mul_add(law.period, -hi), i));
+        if t >= 0.0 {
+            let k = ((t - local) / law.period).round();
+            let hi = k * law.period;
+            self.cache.set((hi, k.mul_add(law.period, -hi), i));
+        }
         let piece = &law.pieces[i];
         let b = piece.basis.eval(local);
         (piece.drive.at(b), piece.normal.at(b))
