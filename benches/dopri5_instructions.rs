@@ -44,7 +44,7 @@ use std::hint::black_box;
 use stickslip::engine::Body;
 use stickslip::models::pulled_mass::{self, PulledMassParams};
 use stickslip::models::LawKind;
-use stickslip::solver::dopri5::Dopri5;
+use stickslip::solver::dopri5::{try_solve_smooth, Dopri5};
 use stickslip::solver::{Method, Problem, Setting, Solution, Stats};
 
 /// Periods per run.
@@ -311,6 +311,34 @@ fn fingerprints() {
     }
 }
 
+/// `runs` integrations of the same slip equation by the tool's plain DOPRI5
+/// ([`try_solve_smooth`]: the integrator without the stick/slip machinery, dense output still
+/// formed every step) with the textbook's right-hand side, from 0 to t_end without stops; the
+/// function callgrind collects in.
+#[inline(never)]
+fn smooth_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats) {
+    let piece = problem.law.pieces[0];
+    let omega = match piece.basis {
+        stickslip::engine::Basis::Cos { omega } => omega,
+        stickslip::engine::Basis::Linear { .. } => unreachable!("the harmonic law"),
+    };
+    let body: Body = problem.body;
+    let mut last = ([0.0; 2], Stats::default());
+    for _ in 0..runs {
+        let (piece, body) = black_box((piece, body));
+        let f = move |t: f64, y: State| {
+            let b = (omega * t).cos();
+            [
+                y[1],
+                body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), 1.0),
+            ]
+        };
+        last = try_solve_smooth(f, 0.0, [0.0; 2], problem.t_end, black_box(tol))
+            .expect("the slip integrates");
+    }
+    last
+}
+
 fn main() {
     // `cargo bench` passes `--bench`; the positional arguments are the mode, tol and runs.
     let args: Vec<String> = std::env::args()
@@ -334,6 +362,10 @@ fn main() {
             "textbook: x_end {:e} m, v_end {:e} m/s, {stats:?}",
             y[0], y[1]
         );
+    }
+    if mode == "smooth" {
+        let (y, stats) = smooth_repeatedly(&slide, tol, runs);
+        println!("smooth: x_end {:e} m, v_end {:e} m/s, {stats:?}", y[0], y[1]);
     }
     if mode == "fingerprint" {
         fingerprints();
