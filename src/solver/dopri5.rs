@@ -987,8 +987,9 @@ mod tests {
         assert!(!dense(r).positive(1, -1.0));
         // Zero at θ = ½ (0.3 + 0.1 − 0.4): not positive.
         assert!(!dense([0.3, 0.2, -1.6, 0.0, 0.0]).positive(1, 1.0));
-        // Positive (min 0.13 at θ = ½), but the bound does not show it: the samples decide.
-        assert!(!dense([0.3, 0.2, -1.08, 0.0, 0.0]).positive(1, 1.0));
+        // Positive (min ≈ 0.043 at θ = 3/7), but the bound 0.3 − 1.4/4 does not show it:
+        // the samples decide.
+        assert!(!dense([0.3, 0.2, -1.4, 0.0, 0.0]).positive(1, 1.0));
         // A NaN is not positive.
         assert!(!dense([f64::NAN, 0.2, 0.0, 0.0, 0.0]).positive(1, 1.0));
         // Sampled: the bound holds wherever it says positive.
