@@ -14,9 +14,11 @@
 //!   where the right-hand side has kinks) and at t_end.
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
 //!   Shampine's coefficients), which matches y and y' at both step ends.
-//! * Stick events: s·v on the interpolant is sampled at 8 points of every accepted step and at
-//!   every minimum of s·v bracketed between them (where the interpolated s·a goes from − to +),
-//!   so that a dip below zero and back inside one step is not missed (SciPy issue 9228);
+//! * Stick events: a step on which s·v of the interpolant is provably positive (a lower bound
+//!   from its coefficients, [`Dense::positive`]) has none; otherwise s·v is sampled at 8 points
+//!   of the step and at every minimum of s·v bracketed between them (where the interpolated
+//!   s·a goes from − to +), so that a dip below zero and back inside one step is not missed
+//!   (SciPy issue 9228);
 //!   the first crossing is located by Illinois regula falsi on the interpolant to a few ulps of
 //!   t. [`Dopri5EndpointsOnly`] checks the step ends only, to show that failure.
 //! * Transitions (physics.md §0): at a stick time v := 0; STUCK if |D| ≤ μs N_f, otherwise a
@@ -26,6 +28,11 @@
 //!   maxima refined by golden-section search, so a brief excursion above 0 is seen); the onset
 //!   is located on the exact force law by the same root finder, direction sgn D. Each G
 //!   evaluation counts as one right-hand-side evaluation, each T/16 stretch as one step.
+//! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage, on the
+//!   piece remembered from the previous evaluation ([`Forces`]), with no check at all on a
+//!   step known to stay on that piece; the next breakpoint is kept while ahead. About 1.45×
+//!   the instructions per step of a textbook DOPRI5 on the same slip equation (3.8× before),
+//!   with the same bits in every result.
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
