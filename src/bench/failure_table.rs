@@ -347,7 +347,12 @@ fn order_row(m: &str, orders: &[OrderFit], pts: &[&SweepPoint]) -> FailureRow {
             "{measured}; the sign(v) law never uses μs, so its runs converge to a μd-only motion, \
              not to the stick-slip solution"
         );
-        return row(m, "converges to a different model (μd only)", measured, true);
+        return row(
+            m,
+            "converges to a different model (μd only)",
+            measured,
+            true,
+        );
     }
     row(m, "order loss across events", measured, fails)
 }
