@@ -674,7 +674,8 @@ fn slip_advance(
     stats: &mut Stats,
 ) -> Result<Advance> {
     let problem = forces.problem;
-    if !(*stop > run.t + 4.0 * f64::EPSILON * run.t.abs()) {
+    let ahead = run.t + 4.0 * f64::EPSILON * run.t.abs();
+    if (*stop).partial_cmp(&ahead) != Some(std::cmp::Ordering::Greater) {
         *stop = next_breakpoint(problem, run.t).min(problem.t_end);
     }
     let body = problem.body;
