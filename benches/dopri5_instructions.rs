@@ -1,0 +1,418 @@
+//! Instructions per accepted step of the tool's `dopri5` against a textbook DOPRI5: a driver
+//! for `valgrind --tool=callgrind` (instruction counts do not depend on the load of the
+//! machine).
+//!
+//! The stretch: the pulled mass with F = 0.5 N > 2 μs W (μs 0.4, μd 0.35, other parameters
+//! default, harmonic law) over 20 periods: it slips at t = 0 and never sticks (physics.md
+//! §1.5), so `Dopri5` integrates the one smooth slip equation
+//!
+//! ```text
+//! x' = v,   v' = (F − μd W (1 + cos ωt)) / M        (s = +1 throughout)
+//! ```
+//!
+//! with all its machinery (stick switching function checked on every step's interpolant,
+//! steps ending at the period boundaries, the breakpoints of the force law). The textbook
+//! DOPRI5 below integrates the same equation: Hairer's tableau with FSAL, the same error norm
+//! (RMS, atol = rtol = tol), controller (0.9 err^(−1/5) clamped to [0.2, 5], no growth after
+//! a rejection), first step (Hairer's heuristic) and landing on the same period boundaries, so
+//! that both take the same steps; its right-hand side is what a hand-written one would be (one
+//! cosine per evaluation, no piece lookup); no events, no dense output. Measure: instructions
+//! collected in `ours_repeatedly` resp. `textbook_repeatedly` divided by runs × accepted
+//! steps (the driver prints the steps; the slip-onset check at t = 0 counts in `ours`).
+//!
+//! ```text
+//! cargo bench --bench dopri5_instructions --no-run
+//! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*ours_repeatedly*' \
+//!     target/release/deps/dopri5_instructions-<hash> ours 1e-8 200
+//! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*textbook_repeatedly*' \
+//!     target/release/deps/dopri5_instructions-<hash> textbook 1e-8 200
+//! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*smooth_repeatedly*' \
+//!     target/release/deps/dopri5_instructions-<hash> smooth 1e-8 200
+//! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*ours_repeatedly*' \
+//!     target/release/deps/dopri5_instructions-<hash> set-b 1e-8 200
+//! target/release/deps/dopri5_instructions-<hash> fingerprint
+//! callgrind_annotate --inclusive=yes callgrind.out.<pid>
+//! ```
+//!
+//! Arguments: `ours`, `textbook`, `smooth` (the tool's plain DOPRI5, `try_solve_smooth`, with
+//! the textbook's right-hand side from 0 to t_end: the integrator without the stick/slip
+//! machinery; no stops, so its steps differ slightly), `set-b` (ours on the stick-slip set B,
+//! harmonic law, 20 periods, 40 events: the stick checks at work) or `fingerprint` (bits of
+//! dopri5's results on 6 problems × 11 tolerances, to check that a change keeps them); then
+//! the tolerance (default 1e-8) and the runs (default 200).
+//!
+//! Measured (instructions per accepted step = collected / (200 runs × accepted steps); ours
+//! and the textbook take the same steps: 216 accepted + 25 rejected at 1e-8, 44 + 0 at 1e-4,
+//! 1277 + 0 at 1e-12):
+//!
+//! ```text
+//!                              tol 1e-4   tol 1e-8   tol 1e-12
+//! textbook DOPRI5                  894        979         880
+//! ours before (f6f836f)           3325       3700        3378    (3.7–3.8× the textbook)
+//! ours after                      1454       1433        1276    (1.45–1.6×)
+//! ours plain integrator (smooth)     –       1149           –    (1.17×; 208 + 26 steps)
+//! set B (stick-slip), ours     before 3104, after 1403 per accepted step (342 + 19 steps)
+//! ```
+//!
+//! Where ours' 1433 go at 1e-8 (textbook 979): cos 599 (the textbook's 546: the law
+//! evaluates cos ω·(t mod T), reduced arguments take glibc's costlier path for
+//! ω·t ∈ [0.86, 2.4], +8 per call), pow 140 (same), the integrator 456 (textbook 292: dense
+//! output formed every step, stall checks), the stick/slip machinery ≈ 230 (piece and
+//! breakpoint tracking, the positivity bound of s·v on the interpolant, the step's
+//! dispatch and restart state). Before: 2 cosines, 4 `fmod` and 2 piece searches per
+//! evaluation (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its
+//! derivative on every step.
+//!
+//! The results are bit for bit those of f6f836f (`fingerprint` prints the same hashes before
+//! and after): event times, end states and work counters on all 66 runs.
+
+use std::hint::black_box;
+
+use stickslip::engine::Body;
+use stickslip::models::pulled_mass::{self, PulledMassParams};
+use stickslip::models::LawKind;
+use stickslip::solver::dopri5::{try_solve_smooth, Dopri5};
+use stickslip::solver::{Method, Problem, Setting, Solution, Stats};
+
+/// Periods per run.
+const PERIODS: f64 = 20.0;
+
+/// The pulled mass (μs 0.4, μd 0.35, harmonic law) with drive `force` (N) over 20 periods.
+fn pulled(force: f64) -> Problem {
+    let p = PulledMassParams {
+        mu_s: 0.4,
+        mu_d: 0.35,
+        force,
+        ..PulledMassParams::default()
+    };
+    let law = pulled_mass::force_law(&p, LawKind::Harmonic).expect("a valid force law");
+    Problem {
+        body: pulled_mass::body(&p),
+        t_end: PERIODS * law.period,
+        law,
+    }
+}
+
+/// `runs` solutions by the tool's `dopri5`; the function callgrind collects in.
+#[inline(never)]
+fn ours_repeatedly(problem: &Problem, tol: f64, runs: u32) -> Solution {
+    let mut last = None;
+    for _ in 0..runs {
+        last = Some(Dopri5.solve(black_box(problem), black_box(Setting::Tolerance(tol))));
+    }
+    last.expect("at least one run")
+        .expect("the problem integrates")
+}
+
+type State = [f64; 2];
+
+// Hairer, Nørsett & Wanner I, Table 5.2.
+const C2: f64 = 1.0 / 5.0;
+const C3: f64 = 3.0 / 10.0;
+const C4: f64 = 4.0 / 5.0;
+const C5: f64 = 8.0 / 9.0;
+const A21: f64 = 1.0 / 5.0;
+const A31: f64 = 3.0 / 40.0;
+const A32: f64 = 9.0 / 40.0;
+const A41: f64 = 44.0 / 45.0;
+const A42: f64 = -56.0 / 15.0;
+const A43: f64 = 32.0 / 9.0;
+const A51: f64 = 19372.0 / 6561.0;
+const A52: f64 = -25360.0 / 2187.0;
+const A53: f64 = 64448.0 / 6561.0;
+const A54: f64 = -212.0 / 729.0;
+const A61: f64 = 9017.0 / 3168.0;
+const A62: f64 = -355.0 / 33.0;
+const A63: f64 = 46732.0 / 5247.0;
+const A64: f64 = 49.0 / 176.0;
+const A65: f64 = -5103.0 / 18656.0;
+const A71: f64 = 35.0 / 384.0;
+const A73: f64 = 500.0 / 1113.0;
+const A74: f64 = 125.0 / 192.0;
+const A75: f64 = -2187.0 / 6784.0;
+const A76: f64 = 11.0 / 84.0;
+const E1: f64 = 71.0 / 57600.0;
+const E3: f64 = -71.0 / 16695.0;
+const E4: f64 = 71.0 / 1920.0;
+const E5: f64 = -17253.0 / 339200.0;
+const E6: f64 = 22.0 / 525.0;
+const E7: f64 = -1.0 / 40.0;
+
+fn norm(e: State, a: State, b: State, tol: f64) -> f64 {
+    let s0 = e[0] / (tol + tol * a[0].abs().max(b[0].abs()));
+    let s1 = e[1] / (tol + tol * a[1].abs().max(b[1].abs()));
+    (0.5 * (s0 * s0 + s1 * s1)).sqrt()
+}
+
+/// Textbook DOPRI5 from (t0, y0) through the stop times `stops` (increasing), landing on each
+/// (a step within 1 % of reaching it is stretched to it); returns y at the last stop.
+fn textbook(
+    f: impl Fn(f64, State) -> State,
+    t0: f64,
+    y0: State,
+    stops: &[f64],
+    tol: f64,
+    stats: &mut Stats,
+) -> State {
+    let t_end = *stops.last().expect("a stop");
+    let (mut t, mut y) = (t0, y0);
+    let mut k1 = f(t, y);
+    // First step (HNW I, II.4).
+    let span = t_end - t0;
+    let (d0, d1) = (norm(y, [0.0; 2], y, tol), norm(k1, [0.0; 2], y, tol));
+    let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+        1e-6 * span
+    } else {
+        (0.01 * d0 / d1).min(span)
+    };
+    let k2 = f(t + h0, [y[0] + h0 * k1[0], y[1] + h0 * k1[1]]);
+    let d2 = norm([k2[0] - k1[0], k2[1] - k1[1]], [0.0; 2], y, tol) / h0;
+    let h1 = if d1.max(d2) <= 1e-15 {
+        (h0 * 1e-3).max(1e-6 * span)
+    } else {
+        (0.01 / d1.max(d2)).powf(0.2)
+    };
+    let mut h_next = (100.0 * h0).min(h1).min(span);
+    stats.rhs_evals += 2;
+    for &stop in stops {
+        while stop - t > 8.0 * f64::EPSILON * t.abs().max(stop.abs()) {
+            let mut h = h_next;
+            let mut rejected_last = false;
+            loop {
+                let last = t + 1.01 * h >= stop;
+                if last {
+                    h = stop - t;
+                }
+                stats.steps += 1;
+                let k2 = f(t + C2 * h, [y[0] + h * A21 * k1[0], y[1] + h * A21 * k1[1]]);
+                let k3 = f(
+                    t + C3 * h,
+                    std::array::from_fn(|i| y[i] + h * (A31 * k1[i] + A32 * k2[i])),
+                );
+                let k4 = f(
+                    t + C4 * h,
+                    std::array::from_fn(|i| y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])),
+                );
+                let k5 = f(
+                    t + C5 * h,
+                    std::array::from_fn(|i| {
+                        y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+                    }),
+                );
+                let t1 = if last { stop } else { t + h };
+                let k6 = f(
+                    t1,
+                    std::array::from_fn(|i| {
+                        y[i] + h
+                            * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+                    }),
+                );
+                let y1: State = std::array::from_fn(|i| {
+                    y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i])
+                });
+                let k7 = f(t1, y1);
+                stats.rhs_evals += 6;
+                let e: State = std::array::from_fn(|i| {
+                    h * (E1 * k1[i]
+                        + E3 * k3[i]
+                        + E4 * k4[i]
+                        + E5 * k5[i]
+                        + E6 * k6[i]
+                        + E7 * k7[i])
+                });
+                let err = norm(e, y, y1, tol);
+                let mut fac = (0.9 * err.max(1e-300).powf(-0.2)).clamp(0.2, 5.0);
+                if err <= 1.0 {
+                    stats.accepted += 1;
+                    if rejected_last {
+                        fac = fac.min(1.0);
+                    }
+                    h_next = if last && h < h_next {
+                        h_next.max(h * fac)
+                    } else {
+                        h * fac
+                    };
+                    (t, y, k1) = (t1, y1, k7);
+                    break;
+                }
+                stats.rejected += 1;
+                rejected_last = true;
+                h *= fac.min(1.0);
+            }
+        }
+    }
+    y
+}
+
+/// `runs` textbook integrations of the slip equation of `problem` (s = +1) over its period
+/// boundaries; the function callgrind collects in.
+#[inline(never)]
+fn textbook_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats) {
+    let piece = problem.law.pieces[0];
+    let omega = match piece.basis {
+        stickslip::engine::Basis::Cos { omega } => omega,
+        stickslip::engine::Basis::Linear { .. } => unreachable!("the harmonic law"),
+    };
+    let body: Body = problem.body;
+    let stops: Vec<f64> = (1..=PERIODS as u32)
+        .map(|k| f64::from(k) * problem.law.period)
+        .collect();
+    let mut last = ([0.0; 2], Stats::default());
+    for _ in 0..runs {
+        let (piece, body) = black_box((piece, body));
+        let f = move |t: f64, y: State| {
+            let b = (omega * t).cos();
+            [
+                y[1],
+                body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), 1.0),
+            ]
+        };
+        let mut stats = Stats::default();
+        let y = textbook(
+            f,
+            0.0,
+            [0.0; 2],
+            black_box(&stops),
+            black_box(tol),
+            &mut stats,
+        );
+        last = (y, stats);
+    }
+    last
+}
+
+/// FNV-1a over the bits of every event time, the final state and the work counters of `dopri5`
+/// on both models, both laws and the tolerances 1e-2 … 1e-12, printed per problem: a change
+/// meant to keep the method's results bit for bit is checked by comparing the output before
+/// and after it.
+fn fingerprints() {
+    use stickslip::models::woodpecker::{self, WoodpeckerParams};
+    let mut problems = vec![
+        ("slide".to_string(), pulled(0.5)),
+        ("late stick".to_string(), pulled(0.185)),
+    ];
+    for (name, law) in [("linear", LawKind::Linear), ("harmonic", LawKind::Harmonic)] {
+        let p = PulledMassParams {
+            mu_s: 0.4,
+            mu_d: 0.35,
+            force: 0.10,
+            ..PulledMassParams::default()
+        };
+        let law_p = pulled_mass::force_law(&p, law).expect("a valid force law");
+        problems.push((
+            format!("set B {name}"),
+            Problem {
+                body: pulled_mass::body(&p),
+                t_end: PERIODS * law_p.period,
+                law: law_p,
+            },
+        ));
+        let w = WoodpeckerParams::default();
+        let law_w = woodpecker::force_law(&w, law).expect("a valid force law");
+        problems.push((
+            format!("woodpecker {name}"),
+            Problem {
+                body: woodpecker::body(&w),
+                t_end: PERIODS * law_w.period,
+                law: law_w,
+            },
+        ));
+    }
+    for (name, problem) in &problems {
+        let mut h: u64 = 0xcbf2_9ce4_8422_2325;
+        let mut mix = |x: u64| h = (h ^ x).wrapping_mul(0x0100_0000_01b3);
+        let mut steps = Vec::new();
+        for k in 2..=12 {
+            let tol = 10f64.powi(-k);
+            let s = Dopri5
+                .solve(problem, Setting::Tolerance(tol))
+                .expect("integrates");
+            s.events.iter().for_each(|e| mix(e.t.to_bits()));
+            mix(s.x_end.to_bits());
+            mix(s.v_end.to_bits());
+            let st = s.stats;
+            for x in [st.rhs_evals, st.steps, st.accepted, st.rejected, st.events] {
+                mix(x);
+            }
+            steps.push(st.accepted);
+        }
+        println!("{name}: {h:016x}, accepted steps at 1e-2 … 1e-12 {steps:?}");
+    }
+}
+
+/// `runs` integrations of the same slip equation by the tool's plain DOPRI5
+/// ([`try_solve_smooth`]: the integrator without the stick/slip machinery, dense output still
+/// formed every step) with the textbook's right-hand side, from 0 to t_end without stops; the
+/// function callgrind collects in.
+#[inline(never)]
+fn smooth_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats) {
+    let piece = problem.law.pieces[0];
+    let omega = match piece.basis {
+        stickslip::engine::Basis::Cos { omega } => omega,
+        stickslip::engine::Basis::Linear { .. } => unreachable!("the harmonic law"),
+    };
+    let body: Body = problem.body;
+    let mut last = ([0.0; 2], Stats::default());
+    for _ in 0..runs {
+        let (piece, body) = black_box((piece, body));
+        let f = move |t: f64, y: State| {
+            let b = (omega * t).cos();
+            [
+                y[1],
+                body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), 1.0),
+            ]
+        };
+        last = try_solve_smooth(f, 0.0, [0.0; 2], problem.t_end, black_box(tol))
+            .expect("the slip integrates");
+    }
+    last
+}
+
+fn main() {
+    // `cargo bench` passes `--bench`; the positional arguments are the mode, tol and runs.
+    let args: Vec<String> = std::env::args()
+        .skip(1)
+        .filter(|a| !a.starts_with("--"))
+        .collect();
+    let mode = args.first().map_or("both", String::as_str);
+    let tol: f64 = args
+        .get(1)
+        .map_or(1e-8, |a| a.parse().expect("tol: a number"));
+    let runs: u32 = args
+        .get(2)
+        .map_or(200, |a| a.parse().expect("runs: a number"));
+    let slide = pulled(0.5);
+    if matches!(mode, "ours" | "both") {
+        let s = ours_repeatedly(&slide, tol, runs);
+        println!(
+            "ours: events {:?}, x_end {:e} m, v_end {:e} m/s, {:?}",
+            s.events, s.x_end, s.v_end, s.stats
+        );
+    }
+    if matches!(mode, "textbook" | "both") {
+        let (y, stats) = textbook_repeatedly(&slide, tol, runs);
+        println!(
+            "textbook: x_end {:e} m, v_end {:e} m/s, {stats:?}",
+            y[0], y[1]
+        );
+    }
+    if mode == "smooth" {
+        let (y, stats) = smooth_repeatedly(&slide, tol, runs);
+        println!(
+            "smooth: x_end {:e} m, v_end {:e} m/s, {stats:?}",
+            y[0], y[1]
+        );
+    }
+    if mode == "fingerprint" {
+        fingerprints();
+    }
+    if mode == "set-b" {
+        let s = ours_repeatedly(&pulled(0.10), tol, runs);
+        println!(
+            "ours, set B: {} events, x_end {:e} m, {:?}",
+            s.events.len(),
+            s.x_end,
+            s.stats
+        );
+    }
+}
