@@ -180,8 +180,7 @@ pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
 /// title, captions, parameter names, the equation of motion's notes, the sketch, the
 /// verification table's words and numbers, and the claims.
 fn translate_scene(ctx: &mut SceneCtx, words: &Translator) {
-    let lang = words.lang();
-    if lang == Lang::En {
+    if words.lang() == Lang::En {
         return;
     }
     for text in [
@@ -231,6 +230,7 @@ fn translate_scene(ctx: &mut SceneCtx, words: &Translator) {
 /// same reason, and definitions that do not apply, are left out and named in one line per
 /// reason ("t_ST, v̄: why").
 fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
+    let lang = words.lang();
     let steps = with_model!(setup, p => p.derivation());
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
@@ -267,7 +267,6 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
             ],
         };
         pieces.extend(step.result_tex().map(|r| format!("= {r}")));
-        let lang = words.lang();
         shown.push(StepCtx {
             key: step.key.id().to_string(),
             equation: step.equation.to_string(),

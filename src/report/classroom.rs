@@ -41,18 +41,19 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         )?);
         links.push(super::explorer::material());
     }
+    let (english, italian) = (Translator::new(Lang::En)?, Translator::new(Lang::It)?);
     for (id, what) in HANDOUTS {
         let Some(scene) = scenes.iter().find(|s| s.id == *id) else {
             continue;
         };
         files.extend(under(
             "handouts",
-            crate::handout::render(scene, formats, None, &Translator::new(Lang::En)?)?,
+            crate::handout::render(scene, formats, None, &english)?,
         ));
         // The same handout in Italian, beside it.
         files.extend(under(
             "handouts/it",
-            crate::handout::render(scene, formats, None, &Translator::new(Lang::It)?)?,
+            crate::handout::render(scene, formats, None, &italian)?,
         ));
         links.push(Material {
             html: format!("handouts/{id}.html"),
@@ -60,7 +61,6 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
             title: format!("Handout: {}", scene.title),
             what: what.to_string(),
         });
-        let italian = Translator::new(Lang::It)?;
         links.push(Material {
             html: format!("handouts/it/{id}.html"),
             md: format!("handouts/it/{id}.md"),

@@ -77,7 +77,7 @@ pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureErro
         .filter(|m| m.x.is_finite() && m.x >= x.0 && m.x <= x.1)
         .partition(|m| m.label.is_empty());
     // Rows are chosen before the layout exists, with the same affine map plotters will use.
-    let plot_width = f64::from(plot_width(g));
+    let plot_width = f64::from(g.plot_width());
     let approx_px = |v: f64| f64::from(Y_LABEL_AREA) + (v - x.0) / (x.1 - x.0) * plot_width;
     let rows = stagger(
         &markers
@@ -90,14 +90,18 @@ pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureErro
     // Every plotting area is g.panel_height − 2·PANEL_GAP tall; the bottom one also gets the
     // x labels. A legend that goes below its panel gets a band under it (under the x labels
     // for the bottom panel).
+    let x_labels_under = |i: usize| {
+        if i + 1 == panels.len() {
+            X_LABEL_AREA
+        } else {
+            0
+        }
+    };
     let mut tops = Vec::with_capacity(panels.len());
     let mut height = strip;
     for (i, panel) in panels.iter().enumerate() {
         tops.push(height);
-        height += g.panel_height + panel.legend_band;
-        if i + 1 == panels.len() {
-            height += X_LABEL_AREA;
-        }
+        height += g.panel_height + x_labels_under(i) + panel.legend_band;
     }
 
     let mut svg = String::new();
@@ -108,13 +112,8 @@ pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureErro
             .iter()
             .enumerate()
             .map(|(i, &top)| {
-                let extra = if i + 1 == panels.len() {
-                    X_LABEL_AREA
-                } else {
-                    0
-                };
                 root.clone()
-                    .shrink((0, top), (g.width, g.panel_height + extra))
+                    .shrink((0, top), (g.width, g.panel_height + x_labels_under(i)))
             })
             .collect();
 
@@ -239,12 +238,7 @@ pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureErro
                 .map_err(draw_err)?;
             let entries = legend_entries(panel.spec);
             if panel.legend_band > 0 {
-                let below = if i + 1 == panels.len() {
-                    X_LABEL_AREA
-                } else {
-                    0
-                };
-                let top = tops[i] + g.panel_height + below + LEGEND_BELOW_GAP / 2;
+                let top = tops[i] + g.panel_height + x_labels_under(i) + LEGEND_BELOW_GAP / 2;
                 draw_legend_in(
                     &root,
                     (frame.0 .0, top as i32),
@@ -258,11 +252,6 @@ pub fn line_chart_in(spec: &LineChart, g: Geometry) -> Result<String, FigureErro
         root.present().map_err(draw_err)?;
     }
     Ok(finish_svg(svg))
-}
-
-/// Width (px) of the plotting area on the canvas `g`.
-fn plot_width(g: Geometry) -> i32 {
-    (g.width - Y_LABEL_AREA - RIGHT_MARGIN) as i32
 }
 
 /// A panel with its curves cut into drawable runs and its y range chosen.
@@ -294,18 +283,13 @@ impl<'a> PreparedPanel<'a> {
             .chain(spec.h_lines.iter().map(|h| h.0).filter(|y| y.is_finite()));
         let y = padded_range("y", ys, Y_MARGIN)?;
         let (y, legend_below) = with_legend_room(spec, &runs, (clip.lo.0, clip.hi.0), y, g);
-        let legend_columns = if legend_below {
-            legend_columns(&legend_entries(spec), plot_width(g))
+        let (legend_band, legend_columns) = if legend_below {
+            let entries = legend_entries(spec);
+            let columns = legend_columns(&entries, g.plot_width() as i32);
+            let height = legend_size_in(&entries, columns).1.max(0) as u32;
+            (height + LEGEND_BELOW_GAP, columns)
         } else {
-            1
-        };
-        let legend_band = if legend_below {
-            legend_size_in(&legend_entries(spec), legend_columns)
-                .1
-                .max(0) as u32
-                + LEGEND_BELOW_GAP
-        } else {
-            0
+            (0, 1)
         };
         let mut values = runs.iter().flatten().flatten().map(|p| p.1).peekable();
         let counts = values.peek().is_some() && values.all(|v| v.fract() == 0.0);
@@ -336,7 +320,7 @@ fn with_legend_room(
     if entries.is_empty() {
         return (y, false);
     }
-    let w = f64::from(plot_width(g));
+    let w = f64::from(g.plot_width());
     let h = f64::from(g.panel_height - 2 * PANEL_GAP);
     let to_px = |p: &Point| {
         (
@@ -740,7 +724,7 @@ mod tests {
         let one = line_chart_in(&crowded(1), g).unwrap();
         let band = height(&one) - f64::from(TOP_MARGIN + g.panel_height + X_LABEL_AREA);
         let entries = legend_entries(&crowded(1).panels[0]);
-        let legend = legend_size_in(&entries, legend_columns(&entries, plot_width(g))).1;
+        let legend = legend_size_in(&entries, legend_columns(&entries, g.plot_width() as i32)).1;
         assert_eq!(band, f64::from(legend.max(0) as u32 + LEGEND_BELOW_GAP));
         // A band under each panel; on the report's taller canvas the legend stays inside.
         let two = line_chart_in(&crowded(2), g).unwrap();

@@ -42,7 +42,7 @@ pub fn category_map_in(spec: &CategoryMap, g: Geometry) -> Result<String, Figure
     let beside = legend_size(&entries).0.max(0) as u32 + LEGEND_GAP + 8;
     let below = !entries.is_empty() && f64::from(beside) > f64::from(g.width) * MAX_LEGEND_SHARE;
     let columns = if below {
-        legend_columns(&entries, (g.width - Y_LABEL_AREA - RIGHT_MARGIN) as i32)
+        legend_columns(&entries, g.plot_width() as i32)
     } else {
         1
     };

@@ -44,10 +44,16 @@ impl Geometry {
         x_labels: 6,
     };
 
+    /// Width of a plotting area on this canvas: the figure less the y labels and the right
+    /// margin.
+    pub fn plot_width(self) -> u32 {
+        self.width - Y_LABEL_AREA - RIGHT_MARGIN
+    }
+
     /// The same canvas with panels and maps `factor` times as tall (whole px), plotting areas
     /// at most square.
     pub fn taller(self, factor: f64) -> Geometry {
-        let square = self.width - Y_LABEL_AREA - RIGHT_MARGIN;
+        let square = self.plot_width();
         let scale = |px: u32| ((f64::from(px) * factor).round() as u32).min(square);
         Geometry {
             panel_height: scale(self.panel_height),
