@@ -71,6 +71,7 @@ use std::hint::black_box;
 use stickslip::engine::Body;
 use stickslip::models::pulled_mass::{self, PulledMassParams};
 use stickslip::models::LawKind;
+use stickslip::solver::dopri5::tableau::*;
 use stickslip::solver::dopri5::{try_solve_smooth, Dopri5};
 use stickslip::solver::{Method, Problem, Setting, Solution, Stats};
 
@@ -105,38 +106,6 @@ fn ours_repeatedly(problem: &Problem, tol: f64, runs: u32) -> Solution {
 }
 
 type State = [f64; 2];
-
-// Hairer, Nørsett & Wanner I, Table 5.2.
-const C2: f64 = 1.0 / 5.0;
-const C3: f64 = 3.0 / 10.0;
-const C4: f64 = 4.0 / 5.0;
-const C5: f64 = 8.0 / 9.0;
-const A21: f64 = 1.0 / 5.0;
-const A31: f64 = 3.0 / 40.0;
-const A32: f64 = 9.0 / 40.0;
-const A41: f64 = 44.0 / 45.0;
-const A42: f64 = -56.0 / 15.0;
-const A43: f64 = 32.0 / 9.0;
-const A51: f64 = 19372.0 / 6561.0;
-const A52: f64 = -25360.0 / 2187.0;
-const A53: f64 = 64448.0 / 6561.0;
-const A54: f64 = -212.0 / 729.0;
-const A61: f64 = 9017.0 / 3168.0;
-const A62: f64 = -355.0 / 33.0;
-const A63: f64 = 46732.0 / 5247.0;
-const A64: f64 = 49.0 / 176.0;
-const A65: f64 = -5103.0 / 18656.0;
-const A71: f64 = 35.0 / 384.0;
-const A73: f64 = 500.0 / 1113.0;
-const A74: f64 = 125.0 / 192.0;
-const A75: f64 = -2187.0 / 6784.0;
-const A76: f64 = 11.0 / 84.0;
-const E1: f64 = 71.0 / 57600.0;
-const E3: f64 = -71.0 / 16695.0;
-const E4: f64 = 71.0 / 1920.0;
-const E5: f64 = -17253.0 / 339200.0;
-const E6: f64 = 22.0 / 525.0;
-const E7: f64 = -1.0 / 40.0;
 
 fn norm(e: State, a: State, b: State, tol: f64) -> f64 {
     let s0 = e[0] / (tol + tol * a[0].abs().max(b[0].abs()));
@@ -221,7 +190,7 @@ fn textbook(
                         + E7 * k7[i])
                 });
                 let err = norm(e, y, y1, tol);
-                let mut fac = (0.9 * err.max(1e-300).powf(-0.2)).clamp(0.2, 5.0);
+                let mut fac = (SAFETY * err.max(1e-300).powf(-0.2)).clamp(FAC_MIN, FAC_MAX);
                 if err <= 1.0 {
                     stats.accepted += 1;
                     if rejected_last {
