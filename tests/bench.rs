@@ -15,7 +15,7 @@ use stickslip::bench::sweep::SweepPoint;
 use stickslip::solver::methods;
 
 /// Top-level keys of results.json.
-const TOP_KEYS: [&str; 12] = [
+const TOP_KEYS: [&str; 13] = [
     "quick",
     "repeats",
     "periods",
@@ -23,6 +23,7 @@ const TOP_KEYS: [&str; 12] = [
     "grid",
     "methods",
     "problems",
+    "reference_check",
     "sweep",
     "costs",
     "failures",
@@ -196,6 +197,30 @@ fn without_peer_the_report_says_scipy_was_not_run() {
     assert!(message.contains("not run"), "{message}");
     let page = std::fs::read_to_string(Path::new(&run.out).join("bench.md")).expect("bench.md");
     assert!(page.contains(message), "the page states it");
+}
+
+#[test]
+fn the_references_agree_with_a_40_digit_integration_when_mpmath_is_there() {
+    let run = quick();
+    let check = &run.json["reference_check"];
+    let page = std::fs::read_to_string(Path::new(&run.out).join("bench.md")).expect("bench.md");
+    if check["status"] == "skipped" {
+        let reason = check["reason"].as_str().expect("reason");
+        eprintln!("skipped: {reason}");
+        assert!(page.contains(reason), "the page says why");
+        return;
+    }
+    assert_eq!(check["status"], "ok");
+    let rows = array(check, "rows");
+    assert_eq!(rows.len(), 4, "every problem is checked");
+    for r in rows {
+        assert_eq!(r["same_pattern"], true, "{r}");
+        assert_eq!(r["events"], r["events_mp"], "{r}");
+        let dt = r["max_event_err_s"].as_f64().expect("event error");
+        assert!(dt <= 1e-13, "{r}");
+        assert!(r["x_end_err_m"].as_f64().expect("x error") <= 1e-13, "{r}");
+    }
+    assert!(page.contains("Independent check of the references: a second program"));
 }
 
 #[test]

@@ -39,6 +39,8 @@ pub struct Ctx {
     protocol: Vec<String>,
     machine: Vec<Kv>,
     problems: Table,
+    reference_note: String,
+    reference_check: Table,
     costs: Vec<Table>,
     headline: Vec<String>,
     pub wp_figures: Vec<FigureCtx>,
@@ -110,6 +112,7 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
     .collect();
 
     let problems = tables::problems(r);
+    let (reference_note, reference_check) = tables::reference_check(r);
 
     let (costs, headline) = cost_tables::cost_table(r);
 
@@ -166,6 +169,8 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         protocol: protocol(r),
         machine,
         problems,
+        reference_note,
+        reference_check,
         costs,
         headline,
         wp_figures,

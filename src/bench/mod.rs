@@ -26,6 +26,7 @@ pub mod context;
 pub mod cost_tables;
 pub mod failure_table;
 pub mod failures;
+pub mod independent;
 pub mod machine;
 pub mod peer;
 pub mod problems;
@@ -40,6 +41,7 @@ pub use render::render;
 use crate::models::Model;
 use analysis::{cost_rows, CostRow};
 use failure_table::{failure_table, FailureRow, ENDPOINTS};
+use independent::ReferenceCheck;
 use machine::Machine;
 use peer::PeerReport;
 use problems::{BenchProblem, Reference, PERIODS};
@@ -101,6 +103,8 @@ pub struct BenchResults {
     pub grid: Grid,
     pub methods: Vec<MethodInfo>,
     pub problems: Vec<ProblemInfo>,
+    /// The exact references against a 40-digit integration by a second program.
+    pub reference_check: ReferenceCheck,
     pub sweep: Vec<SweepPoint>,
     pub costs: Vec<CostRow>,
     pub failures: Failures,
@@ -141,6 +145,13 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         .map(problems::reference)
         .collect::<Result<Vec<_>>>()?;
 
+    let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+    let reference_check = independent::check(&pairs);
+    eprintln!(
+        "bench: 40-digit check of the references {:.2} s {}",
+        reference_check.elapsed_s, reference_check.reason
+    );
+
     // The timed sweep: one thread, one point after another.
     let mut sweep = Vec::new();
     for (bp, reference) in problems.iter().zip(&references) {
@@ -158,7 +169,6 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         }
     }
 
-    let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
     let mut peer = match config.peer {
         Some(PeerChoice::Scipy) => {
             let t0 = Instant::now();
@@ -221,6 +231,7 @@ pub fn run(config: &Config) -> Result<BenchResults> {
                 exact: (*r).clone(),
             })
             .collect(),
+        reference_check,
         sweep,
         costs,
         failures,

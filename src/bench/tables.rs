@@ -84,6 +84,62 @@ pub fn problems(r: &BenchResults) -> Table {
     )
 }
 
+/// The exact references against the 40-digit integration: a sentence and, when it ran, a table.
+pub fn reference_check(r: &BenchResults) -> (String, Table) {
+    let c = &r.reference_check;
+    let header = [
+        "problem",
+        "events (exact · 40-digit)",
+        "same slips and sticks in order",
+        "max |Δt| (s)",
+        "|Δx_end| (m)",
+    ];
+    if c.status != "ok" {
+        return (
+            format!("Independent check of the references not run: {}.", c.reason),
+            table(&header, Vec::new()),
+        );
+    }
+    let worst = c
+        .rows
+        .iter()
+        .filter_map(|c| c.max_event_err_s)
+        .fold(0.0, f64::max);
+    let verdict = if c.all_agree() {
+        format!(
+            "same slips and sticks in the same order on every problem, event times within {} s",
+            e2(Some(worst))
+        )
+    } else {
+        "the events differ on at least one problem (marked below)".to_string()
+    };
+    let note = format!(
+        "Independent check of the references: a second program ({}, mpmath at 40 significant \
+         digits, roots bracketed rather than solved) integrated the same force laws and bodies \
+         over the same {} periods in {:.1} s: {verdict}.",
+        super::independent::SCRIPT,
+        r.periods,
+        c.elapsed_s
+    );
+    let rows = c
+        .rows
+        .iter()
+        .map(|c| {
+            row(
+                vec![
+                    c.problem.clone(),
+                    format!("{} · {}", c.events, c.events_mp),
+                    if c.same_pattern { "yes" } else { "no" }.to_string(),
+                    e2(c.max_event_err_s),
+                    e2(Some(c.x_end_err_m)),
+                ],
+                if c.same_pattern { "pass" } else { "fail" },
+            )
+        })
+        .collect();
+    (note, table(&header, rows))
+}
+
 /// The fitted orders of the fixed-step methods.
 pub fn orders(r: &BenchResults) -> Table {
     table(
