@@ -255,7 +255,7 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     };
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
     let scene = handout::find_scene(id)?;
-    let words = crate::worksheet::phrases::Translator::new(args.lang)?;
+    let words = crate::lang::phrases::Translator::new(args.lang)?;
     let files = handout::render(&scene, &args.format, browser.as_deref(), &words)?;
     let written = report::write_all(&args.out, &files)?;
     let missing = words.missing();

@@ -42,6 +42,8 @@ pub mod fit;
 pub mod fmath;
 #[cfg(feature = "cli")]
 pub mod handout;
+#[cfg(feature = "cli")]
+pub mod lang;
 pub mod models;
 pub mod output;
 pub mod params;

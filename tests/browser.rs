@@ -14,9 +14,9 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use stickslip::handout::{self, pdf::HEADLESS_FLAGS};
+use stickslip::lang::phrases::Translator;
 use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
-use stickslip::worksheet::phrases::Translator;
 use stickslip::worksheet::Lang;
 
 /// Chromium, pdftotext and pdfinfo; `None` (the test skips) when one is missing, which CI

@@ -8,11 +8,11 @@ use std::path::Path;
 
 use assert_cmd::Command;
 use stickslip::handout::{self, Handout};
+use stickslip::lang::phrases::Translator;
 use stickslip::models::Model;
 use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results as woodpecker};
 use stickslip::report::{builtin_scenes, Format, Scene};
 use stickslip::results::{Check, CheckValue};
-use stickslip::worksheet::phrases::Translator;
 use stickslip::worksheet::Lang;
 
 use common::rendered;

@@ -9,8 +9,8 @@ use std::path::Path;
 use super::render::Material;
 use super::{Format, OutFile, Scene};
 use crate::error::Result;
+use crate::lang::phrases::Translator;
 use crate::models::Model;
-use crate::worksheet::phrases::Translator;
 use crate::worksheet::{self, Lang, Request};
 
 /// The scenes with a handout, and what each teaches.

@@ -3,9 +3,9 @@
 //! which the slip onset is read (the slip condition, not the answers). In the answer key, v(t)
 //! from rest over two periods (fine horizontal grid of round spacing).
 
-use super::lang::Lang;
 use crate::engine::Run;
 use crate::error::{Error, Result};
+use crate::lang::Lang;
 use crate::models::{LawKind, Model};
 use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::{Curve, LineChart, Marker, Panel, Stroke};

@@ -15,9 +15,7 @@ pub mod answer;
 pub mod exercise;
 pub mod figure;
 pub mod json;
-pub mod lang;
 pub mod moodle;
-pub mod phrases;
 pub mod question;
 pub mod render;
 pub mod sample;
@@ -26,8 +24,8 @@ use crate::draws::Draws;
 use indicatif::ProgressBar;
 use rayon::prelude::*;
 
+pub use crate::lang::Lang;
 pub use answer::{Answer, Comparison, Value};
-pub use lang::Lang;
 pub use question::{Kind, Question, Regime};
 pub use render::{pdf, render};
 

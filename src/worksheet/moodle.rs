@@ -21,11 +21,11 @@ use base64::Engine;
 use serde::Serialize;
 
 use super::answer::{Answer, Value};
-use super::lang::Lang;
 use super::question::{self, Kind};
 use super::render::{parameters, Words};
 use super::{Student, Worksheets};
 use crate::error::Result;
+use crate::lang::Lang;
 use crate::models::Model;
 use crate::report::render::{page, template_error};
 use crate::report::OutFile;

@@ -10,7 +10,7 @@
 use std::cell::RefCell;
 use std::collections::BTreeSet;
 
-use super::lang::Lang;
+use super::Lang;
 use crate::error::Result;
 
 /// Translates phrases into one language and remembers the ones it could not.

@@ -1,6 +1,9 @@
-//! The languages of worksheets and answer keys (`--lang`): one message catalogue per language,
-//! `templates/lang/<code>.toml` (every key of `en.toml` in each), and the locale's decimal sign
-//! for the numbers on the page.
+//! The languages of worksheets, answer keys and handouts (`--lang`): one message catalogue per
+//! language, `templates/lang/<code>.toml` (every key of `en.toml` in each), the locale's decimal
+//! sign for the numbers on the page, and ([`phrases`]) the tool's generated English text in the
+//! other languages.
+
+pub mod phrases;
 
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
@@ -95,7 +98,7 @@ impl Lang {
             .filter_map(|(k, en)| Some((en.as_str(), here.get(k)?.as_str())))
             .collect();
         pairs.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
-        Ok(super::phrases::map_text_nodes(svg, |text| {
+        Ok(phrases::map_text_nodes(svg, |text| {
             let translated = pairs
                 .iter()
                 .fold(text.to_string(), |t, (en, here)| t.replace(en, here));
