@@ -145,7 +145,7 @@ pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
         let mut figures = figure_contexts(&drawings, g)?;
         for f in &mut figures {
             f.caption = first_sentence(&f.caption).to_string();
-            f.svg = words.svg_numbers(&f.svg);
+            f.svg = words.lang().svg_numbers(&f.svg);
         }
         Ok(figures)
     };

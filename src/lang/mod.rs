@@ -84,26 +84,10 @@ impl Lang {
         crate::report::math::mathml(&self.tex(tex)).replace("</mn><mrow><mo>,</mo></mrow><mn>", ",")
     }
 
-    /// An SVG drawn in English (a sketch of the apparatus) in this language: every phrase of
-    /// the English catalogue's `[sketch]` section replaced by this language's, longest first,
-    /// and this language's decimal sign, in text content only (never in attributes or CSS).
-    pub fn localize_svg(self, svg: &str) -> Result<String> {
-        if self == Lang::En {
-            return Ok(svg.to_string());
-        }
-        let english = Lang::En.catalogue()?.section("sketch")?;
-        let here = self.catalogue()?.section("sketch")?;
-        let mut pairs: Vec<(&str, &str)> = english
-            .iter()
-            .filter_map(|(k, en)| Some((en.as_str(), here.get(k)?.as_str())))
-            .collect();
-        pairs.sort_by_key(|(en, _)| std::cmp::Reverse(en.len()));
-        Ok(phrases::map_text_nodes(svg, |text| {
-            let translated = pairs
-                .iter()
-                .fold(text.to_string(), |t, (en, here)| t.replace(en, here));
-            self.number(&translated)
-        }))
+    /// An SVG's numbers with this language's decimal sign, in text content only (never in
+    /// attributes or style sheets); its words are left as they are.
+    pub fn svg_numbers(self, svg: &str) -> String {
+        phrases::map_text_nodes(svg, |text| self.number(text))
     }
 }
 
@@ -240,29 +224,34 @@ mod tests {
         }
     }
 
-    /// Every English phrase of `[sketch]` is on an English worksheet sketch (so that the
-    /// catalogue follows the drawing code), and none is left on an Italian one.
+    /// Every text of the worksheets' sketches (the built-in sets and sheets drawn in every
+    /// regime) is in the `[phrases]` table of every other language.
     #[test]
-    fn sketch_phrases_are_drawn_in_english_and_all_translated() {
+    fn worksheet_sketches_are_translated_entirely() {
         use crate::models::{with_model, Model};
         use crate::worksheet::exercise::Exercise;
-        let english: Vec<String> = Model::defaults()
-            .iter()
-            .map(|m| with_model!(m, p => p.sketch_givens()))
-            .collect();
-        let phrases = Lang::En.catalogue().unwrap().section("sketch").unwrap();
-        for (key, phrase) in &phrases {
-            assert!(
-                english.iter().any(|svg| svg.contains(phrase.as_str())),
-                "{key}: {phrase:?} is on no sketch"
-            );
-        }
-        for svg in &english {
-            let italian = Lang::It.localize_svg(svg).unwrap();
-            for (key, phrase) in &phrases {
-                assert!(!italian.contains(phrase.as_str()), "{key} left in English");
+        use crate::worksheet::question::regimes;
+        use crate::worksheet::{generate, Request};
+        let mut cases: Vec<Model> = Model::defaults();
+        for model in Model::defaults() {
+            for regime in regimes(model) {
+                let request = Request {
+                    model,
+                    students: 3,
+                    seed: 11,
+                    regime: Some(regime.id().to_string()),
+                    questions: None,
+                };
+                let sheets = generate(&request, &indicatif::ProgressBar::hidden()).unwrap();
+                cases.extend(sheets.students.iter().map(|s| s.case));
             }
         }
+        let words = phrases::Translator::new(Lang::It).unwrap();
+        for case in &cases {
+            let italian = words.svg(&with_model!(case, p => p.sketch_givens()));
+            assert!(!italian.contains("Friction coefficients"), "{italian}");
+        }
+        assert_eq!(words.missing(), Vec::<String>::new());
     }
 
     #[test]
@@ -284,8 +273,8 @@ mod tests {
         let svg = "<svg><style>a { opacity: 0.5 }</style><text x=\"1.5\">slot in the table, \
                    m = 66.1 g</text></svg>";
         assert_eq!(
-            Lang::It.localize_svg(svg).unwrap(),
-            "<svg><style>a { opacity: 0.5 }</style><text x=\"1.5\">fessura nel tavolo, m = \
+            Lang::It.svg_numbers(svg),
+            "<svg><style>a { opacity: 0.5 }</style><text x=\"1.5\">slot in the table, m = \
              66,1 g</text></svg>"
         );
         // Not a decimal point: an ellipsis, a sentence end.

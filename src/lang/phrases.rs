@@ -65,11 +65,6 @@ impl Translator {
         })
     }
 
-    /// An SVG's numbers with this language's decimal sign (its words already translated).
-    pub fn svg_numbers(&self, svg: &str) -> String {
-        map_text_nodes(svg, |text| self.lang.number(text))
-    }
-
     fn lookup(&self, english: &str) -> Option<String> {
         let Some(phrases) = self.phrases else {
             return Some(english.to_string());

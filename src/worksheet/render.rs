@@ -13,6 +13,7 @@ use super::question::{self, Kind, Question};
 use super::{Student, Worksheets};
 use crate::derivation::{self, Step};
 use crate::error::Result;
+use crate::lang::phrases::Translator;
 use crate::lang::{Catalogue, Lang};
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::{rel, sig};
@@ -270,7 +271,7 @@ fn sketch_file(number: u32) -> String {
 /// The apparatus of `case`, at rest at t = 0, labelled with the given values only, in the
 /// words of `lang`.
 fn sketch(case: &Model, lang: Lang) -> Result<String> {
-    lang.localize_svg(&with_model!(case, p => p.sketch_givens()))
+    Ok(Translator::new(lang)?.svg(&with_model!(case, p => p.sketch_givens())))
 }
 
 /// A sheet's context; `reads_figure`: a question reads the forces figure, drawn here.
@@ -367,7 +368,7 @@ fn key_ctx(s: &Student, words: &Words) -> Result<KeyCtx> {
         number: s.number,
         params: params_ctx(&s.case, words),
         figure_svg: match &s.key_figure {
-            Some(svg) => words.lang.localize_svg(svg)?,
+            Some(svg) => words.lang.svg_numbers(svg),
             None => String::new(),
         },
         figure_file: s
