@@ -28,6 +28,7 @@ pub mod failure_table;
 pub mod failures;
 pub mod machine;
 pub mod peer;
+pub mod peer_tables;
 pub mod problems;
 pub mod render;
 pub mod studies;

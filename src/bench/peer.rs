@@ -9,6 +9,11 @@
 //! ```
 //! Absent Python or SciPy is a plain statement in the report, never an error.
 //!
+//! The script integrates only the slip phases: the end of a stick is located on the static
+//! margin |D| − μs N_f, which the force law gives in closed form (solved on linear pieces,
+//! sampled and refined by brentq on harmonic ones); its evaluations are reported apart from the
+//! rhs evaluations ([`PeerPoint::margin_evals`]).
+//!
 //! The script holds no model: each problem's force law and body are sent as data, the engine's
 //! own [`ForceLaw`](crate::engine::ForceLaw) and [`Body`](crate::engine::Body) serialized:
 //!
@@ -56,11 +61,20 @@ pub struct PeerPoint {
     pub time_s: Option<f64>,
     pub runs: u32,
     pub nfev: Option<u64>,
+    /// solve_ivp steps, all of them in slip phases: `steps_stuck` counts those taken while stuck.
+    pub steps: Option<u64>,
+    pub steps_stuck: Option<u64>,
+    /// Evaluations of the static margin |D| − μs N_f (stick ends, stick or reversal decisions).
+    pub margin_evals: Option<u64>,
     pub n_events: Option<usize>,
     pub n_events_exact: usize,
     pub err_event_s: Option<f64>,
     pub x_end_m: Option<f64>,
     pub err_x_m: Option<f64>,
+    /// Exact events with no found event of the same kind within T/100, and the first of them.
+    pub n_missed: Option<usize>,
+    pub first_missed_t: Option<f64>,
+    pub first_missed_kind: Option<String>,
 }
 
 impl PeerPoint {
