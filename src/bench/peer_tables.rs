@@ -188,3 +188,46 @@ fn targets(r: &BenchResults) -> Table {
             .collect(),
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(n_events: usize, missed: Option<(usize, f64, &str)>) -> PeerPoint {
+        serde_json::from_value(serde_json::json!({
+            "problem": "woodpecker_fig15_harmonic", "method": "DOP853", "tol": 1e-3,
+            "status": "ok", "error": null, "time_s": 1e-2, "runs": 1, "nfev": 100,
+            "steps": 14, "steps_stuck": 0, "margin_evals": 30,
+            "n_events": n_events, "n_events_exact": 80, "err_event_s": 1.7, "x_end_m": 0.1,
+            "err_x_m": 1e-3, "n_missed": missed.map_or(0, |m| m.0),
+            "first_missed_t": missed.map(|m| m.1), "first_missed_kind": missed.map(|m| m.2)
+        }))
+        .unwrap()
+    }
+
+    #[test]
+    fn a_run_with_a_wrong_event_count_says_what_it_missed() {
+        let text = failure(&point(40, Some((40, 0.08887113616788032, "stick")))).unwrap();
+        assert_eq!(
+            text,
+            "woodpecker_fig15_harmonic, DOP853, tolerance 1e-3: 40 of 80 events; 40 exact events \
+             missed (none of the same kind within T/100), the first a stick at 0.0888711 s"
+        );
+    }
+
+    #[test]
+    fn a_run_with_the_exact_event_count_is_not_a_failure() {
+        assert_eq!(failure(&point(80, None)), None);
+    }
+
+    #[test]
+    fn the_protocol_counts_the_margin_apart_and_no_step_while_stuck() {
+        let text = protocol(&[point(80, None), point(80, None)]);
+        assert!(
+            text.contains(
+                "200 rhs evaluations in 28 steps (none while stuck), and 60 margin evaluations"
+            ),
+            "{text}"
+        );
+    }
+}
