@@ -175,10 +175,11 @@ fn targets(r: &BenchResults) -> Table {
                     Some(false) => ("no", "fail"),
                     None => ("—", "na"),
                 };
+                let problem = r.problems.iter().find(|p| p.id == t.problem);
                 row(
                     vec![
                         t.target.clone(),
-                        t.problem.clone(),
+                        problem.map_or_else(|| t.problem.clone(), |p| p.title.clone()),
                         t.measured.clone(),
                         met.into(),
                     ],
