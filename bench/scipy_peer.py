@@ -4,10 +4,23 @@
 Runs scipy.integrate.solve_ivp (RK45, DOP853, Radau) on the benchmark problems with an
 event-restart loop, the way a careful SciPy user would integrate a dry-friction oscillator:
 
-    STUCK (v = 0)   integrate a zero right-hand side until |D| - mu_s N_f crosses 0 upward
-                    -> SLIP in direction s = sgn D
-    SLIP (s = +-1)  M dv/dt = D - s mu_d N_f until v crosses 0 (direction -s)
+    STUCK (v = 0)   no integration: scan the static margin g(t) = |D(t)| - mu_s N_f(t) piece by
+                    piece for its first upward crossing -> SLIP in direction s = sgn D there
+    SLIP (s = +-1)  solve_ivp on M dv/dt = D - s mu_d N_f until v crosses 0 (direction -s)
                     -> STUCK if |D| <= mu_s N_f, else SLIP in direction sgn D (a reversal)
+
+The stuck phase changed (issue 14): this script used to integrate y' = 0 through every stick with
+solve_ivp (max step T/16) and let its event locator find the crossing of g, which spent 58-79 %
+of its steps on a right-hand side that is zero. g is known in closed form from the force law, so a
+careful user scans it instead:
+
+    "linear" piece  D and N_f affine in t: split at the zero of D (where |D| has its corner); on
+                    each part g is affine and its zero is solved for directly
+    "cos" piece     MARGIN_SAMPLES_PER_PIECE samples of g per piece; the first sample pair with
+                    g <= 0 < g is refined by scipy.optimize.brentq (xtol 1e-15 * t)
+
+The margin evaluations are counted apart from the rhs evaluations and reported ("margin_evals");
+"steps" counts solve_ivp steps, "steps_stuck" the ones taken while stuck (none, by construction).
 
 The script knows no model. It receives each problem's force law as data, the tool's own
 engine::ForceLaw and engine::Body serialized: a period tiled by pieces [start, end) on which the
@@ -27,8 +40,10 @@ Input (JSON, a file path or '-' for stdin): {"repeats": N, "long_run_s": 1.0,
 {"kind": "cos", "omega"}, "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]},
 "exact": {"events": [{"t", "kind"}], "x_end_m"}}]}. "model" and "law" are labels only.
 Output (JSON on stdout): versions, machine and one point per problem x method x tolerance with
-the best-of-N time, rhs evaluations, event-time error against the exact events (matched in
-order) and x_end with its error. Only numpy and scipy are needed.
+the best-of-N time, rhs evaluations, solve_ivp steps (all, and while stuck), margin evaluations,
+event-time error against the exact events (matched in order), x_end with its error, and the
+exact events missed (none of the same kind found within T/100; their number and the first).
+Only numpy and scipy are needed.
 """
 
 import bisect
@@ -41,10 +56,14 @@ import time
 import numpy as np
 import scipy
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
-# The stuck phase integrates a zero right-hand side, on which the step would grow without
-# bound; a cap of T/16 keeps the onset window of the static margin from being stepped over.
-STUCK_MAX_STEP_PER_PERIOD = 16
+# Samples of the static margin per "cos" piece before brentq refines the first upward crossing:
+# 16 per piece is at least as fine as the T/16 step cap of the former zero-rhs integration, and
+# the woodpecker's shortest stick is T/20 across three pieces.
+MARGIN_SAMPLES_PER_PIECE = 16
+# brentq's absolute tolerance relative to |t|: the crossing to about an ulp of the time.
+BRENTQ_XTOL_REL = 1e-15
 
 
 class Piece:
@@ -63,6 +82,8 @@ class Piece:
             raise ValueError("unknown basis kind %r" % basis["kind"])
         self.d0, self.d1 = piece["drive"]["c0"], piece["drive"]["c1"]
         self.n0, self.n1 = piece["normal"]["c0"], piece["normal"]["c1"]
+        self.kind = basis["kind"]
+        self.t_ref = basis.get("t_ref", 0.0)
 
     def drive(self, t):
         """D at time t within the period (N)."""
@@ -71,6 +92,63 @@ class Piece:
     def normal(self, t):
         """N_f at time t within the period (N)."""
         return self.n0 + self.n1 * self.basis(t)
+
+    def margin(self, t, mu_s):
+        """The static margin |D| - mu_s N_f at time t within the period (N)."""
+        b = self.basis(t)
+        return abs(self.d0 + self.d1 * b) - mu_s * (self.n0 + self.n1 * b)
+
+    def first_upward(self, lo, hi, mu_s, from_stick, count):
+        """First time in [lo, hi] (within the period) at which the margin crosses 0 upward, or
+        None. `from_stick`: lo is the stick time itself, where the margin is <= 0 by the state
+        machine (its evaluation there may round either way); else lo is the piece start, where a
+        positive margin means the crossing is at the boundary. `count[0]` counts evaluations."""
+
+        def g(t):
+            count[0] += 1
+            return self.margin(t, mu_s)
+
+        if not from_stick and g(lo) > 0.0:
+            return lo
+        if self.kind == "linear":
+            return self._first_upward_linear(lo, hi, mu_s, g)
+        n = max(1, math.ceil(MARGIN_SAMPLES_PER_PIECE * (hi - lo) / (self.end - self.start)))
+        a, g_a = lo, -1.0
+        for k in range(1, n + 1):
+            b = hi if k == n else lo + (hi - lo) * k / n
+            g_b = g(b)
+            if g_a <= 0.0 < g_b:
+                try:
+                    return brentq(g, a, b, xtol=BRENTQ_XTOL_REL * b,
+                                  rtol=4.0 * np.finfo(float).eps)
+                except ValueError:  # g rounded above 0 at the stick time itself: slip at once
+                    return a
+            a, g_a = b, g_b
+        return None
+
+    def _first_upward_linear(self, lo, hi, mu_s, g):
+        """On a linear piece: D = d0 + d1 u, N_f = n0 + n1 u with u = t - t_ref. Where D keeps
+        its sign s the margin s D - mu_s N_f is affine in u; its zero is solved for."""
+        cuts = [lo]
+        if self.d1 != 0.0:
+            t_zero = self.t_ref - self.d0 / self.d1
+            if lo < t_zero < hi:
+                cuts.append(t_zero)
+        cuts.append(hi)
+        for a, b in zip(cuts, cuts[1:]):
+            g_b = g(b)
+            if g_b <= 0.0:
+                continue
+            mid = 0.5 * (a + b) - self.t_ref
+            s = sign(self.d0 + self.d1 * mid)
+            slope = s * self.d1 - mu_s * self.n1
+            if slope <= 0.0:  # g rounded above 0 at the stick time itself: slip at once
+                return a
+            # g(a) <= 0 < g(b) (the margin is <= 0 at the start of the search and at every cut
+            # passed), so the slope is positive and the zero lies in [a, b].
+            u = (mu_s * self.n0 - s * self.d0) / slope
+            return min(max(self.t_ref + u, a), b)
+        return None
 
 
 class Law:
@@ -100,6 +178,25 @@ class Law:
         piece, local = self.piece_at(t)
         return piece.normal(local)
 
+    def stick_end(self, t0, t_end, count):
+        """The first upward crossing of the static margin after the stick at t0 (absolute, s),
+        scanned piece by piece, or None if the body stays stuck up to t_end."""
+        n = math.floor(t0 / self.period)
+        first = True
+        while n * self.period < t_end:
+            base = n * self.period
+            for piece in self.pieces:
+                lo = max(piece.start, t0 - base)
+                hi = min(piece.end, t_end - base)
+                if hi <= lo:
+                    continue
+                t = piece.first_upward(lo, hi, self.mu_s, first, count)
+                first = False
+                if t is not None:
+                    return base + t
+            n += 1
+        return None
+
 
 def build_law(problem):
     return Law(problem["body"], problem["force_law"])
@@ -123,67 +220,69 @@ def sign(x):
     return 1.0 if x > 0.0 else -1.0
 
 
-def zero_rhs(t, y):
-    return [0.0, 0.0]
-
-
 def simulate(law, method, tol, t_end):
-    """Event-restart integration; returns (events [(t, kind)], x_end, nfev)."""
+    """Event-restart integration; returns (events [(t, kind)], x_end, counts) with counts the
+    rhs evaluations, solve_ivp steps (all, and while stuck) and margin evaluations."""
     mu_s, mu_d, mass = law.mu_s, law.mu_d, law.mass
     margin = lambda t: abs(law.drive(t)) - mu_s * law.normal(t)
     t, x, v, s = 0.0, 0.0, 0.0, 0.0
-    events, nfev = [], 0
+    events, nfev, steps = [], 0, 0
+    margin_evals = [0]
     stops = breakpoints(law, t_end)
     i = 0
-    max_step_stuck = law.period / STUCK_MAX_STEP_PER_PERIOD
     while t < t_end:
+        if s == 0.0:
+            # Stuck: no integration (x and v do not change); the slip starts where the static
+            # margin first crosses 0 upward, at once if it is already positive.
+            margin_evals[0] += 1
+            if margin(t) > 0.0:
+                te = t
+            else:
+                te = law.stick_end(t, t_end, margin_evals)
+                if te is None:
+                    break
+            margin_evals[0] += 1
+            s = sign(law.drive(te))
+            events.append((te, "slip"))
+            t = te
+            continue
         while stops[i] <= t:
             i += 1
         t_stop = stops[i]
-        if s == 0.0 and margin(t) > 0.0:
-            s = sign(law.drive(t))
-            events.append((t, "slip"))
-        # Every switching function is given the sign it is leaving at the restart time itself:
+        # The switching function is given the sign it is leaving at the restart time itself:
         # a zero there would be taken for a crossing (with a tiny first step, y barely moves).
-        t_start = t
-        if s == 0.0:
-            def onset(tt, y):
-                return margin(tt) if tt > t_start else -1.0
+        t_start, direction = t, s
 
-            onset.terminal, onset.direction = True, 1.0
-            sol = solve_ivp(zero_rhs, (t, t_stop), [x, 0.0], method=method, rtol=tol,
-                            atol=tol, events=onset, max_step=max_step_stuck)
-        else:
-            direction = s
+        def rhs(tt, y):
+            return [y[1], (law.drive(tt) - direction * mu_d * law.normal(tt)) / mass]
 
-            def rhs(tt, y):
-                return [y[1], (law.drive(tt) - direction * mu_d * law.normal(tt)) / mass]
+        def stop(tt, y):
+            return y[1] if tt > t_start else direction
 
-            def stop(tt, y):
-                return y[1] if tt > t_start else direction
-
-            stop.terminal, stop.direction = True, -direction
-            sol = solve_ivp(rhs, (t, t_stop), [x, v], method=method, rtol=tol, atol=tol,
-                            events=stop)
+        stop.terminal, stop.direction = True, -direction
+        sol = solve_ivp(rhs, (t, t_stop), [x, v], method=method, rtol=tol, atol=tol,
+                        events=stop)
         nfev += sol.nfev
+        steps += len(sol.t) - 1
         if sol.status == 1:
             te = float(sol.t_events[0][0])
             x = float(sol.y_events[0][0][0])
             t, v = te, 0.0
-            if s == 0.0:
-                s = sign(law.drive(te))
-                events.append((te, "slip"))
-            elif margin(te) <= 0.0:
+            margin_evals[0] += 1
+            if margin(te) <= 0.0:
                 s = 0.0
                 events.append((te, "stick"))
             else:
+                margin_evals[0] += 1
                 s = sign(law.drive(te))
         elif sol.status == 0:
             t = t_stop
             x, v = float(sol.y[0, -1]), float(sol.y[1, -1])
         else:
             raise RuntimeError(sol.message)
-    return events, x, nfev
+    # No solve_ivp call is made while stuck: steps_stuck stays 0 and is reported as measured.
+    counts = {"nfev": nfev, "steps": steps, "steps_stuck": 0, "margin_evals": margin_evals[0]}
+    return events, x, counts
 
 
 def event_error(got, exact):
@@ -194,16 +293,29 @@ def event_error(got, exact):
     return max(abs(got[i][0] - exact[i]["t"]) for i in range(n))
 
 
+def missed_events(got, exact, window):
+    """The exact events with no found event of the same kind within `window` (s), in order."""
+    out = []
+    for e in exact:
+        times = [t for t, kind in got if kind == e["kind"]]
+        i = bisect.bisect_left(times, e["t"] - window)
+        if i == len(times) or times[i] > e["t"] + window:
+            out.append(e)
+    return out
+
+
 def run_point(problem, law, method, tol, repeats, long_run_s):
     t_end = problem["periods"] * law.period
     exact = problem["exact"]
     point = {"problem": problem["id"], "method": method, "tol": tol, "status": "ok",
-             "error": None, "time_s": None, "runs": 0, "nfev": None, "n_events": None,
+             "error": None, "time_s": None, "runs": 0, "nfev": None, "steps": None,
+             "steps_stuck": None, "margin_evals": None, "n_events": None,
              "n_events_exact": len(exact["events"]), "err_event_s": None, "x_end_m": None,
-             "err_x_m": None}
+             "err_x_m": None, "n_missed": None, "first_missed_t": None,
+             "first_missed_kind": None}
     try:
         start = time.perf_counter()
-        events, x_end, nfev = simulate(law, method, tol, t_end)
+        events, x_end, counts = simulate(law, method, tol, t_end)
         first = time.perf_counter() - start
         n = 1 if first > long_run_s else max(1, repeats)
         best = math.inf
@@ -218,7 +330,14 @@ def run_point(problem, law, method, tol, repeats, long_run_s):
     except Exception as e:  # a solver failure is a measured result, not a crash
         point["status"], point["error"] = "error", "%s: %s" % (type(e).__name__, e)
         return point
-    point.update(time_s=best, nfev=int(nfev), n_events=len(events),
+    point.update(counts)
+    # What a run with a wrong event count missed: exact events without a found one of the same
+    # kind within T/100, the first of them named.
+    missed = missed_events(events, exact["events"], law.period / 100.0)
+    point.update(n_missed=len(missed))
+    if missed:
+        point.update(first_missed_t=missed[0]["t"], first_missed_kind=missed[0]["kind"])
+    point.update(time_s=best, n_events=len(events),
                  err_event_s=event_error(events, exact["events"]), x_end_m=x_end,
                  err_x_m=abs(x_end - exact["x_end_m"]))
     return point

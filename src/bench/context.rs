@@ -6,6 +6,7 @@ use serde::Serialize;
 use super::charts;
 use super::cost_tables;
 use super::failures::reversal_slope;
+use super::peer_tables::{peer_section, PeerSection};
 use super::sweep::SweepPoint;
 use super::tables::{self, Table};
 use super::BenchResults;
@@ -51,10 +52,7 @@ pub struct Ctx {
     pub failure_figures: Vec<FigureCtx>,
     regime: Table,
     creep: Table,
-    peer_status: String,
-    peer_message: String,
-    peer_targets: Table,
-    peer_ratios: Table,
+    peer: PeerSection,
 }
 
 fn figure(id: &str, caption: String, spec: &LineChart) -> Result<FigureCtx> {
@@ -159,7 +157,6 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
     let regime = tables::regime(r);
     let creep = tables::creep(r);
 
-    let (peer_targets, peer_ratios) = cost_tables::peer_tables(r);
     Ok(Ctx {
         title: "stickslip bench: speed against accuracy, and where methods fail".into(),
         css: crate::report::render::CSS,
@@ -181,10 +178,7 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         failure_figures,
         regime,
         creep,
-        peer_status: r.peer.status.clone(),
-        peer_message: r.peer.message.clone(),
-        peer_targets,
-        peer_ratios,
+        peer: peer_section(r),
     })
 }
 

@@ -1,9 +1,9 @@
 //! The cost tables: time and work of every method at equal error (and the headline
-//! sentences), and SciPy side by side with the targets.
+//! sentences). SciPy's section is [`super::peer_tables`].
 
 use super::analysis::{CostRow, Metric};
 use super::sweep::MethodKind;
-use super::tables::{e2, row, table, Table};
+use super::tables::{e2, row, Table};
 use super::BenchResults;
 use crate::output::format::sig;
 
@@ -112,66 +112,4 @@ pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
         headline.push(sentence);
     }
     (tables, headline)
-}
-
-pub fn peer_tables(r: &BenchResults) -> (Table, Table) {
-    let targets = table(
-        &["target", "problem", "measured", "met"],
-        r.peer
-            .targets
-            .iter()
-            .map(|t| {
-                let (met, class) = match t.met {
-                    Some(true) => ("yes", "pass"),
-                    Some(false) => ("no", "fail"),
-                    None => ("—", "na"),
-                };
-                row(
-                    vec![
-                        t.target.clone(),
-                        t.problem.clone(),
-                        t.measured.clone(),
-                        met.into(),
-                    ],
-                    class,
-                )
-            })
-            .collect(),
-    );
-    let ratios = table(
-        &[
-            "problem",
-            "metric",
-            "error",
-            "method",
-            "time (s)",
-            "RK45 (s)",
-            "DOP853 (s)",
-            "Radau (s)",
-            "ours / best SciPy",
-            "ours / RK45",
-        ],
-        r.peer
-            .ratios
-            .iter()
-            .filter(|x| x.time_s.is_some())
-            .map(|x| {
-                let mut cells = vec![
-                    x.problem.clone(),
-                    x.metric.id().to_string(),
-                    format!("{:.0e}", x.level),
-                    x.method.clone(),
-                    e2(x.time_s),
-                ];
-                cells.extend(x.scipy_time_s.iter().map(|t| e2(*t)));
-                cells.push(match (&x.ratio_best, &x.best_scipy) {
-                    (Some(v), Some(b)) => format!("{} ({b})", e2(Some(*v))),
-                    _ => "—".into(),
-                });
-                cells.push(e2(x.ratio_rk45));
-                row(cells, "")
-            })
-            .collect(),
-    );
-    (targets, ratios)
 }

@@ -29,6 +29,7 @@ pub mod failures;
 pub mod independent;
 pub mod machine;
 pub mod peer;
+pub mod peer_tables;
 pub mod problems;
 pub mod render;
 pub mod studies;
