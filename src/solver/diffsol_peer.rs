@@ -32,6 +32,9 @@ use super::dopri5::{drive, next_breakpoint, Forces, Labels, Options, SlipEnd, MA
 use super::{Method, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
 
+/// The method's name in the benchmark.
+pub const NAME: &str = "diffsol_tsit45";
+
 /// The matrix type of the diffsol problem: nalgebra, serial (the state has two components).
 type M = NalgebraMat<f64>;
 
@@ -41,7 +44,7 @@ pub struct DiffsolTsit45;
 
 impl Method for DiffsolTsit45 {
     fn name(&self) -> &'static str {
-        "diffsol_tsit45"
+        NAME
     }
 
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
