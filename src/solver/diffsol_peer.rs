@@ -38,7 +38,7 @@ pub const NAME: &str = "diffsol_tsit45";
 /// The matrix type of the diffsol problem: nalgebra, serial (the state has two components).
 type M = NalgebraMat<f64>;
 
-/// diffsol's Tsit45 (Tsitouras 2011, 5th order with a 4th-order error estimate) with its root
+/// diffsol's Tsit45 (the Tsitouras 2011 5(4) pair, FSAL, with dense output) with its root
 /// finding for the stick event. Setting: `Setting::Tolerance(tol)`.
 pub struct DiffsolTsit45;
 
