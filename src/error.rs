@@ -33,6 +33,18 @@ pub enum Error {
     /// The engine could not advance (should not happen for valid laws).
     #[error("integration stalled at t = {} s: {reason}", short(*t))]
     Stalled { t: f64, reason: &'static str },
+    /// An ODE library driven by a method of `stickslip bench` refused or failed (its own
+    /// message, e.g. a step size below its minimum).
+    #[error(
+        "{library} failed at t = {} s: {}",
+        short(*t),
+        excerpt(reason, REASON_CHARS)
+    )]
+    Library {
+        library: &'static str,
+        t: f64,
+        reason: String,
+    },
     /// A figure that could not be drawn.
     #[error(
         "figure {}: {}",
@@ -236,6 +248,7 @@ impl Error {
             | Self::NoChromium { .. }
             | Self::Formula { .. } => 2,
             Self::Stalled { .. }
+            | Self::Library { .. }
             | Self::InvalidLaw(_)
             | Self::Figure { .. }
             | Self::Template { .. }
@@ -314,6 +327,11 @@ mod tests {
             Error::Stalled {
                 t: 1e300,
                 reason: "no progress",
+            },
+            Error::Library {
+                library: "diffsol",
+                t: 1e300,
+                reason: nasty.clone(),
             },
             Error::Pdf {
                 path: nasty.clone(),

@@ -1,6 +1,7 @@
 //! `stickslip bench --quick` as a user runs it: the command exits 0 and writes a report whose
 //! JSON parses with the documented keys and whose CSV has its header; the failures table names
-//! every method of the registry; euler_sign's spurious reversals grow as the step shrinks; a
+//! every method of the registry; the diffsol peer is swept and the headline names a compiled
+//! peer; euler_sign's spurious reversals grow as the step shrinks; a
 //! sweep point survives a JSON round trip. The quick run is made once and shared; no test reads
 //! a timing.
 
@@ -144,6 +145,59 @@ fn failures_table_names_every_registered_method_and_the_endpoint_variant() {
             "{verdict}"
         );
     }
+}
+
+/// The compiled peer from a Rust ODE library (diffsol's Tsit45 on the tool's event loop) is
+/// swept like the other adaptive methods, and the headline compares the exact engine with the
+/// fastest compiled peer, named, never with SciPy.
+#[test]
+fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
+    let run = quick();
+    let peer = "diffsol_tsit45";
+    assert!(array(&run.json, "methods")
+        .iter()
+        .any(|m| m["name"] == peer && m["kind"] == "adaptive"));
+    let points: Vec<&Value> = array(&run.json, "sweep")
+        .iter()
+        .filter(|p| p["method"] == peer)
+        .collect();
+    assert_eq!(points.len(), 4 * 3, "4 problems × 3 quick tolerances");
+    assert!(points.iter().all(|p| p["status"] == "ok"), "{points:?}");
+    // At tolerance 1e-9 every exact event is found (measured: ≤ 2e-9 s off).
+    for p in points.iter().filter(|p| p["tolerance"] == 1e-9) {
+        assert_eq!(p["n_events"], p["n_events_exact"], "{p}");
+        let err = p["err_event_s"].as_f64().expect("event error");
+        assert!(err < 1e-7, "{p}");
+        assert!(p["rhs_evals"].as_u64().expect("rhs evals") > 0);
+    }
+    let csv = std::fs::read_to_string(run.out.join("results.csv")).expect("results.csv");
+    assert!(csv.lines().any(|l| l.contains(peer)));
+    let page = std::fs::read_to_string(run.out.join("bench.md")).expect("bench.md");
+    let section = page
+        .split("## Cost at equal error")
+        .nth(1)
+        .and_then(|s| s.split("\n## ").next())
+        .expect("cost section");
+    let headline: Vec<&str> = section.lines().filter(|l| l.starts_with("- ")).collect();
+    assert_eq!(headline.len(), 4, "{section}");
+    for h in headline {
+        assert!(!h.contains("SciPy"), "{h}");
+        if h.contains("the fastest compiled peer") {
+            assert!(
+                ["dopri5", "dopri5_endpoints", peer]
+                    .iter()
+                    .any(|m| h.contains(&format!(" is {m}, "))),
+                "{h}"
+            );
+        }
+        if h.contains("harmonic") {
+            assert!(
+                h.contains("target ≥ 10×") || h.contains("No compiled peer"),
+                "{h}"
+            );
+        }
+    }
+    assert!(section.contains("diffsol_tsit45 (the Rust library diffsol"));
 }
 
 #[test]

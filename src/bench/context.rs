@@ -236,8 +236,8 @@ fn failure_figures(r: &BenchResults) -> Result<Vec<FigureCtx>> {
         figure(
             "fail-missed",
             "Exact slip/stick events with no event of the same kind within 2 % of T, against tolerance: dopri5 \
-             (switching functions checked inside each step on the dense output) and dopri5_endpoints (step ends \
-             only), on set B, the woodpecker just below the Fig. 16 threshold (a brief halt) and the pulled mass \
+             (switching functions checked inside each step on the dense output), dopri5_endpoints (step ends \
+             only) and diffsol_tsit45 (diffsol's root finding, step ends only), on set B, the woodpecker just below the Fig. 16 threshold (a brief halt) and the pulled mass \
              just below φ_c (a nearly tangential stick)."
                 .into(),
             &charts::missed_chart(&s.missed),

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::analysis::{Metric, OrderFit};
 use super::failures::{CreepPoint, MissedPoint, RegimePoint, ReversalPoint};
 use super::problems::PERIODS;
-use super::sweep::{method_kind, MethodKind, SweepPoint};
+use super::sweep::{is_compiled_peer, method_kind, MethodKind, SweepPoint};
 use super::Studies;
 use crate::output::format::sig;
 
@@ -116,7 +116,7 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
     rows.push(reversal_row(m, &ok, &s.reversals));
     rows.push(creep_row(m, &s.creep));
     rows.push(regime_row(m, &s.regime));
-    if m == "dopri5" || m == ENDPOINTS {
+    if is_compiled_peer(m) {
         rows.push(missed_row(m, &s.missed));
     }
     if method_kind(m) == MethodKind::FixedStep {

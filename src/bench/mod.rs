@@ -17,6 +17,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use crate::error::Result;
+use crate::solver::diffsol_peer::DiffsolTsit45;
 use crate::solver::dopri5::Dopri5EndpointsOnly;
 use crate::solver::{methods, Method};
 
@@ -68,7 +69,8 @@ pub struct Config {
 pub struct MethodInfo {
     pub name: String,
     pub kind: MethodKind,
-    /// Listed by `solver::methods()` (the endpoint-only dopri5 variant is constructed here).
+    /// Listed by `solver::methods()` (the endpoint-only dopri5 variant and the diffsol peer are
+    /// constructed here).
     pub in_registry: bool,
 }
 
@@ -115,12 +117,14 @@ pub struct BenchResults {
 }
 
 /// The methods of the benchmark: the registry, plus the endpoint-only dopri5 variant when the
-/// registry does not list it.
+/// registry does not list it, plus the compiled peer from a Rust ODE library (diffsol's Tsit45
+/// on the same event loop; the registry is the core's, which does not depend on diffsol).
 pub fn bench_methods() -> Vec<(Box<dyn Method>, bool)> {
     let mut out: Vec<(Box<dyn Method>, bool)> = methods().into_iter().map(|m| (m, true)).collect();
     if !out.iter().any(|(m, _)| m.name() == ENDPOINTS) {
         out.push((Box::new(Dopri5EndpointsOnly), false));
     }
+    out.push((Box::new(DiffsolTsit45), false));
     out
 }
 

@@ -6,10 +6,9 @@ use rayon::prelude::*;
 use serde::Serialize;
 
 use super::analysis::{fit_order, Metric, OrderFit};
-use super::failure_table::ENDPOINTS;
 use super::failures::{self, CreepPoint, MissedPoint, RegimePoint, ReversalPoint, EPSILONS};
 use super::problems::{self, BenchProblem, Reference};
-use super::sweep::{method_kind, Grid, MethodKind, SweepPoint};
+use super::sweep::{is_compiled_peer, method_kind, Grid, MethodKind, SweepPoint};
 use crate::error::Result;
 use crate::solver::{Method, Setting};
 
@@ -127,7 +126,7 @@ pub fn run(
     let missed_methods: Vec<&dyn Method> = methods
         .iter()
         .copied()
-        .filter(|m| m.name() == "dopri5" || m.name() == ENDPOINTS)
+        .filter(|m| is_compiled_peer(m.name()))
         .collect();
     let missed_jobs: Vec<(&dyn Method, usize, f64)> = missed_methods
         .iter()

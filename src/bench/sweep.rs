@@ -44,14 +44,23 @@ impl MethodKind {
 }
 
 /// The kind of a method of the registry, by name: the fixed-step methods of the issue, the
-/// exact reference, and adaptive for everything else (dopri5, its endpoint-only variant and
-/// the tanh methods).
+/// exact reference, and adaptive for everything else (dopri5, its endpoint-only variant, the
+/// diffsol peer and the tanh methods).
 pub fn method_kind(name: &str) -> MethodKind {
     match name {
         "exact" => MethodKind::Reference,
         "rk4" | "moreau" | "euler_sign" => MethodKind::FixedStep,
         _ => MethodKind::Adaptive,
     }
+}
+
+/// True for the compiled peers of the exact engine (issue 14): the adaptive integrators of the
+/// Coulomb model itself (no regularization) on the shared stick/slip event loop, i.e. the
+/// tool's dopri5, its endpoint-only variant and the diffsol peer.
+pub fn is_compiled_peer(name: &str) -> bool {
+    name == "dopri5"
+        || name == super::failure_table::ENDPOINTS
+        || name == crate::solver::diffsol_peer::NAME
 }
 
 /// The accuracy settings of a sweep.

@@ -41,7 +41,7 @@ use crate::error::{Error, Result};
 pub type State = [f64; 2];
 
 /// Most steps one integration may take before it is declared stalled.
-const MAX_STEPS: u64 = 10_000_000;
+pub(crate) const MAX_STEPS: u64 = 10_000_000;
 
 /// The method's constants, shared with the textbook DOPRI5 of benches/dopri5_instructions.rs,
 /// which integrates with exactly these.
@@ -425,14 +425,14 @@ fn smooth(
 /// piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T),
 /// hence k = n, the real value is representable and τ equals it; the piece containing τ is
 /// the one [`crate::engine::ForceLaw::piece_at`] picks.
-struct Forces<'a> {
+pub(crate) struct Forces<'a> {
     problem: &'a Problem,
     /// hi, lo of the last general lookup (NaN: none yet) and its piece.
     cache: std::cell::Cell<(f64, f64, usize)>,
 }
 
 impl<'a> Forces<'a> {
-    fn new(problem: &'a Problem) -> Self {
+    pub(crate) fn new(problem: &'a Problem) -> Self {
         Self {
             problem,
             cache: std::cell::Cell::new((f64::NAN, 0.0, 0)),
@@ -441,7 +441,7 @@ impl<'a> Forces<'a> {
 
     /// (D, N_f) at absolute time t (N).
     #[inline]
-    fn at(&self, t: f64) -> (f64, f64) {
+    pub(crate) fn at(&self, t: f64) -> (f64, f64) {
         let (hi, lo, i) = self.cache.get();
         let pieces = &self.problem.law.pieces;
         if let Some(piece) = pieces.get(i) {
@@ -528,7 +528,11 @@ impl Method for Dopri5 {
     }
 
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
-        solve_with(problem, tolerance(setting)?, &Options::default())
+        solve_with(
+            problem,
+            setting.tolerance(self.name())?,
+            &Options::default(),
+        )
     }
 }
 
@@ -542,18 +546,7 @@ impl Method for Dopri5EndpointsOnly {
             interior_checks: false,
             ..Options::default()
         };
-        solve_with(problem, tolerance(setting)?, &opts)
-    }
-}
-
-fn tolerance(setting: Setting) -> Result<f64> {
-    match setting {
-        Setting::Tolerance(tol) if tol.is_finite() && tol > 0.0 => Ok(tol),
-        _ => Err(Error::InvalidParam {
-            name: "setting",
-            value: format!("{setting:?}"),
-            rule: "dopri5 is adaptive: give Setting::Tolerance(tol) with finite tol > 0".into(),
-        }),
+        solve_with(problem, setting.tolerance(self.name())?, &opts)
     }
 }
 
@@ -588,6 +581,55 @@ enum Advance {
 
 /// Integrates `problem` with tolerance `tol` (atol = rtol) under `opts`.
 pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solution> {
+    let labels = Labels {
+        recurring: "dopri5: events keep recurring at one instant",
+        too_many_steps: "dopri5: too many steps",
+    };
+    drive(problem, opts, &labels, |forces, t, x, s, stats| {
+        let body = problem.body;
+        let f = |t: f64, y: State| {
+            let (d, n) = forces.at(t);
+            [y[1], body.slip_acceleration(d, n, s)]
+        };
+        let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, stats);
+        let mut stop = f64::NAN;
+        loop {
+            match slip_advance(&mut slide, forces, &mut stop, s, opts, stats)? {
+                Advance::Step => {}
+                Advance::Event { t, x } => return Ok(SlipEnd::Stop { t, x }),
+                Advance::End { y } => return Ok(SlipEnd::End { y }),
+            }
+        }
+    })
+}
+
+/// How one slip phase ends: s·v reached 0 at `t` with position `x`, or t_end with state `y`.
+pub(crate) enum SlipEnd {
+    Stop { t: f64, x: f64 },
+    End { y: State },
+}
+
+/// The messages of the stalls of [`drive`], naming the method.
+pub(crate) struct Labels {
+    /// More than [`MAX_EVENTS_AT_ONE_TIME`] events at one instant.
+    pub recurring: &'static str,
+    /// More than [`MAX_STEPS`] steps (counted in `Stats::steps`, stuck steps included).
+    pub too_many_steps: &'static str,
+}
+
+/// The stick/slip state machine shared by the event-locating adaptive methods (this file's
+/// DOPRI5 and the diffsol peer of the benchmark): from rest at x = 0, t = 0, stuck phases are
+/// walked by [`Stuck`] (the onset located on the exact force law, direction sgn D); each slip
+/// phase in direction s is integrated by `slip(forces, t0, x0, s, stats)` from (x0, v = 0)
+/// until s·v reaches 0 or t_end. At a stop: v := 0, STUCK if |D| ≤ μs N_f, a reversal to
+/// sgn D if D pushes the other way, otherwise the slip goes on in the same direction (no event,
+/// as in the exact engine).
+pub(crate) fn drive(
+    problem: &Problem,
+    opts: &Options,
+    labels: &Labels,
+    mut slip: impl FnMut(&Forces, f64, f64, f64, &mut Stats) -> Result<SlipEnd>,
+) -> Result<Solution> {
     let mut stats = Stats::default();
     let mut events = Vec::new();
     let (mut t, mut x) = (0.0_f64, 0.0_f64);
@@ -603,7 +645,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             if at_same_time.1 > MAX_EVENTS_AT_ONE_TIME {
                 return Err(Error::Stalled {
                     t,
-                    reason: "dopri5: events keep recurring at one instant",
+                    reason: labels.recurring,
                 });
             }
         } else {
@@ -612,7 +654,7 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
         if dir == 0.0 {
             let mut stuck = Stuck::new(&forces, t, x, &mut stats);
             loop {
-                match stuck.advance(&forces, opts, &mut stats)? {
+                match stuck.advance(&forces, opts, labels, &mut stats)? {
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
                         record(onset, "slip");
@@ -628,34 +670,23 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
             }
         }
         let s = dir;
-        let body = problem.body;
-        let f = |t: f64, y: State| {
-            let (d, n) = forces.at(t);
-            [y[1], body.slip_acceleration(d, n, s)]
-        };
-        let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, &mut stats);
-        let mut stop = f64::NAN;
-        loop {
-            match slip_advance(&mut slide, &forces, &mut stop, s, opts, &mut stats)? {
-                Advance::Step => {}
-                Advance::Event { t: te, x: xe } => {
-                    (t, x) = (te, xe);
-                    let (d, n) = problem.forces(te);
-                    if d.abs() <= problem.body.mu_s * n {
-                        record(te, "stick");
-                        dir = 0.0;
-                    } else if d.signum() != s {
-                        record(te, "reversal");
-                        dir = d.signum();
-                    }
-                    // Otherwise v touched 0 where the drive keeps pushing the same way: the
-                    // slip goes on (no event, as in the exact engine).
-                    continue 'phases;
+        match slip(&forces, t, x, s, &mut stats)? {
+            SlipEnd::Stop { t: te, x: xe } => {
+                (t, x) = (te, xe);
+                let (d, n) = problem.forces(te);
+                if d.abs() <= problem.body.mu_s * n {
+                    record(te, "stick");
+                    dir = 0.0;
+                } else if d.signum() != s {
+                    record(te, "reversal");
+                    dir = d.signum();
                 }
-                Advance::End { y } => {
-                    (x, v_end) = (y[0], y[1]);
-                    break 'phases;
-                }
+                // Otherwise v touched 0 where the drive keeps pushing the same way: the
+                // slip goes on (no event, as in the exact engine).
+            }
+            SlipEnd::End { y } => {
+                (x, v_end) = (y[0], y[1]);
+                break 'phases;
             }
         }
     }
@@ -794,7 +825,13 @@ impl Stuck {
         }
     }
 
-    fn advance(&mut self, forces: &Forces, opts: &Options, stats: &mut Stats) -> Result<Advance> {
+    fn advance(
+        &mut self,
+        forces: &Forces,
+        opts: &Options,
+        labels: &Labels,
+        stats: &mut Stats,
+    ) -> Result<Advance> {
         let problem = forces.problem;
         let (t0, g0) = self.last[1];
         if t0 == self.t && g0 > 0.0 {
@@ -803,7 +840,7 @@ impl Stuck {
         if stats.steps >= MAX_STEPS {
             return Err(Error::Stalled {
                 t: self.t,
-                reason: "dopri5: too many steps",
+                reason: labels.too_many_steps,
             });
         }
         let h = (problem.law.period / STUCK_STEPS_PER_PERIOD).min(opts.h_max);

@@ -11,6 +11,9 @@
 //! euler_sign  explicit Euler with sign(v) friction (the spreadsheet method)
 //! ```
 //!
+//! With the `cli` feature, [`diffsol_peer`] adds diffsol's Tsit45 on dopri5's event loop: the
+//! benchmark's peer from a Rust ODE library (not in [`methods`], which lists the core methods).
+//!
 //! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
 //! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`.
 
@@ -19,6 +22,8 @@ use serde::Serialize;
 use crate::engine::{Body, ForceLaw};
 use crate::error::Result;
 
+#[cfg(feature = "cli")]
+pub mod diffsol_peer;
 pub mod dopri5;
 pub mod euler_sign;
 pub mod exact;
@@ -140,6 +145,23 @@ impl Setting {
                 value: format!("{self:?}"),
                 rule: format!(
                     "{method} is a fixed-step method: give Setting::Step(h) with finite h > 0 (s)"
+                ),
+            }),
+        }
+    }
+}
+
+impl Setting {
+    /// The tolerance (rtol = atol) of an adaptive method named `method`; any other setting,
+    /// or a tolerance that is not finite and positive, is refused naming the setting.
+    pub fn tolerance(self, method: &str) -> Result<f64> {
+        match self {
+            Setting::Tolerance(tol) if tol.is_finite() && tol > 0.0 => Ok(tol),
+            _ => Err(crate::error::Error::InvalidParam {
+                name: "setting",
+                value: format!("{self:?}"),
+                rule: format!(
+                    "{method} is adaptive: give Setting::Tolerance(tol) with finite tol > 0"
                 ),
             }),
         }

@@ -1,0 +1,297 @@
+//! The compiled peer of `stickslip bench` from a Rust ODE library: diffsol's explicit adaptive
+//! Runge–Kutta (Tsitouras 5(4), [`DiffsolTsit45`], `Setting::Tolerance(tol)`), driven by the
+//! stick/slip state machine of the tool's own DOPRI5 ([`super::dopri5::drive`]), so that the
+//! two differ only in the integrator and its event location.
+//!
+//! ```text
+//! slipping, direction s:  y = (x, v),  y' = (v, (D − s μd N_f)/M)    diffsol root_fn  g = s·v
+//! stuck:                  y = (x, 0) constant                         the dopri5 stuck walk
+//! ```
+//!
+//! * Slip phase: one diffsol problem per solve (rtol = tol, atol = (tol, tol)), restarted at
+//!   each slip onset (its initial step by diffsol's own Hairer heuristic); its stop time
+//!   (`set_stop_time`) is the next breakpoint of the force law or t_end, so steps end where the
+//!   right-hand side has kinks, as in dopri5.
+//! * Stick event: diffsol's root finding (a sign change of g between step ends, located by the
+//!   Illinois-modified secant of SUNDIALS on its interpolant). Like most event-locating codes,
+//!   and unlike the tool's dopri5, it checks step ends only: a dip of s·v below 0 and back
+//!   inside one step is not seen (the `dopri5_endpoints` failure).
+//! * Stuck phase, transitions (stick, reversal, slip goes on): shared with dopri5.
+//! * Work: every evaluation of the right-hand side closure (the two of each restart
+//!   included), diffsol's accepted steps and error-test failures, and the stuck walk's counts.
+//! * Errors of diffsol (a step size below its minimum, too many error-test failures) become
+//!   [`Error::Library`], never a panic.
+
+use std::cell::Cell;
+
+use diffsol::{
+    DiffsolError, NalgebraMat, OdeBuilder, OdeSolverMethod, OdeSolverStopReason, Vector,
+};
+
+use super::dopri5::{drive, next_breakpoint, Forces, Labels, Options, SlipEnd, MAX_STEPS};
+use super::{Method, Problem, Setting, Solution, Stats};
+use crate::error::{Error, Result};
+
+/// The method's name in the benchmark.
+pub const NAME: &str = "diffsol_tsit45";
+
+/// The matrix type of the diffsol problem: nalgebra, serial (the state has two components).
+type M = NalgebraMat<f64>;
+
+/// diffsol's Tsit45 (the Tsitouras 2011 5(4) pair, FSAL, with dense output) with its root
+/// finding for the stick event. Setting: `Setting::Tolerance(tol)`.
+pub struct DiffsolTsit45;
+
+impl Method for DiffsolTsit45 {
+    fn name(&self) -> &'static str {
+        NAME
+    }
+
+    fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
+        solve(problem, setting.tolerance(self.name())?)
+    }
+}
+
+/// A diffsol error at time t as the crate's error.
+fn library(t: f64) -> impl Fn(DiffsolError) -> Error {
+    move |e| Error::Library {
+        library: "diffsol",
+        t,
+        reason: e.to_string(),
+    }
+}
+
+/// Integrates `problem` with diffsol's Tsit45 at rtol = atol = `tol` on the shared event loop.
+fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
+    let body = problem.body;
+    // The slip direction s and the position x0 at the slip onset are read by the closures, so
+    // one diffsol problem serves every slip phase (only its t0 changes).
+    let dir = Cell::new(0.0_f64);
+    let x0 = Cell::new(0.0_f64);
+    let evals = Cell::new(0_u64);
+    let forces = Forces::new(problem);
+    let rhs = |y: &[f64], _p: &[f64], t: f64, dy: &mut [f64]| {
+        evals.set(evals.get() + 1);
+        let (d, n) = forces.at(t);
+        dy[0] = y[1];
+        dy[1] = body.slip_acceleration(d, n, dir.get());
+    };
+    let init = |_p: &[f64], _t: f64, y: &mut [f64]| {
+        y[0] = x0.get();
+        y[1] = 0.0;
+    };
+    let stick = |y: &[f64], _p: &[f64], _t: f64, g: &mut [f64]| {
+        g[0] = dir.get() * y[1];
+    };
+    let mut ode = OdeBuilder::<M>::new()
+        .rtol(tol)
+        .atol([tol, tol])
+        .rhs(rhs)
+        .init(init, 2)
+        .root(stick, 1)
+        .build()
+        .map_err(library(0.0))?;
+    let labels = Labels {
+        recurring: "diffsol_tsit45: events keep recurring at one instant",
+        too_many_steps: "diffsol_tsit45: too many steps",
+    };
+    drive(
+        problem,
+        &Options::default(),
+        &labels,
+        |_, t0, x, s, stats| {
+            dir.set(s);
+            x0.set(x);
+            ode.t0 = t0;
+            evals.set(0);
+            let end = slip(&ode, problem, t0, stats);
+            stats.rhs_evals += evals.get();
+            end
+        },
+    )
+}
+
+/// One slip phase from the problem's t0 until s·v reaches 0 (diffsol's root) or t_end; the
+/// steps diffsol took go into `stats`.
+fn slip<Eqn>(
+    ode: &diffsol::OdeSolverProblem<Eqn>,
+    problem: &Problem,
+    t0: f64,
+    stats: &mut Stats,
+) -> Result<SlipEnd>
+where
+    Eqn: diffsol::OdeEquations<
+        T = f64,
+        V = diffsol::NalgebraVec<f64>,
+        C = diffsol::NalgebraContext,
+        M = M,
+    >,
+{
+    let mut solver = ode.tsit45().map_err(library(t0))?;
+    let t_end = problem.t_end;
+    let mut stop = t0;
+    let taken = |solver: &diffsol::ExplicitRk<'_, Eqn>| {
+        let statistics = solver.get_statistics();
+        (
+            statistics.number_of_steps as u64,
+            statistics.number_of_error_test_failures as u64,
+        )
+    };
+    let result = loop {
+        let (t, h) = (solver.state().t, solver.state().h);
+        // The next stop: a breakpoint or t_end, beyond diffsol's own roundoff of "now" (it
+        // refuses a stop time within it).
+        let roundoff = 100.0 * f64::EPSILON * (t.abs() + h.abs());
+        if stop <= t + roundoff {
+            while stop <= t + roundoff && stop < t_end {
+                stop = next_breakpoint(problem, stop).min(t_end);
+            }
+            if stop <= t + roundoff {
+                let y = solver.state().y;
+                break Ok(SlipEnd::End {
+                    y: [y.get_index(0), y.get_index(1)],
+                });
+            }
+            if let Err(e) = solver.set_stop_time(stop) {
+                break Err(library(t)(e));
+            }
+        }
+        let (accepted, rejected) = taken(&solver);
+        if stats.steps + accepted + rejected >= MAX_STEPS {
+            break Err(Error::Stalled {
+                t,
+                reason: "diffsol_tsit45: too many steps",
+            });
+        }
+        match solver.step() {
+            Ok(OdeSolverStopReason::InternalTimestep | OdeSolverStopReason::TstopReached) => {}
+            Ok(OdeSolverStopReason::RootFound(te, _)) => {
+                break solver
+                    .interpolate(te)
+                    .map(|y| SlipEnd::Stop {
+                        t: te,
+                        x: y.get_index(0),
+                    })
+                    .map_err(library(te));
+            }
+            Err(e) => break Err(library(t)(e)),
+        }
+    };
+    let (accepted, rejected) = taken(&solver);
+    stats.accepted += accepted;
+    stats.rejected += rejected;
+    stats.steps += accepted + rejected;
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::dopri5::Dopri5;
+    use super::super::test_support::{back_and_forth, event_error, exact, pulled};
+    use super::*;
+    use crate::bench::problems::sweep_problems;
+    use crate::models::LawKind;
+
+    /// The four problems of the benchmark (20 periods): at tolerance 1e-8 every slip and
+    /// stick of the exact engine is found, in order, each located by diffsol's root finding.
+    #[test]
+    fn bench_problems_have_the_exact_events_at_tol_1e8() {
+        for bp in sweep_problems().unwrap() {
+            let want = exact(&bp.problem);
+            let got = DiffsolTsit45
+                .solve(&bp.problem, Setting::Tolerance(1e-8))
+                .unwrap();
+            assert_eq!(got.events.len(), want.events.len(), "{}", bp.id);
+            // Measured: 1.1e-8 s (set B), 6.1e-9 s (woodpecker) on the harmonic laws; 5e-14 s
+            // on the linear laws (cubic arcs, integrated exactly: the root finder's own
+            // resolution).
+            let err = event_error(&got, &want);
+            assert!(err < 1e-7, "{}: event error {err:e} s", bp.id);
+            assert!((got.x_end - want.x_end).abs() < 1e-7, "{}", bp.id);
+            assert_eq!(got.stats.steps, got.stats.accepted + got.stats.rejected);
+            assert_eq!(got.stats.events, want.events.len() as u64);
+            // At least one restart (two evaluations) and one step (six) per slip.
+            assert!(
+                got.stats.rhs_evals > 8 * got.stats.events / 2,
+                "{:?}",
+                got.stats
+            );
+        }
+    }
+
+    #[test]
+    fn set_b_event_error_decreases_with_the_tolerance() {
+        // Harmonic law (on the linear law the arcs are cubics, integrated exactly).
+        let problem = pulled(0.10, LawKind::Harmonic, 20.0);
+        let want = exact(&problem);
+        let errors: Vec<f64> = [1e-4, 1e-6, 1e-8, 1e-10, 1e-12]
+            .iter()
+            .map(|&tol| {
+                let got = DiffsolTsit45
+                    .solve(&problem, Setting::Tolerance(tol))
+                    .unwrap();
+                event_error(&got, &want)
+            })
+            .collect();
+        // Measured (20 periods): 1.8e-5, 1.1e-6, 1.1e-8, 1.6e-10, 1.5e-12 s.
+        for pair in errors.windows(2) {
+            assert!(pair[1] < 0.5 * pair[0], "{errors:?}");
+        }
+        assert!(errors[4] < 1e-11, "{errors:?}");
+    }
+
+    #[test]
+    fn reversals_and_an_immediate_slip_match_the_exact_engine() {
+        let problem = back_and_forth();
+        let want = exact(&problem);
+        let got = DiffsolTsit45
+            .solve(&problem, Setting::Tolerance(1e-10))
+            .unwrap();
+        // Measured: ≤ 2.6e-10 s.
+        assert!(event_error(&got, &want) < 1e-8, "{:?}", got.events);
+        assert!((got.x_end - want.x_end).abs() < 1e-9);
+        // F > 2 μs W: slips at t = 0 and never sticks (physics.md §1.5).
+        let problem = pulled(0.5, LawKind::Harmonic, 3.0);
+        let want = exact(&problem);
+        let got = DiffsolTsit45
+            .solve(&problem, Setting::Tolerance(1e-10))
+            .unwrap();
+        assert_eq!(got.events, want.events);
+        assert!((got.x_end - want.x_end).abs() < 1e-9 * want.x_end);
+    }
+
+    /// diffsol looks for a sign change of s·v between step ends only: at a loose tolerance on
+    /// the woodpecker (harmonic law) a brief stick falls inside one step and is missed, where
+    /// the tool's dopri5, which also checks inside its steps, finds every event.
+    #[test]
+    fn step_end_root_finding_misses_events_at_a_loose_tolerance() {
+        let bp = sweep_problems()
+            .unwrap()
+            .into_iter()
+            .find(|bp| bp.id == "woodpecker_fig15_harmonic")
+            .unwrap();
+        let want = exact(&bp.problem);
+        let setting = Setting::Tolerance(1e-4);
+        let got = DiffsolTsit45.solve(&bp.problem, setting).unwrap();
+        // Measured: 48 of 80.
+        assert!(got.events.len() < want.events.len(), "{}", got.events.len());
+        let ours = Dopri5.solve(&bp.problem, setting).unwrap();
+        assert_eq!(ours.events.len(), want.events.len());
+    }
+
+    #[test]
+    fn a_step_setting_or_a_bad_tolerance_is_refused() {
+        let problem = pulled(0.10, LawKind::Linear, 2.0);
+        for setting in [
+            Setting::Step(1e-3),
+            Setting::Tolerance(0.0),
+            Setting::Tolerance(f64::INFINITY),
+        ] {
+            assert!(matches!(
+                DiffsolTsit45.solve(&problem, setting),
+                Err(Error::InvalidParam { .. })
+            ));
+        }
+        assert_eq!(DiffsolTsit45.name(), "diffsol_tsit45");
+    }
+}
