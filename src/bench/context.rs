@@ -83,6 +83,7 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         ("CPU", format!("{} × {}", m.nproc, m.cpu)),
         ("load average (1, 5, 15 min)", m.load.clone()),
         ("OS", format!("{} {}", m.os, m.arch)),
+        ("diffsol (compiled peer)", m.diffsol.clone()),
         (
             "Python",
             m.python.clone().unwrap_or_else(|| "not found".into()),

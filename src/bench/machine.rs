@@ -1,7 +1,8 @@
 //! The machine and the versions a benchmark ran on: timings mean nothing without them. The
 //! compiler and the commit are asked of `rustc` and `git` on PATH at run time (the ones that
 //! built the binary when run from the checkout with cargo); the load average is read before
-//! the measurements; Python and SciPy versions come from the peer probe.
+//! the measurements; Python and SciPy versions come from the peer probe; the compiled peer
+//! library's version from the Cargo.lock the binary was built with.
 
 use serde::Serialize;
 
@@ -24,6 +25,9 @@ pub struct Machine {
     pub cpu: String,
     pub os: String,
     pub arch: String,
+    /// The version of diffsol (the compiled peer's library) this binary was built with, from
+    /// Cargo.lock.
+    pub diffsol: String,
     /// Python, NumPy and SciPy versions if a probe found them.
     pub python: Option<String>,
     pub numpy: Option<String>,
@@ -52,6 +56,7 @@ impl Machine {
             cpu: cpu_model().unwrap_or_else(|| "unknown".to_string()),
             os: std::env::consts::OS.to_string(),
             arch: std::env::consts::ARCH.to_string(),
+            diffsol: locked_version("diffsol").unwrap_or_else(|| "unknown".to_string()),
             python: None,
             numpy: None,
             scipy: None,
@@ -70,6 +75,22 @@ fn command(args: &[&str]) -> Option<String> {
     (out.status.success() && !line.is_empty()).then(|| line.to_string())
 }
 
+/// The version of the package `name` in the Cargo.lock this binary was built from.
+fn locked_version(name: &str) -> Option<String> {
+    let lock: toml::Table = toml::from_str(include_str!(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/Cargo.lock"
+    )))
+    .ok()?;
+    lock.get("package")?
+        .as_array()?
+        .iter()
+        .find(|p| p.get("name").and_then(toml::Value::as_str) == Some(name))?
+        .get("version")?
+        .as_str()
+        .map(str::to_string)
+}
+
 /// The first `model name` line of /proc/cpuinfo.
 fn cpu_model() -> Option<String> {
     let text = std::fs::read_to_string("/proc/cpuinfo").ok()?;
@@ -77,4 +98,16 @@ fn cpu_model() -> Option<String> {
         .find(|l| l.starts_with("model name"))
         .and_then(|l| l.split_once(':'))
         .map(|(_, v)| v.trim().to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_locked_diffsol_version_is_read_from_cargo_lock() {
+        let v = locked_version("diffsol").expect("diffsol in Cargo.lock");
+        assert!(v.split('.').count() == 3 && v.starts_with("0."), "{v}");
+        assert_eq!(locked_version("no-such-package"), None);
+    }
 }
