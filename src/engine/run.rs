@@ -2,7 +2,7 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and (when
 //! asked for) friction dissipation.
 
-use super::arc::{phase, Arc, Point, Start};
+use super::arc::{phase, Arc, ArcMotion, Point, Start};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
@@ -354,18 +354,32 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
                     None => Arc::from_start(piece.basis, slope, start),
                 };
-                let slide = slide(
-                    &arc,
-                    dir,
-                    prepared,
-                    opts.dissipation.then_some(normal_start),
-                    snap,
-                    &mut accel_sign,
-                    |tm| {
-                        let at_max = arc.at(tm);
-                        rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
-                    },
-                );
+                let mut on_max = |tm: f64| {
+                    let at_max = arc.at(tm);
+                    rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
+                };
+                let work_normal = opts.dissipation.then_some(normal_start);
+                // The slide compiled for each kind of arc.
+                let slide = match &arc {
+                    Arc::Poly(poly) => slide(
+                        poly,
+                        dir,
+                        prepared,
+                        work_normal,
+                        snap,
+                        &mut accel_sign,
+                        &mut on_max,
+                    ),
+                    Arc::Trig(trig) => slide(
+                        trig,
+                        dir,
+                        prepared,
+                        work_normal,
+                        snap,
+                        &mut accel_sign,
+                        &mut on_max,
+                    ),
+                };
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
                 record(t, t_end, Motion::Slide { arc });
@@ -580,8 +594,8 @@ fn carry_over(
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
 /// a). `normal_start` is N_f at the start of the arc, given when the friction work is asked for.
-fn slide(
-    arc: &Arc,
+fn slide<M: ArcMotion>(
+    arc: &M,
     dir: i8,
     prepared: &PreparedPiece,
     normal_start: Option<f64>,
