@@ -277,8 +277,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 period_start + t
             }
         };
+        // Called only where segments are recorded (the motion, an arc, is not copied otherwise).
         let mut record = |t0: f64, t1: f64, motion: Motion| {
-            if opts.record_segments && t1 > t0 {
+            if t1 > t0 {
                 segments.push(Segment {
                     t0: absolute(t0),
                     t1: absolute(t1),
@@ -308,7 +309,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 if dir == 0 {
                     let onset = slip_onset(prepared, t, snap);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
-                    record(t, t_end, Motion::Rest { x });
+                    if opts.record_segments {
+                        record(t, t_end, Motion::Rest { x });
+                    }
                     let Some((crossing, s)) = onset else { break };
                     rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, x, 0.0);
                     dir = s;
@@ -382,7 +385,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 };
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
-                record(t, t_end, Motion::Slide { arc });
+                if opts.record_segments {
+                    record(t, t_end, Motion::Slide { arc });
+                }
                 let end = slide.end;
                 x = end.x;
                 match slide.stick {
