@@ -183,6 +183,7 @@ impl Recorder {
         self.last_transition = None;
     }
 
+    #[inline(always)]
     fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
         let t = f64::from(n) * self.period + t_local;
         let mut event = Event {
