@@ -442,14 +442,18 @@ struct PreparedPiece<'a> {
     /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
     /// there ((0, 1) on a linear basis, where it is not used).
     start_phase: (f64, f64),
-    /// Per direction of slip (+1, −1, see [`side`]): the up-crossings of the switching function
-    /// g = s·D − μs·N_f, with the acceleration and N_f at its located root
-    /// ([`onset_acceleration`]); none where g stays below zero over the piece.
-    onsets: [Option<(UpCrossings, Option<(f64, f64)>)>; 2],
+    /// Per direction of slip (+1, −1, see [`side`]): the slip onsets; none where the switching
+    /// function stays below zero over the piece.
+    onsets: [Option<Onsets>; 2],
     /// Per direction of slip: the slope A1 of the acceleration in the basis while slipping
     /// ([`Body::slip_acceleration_affine`]).
     slope: [f64; 2],
 }
+
+/// The slip onsets in one direction s on one piece: the up-crossings of the switching function
+/// g = s·D − μs·N_f, and the acceleration and N_f at its located root
+/// ([`onset_acceleration`]), if it has one.
+type Onsets = (UpCrossings, Option<(f64, f64)>);
 
 /// The index of direction `dir` (±1) in the per-direction arrays of [`PreparedPiece`].
 #[inline]
