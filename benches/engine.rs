@@ -18,17 +18,30 @@
 //! of benches/engine_instructions.rs do not, and compare versions of the engine:
 //!
 //! ```text
-//! instructions per 20-period run       before   after    libm calls per period (before → after)
-//! pulled mass, linear law              44 430   35 534   0
-//! pulled mass, harmonic law            98 625   77 755   23.1 → 11.2
-//! woodpecker, linear law               81 649   69 598   0
-//! woodpecker, harmonic law            237 437  166 374   53.0 → 19.4  (sincos counted once)
+//! instructions per 20-period run   before issue 14   first pass   second pass   libm calls/period
+//! pulled mass, linear law                   44 430       35 534        24 058   0
+//! pulled mass, harmonic law                 98 625       77 755        59 804   23.1 → 11.2 → 9.3
+//! woodpecker, linear law                    81 649       69 598        46 945   0
+//! woodpecker, harmonic law                 237 437      166 374       136 548   53.0 → 19.4 → 16.6
 //! ```
 //!
-//! Measured with the command above, back to back with the engine before issue 14, on the shared
-//! 2-core machine at load average 3 (2026-11-25): 3.96 → 3.37, 10.09 → 8.23, 7.86 → 6.76 and
-//! 22.1 → 19.4 µs. The harmonic laws meet their 1.5× targets; the linear laws (no libm: the
-//! time is the event machinery itself) and the 15 µs of the harmonic woodpecker do not yet.
+//! (sincos counted once; the first pass re-counted on the build of the second: 35 374, 79 597,
+//! 69 274 and 168 798.) First pass, measured with the command above back to back with the engine
+//! before issue 14 on the shared 2-core machine at load average 3 (2026-11-25): 3.96 → 3.37,
+//! 10.09 → 8.23, 7.86 → 6.76 and 22.1 → 19.4 µs.
+//!
+//! Second pass: a piece's slip-onset searches are worked out once per run (the two-part root of
+//! the switching function, its arccosine on a cos basis, the onset acceleration there: the same
+//! in every period), the slide is compiled once for each kind of arc (`PolyArc`, `TrigArc`
+//! behind `ArcMotion`) instead of carrying both kinds' branches and spills, a segment's arc is
+//! copied only when segments are recorded, and the event recorder is inlined. Every event is the
+//! same to the bit (the fingerprints of benches/engine_instructions.rs are unchanged). Back to
+//! back with the first pass, three alternating rounds, two at load average 4–5 and one at 2
+//! (2026-11-25): 3.66 / 3.69 / 3.59 → 1.90 / 1.86 / 1.83, 9.43 / 9.20 / 9.56 → 7.40 / 7.64 /
+//! 6.97, 6.96 / 6.96 / 7.23 → 3.53 / 3.41 / 3.74 and 19.7 / 19.3 / 19.2 → 16.2 / 14.9 / 15.3 µs:
+//! half the time on the linear laws, 0.8 of it on the harmonic ones. The harmonic laws meet
+//! their 1.5× targets and the harmonic woodpecker is at about its 15 µs; the linear laws (no
+//! libm: the time is the event machinery itself) are 10–20 % above theirs.
 
 use std::hint::black_box;
 

@@ -48,27 +48,319 @@ pub struct Point {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Arc {
     /// Polynomial motion: a = a_c + jerk·(t − t_c).
-    Poly {
-        t_c: f64,
-        t_lo: f64,
-        x_c: f64,
-        v_c: f64,
-        a_c: f64,
-        jerk: f64,
-    },
+    Poly(PolyArc),
     /// Trigonometric motion: a = a_c + a1 (cos ωt − cos ωt_c).
-    Trig {
-        t_c: f64,
-        t_lo: f64,
-        x_c: f64,
-        v_c: f64,
-        a_c: f64,
-        a1: f64,
-        omega: f64,
-        /// sin ωt_c and cos ωt_c, with both parts of t_c.
-        sin_c: f64,
-        cos_c: f64,
-    },
+    Trig(TrigArc),
+}
+
+/// Polynomial motion: a = a_c + jerk·(t − t_c).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PolyArc {
+    t_c: f64,
+    t_lo: f64,
+    x_c: f64,
+    v_c: f64,
+    a_c: f64,
+    jerk: f64,
+}
+
+/// Trigonometric motion: a = a_c + a1 (cos ωt − cos ωt_c).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrigArc {
+    t_c: f64,
+    t_lo: f64,
+    x_c: f64,
+    v_c: f64,
+    a_c: f64,
+    a1: f64,
+    omega: f64,
+    /// sin ωt_c and cos ωt_c, with both parts of t_c.
+    sin_c: f64,
+    cos_c: f64,
+}
+
+/// What the event search asks of an arc, answered by each kind of arc on its own: code generic
+/// over it (run.rs's slide) is compiled once per kind, without the other kind's branches.
+pub trait ArcMotion: Copy {
+    /// Start time t_c of the arc (s, within the period; the high part).
+    fn t_start(&self) -> f64;
+
+    /// Velocity at the start (m/s).
+    fn v_start(&self) -> f64;
+
+    /// Acceleration at the start (m/s²).
+    fn a_start(&self) -> f64;
+
+    /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
+    /// basis.
+    fn jerk_bound(&self) -> f64;
+
+    /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
+    /// (Sterbenz), and t_c.lo is then subtracted.
+    fn w(&self, t: f64) -> f64;
+
+    /// The motion at time t: position, velocity, acceleration, jerk and b(t) − b(t_c), from one
+    /// evaluation of the trigonometric kernels.
+    fn at(&self, t: f64) -> Point;
+
+    /// [`ArcMotion::at`] at a time close to the last one evaluated with the same `seed`, as in a
+    /// root search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the
+    /// kernels follow from the seed's by the angle-addition formulas, without sin and cos (each
+    /// addition adds about an ulp to them). The seed is then moved to t.
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point;
+
+    /// Acceleration (m/s²) a time w after the start.
+    fn a_at(&self, w: f64) -> f64;
+
+    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
+    /// allocation, this is on the hot path).
+    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2];
+
+    /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1 (see
+    /// [`Arc::integrate_normal_times_speed`]).
+    fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64;
+
+    /// Velocity v(t) (m/s).
+    #[inline(always)]
+    fn v(&self, t: f64) -> f64 {
+        self.at(t).v
+    }
+}
+
+/// The zeros of a in (lo, hi).
+#[inline(always)]
+fn within(zeros: [Option<f64>; 2], lo: f64, hi: f64) -> [Option<f64>; 2] {
+    zeros.map(|z| z.filter(|&t| t > lo && t < hi))
+}
+
+impl ArcMotion for PolyArc {
+    #[inline(always)]
+    fn t_start(&self) -> f64 {
+        self.t_c
+    }
+
+    #[inline(always)]
+    fn v_start(&self) -> f64 {
+        self.v_c
+    }
+
+    #[inline(always)]
+    fn a_start(&self) -> f64 {
+        self.a_c
+    }
+
+    #[inline(always)]
+    fn jerk_bound(&self) -> f64 {
+        self.jerk.abs()
+    }
+
+    #[inline(always)]
+    fn w(&self, t: f64) -> f64 {
+        (t - self.t_c) - self.t_lo
+    }
+
+    #[inline(always)]
+    fn at(&self, t: f64) -> Point {
+        let PolyArc {
+            x_c,
+            v_c,
+            a_c,
+            jerk,
+            ..
+        } = *self;
+        let w = self.w(t);
+        Point {
+            x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
+            v: v_c + w * (a_c + 0.5 * jerk * w),
+            a: a_c + jerk * w,
+            jerk,
+            db: w,
+        }
+    }
+
+    #[inline(always)]
+    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>) -> Point {
+        self.at(t)
+    }
+
+    #[inline(always)]
+    fn a_at(&self, w: f64) -> f64 {
+        self.a_c + self.jerk * w
+    }
+
+    #[inline]
+    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
+        let PolyArc {
+            t_c,
+            t_lo,
+            a_c,
+            jerk,
+            ..
+        } = *self;
+        let w = -a_c / jerk;
+        within(
+            [(jerk != 0.0 && w > 0.0).then_some(t_c + (t_lo + w)), None],
+            lo,
+            hi,
+        )
+    }
+
+    #[inline]
+    fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
+        let PolyArc { v_c, a_c, jerk, .. } = *self;
+        let w1 = self.w(t1);
+        let half = 0.5 * w1;
+        let node = half * GL2_NODE;
+        let f = |w: f64| (n_c + n1 * w) * (v_c + w * (a_c + 0.5 * jerk * w));
+        (half * (f(half - node) + f(half + node))).abs()
+    }
+}
+
+impl TrigArc {
+    /// The motion at time t, with the kernels from `kernels(δ)`.
+    #[inline(always)]
+    fn at_with(&self, t: f64, kernels: impl FnOnce(f64) -> Kernels) -> Point {
+        let TrigArc {
+            x_c,
+            v_c,
+            a_c,
+            a1,
+            omega,
+            sin_c,
+            cos_c,
+            ..
+        } = *self;
+        let w = self.w(t);
+        let k = kernels(omega * w);
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+        let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
+        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        // sin(θc + δ)
+        let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
+        Point {
+            x: x_c + (w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r),
+            v: v_c + a_c * w + a1 / omega * p,
+            a: a_c + a1 * q,
+            jerk: -a1 * omega * sin_t,
+            db: q,
+        }
+    }
+}
+
+impl ArcMotion for TrigArc {
+    #[inline(always)]
+    fn t_start(&self) -> f64 {
+        self.t_c
+    }
+
+    #[inline(always)]
+    fn v_start(&self) -> f64 {
+        self.v_c
+    }
+
+    #[inline(always)]
+    fn a_start(&self) -> f64 {
+        self.a_c
+    }
+
+    #[inline(always)]
+    fn jerk_bound(&self) -> f64 {
+        (self.a1 * self.omega).abs()
+    }
+
+    #[inline(always)]
+    fn w(&self, t: f64) -> f64 {
+        (t - self.t_c) - self.t_lo
+    }
+
+    #[inline(always)]
+    fn at(&self, t: f64) -> Point {
+        self.at_with(t, Kernels::new)
+    }
+
+    #[inline(always)]
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
+        self.at_with(t, |delta| {
+            let kernels = Kernels::near(delta, *seed);
+            *seed = Some(kernels.half);
+            kernels
+        })
+    }
+
+    #[inline]
+    fn a_at(&self, w: f64) -> f64 {
+        let TrigArc {
+            a_c,
+            a1,
+            omega,
+            sin_c,
+            cos_c,
+            ..
+        } = *self;
+        let k = Kernels::new(omega * w);
+        a_c + a1 * (-cos_c * k.one_minus_cos - sin_c * k.sin)
+    }
+
+    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
+        let TrigArc {
+            t_c,
+            t_lo,
+            a_c,
+            a1,
+            omega,
+            cos_c,
+            ..
+        } = *self;
+        let zeros = if a1 == 0.0 {
+            [None, None]
+        } else if a_c == 0.0 {
+            // a = a1 (cos ωt − cos θc): zero at the start and at its mirror 2π − θc, which
+            // is after the start when θc < π.
+            let mirror = (Dd::TAU.div_f64(omega) + Dd::new(-t_c, -t_lo)).value();
+            [(mirror > t_c).then_some(mirror), None]
+        } else {
+            // cos ωt = cos θc − a_c/a1 (in two parts): ωt = θ or 2π − θ.
+            let (hi_part, lo_part) = dd::two_sum(cos_c, -a_c / a1);
+            match dd::acos(Dd::new(hi_part, lo_part)) {
+                Some(theta) => [
+                    Some(theta.value() / omega),
+                    Some((Dd::TAU + -theta).value() / omega),
+                ],
+                None => [None, None],
+            }
+        };
+        within(zeros, lo, hi)
+    }
+
+    fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
+        let TrigArc {
+            v_c,
+            a_c,
+            a1,
+            omega,
+            sin_c,
+            cos_c,
+            ..
+        } = *self;
+        let w1 = self.w(t1);
+        let delta = omega * w1;
+        let k = Kernels::new(delta);
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        let dx = w1 * (v_c + 0.5 * a_c * w1) + a1 / (omega * omega) * r;
+        let moment = v_c * p + a_c / omega * (delta * p - r) + 0.5 * a1 / omega * p * p;
+        (n_c * dx + n1 / omega * moment).abs()
+    }
+}
+
+/// Calls `$method` on the kind of arc `$arc` holds.
+macro_rules! either {
+    ($arc:expr, $m:ident => $e:expr) => {
+        match $arc {
+            Arc::Poly($m) => $e,
+            Arc::Trig($m) => $e,
+        }
+    };
 }
 
 impl Arc {
@@ -103,15 +395,15 @@ impl Arc {
     ) -> Arc {
         let (t_c, t_lo) = (start.t.hi, start.t.lo);
         match basis {
-            Basis::Linear { .. } => Arc::Poly {
+            Basis::Linear { .. } => Arc::Poly(PolyArc {
                 t_c,
                 t_lo,
                 x_c: start.x,
                 v_c: start.v,
                 a_c: start.a,
                 jerk: a1,
-            },
-            Basis::Cos { omega } => Arc::Trig {
+            }),
+            Basis::Cos { omega } => Arc::Trig(TrigArc {
                 t_c,
                 t_lo,
                 x_c: start.x,
@@ -121,47 +413,36 @@ impl Arc {
                 omega,
                 sin_c,
                 cos_c,
-            },
+            }),
         }
     }
 
     /// Start time t_c of the arc (s, within the period; the high part).
     pub fn t_start(&self) -> f64 {
-        match *self {
-            Arc::Poly { t_c, .. } | Arc::Trig { t_c, .. } => t_c,
-        }
+        either!(self, arc => arc.t_start())
     }
 
     /// Velocity at the start (m/s).
     pub fn v_start(&self) -> f64 {
-        match *self {
-            Arc::Poly { v_c, .. } | Arc::Trig { v_c, .. } => v_c,
-        }
+        either!(self, arc => arc.v_start())
     }
 
     /// Acceleration at the start (m/s²).
     pub fn a_start(&self) -> f64 {
-        match *self {
-            Arc::Poly { a_c, .. } | Arc::Trig { a_c, .. } => a_c,
-        }
+        either!(self, arc => arc.a_start())
     }
 
     /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
     /// basis.
     pub fn jerk_bound(&self) -> f64 {
-        match *self {
-            Arc::Poly { jerk, .. } => jerk.abs(),
-            Arc::Trig { a1, omega, .. } => (a1 * omega).abs(),
-        }
+        either!(self, arc => arc.jerk_bound())
     }
 
     /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
     /// (Sterbenz), and t_c.lo is then subtracted.
     #[inline]
     pub fn w(&self, t: f64) -> f64 {
-        match *self {
-            Arc::Poly { t_c, t_lo, .. } | Arc::Trig { t_c, t_lo, .. } => (t - t_c) - t_lo,
-        }
+        either!(self, arc => arc.w(t))
     }
 
     /// The motion at time t: position, velocity, acceleration, jerk and b(t) − b(t_c), from one
@@ -169,65 +450,13 @@ impl Arc {
     /// inlined, the other fields cost nothing.
     #[inline(always)]
     pub fn at(&self, t: f64) -> Point {
-        self.at_with(t, Kernels::new)
+        either!(self, arc => arc.at(t))
     }
 
-    /// [`Arc::at`] at a time close to the last one evaluated with the same `seed`, as in a root
-    /// search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the kernels
-    /// follow from the seed's by the angle-addition formulas, without sin and cos (each
-    /// addition adds about an ulp to them). The seed is then moved to t.
+    /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
     pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
-        self.at_with(t, |delta| {
-            let kernels = Kernels::near(delta, *seed);
-            *seed = Some(kernels.half);
-            kernels
-        })
-    }
-
-    /// The motion at time t, with the kernels of a trigonometric arc from `kernels(δ)`.
-    #[inline(always)]
-    fn at_with(&self, t: f64, kernels: impl FnOnce(f64) -> Kernels) -> Point {
-        let w = self.w(t);
-        match *self {
-            Arc::Poly {
-                x_c,
-                v_c,
-                a_c,
-                jerk,
-                ..
-            } => Point {
-                x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
-                v: v_c + w * (a_c + 0.5 * jerk * w),
-                a: a_c + jerk * w,
-                jerk,
-                db: w,
-            },
-            Arc::Trig {
-                x_c,
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = kernels(omega * w);
-                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-                let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
-                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
-                // sin(θc + δ)
-                let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
-                Point {
-                    x: x_c + (w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r),
-                    v: v_c + a_c * w + a1 / omega * p,
-                    a: a_c + a1 * q,
-                    jerk: -a1 * omega * sin_t,
-                    db: q,
-                }
-            }
-        }
+        either!(self, arc => arc.at_near(t, seed))
     }
 
     /// Acceleration a(t) (m/s²).
@@ -239,20 +468,7 @@ impl Arc {
     /// Acceleration (m/s²) a time w after the start.
     #[inline]
     pub fn a_at(&self, w: f64) -> f64 {
-        match *self {
-            Arc::Poly { a_c, jerk, .. } => a_c + jerk * w,
-            Arc::Trig {
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let k = Kernels::new(omega * w);
-                a_c + a1 * (-cos_c * k.one_minus_cos - sin_c * k.sin)
-            }
-        }
+        either!(self, arc => arc.a_at(w))
     }
 
     /// Velocity v(t) (m/s).
@@ -270,49 +486,7 @@ impl Arc {
     /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
     /// allocation, this is on the hot path).
     pub fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        let zeros = match *self {
-            Arc::Poly {
-                t_c,
-                t_lo,
-                a_c,
-                jerk,
-                ..
-            } => {
-                let w = -a_c / jerk;
-                [(jerk != 0.0 && w > 0.0).then_some(t_c + (t_lo + w)), None]
-            }
-            Arc::Trig { a1: 0.0, .. } => [None, None],
-            Arc::Trig {
-                t_c,
-                t_lo,
-                a_c: 0.0,
-                omega,
-                ..
-            } => {
-                // a = a1 (cos ωt − cos θc): zero at the start and at its mirror 2π − θc, which
-                // is after the start when θc < π.
-                let mirror = (Dd::TAU.div_f64(omega) + Dd::new(-t_c, -t_lo)).value();
-                [(mirror > t_c).then_some(mirror), None]
-            }
-            Arc::Trig {
-                a_c,
-                a1,
-                omega,
-                cos_c,
-                ..
-            } => {
-                // cos ωt = cos θc − a_c/a1 (in two parts): ωt = θ or 2π − θ.
-                let (hi_part, lo_part) = dd::two_sum(cos_c, -a_c / a1);
-                match dd::acos(Dd::new(hi_part, lo_part)) {
-                    Some(theta) => [
-                        Some(theta.value() / omega),
-                        Some((Dd::TAU + -theta).value() / omega),
-                    ],
-                    None => [None, None],
-                }
-            }
-        };
-        zeros.map(|z| z.filter(|&t| t > lo && t < hi))
+        either!(self, arc => arc.accel_zeros(lo, hi))
     }
 
     /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1, over which v keeps its sign (N·m),
@@ -326,33 +500,7 @@ impl Arc {
     /// ```
     /// (N_f − n_c = n1 Q(δ) with Q = dP/dδ, P = dR/dδ, so ∫Q = P, ∫δQ = δP − R, ∫QP = P²/2.)
     pub fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
-        let w1 = self.w(t1);
-        let signed = match *self {
-            Arc::Poly { v_c, a_c, jerk, .. } => {
-                let half = 0.5 * w1;
-                let node = half * GL2_NODE;
-                let f = |w: f64| (n_c + n1 * w) * (v_c + w * (a_c + 0.5 * jerk * w));
-                half * (f(half - node) + f(half + node))
-            }
-            Arc::Trig {
-                v_c,
-                a_c,
-                a1,
-                omega,
-                sin_c,
-                cos_c,
-                ..
-            } => {
-                let delta = omega * w1;
-                let k = Kernels::new(delta);
-                let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-                let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
-                let dx = w1 * (v_c + 0.5 * a_c * w1) + a1 / (omega * omega) * r;
-                let moment = v_c * p + a_c / omega * (delta * p - r) + 0.5 * a1 / omega * p * p;
-                n_c * dx + n1 / omega * moment
-            }
-        };
-        signed.abs()
+        either!(self, arc => arc.integrate_normal_times_speed(n_c, n1, t1))
     }
 }
 

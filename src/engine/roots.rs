@@ -48,73 +48,154 @@ pub fn first_up_crossing(
     to: f64,
     snap: f64,
 ) -> Option<Crossing> {
-    // The basis value where g = 0, in two parts.
-    let root_b = || {
-        let (c0, c1) = exact();
-        -c0 / c1
-    };
-    match basis {
-        Basis::Linear { t_ref } => {
-            let g_from = g.at(from - t_ref);
-            if g.c1 > 0.0 {
-                let root = t_ref - g.c0 / g.c1;
-                if root <= from + snap {
-                    Some(Crossing::at_once(from))
-                } else if root < to - snap {
-                    let b = root_b();
-                    Some(Crossing {
-                        t: Dd::from(t_ref) + b,
-                        root_b: Some(b),
-                        phase: None,
-                    })
-                } else {
-                    None
+    UpCrossings::new(basis, g, exact, to, snap).first(from, snap)
+}
+
+/// [`first_up_crossing`] with what does not depend on `from` worked out once: the roots of g on
+/// a piece of the force law are the same in every period, and a run searches each piece for a
+/// slip onset once or twice per period. The two-part root, and on a cos basis its arccosine,
+/// are formed here, so that a search from a time is a few comparisons.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum UpCrossings {
+    /// b = t − t_ref.
+    Linear {
+        t_ref: f64,
+        g: Affine,
+        /// Where g is increasing: its rounded root, and the located crossing there when the root
+        /// lies before the end of the piece (less `snap`).
+        rising: Option<(f64, Option<Crossing>)>,
+    },
+    /// b = cos ωt where g = c0 + c1 b is never positive.
+    Never,
+    /// b = cos ωt.
+    Cos {
+        omega: f64,
+        g: Affine,
+        /// The crossings of g = 0 before the end of the piece (less `snap`) at which g rises,
+        /// in time order, located with their phase.
+        crossings: [Option<Crossing>; 2],
+    },
+}
+
+impl UpCrossings {
+    /// The crossings of g on a piece of `basis` that ends at `to` (see [`first_up_crossing`]).
+    pub fn new(
+        basis: Basis,
+        g: Affine,
+        exact: impl Fn() -> (Dd, Dd),
+        to: f64,
+        snap: f64,
+    ) -> UpCrossings {
+        // The basis value where g = 0, in two parts.
+        let root_b = || {
+            let (c0, c1) = exact();
+            -c0 / c1
+        };
+        match basis {
+            Basis::Linear { t_ref } => UpCrossings::Linear {
+                t_ref,
+                g,
+                rising: (g.c1 > 0.0).then(|| {
+                    let root = t_ref - g.c0 / g.c1;
+                    let located = (root < to - snap).then(|| {
+                        let b = root_b();
+                        Crossing {
+                            t: Dd::from(t_ref) + b,
+                            root_b: Some(b),
+                            phase: None,
+                        }
+                    });
+                    (root, located)
+                }),
+            },
+            // g ≤ c0 + |c1| < 0 everywhere: never positive (the usual case for the direction
+            // opposite to the drive), decided without trigonometry.
+            Basis::Cos { .. } if g.c0 + g.c1.abs() < 0.0 => UpCrossings::Never,
+            Basis::Cos { omega } => {
+                // The crossings θ/ω and (2π − θ)/ω of cos ωt = b, in two parts; g = c0 + c1 cos ωt
+                // rises where c1·d(cos ωt)/dt > 0. Their lower limit depends on the start of the
+                // search and is applied there (−∞ keeps every crossing a number).
+                let b = root_b();
+                // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
+                // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
+                let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
+                let mut index = 0;
+                let crossings =
+                    cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, to - snap).map(|c| {
+                        let sin = if index == 0 { sin } else { -sin };
+                        index += 1;
+                        c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
+                            .map(|(t, _)| Crossing {
+                                t,
+                                root_b: Some(b),
+                                phase: Some((sin, b.value())),
+                            })
+                    });
+                UpCrossings::Cos {
+                    omega,
+                    g,
+                    crossings,
                 }
-            } else if g_from > 0.0 {
-                Some(Crossing::at_once(from))
-            } else {
-                None
             }
         }
-        // g ≤ c0 + |c1| < 0 everywhere: never positive (the usual case for the direction
-        // opposite to the drive), decided without trigonometry.
-        Basis::Cos { .. } if g.c0 + g.c1.abs() < 0.0 => None,
-        Basis::Cos { omega } => {
-            // At g = 0, look at the slope, and at the curvature where the slope vanishes too
-            // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
-            // sin ωt only where g = 0.
-            let cos = fmath::cos(omega * from);
-            let g_from = g.at(cos);
-            let rising = || {
-                let slope = -g.c1 * omega * fmath::sin(omega * from);
-                let curvature = -g.c1 * omega * omega * cos;
-                slope > 0.0 || (slope == 0.0 && curvature > 0.0)
-            };
-            if g_from > 0.0 || (g_from == 0.0 && rising()) {
-                return Some(Crossing::at_once(from));
+    }
+
+    /// A located root of g on the piece, if any (all of them have the same basis value).
+    pub fn root(&self) -> Option<Crossing> {
+        match *self {
+            UpCrossings::Linear {
+                rising: Some((_, located)),
+                ..
+            } => located,
+            UpCrossings::Cos { crossings, .. } => crossings.into_iter().flatten().next(),
+            _ => None,
+        }
+    }
+
+    /// The earliest up-crossing in [from, to), see [`first_up_crossing`].
+    pub fn first(&self, from: f64, snap: f64) -> Option<Crossing> {
+        match *self {
+            UpCrossings::Linear { t_ref, g, rising } => match rising {
+                Some((root, located)) => {
+                    if root <= from + snap {
+                        Some(Crossing::at_once(from))
+                    } else {
+                        located
+                    }
+                }
+                None if g.at(from - t_ref) > 0.0 => Some(Crossing::at_once(from)),
+                None => None,
+            },
+            UpCrossings::Never => None,
+            UpCrossings::Cos {
+                omega,
+                g,
+                crossings,
+            } => {
+                // At g = 0, look at the slope, and at the curvature where the slope vanishes too
+                // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
+                // sin ωt only where g = 0.
+                let cos = fmath::cos(omega * from);
+                let g_from = g.at(cos);
+                let rising = || {
+                    let slope = -g.c1 * omega * fmath::sin(omega * from);
+                    let curvature = -g.c1 * omega * omega * cos;
+                    slope > 0.0 || (slope == 0.0 && curvature > 0.0)
+                };
+                if g_from > 0.0 || (g_from == 0.0 && rising()) {
+                    return Some(Crossing::at_once(from));
+                }
+                // An up-crossing within snap before `from` happens at `from`.
+                let lo = from - snap;
+                let c = crossings
+                    .into_iter()
+                    .flatten()
+                    .find(|c| c.t.value() >= lo)?;
+                if c.t.value() < from {
+                    return Some(Crossing::at_once(from));
+                }
+                Some(c)
             }
-            // The crossings θ/ω and (2π − θ)/ω of cos ωt = b, in two parts; g = c0 + c1 cos ωt
-            // rises where c1·d(cos ωt)/dt > 0. An up-crossing within snap before `from` happens
-            // at `from`.
-            let b = root_b();
-            let (index, t) = cos_level_crossings_dd(b, omega, from - snap, to - snap)
-                .into_iter()
-                .enumerate()
-                .find_map(|(i, c)| {
-                    c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
-                        .map(|(t, _)| (i, t))
-                })?;
-            if t.value() < from {
-                return Some(Crossing::at_once(from));
-            }
-            // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
-            // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
-            let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
-            Some(Crossing {
-                t,
-                root_b: Some(b),
-                phase: Some((if index == 0 { sin } else { -sin }, b.value())),
-            })
         }
     }
 }

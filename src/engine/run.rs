@@ -2,10 +2,10 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and (when
 //! asked for) friction dissipation.
 
-use super::arc::{phase, Arc, Point, Start};
+use super::arc::{phase, Arc, ArcMotion, Point, Start};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
-use super::roots::{first_up_crossing, monotone_zero, Crossing};
+use super::roots::{monotone_zero, Crossing, UpCrossings};
 use crate::error::{Error, Result};
 
 /// Events of the first `KEEP_FIRST` and the last `KEEP_LAST` periods are kept; that is all the
@@ -183,6 +183,7 @@ impl Recorder {
         self.last_transition = None;
     }
 
+    #[inline(always)]
     fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
         let t = f64::from(n) * self.period + t_local;
         let mut event = Event {
@@ -256,7 +257,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let prepared: Vec<PreparedPiece> = law
         .pieces
         .iter()
-        .map(|piece| PreparedPiece::new(piece, snap))
+        .map(|piece| PreparedPiece::new(body, piece, snap))
         .collect();
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
@@ -277,8 +278,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 period_start + t
             }
         };
+        // Called only where segments are recorded (the motion, an arc, is not copied otherwise).
         let mut record = |t0: f64, t1: f64, motion: Motion| {
-            if opts.record_segments && t1 > t0 {
+            if t1 > t0 {
                 segments.push(Segment {
                     t0: absolute(t0),
                     t1: absolute(t1),
@@ -306,15 +308,17 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(body, prepared, t, snap);
+                    let onset = slip_onset(prepared, t, snap);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
-                    record(t, t_end, Motion::Rest { x });
+                    if opts.record_segments {
+                        record(t, t_end, Motion::Rest { x });
+                    }
                     let Some((crossing, s)) = onset else { break };
                     rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, x, 0.0);
                     dir = s;
                     accel_sign = 0;
                     t = crossing.t.hi;
-                    let (a, normal) = onset_acceleration(body, piece, &crossing, f64::from(s));
+                    let (a, normal) = prepared.onset_acceleration(body, &crossing, s);
                     onset_start = Some((crossing, a, normal));
                     continue;
                 }
@@ -349,28 +353,42 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     v,
                     a: a_start,
                 };
-                let slope = body
-                    .slip_acceleration_affine(piece.drive, piece.normal, s)
-                    .c1;
+                let slope = prepared.slope[side(dir)];
                 let arc = match phase {
                     Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
                     None => Arc::from_start(piece.basis, slope, start),
                 };
-                let slide = slide(
-                    &arc,
-                    dir,
-                    prepared,
-                    opts.dissipation.then_some(normal_start),
-                    snap,
-                    &mut accel_sign,
-                    |tm| {
-                        let at_max = arc.at(tm);
-                        rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
-                    },
-                );
+                let mut on_max = |tm: f64| {
+                    let at_max = arc.at(tm);
+                    rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
+                };
+                let work_normal = opts.dissipation.then_some(normal_start);
+                // The slide compiled for each kind of arc.
+                let slide = match &arc {
+                    Arc::Poly(poly) => slide(
+                        poly,
+                        dir,
+                        prepared,
+                        work_normal,
+                        snap,
+                        &mut accel_sign,
+                        &mut on_max,
+                    ),
+                    Arc::Trig(trig) => slide(
+                        trig,
+                        dir,
+                        prepared,
+                        work_normal,
+                        snap,
+                        &mut accel_sign,
+                        &mut on_max,
+                    ),
+                };
                 normal_work += slide.normal_work;
                 let t_end = slide.stick.unwrap_or(piece.end);
-                record(t, t_end, Motion::Slide { arc });
+                if opts.record_segments {
+                    record(t, t_end, Motion::Slide { arc });
+                }
                 let end = slide.end;
                 x = end.x;
                 match slide.stick {
@@ -424,41 +442,33 @@ struct PreparedPiece<'a> {
     /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
     /// there ((0, 1) on a linear basis, where it is not used).
     start_phase: (f64, f64),
-    /// The range of the basis over the piece and the resolution `snap` before it
-    /// ([`Piece::basis_range`]).
-    basis_range: (f64, f64),
+    /// Per direction of slip (+1, −1, see [`side`]): the slip onsets; none where the switching
+    /// function stays below zero over the piece.
+    onsets: [Option<Onsets>; 2],
+    /// Per direction of slip: the slope A1 of the acceleration in the basis while slipping
+    /// ([`Body::slip_acceleration_affine`]).
+    slope: [f64; 2],
+}
+
+/// The slip onsets in one direction s on one piece: the up-crossings of the switching function
+/// g = s·D − μs·N_f, and the acceleration and N_f at its located root
+/// ([`onset_acceleration`]), if it has one.
+type Onsets = (UpCrossings, Option<(f64, f64)>);
+
+/// The index of direction `dir` (±1) in the per-direction arrays of [`PreparedPiece`].
+#[inline]
+fn side(dir: i8) -> usize {
+    usize::from(dir < 0)
 }
 
 impl PreparedPiece<'_> {
-    /// The piece with its start's phase and its range of the basis (widened by `snap` before
-    /// the start).
-    fn new(piece: &Piece, snap: f64) -> PreparedPiece<'_> {
-        PreparedPiece {
-            piece,
-            start_phase: match piece.basis {
-                Basis::Linear { .. } => (0.0, 1.0),
-                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
-            },
-            basis_range: piece.basis_range(snap),
-        }
-    }
-}
-
-/// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
-/// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp. A direction in which g stays below zero by more than its rounding over
-/// the whole range of the basis over the piece is not searched (the direction opposite to the
-/// drive).
-fn slip_onset(
-    body: &Body,
-    prepared: &PreparedPiece,
-    from: f64,
-    snap: f64,
-) -> Option<(Crossing, i8)> {
-    let (piece, (b_min, b_max)) = (prepared.piece, prepared.basis_range);
-    [1i8, -1]
-        .into_iter()
-        .filter_map(|s| {
+    /// The piece with its start's phase and the searches for a slip onset in either direction.
+    /// A direction in which g stays below zero by more than its rounding over the whole range of
+    /// the basis over the piece, widened by `snap` before its start ([`Piece::basis_range`]),
+    /// is not searched (the direction opposite to the drive).
+    fn new<'a>(body: &Body, piece: &'a Piece, snap: f64) -> PreparedPiece<'a> {
+        let (b_min, b_max) = piece.basis_range(snap);
+        let onset = |s: i8| {
             // g > 0 ⇔ the static friction cannot hold the body in direction s.
             let sf = f64::from(s);
             let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
@@ -475,7 +485,49 @@ fn slip_onset(
                     coefficient(piece.drive.c1, piece.normal.c1),
                 )
             };
-            first_up_crossing(piece.basis, g, exact, from, piece.end, snap).map(|c| (c, s))
+            let crossings = UpCrossings::new(piece.basis, g, exact, piece.end, snap);
+            // Every located root of g has the same basis value, and so the same onset.
+            let at_root = crossings
+                .root()
+                .map(|c| onset_acceleration(body, piece, &c, sf));
+            Some((crossings, at_root))
+        };
+        let slope = |s: f64| {
+            body.slip_acceleration_affine(piece.drive, piece.normal, s)
+                .c1
+        };
+        PreparedPiece {
+            piece,
+            start_phase: match piece.basis {
+                Basis::Linear { .. } => (0.0, 1.0),
+                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
+            },
+            onsets: [onset(1), onset(-1)],
+            slope: [slope(1.0), slope(-1.0)],
+        }
+    }
+
+    /// [`onset_acceleration`] at a slip onset `c` in direction `s` on this piece.
+    #[inline]
+    fn onset_acceleration(&self, body: &Body, c: &Crossing, s: i8) -> (f64, f64) {
+        match self.onsets[side(s)] {
+            Some((_, Some(at_root))) if c.root_b.is_some() => at_root,
+            _ => onset_acceleration(body, self.piece, c, f64::from(s)),
+        }
+    }
+}
+
+/// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
+/// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
+/// better than its ulp (see [`PreparedPiece::new`]).
+#[inline]
+fn slip_onset(prepared: &PreparedPiece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
+    [1i8, -1]
+        .into_iter()
+        .zip(&prepared.onsets)
+        .filter_map(|(s, onset)| {
+            let (crossings, _) = onset.as_ref()?;
+            crossings.first(from, snap).map(|c| (c, s))
         })
         .min_by(|a, b| a.0.t.value().total_cmp(&b.0.t.value()))
 }
@@ -552,8 +604,8 @@ fn carry_over(
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
 /// a). `normal_start` is N_f at the start of the arc, given when the friction work is asked for.
-fn slide(
-    arc: &Arc,
+fn slide<M: ArcMotion>(
+    arc: &M,
     dir: i8,
     prepared: &PreparedPiece,
     normal_start: Option<f64>,
