@@ -18,6 +18,7 @@
 use rayon::prelude::*;
 use serde::Serialize;
 
+use super::failures::MATCH_WINDOW;
 use super::problems::{self, BenchProblem};
 use super::sweep::{finite, match_events};
 use crate::error::Result;
@@ -161,12 +162,19 @@ pub fn plural(n: usize, word: &str) -> String {
 }
 
 /// How `got` differs from `exact`, in words; `None` when both have the same kinds in order.
-pub fn difference_words(got: &[MethodEvent], exact: &[MethodEvent]) -> Option<String> {
+/// The first difference is the first pair, in order, of different kinds or more than
+/// `window` (s) apart.
+pub fn difference_words(got: &[MethodEvent], exact: &[MethodEvent], window: f64) -> Option<String> {
+    let same_kinds =
+        got.len() == exact.len() && got.iter().zip(exact).all(|(a, b)| a.kind == b.kind);
+    if same_kinds {
+        return None;
+    }
     let first = got
         .iter()
         .zip(exact)
-        .position(|(a, b)| a.kind != b.kind)
-        .or((got.len() != exact.len()).then_some(got.len().min(exact.len())))?;
+        .position(|(a, b)| a.kind != b.kind || (a.t - b.t).abs() > window)
+        .unwrap_or(got.len().min(exact.len()));
     let mut parts = Vec::new();
     for kind in ["slip", "stick", "reversal"] {
         let count = |e: &[MethodEvent]| e.iter().filter(|e| e.kind == kind).count();
@@ -242,7 +250,8 @@ pub fn point(
     match method.solve(problem, setting) {
         Ok(sol) => {
             p.n_events = Some(sol.events.len());
-            p.wrong_events = difference_words(&sol.events, &exact.events);
+            let window = MATCH_WINDOW * problem.law.period;
+            p.wrong_events = difference_words(&sol.events, &exact.events, window);
             if p.wrong_events.is_none() {
                 p.err_event_s = match_events(&sol.events, &exact.events).max_err;
             }
@@ -373,15 +382,16 @@ mod tests {
             ev(3.0, "slip"),
             ev(4.0, "stick"),
         ];
-        assert_eq!(difference_words(&exact, &exact), None);
-        let words = difference_words(&[ev(1.0, "slip"), ev(4.0, "stick")], &exact).unwrap();
+        assert_eq!(difference_words(&exact, &exact, 0.1), None);
+        let got = [ev(1.0, "slip"), ev(4.0, "stick")];
+        let words = difference_words(&got, &exact, 0.1).unwrap();
         assert_eq!(
             words,
             "2 events against 4 exact: 1 slip missed, 1 stick missed; first difference at \
              t = 2.0000 s"
         );
         let extra = [ev(1.0, "slip"), ev(1.5, "reversal"), ev(2.0, "stick")];
-        let words = difference_words(&extra, &exact[..2]).unwrap();
+        let words = difference_words(&extra, &exact[..2], 0.1).unwrap();
         assert!(words.contains("1 reversal too many"), "{words}");
     }
 
