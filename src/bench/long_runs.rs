@@ -41,6 +41,8 @@ pub const CONTINUOUS_SLIP_FORCE: f64 = 0.30;
 pub const REVERSAL_MU_S: f64 = 0.1;
 pub const REVERSAL_MU_D: f64 = 0.08;
 pub const REVERSAL_Z0: f64 = -3e-3;
+/// The setting handed to the exact engine (which ignores it).
+const REFERENCE: Setting = Setting::Tolerance(problems::REFERENCE_TOLERANCE);
 
 /// A problem of the study, with what it is in words.
 #[derive(Clone, Debug, PartialEq)]
@@ -277,7 +279,7 @@ pub fn run(methods: &[&dyn Method], quick: bool) -> Result<LongRuns> {
         .collect();
     let exact = runs
         .par_iter()
-        .map(|&(i, n)| Exact.solve(&until(&cases[i].bp, n), Setting::Tolerance(1e-15)))
+        .map(|&(i, n)| Exact.solve(&until(&cases[i].bp, n), REFERENCE))
         .collect::<Result<Vec<_>>>()?;
     let mut jobs = Vec::new();
     for (j, &(i, _)) in runs.iter().enumerate() {

@@ -87,7 +87,7 @@ pub fn cases() -> Result<Vec<BoundaryCase>> {
             t_end: bp.period(),
             ..bp.problem.clone()
         };
-        let sol = Exact.solve(&one, Setting::Tolerance(1e-15))?;
+        let sol = Exact.solve(&one, Setting::Tolerance(problems::REFERENCE_TOLERANCE))?;
         if let Some(t_exact) = first(&sol.events, kind) {
             out.push(BoundaryCase {
                 bp: bp.clone(),
