@@ -16,7 +16,7 @@ use stickslip::bench::sweep::SweepPoint;
 use stickslip::solver::methods;
 
 /// Top-level keys of results.json.
-const TOP_KEYS: [&str; 13] = [
+const TOP_KEYS: [&str; 14] = [
     "quick",
     "repeats",
     "periods",
@@ -28,11 +28,12 @@ const TOP_KEYS: [&str; 13] = [
     "sweep",
     "costs",
     "failures",
+    "long_runs",
     "peer",
     "elapsed_s",
 ];
 /// Keys of `failures`: the table and the studies behind it.
-const FAILURE_KEYS: [&str; 7] = [
+const FAILURE_KEYS: [&str; 9] = [
     "table",
     "reversals",
     "creep",
@@ -40,6 +41,8 @@ const FAILURE_KEYS: [&str; 7] = [
     "missed",
     "regime",
     "orders",
+    "near_tangent",
+    "step_boundary",
 ];
 /// Keys of `machine`.
 const MACHINE_KEYS: [&str; 6] = ["crate_version", "profile", "nproc", "cpu", "os", "arch"];
@@ -120,8 +123,8 @@ fn quick_bench_writes_json_with_every_key_csv_with_units_and_the_pages() {
         .count();
     assert_eq!(
         svgs,
-        4 * 3 + 3,
-        "work-precision, work and order per problem, 3 failures"
+        4 * 3 + 3 + 4,
+        "work-precision, work and order per problem, 3 failures, 4 long runs"
     );
 }
 
@@ -311,4 +314,78 @@ fn near_the_regime_boundaries_exact_is_always_right_and_sign_euler_is_not() {
         dopri_runs > 0 && dopri_wrong == 0,
         "dopri5: {dopri_wrong}/{dopri_runs}"
     );
+}
+
+#[test]
+fn long_runs_cover_continuous_slip_and_reversals_and_report_growing_errors() {
+    let long = &quick().json["long_runs"];
+    let cases = array(long, "cases");
+    let case = |id: &str| {
+        cases
+            .iter()
+            .find(|c| c["id"] == id)
+            .unwrap_or_else(|| panic!("{id} missing"))
+    };
+    let slip = case("continuous_slip_harmonic");
+    assert_eq!(
+        (slip["slips"].as_u64(), slip["sticks"].as_u64()),
+        (Some(1), Some(0))
+    );
+    let rev = case("reversals_harmonic");
+    assert_eq!(rev["sticks"], 0);
+    assert!(rev["reversals"].as_u64().expect("count") >= 1, "{rev}");
+    let checkpoints = array(long, "checkpoints");
+    assert!(checkpoints.iter().any(|n| n.as_u64() >= Some(1000)));
+    let points = array(long, "points");
+    // Every run reports its errors, or says what went wrong.
+    for p in points {
+        let reported = p["err_x_m"].is_number() && p["err_event_s"].is_number();
+        let flagged = p["wrong_events"].is_string() || p["error"].is_string();
+        assert!(reported != flagged, "{p}");
+    }
+    // Set B over 10 and 1000 periods: the position error grows for every series.
+    let err = |method: &str, setting: &str, n: u64| {
+        points
+            .iter()
+            .find(|p| {
+                p["case"] == "pulled_mass_b_harmonic"
+                    && p["method"] == method
+                    && p["setting"] == setting
+                    && p["periods"] == n
+            })
+            .and_then(|p| p["err_x_m"].as_f64())
+            .unwrap_or_else(|| panic!("{method} {setting} {n}"))
+    };
+    for (m, s) in [("dopri5", "tol 1e-8"), ("rk4", "T/100")] {
+        assert!(err(m, s, 1000) > 10.0 * err(m, s, 10), "{m} {s}");
+    }
+    let page = std::fs::read_to_string(quick().out.join("bench.md")).expect("bench.md");
+    assert!(page.contains("## Error growth over long runs"));
+}
+
+#[test]
+fn near_tangent_and_step_boundary_studies_measure_what_they_claim() {
+    let failures = &quick().json["failures"];
+    let tangent = array(failures, "near_tangent");
+    let exact: Vec<&Value> = tangent.iter().filter(|p| p["method"] == "exact").collect();
+    assert_eq!(exact.len(), 12, "6 offsets × 2 sides");
+    assert!(exact.iter().all(|p| p["wrong"] == false), "{exact:?}");
+    assert!(
+        tangent
+            .iter()
+            .any(|p| p["method"] == "euler_sign" && p["wrong"] == true),
+        "a method without a stick state misreads them"
+    );
+    let boundary = array(failures, "step_boundary");
+    assert!(!boundary.is_empty());
+    for p in boundary {
+        let ulps = p["grid_ulps"].as_f64().expect("ulps");
+        assert!(ulps <= 4.0, "{p}");
+    }
+    let moreau_slip = boundary
+        .iter()
+        .find(|p| p["method"] == "moreau" && p["event"] == "slip")
+        .expect("moreau on a slip");
+    let late = moreau_slip["steps_late_on"].as_f64().expect("reported");
+    assert!(late > 0.5, "{moreau_slip}");
 }

@@ -6,7 +6,10 @@ use serde::Serialize;
 use super::charts;
 use super::cost_tables;
 use super::failures::reversal_slope;
+use super::long_run_report::{self, LongRunCtx};
+use super::near_tangent::tangent_table;
 use super::peer_tables::{peer_section, PeerSection};
+use super::step_boundary::boundary_table;
 use super::sweep::SweepPoint;
 use super::tables::{self, Table};
 use super::BenchResults;
@@ -52,10 +55,14 @@ pub struct Ctx {
     pub failure_figures: Vec<FigureCtx>,
     regime: Table,
     creep: Table,
+    near_tangent: Table,
+    step_boundary: Table,
+    pub long_runs: Vec<LongRunCtx>,
+    long_run_protocol: String,
     peer: PeerSection,
 }
 
-fn figure(id: &str, caption: String, spec: &LineChart) -> Result<FigureCtx> {
+pub(super) fn figure(id: &str, caption: String, spec: &LineChart) -> Result<FigureCtx> {
     let svg = line_chart(spec).map_err(|e| Error::Figure {
         id: id.to_string(),
         reason: e.to_string(),
@@ -157,6 +164,10 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
     let failure_figures = failure_figures(r)?;
     let regime = tables::regime(r);
     let creep = tables::creep(r);
+    let near_tangent = tangent_table(&r.failures.studies.near_tangent);
+    let step_boundary = boundary_table(&r.failures.studies.step_boundary);
+    let long_runs = long_run_report::contexts(&r.long_runs)?;
+    let long_run_protocol = long_run_report::protocol(&r.long_runs);
 
     Ok(Ctx {
         title: "stickslip bench: speed against accuracy, and where methods fail".into(),
@@ -179,6 +190,10 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         failure_figures,
         regime,
         creep,
+        near_tangent,
+        step_boundary,
+        long_runs,
+        long_run_protocol,
         peer: peer_section(r),
     })
 }

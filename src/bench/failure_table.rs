@@ -116,11 +116,13 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
     rows.push(reversal_row(m, &ok, &s.reversals));
     rows.push(creep_row(m, &s.creep));
     rows.push(regime_row(m, &s.regime));
+    rows.push(super::near_tangent::failure_row(m, &s.near_tangent));
     if is_compiled_peer(m) {
         rows.push(missed_row(m, &s.missed));
     }
     if method_kind(m) == MethodKind::FixedStep {
         rows.push(order_row(m, &s.orders, &pts));
+        rows.push(super::step_boundary::failure_row(m, &s.step_boundary));
     }
     if m.starts_with("tanh") {
         rows.push(stiffness_row(m, &s.creep_epsilon));

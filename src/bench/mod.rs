@@ -6,6 +6,7 @@
 //!   → timed sweep (sequential: nothing else runs while a method is timed)
 //!   → SciPy peer (optional, sequential)
 //!   → failure studies (untimed, in parallel) → orders, costs at equal error, failures table
+//!   → long runs (untimed, in parallel): error growth over 10 … 10⁴ periods
 //!   → results (serde) → report (charts, tera pages, JSON, CSV) → writer
 //! ```
 //!
@@ -28,11 +29,15 @@ pub mod cost_tables;
 pub mod failure_table;
 pub mod failures;
 pub mod independent;
+pub mod long_run_report;
+pub mod long_runs;
 pub mod machine;
+pub mod near_tangent;
 pub mod peer;
 pub mod peer_tables;
 pub mod problems;
 pub mod render;
+pub mod step_boundary;
 pub mod studies;
 pub mod sweep;
 pub mod tables;
@@ -44,6 +49,7 @@ use crate::models::Model;
 use analysis::{cost_rows, CostRow};
 use failure_table::{failure_table, FailureRow, ENDPOINTS};
 use independent::ReferenceCheck;
+use long_runs::LongRuns;
 use machine::Machine;
 use peer::PeerReport;
 use problems::{BenchProblem, Reference, PERIODS};
@@ -111,6 +117,8 @@ pub struct BenchResults {
     pub sweep: Vec<SweepPoint>,
     pub costs: Vec<CostRow>,
     pub failures: Failures,
+    /// Error growth over long runs (untimed).
+    pub long_runs: LongRuns,
     pub peer: PeerReport,
     /// Wall time of the measurements (s), rendering excluded.
     pub elapsed_s: f64,
@@ -204,10 +212,12 @@ pub fn run(config: &Config) -> Result<BenchResults> {
     eprintln!("bench: failure studies {:.2} s", t0.elapsed().as_secs_f64());
     let costs = cost_rows(&sweep, &ids, &names);
     peer::compare(&mut peer, &sweep, &ids, &names);
-    let failures = Failures {
-        table: failure_table(&names, &sweep, &studies),
-        studies,
-    };
+    let t0 = Instant::now();
+    let long_runs = long_runs::run(&all, config.quick)?;
+    eprintln!("bench: long runs {:.2} s", t0.elapsed().as_secs_f64());
+    let mut table = failure_table(&names, &sweep, &studies);
+    long_run_report::insert_rows(&mut table, long_run_report::failure_rows(&long_runs));
+    let failures = Failures { table, studies };
     Ok(BenchResults {
         quick: config.quick,
         repeats,
@@ -240,6 +250,7 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         sweep,
         costs,
         failures,
+        long_runs,
         peer,
         elapsed_s: started.elapsed().as_secs_f64(),
     })

@@ -67,6 +67,7 @@ pub fn render(r: &BenchResults) -> Result<Vec<OutFile>> {
         .iter()
         .chain(&ctx.order_figures)
         .chain(&ctx.failure_figures)
+        .chain(ctx.long_runs.iter().map(|c| &c.figure))
     {
         files.push(OutFile {
             path: PathBuf::from(&f.file),

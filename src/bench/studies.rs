@@ -1,13 +1,17 @@
 //! The failure studies of `stickslip bench`, run after the timed sweep and untimed, so in
 //! parallel: creep of every method and of the tanh methods over ε, regime classification and
-//! missed events near the regime boundaries, and the fitted orders of the fixed-step methods.
+//! missed events near the regime boundaries, and the fitted orders of the fixed-step methods;
+//! near-tangent sticks ([`super::near_tangent`]) and events on a step boundary
+//! ([`super::step_boundary`]).
 
 use rayon::prelude::*;
 use serde::Serialize;
 
 use super::analysis::{fit_order, Metric, OrderFit};
 use super::failures::{self, CreepPoint, MissedPoint, RegimePoint, ReversalPoint, EPSILONS};
+use super::near_tangent::{self, TangentPoint};
 use super::problems::{self, BenchProblem, Reference};
+use super::step_boundary::{self, BoundaryPoint};
 use super::sweep::{is_compiled_peer, method_kind, Grid, MethodKind, SweepPoint};
 use crate::error::Result;
 use crate::solver::{Method, Setting};
@@ -23,6 +27,10 @@ pub struct Studies {
     pub missed: Vec<MissedPoint>,
     pub regime: Vec<RegimePoint>,
     pub orders: Vec<OrderFit>,
+    /// Slips and sticks at φ = φ_c (1 ± δ), δ = 1e-3 … 1e-13.
+    pub near_tangent: Vec<TangentPoint>,
+    /// Fixed-step methods with an exact event on a step boundary.
+    pub step_boundary: Vec<BoundaryPoint>,
 }
 
 /// The fitted orders of the fixed-step methods on every problem and metric.
@@ -150,5 +158,7 @@ pub fn run(
         missed,
         regime,
         orders: orders(methods, pairs, sweep),
+        near_tangent: near_tangent::run(methods)?,
+        step_boundary: step_boundary::run(methods)?,
     })
 }
