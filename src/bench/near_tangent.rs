@@ -44,12 +44,7 @@ pub struct TangentCase {
 impl TangentCase {
     /// (slips, sticks) over the run from the closed-form regime.
     pub fn expected(&self) -> (usize, usize) {
-        let p = TANGENT_PERIODS as usize;
-        if self.side < 0 {
-            (p, p - 1)
-        } else {
-            (1, 0)
-        }
+        expected_on(self.side)
     }
 
     fn problem(&self) -> Problem {
@@ -58,6 +53,34 @@ impl TangentCase {
             ..self.bp.problem.clone()
         }
     }
+}
+
+/// (slips, sticks) over [`TANGENT_PERIODS`] periods on a side of φ_c (−1 below: a slip and a
+/// late stick every period, the last stick after the run; +1 above: one slip, never a stick).
+fn expected_on(side: i8) -> (usize, usize) {
+    let p = TANGENT_PERIODS as usize;
+    if side < 0 {
+        (p, p - 1)
+    } else {
+        (1, 0)
+    }
+}
+
+/// The study's introduction for the page: the probes, and the counts the closed form gives.
+pub fn intro() -> String {
+    let count = |(slips, sticks): (usize, usize)| {
+        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
+        format!("{} and {}", plural(slips, "slip"), plural(sticks, "stick"))
+    };
+    format!(
+        "The pulled mass (set B friction, linear law) at φ = φ_c (1 − δ), where it sticks early \
+         in each next period (late stick), and at φ = φ_c (1 + δ), where it never sticks again: \
+         at φ_c its speed touches zero tangentially. Over {TANGENT_PERIODS} periods the closed \
+         form says {} below φ_c, {} above; each method's own events are counted against that \
+         (the exact engine too). \"right\" means both sides counted as the closed form says.",
+        count(expected_on(-1)),
+        count(expected_on(1))
+    )
 }
 
 /// Both sides of φ_c at every offset.
