@@ -245,10 +245,9 @@ pub fn regime_intro() -> String {
     use super::problems::{HALT_OFFSET_Z0, HALT_THRESHOLD_Z0, PERIODS, PHI_C_OFFSET};
     format!(
         "Slips and sticks in the last of {PERIODS} periods from each method's own events, against \
-         the exact engine: the pulled mass (set B friction, linear law) at φ = φ_c (1 ± {}), \
+         the exact engine: the pulled mass (set B friction, linear law) at φ = φ_c (1 ± {PHI_C_OFFSET:e}), \
          where the speed touches zero tangentially, and the harmonic woodpecker at z0 = {} mm ± \
          {} mm, the Fig. 16 threshold of the intermediate halt.",
-        format!("{PHI_C_OFFSET:e}"),
         sig(Some(HALT_THRESHOLD_Z0 * 1e3), 5),
         sig(Some(HALT_OFFSET_Z0 * 1e3), 1)
     )
@@ -259,9 +258,8 @@ pub fn creep_intro() -> String {
     use super::failures::{CREEP_MARGIN, CREEP_STEPS, CREEP_TOL};
     format!(
         "Distance moved in the middle {} % of the first exact stick phase (each end a run of its \
-         own): every method at tolerance {} or T/{CREEP_STEPS}, then both tanh methods over ε.",
-        sig(Some(100.0 * (1.0 - 2.0 * CREEP_MARGIN)), 2),
-        format!("{CREEP_TOL:e}")
+         own): every method at tolerance {CREEP_TOL:e} or T/{CREEP_STEPS}, then both tanh methods over ε.",
+        sig(Some(100.0 * (1.0 - 2.0 * CREEP_MARGIN)), 2)
     )
 }
 
