@@ -20,6 +20,8 @@ const EVENTS_RESERVED_PER_PERIOD: usize = 8;
 const TOUCH_REL: f64 = 1e-13;
 /// More transitions than this inside one piece means the state machine cannot advance.
 const MAX_TRANSITIONS_PER_PIECE: u32 = 64;
+/// Force laws of up to this many pieces are prepared on the stack (the models' have 1 to 4).
+const INLINE_PIECES: usize = 4;
 
 /// What happened at an event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -254,11 +256,24 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
-    let prepared: Vec<PreparedPiece> = law
-        .pieces
-        .iter()
-        .map(|piece| PreparedPiece::new(body, piece, snap))
-        .collect();
+    // The prepared pieces live on the stack when there are few of them (the models' laws have
+    // at most `INLINE_PIECES`): a run then allocates only what it returns. Each is prepared in
+    // its place (a prepared piece is a few hundred bytes).
+    let mut inline: [Option<PreparedPiece>; INLINE_PIECES] = [None, None, None, None];
+    let heap: Vec<Option<PreparedPiece>>;
+    let prepared: &[Option<PreparedPiece>] = if law.pieces.len() <= INLINE_PIECES {
+        for (place, piece) in inline.iter_mut().zip(&law.pieces) {
+            *place = Some(PreparedPiece::new(body, piece, snap));
+        }
+        &inline[..law.pieces.len()]
+    } else {
+        heap = law
+            .pieces
+            .iter()
+            .map(|piece| Some(PreparedPiece::new(body, piece, snap)))
+            .collect();
+        &heap
+    };
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
     let mut dir: i8 = 0;
@@ -295,7 +310,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for prepared in &prepared {
+        for prepared in prepared.iter().flatten() {
             let piece = prepared.piece;
             let mut t = piece.start;
             let mut transitions = 0;
@@ -522,14 +537,17 @@ impl PreparedPiece<'_> {
 /// better than its ulp (see [`PreparedPiece::new`]).
 #[inline]
 fn slip_onset(prepared: &PreparedPiece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
-    [1i8, -1]
-        .into_iter()
-        .zip(&prepared.onsets)
-        .filter_map(|(s, onset)| {
-            let (crossings, _) = onset.as_ref()?;
-            crossings.first(from, snap).map(|c| (c, s))
-        })
-        .min_by(|a, b| a.0.t.value().total_cmp(&b.0.t.value()))
+    let first = |onset: &Option<Onsets>| {
+        let (crossings, _) = onset.as_ref()?;
+        crossings.first(from, snap)
+    };
+    let [up, down] = &prepared.onsets;
+    // The earlier of the two, the upward one at a tie.
+    match (first(up), first(down)) {
+        (Some(u), Some(d)) if d.t.value().total_cmp(&u.t.value()).is_lt() => Some((d, -1)),
+        (Some(u), _) => Some((u, 1)),
+        (None, d) => d.map(|d| (d, -1)),
+    }
 }
 
 /// The acceleration (m/s²) and the normal force N_f (N) at a slip onset in direction s, formed
