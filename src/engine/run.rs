@@ -481,6 +481,7 @@ impl PreparedPiece<'_> {
     /// A direction in which g stays below zero by more than its rounding over the whole range of
     /// the basis over the piece, widened by `snap` before its start ([`Piece::basis_range`]),
     /// is not searched (the direction opposite to the drive).
+    #[inline(always)]
     fn new<'a>(body: &Body, piece: &'a Piece, snap: f64) -> PreparedPiece<'a> {
         let (b_min, b_max) = piece.basis_range(snap);
         let onset = |s: i8| {
@@ -618,6 +619,19 @@ fn carry_over(
     }
 }
 
+/// `x.signum() as i8` (±1 for ±0 as for any number, 0 for NaN) from the sign bit, without the
+/// saturating conversion of a float to an integer.
+#[inline(always)]
+fn sign_of(x: f64) -> i8 {
+    if x.is_nan() {
+        0
+    } else if x.is_sign_negative() {
+        -1
+    } else {
+        1
+    }
+}
+
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
@@ -670,14 +684,14 @@ fn slide<M: ArcMotion>(
         let sign = if part_sign != 0 {
             -part_sign
         } else if i == 0 && start_sign {
-            (s * arc.a_start()).signum() as i8
+            sign_of(s * arc.a_start())
         } else {
             let w_mid = if i == 0 {
                 0.5 * arc.w(q)
             } else {
                 arc.w(0.5 * (p + q))
             };
-            (s * arc.a_at(w_mid)).signum() as i8
+            sign_of(s * arc.a_at(w_mid))
         };
         part_sign = sign;
         if *accel_sign > 0 && sign < 0 {
