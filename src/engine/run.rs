@@ -484,30 +484,7 @@ impl PreparedPiece<'_> {
     #[inline(always)]
     fn new<'a>(body: &Body, piece: &'a Piece, snap: f64) -> PreparedPiece<'a> {
         let (b_min, b_max) = piece.basis_range(snap);
-        let onset = |s: i8| {
-            // g > 0 ⇔ the static friction cannot hold the body in direction s.
-            let sf = f64::from(s);
-            let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
-            let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
-            let rounding =
-                8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
-            if g_lo.max(g_hi) < -rounding {
-                return None;
-            }
-            let exact = || {
-                let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
-                (
-                    coefficient(piece.drive.c0, piece.normal.c0),
-                    coefficient(piece.drive.c1, piece.normal.c1),
-                )
-            };
-            let crossings = UpCrossings::new(piece.basis, g, exact, piece.end, snap);
-            // Every located root of g has the same basis value, and so the same onset.
-            let at_root = crossings
-                .root()
-                .map(|c| onset_acceleration(body, piece, &c, sf));
-            Some((crossings, at_root))
-        };
+        let onset = |s: i8| Self::onsets(body, piece, s, (b_min, b_max), snap);
         let slope = |s: f64| {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
@@ -521,6 +498,40 @@ impl PreparedPiece<'_> {
             onsets: [onset(1), onset(-1)],
             slope: [slope(1.0), slope(-1.0)],
         }
+    }
+
+    /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
+    /// [`PreparedPiece::new`]); inlined into the place they are stored in.
+    #[inline(always)]
+    fn onsets(
+        body: &Body,
+        piece: &Piece,
+        s: i8,
+        (b_min, b_max): (f64, f64),
+        snap: f64,
+    ) -> Option<Onsets> {
+        // g > 0 ⇔ the static friction cannot hold the body in direction s.
+        let sf = f64::from(s);
+        let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+        let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
+        let rounding =
+            8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
+        if g_lo.max(g_hi) < -rounding {
+            return None;
+        }
+        let exact = || {
+            let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
+            (
+                coefficient(piece.drive.c0, piece.normal.c0),
+                coefficient(piece.drive.c1, piece.normal.c1),
+            )
+        };
+        let crossings = UpCrossings::new(piece.basis, g, exact, piece.end, snap);
+        // Every located root of g has the same basis value, and so the same onset.
+        let at_root = crossings
+            .root()
+            .map(|c| onset_acceleration(body, piece, &c, sf));
+        Some((crossings, at_root))
     }
 
     /// [`onset_acceleration`] at a slip onset `c` in direction `s` on this piece.
