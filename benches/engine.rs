@@ -18,11 +18,11 @@
 //! of benches/engine_instructions.rs do not, and compare versions of the engine:
 //!
 //! ```text
-//! instructions per 20-period run   before issue 14   first pass   second pass   libm calls/period
-//! pulled mass, linear law                   44 430       35 534        24 058   0
-//! pulled mass, harmonic law                 98 625       77 755        59 804   23.1 → 11.2 → 9.3
-//! woodpecker, linear law                    81 649       69 598        46 945   0
-//! woodpecker, harmonic law                 237 437      166 374       136 548   53.0 → 19.4 → 16.6
+//! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  libm calls/period
+//! pulled mass, linear law                  44 430    35 534    24 058    21 995  0
+//! pulled mass, harmonic law                98 625    77 755    59 804    58 312  23.1 → 11.2 → 9.3
+//! woodpecker, linear law                   81 649    69 598    46 945    42 858  0
+//! woodpecker, harmonic law                237 437   166 374   136 548   133 204  53.0 → 19.4 → 16.6
 //! ```
 //!
 //! (sincos counted once; the first pass re-counted on the build of the second: 35 374, 79 597,
@@ -42,6 +42,19 @@
 //! half the time on the linear laws, 0.8 of it on the harmonic ones. The harmonic laws meet
 //! their 1.5× targets and the harmonic woodpecker is at about its 15 µs; the linear laws (no
 //! libm: the time is the event machinery itself) are 10–20 % above theirs.
+//!
+//! Third pass: the prepared pieces of a law of up to 4 pieces (the models' laws) live on the
+//! stack, each prepared in its place (no allocation per run, fewer copies of the few hundred
+//! bytes of a prepared piece), the earlier of the two directions' slip onsets is picked without
+//! iterator adapters, and the sign of s·a is read from its sign bit instead of a saturating
+//! float-to-integer conversion of its signum. Fingerprints unchanged; the second pass re-counted
+//! on the build of the third: 24 052, 59 687, 46 933 and 136 201 (−8.6 %, −2.3 %, −8.7 %,
+//! −2.2 %). Back to back with the second pass, three alternating rounds at load average 1.1–1.3
+//! (2026-11-25): 1.70 / 1.74 / 1.69 → 1.74 / 1.72 / 1.70, 6.34 / 6.40 / 6.43 → 6.19 / 6.26 /
+//! 6.14, 3.33 / 3.36 / 3.33 → 3.36 / 3.37 / 3.37 and 14.5 / 14.4 / 14.8 → 14.2 / 14.2 /
+//! 14.1 µs: the harmonic laws 3 % faster (the woodpecker's within its 15 µs), the linear laws
+//! unchanged within the noise although they run 9 % fewer instructions, so their time is not
+//! the instruction count (still 3–7 % above their 1.65 and 3.15 µs at this load).
 
 use std::hint::black_box;
 

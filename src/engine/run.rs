@@ -20,6 +20,8 @@ const EVENTS_RESERVED_PER_PERIOD: usize = 8;
 const TOUCH_REL: f64 = 1e-13;
 /// More transitions than this inside one piece means the state machine cannot advance.
 const MAX_TRANSITIONS_PER_PIECE: u32 = 64;
+/// Force laws of up to this many pieces are prepared on the stack (the models' have 1 to 4).
+const INLINE_PIECES: usize = 4;
 
 /// What happened at an event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -254,11 +256,24 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
-    let prepared: Vec<PreparedPiece> = law
-        .pieces
-        .iter()
-        .map(|piece| PreparedPiece::new(body, piece, snap))
-        .collect();
+    // The prepared pieces live on the stack when there are few of them (the models' laws have
+    // at most `INLINE_PIECES`): a run then allocates only what it returns. Each is prepared in
+    // its place (a prepared piece is a few hundred bytes).
+    let mut inline: [Option<PreparedPiece>; INLINE_PIECES] = [None, None, None, None];
+    let heap: Vec<Option<PreparedPiece>>;
+    let prepared: &[Option<PreparedPiece>] = if law.pieces.len() <= INLINE_PIECES {
+        for (place, piece) in inline.iter_mut().zip(&law.pieces) {
+            *place = Some(PreparedPiece::new(body, piece, snap));
+        }
+        &inline[..law.pieces.len()]
+    } else {
+        heap = law
+            .pieces
+            .iter()
+            .map(|piece| Some(PreparedPiece::new(body, piece, snap)))
+            .collect();
+        &heap
+    };
     let (mut x, mut v) = (0.0_f64, 0.0_f64);
     // Direction of slip, 0 when stuck.
     let mut dir: i8 = 0;
@@ -295,7 +310,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
         // the next piece of the same period.
         let mut carried: Option<(&Piece, f64, f64)> = None;
-        for prepared in &prepared {
+        for prepared in prepared.iter().flatten() {
             let piece = prepared.piece;
             let mut t = piece.start;
             let mut transitions = 0;
@@ -466,32 +481,10 @@ impl PreparedPiece<'_> {
     /// A direction in which g stays below zero by more than its rounding over the whole range of
     /// the basis over the piece, widened by `snap` before its start ([`Piece::basis_range`]),
     /// is not searched (the direction opposite to the drive).
+    #[inline(always)]
     fn new<'a>(body: &Body, piece: &'a Piece, snap: f64) -> PreparedPiece<'a> {
         let (b_min, b_max) = piece.basis_range(snap);
-        let onset = |s: i8| {
-            // g > 0 ⇔ the static friction cannot hold the body in direction s.
-            let sf = f64::from(s);
-            let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
-            let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
-            let rounding =
-                8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
-            if g_lo.max(g_hi) < -rounding {
-                return None;
-            }
-            let exact = || {
-                let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
-                (
-                    coefficient(piece.drive.c0, piece.normal.c0),
-                    coefficient(piece.drive.c1, piece.normal.c1),
-                )
-            };
-            let crossings = UpCrossings::new(piece.basis, g, exact, piece.end, snap);
-            // Every located root of g has the same basis value, and so the same onset.
-            let at_root = crossings
-                .root()
-                .map(|c| onset_acceleration(body, piece, &c, sf));
-            Some((crossings, at_root))
-        };
+        let onset = |s: i8| Self::onsets(body, piece, s, (b_min, b_max), snap);
         let slope = |s: f64| {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
@@ -505,6 +498,40 @@ impl PreparedPiece<'_> {
             onsets: [onset(1), onset(-1)],
             slope: [slope(1.0), slope(-1.0)],
         }
+    }
+
+    /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
+    /// [`PreparedPiece::new`]); inlined into the place they are stored in.
+    #[inline(always)]
+    fn onsets(
+        body: &Body,
+        piece: &Piece,
+        s: i8,
+        (b_min, b_max): (f64, f64),
+        snap: f64,
+    ) -> Option<Onsets> {
+        // g > 0 ⇔ the static friction cannot hold the body in direction s.
+        let sf = f64::from(s);
+        let g = Affine::combine(sf, piece.drive, -body.mu_s, piece.normal);
+        let (g_lo, g_hi) = (g.at(b_min), g.at(b_max));
+        let rounding =
+            8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
+        if g_lo.max(g_hi) < -rounding {
+            return None;
+        }
+        let exact = || {
+            let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
+            (
+                coefficient(piece.drive.c0, piece.normal.c0),
+                coefficient(piece.drive.c1, piece.normal.c1),
+            )
+        };
+        let crossings = UpCrossings::new(piece.basis, g, exact, piece.end, snap);
+        // Every located root of g has the same basis value, and so the same onset.
+        let at_root = crossings
+            .root()
+            .map(|c| onset_acceleration(body, piece, &c, sf));
+        Some((crossings, at_root))
     }
 
     /// [`onset_acceleration`] at a slip onset `c` in direction `s` on this piece.
@@ -522,14 +549,17 @@ impl PreparedPiece<'_> {
 /// better than its ulp (see [`PreparedPiece::new`]).
 #[inline]
 fn slip_onset(prepared: &PreparedPiece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
-    [1i8, -1]
-        .into_iter()
-        .zip(&prepared.onsets)
-        .filter_map(|(s, onset)| {
-            let (crossings, _) = onset.as_ref()?;
-            crossings.first(from, snap).map(|c| (c, s))
-        })
-        .min_by(|a, b| a.0.t.value().total_cmp(&b.0.t.value()))
+    let first = |onset: &Option<Onsets>| {
+        let (crossings, _) = onset.as_ref()?;
+        crossings.first(from, snap)
+    };
+    let [up, down] = &prepared.onsets;
+    // The earlier of the two, the upward one at a tie.
+    match (first(up), first(down)) {
+        (Some(u), Some(d)) if d.t.value().total_cmp(&u.t.value()).is_lt() => Some((d, -1)),
+        (Some(u), _) => Some((u, 1)),
+        (None, d) => d.map(|d| (d, -1)),
+    }
 }
 
 /// The acceleration (m/s²) and the normal force N_f (N) at a slip onset in direction s, formed
@@ -600,6 +630,19 @@ fn carry_over(
     }
 }
 
+/// `x.signum() as i8` (±1 for ±0 as for any number, 0 for NaN) from the sign bit, without the
+/// saturating conversion of a float to an integer.
+#[inline(always)]
+fn sign_of(x: f64) -> i8 {
+    if x.is_nan() {
+        0
+    } else if x.is_sign_negative() {
+        -1
+    } else {
+        1
+    }
+}
+
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
@@ -652,14 +695,14 @@ fn slide<M: ArcMotion>(
         let sign = if part_sign != 0 {
             -part_sign
         } else if i == 0 && start_sign {
-            (s * arc.a_start()).signum() as i8
+            sign_of(s * arc.a_start())
         } else {
             let w_mid = if i == 0 {
                 0.5 * arc.w(q)
             } else {
                 arc.w(0.5 * (p + q))
             };
-            (s * arc.a_at(w_mid)).signum() as i8
+            sign_of(s * arc.a_at(w_mid))
         };
         part_sign = sign;
         if *accel_sign > 0 && sign < 0 {
