@@ -20,16 +20,16 @@
 //! ```text
 //! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  libm calls/period
 //! pulled mass, linear law                  44 430    35 534    24 058    21 995  0
-//! pulled mass, harmonic law                98 625    77 755    59 804    58 312  23.1 → 11.2 → 9.3
+//! pulled mass, harmonic law                98 625    77 755    59 804    58 312  23.1 → 11.2 | 9.35
 //! woodpecker, linear law                   81 649    69 598    46 945    42 858  0
-//! woodpecker, harmonic law                237 437   166 374   136 548   133 204  53.0 → 19.4 → 16.6
+//! woodpecker, harmonic law                237 437   166 374   136 548   133 204  53.0 → 19.4 | 21.85
 //! ```
 //!
 //! (libm calls before and after the first pass with a sin and a cos of one angle counted once;
 //! after the third pass every call counted, from callgrind's call counts with
 //! `callgrind_annotate --tree=caller`: pulled mass cos 5.25, sin 3.05, asin 1.05; woodpecker
-//! cos 10.55, sin 7.15, acos 2.0, asin 2.15 per period. The first pass re-counted on the build of the second: 35 374, 79 597,
-//! 69 274 and 168 798.) First pass, measured with the command above back to back with the engine
+//! cos 10.55, sin 7.15, acos 2.0, asin 2.15 per period. The first pass re-counted on the build
+//! of the second: 35 374, 79 597, 69 274 and 168 798.) First pass, measured with the command above back to back with the engine
 //! before issue 14 on the shared 2-core machine at load average 3 (2026-11-25): 3.96 → 3.37,
 //! 10.09 → 8.23, 7.86 → 6.76 and 22.1 → 19.4 µs.
 //!
