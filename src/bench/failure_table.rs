@@ -7,7 +7,7 @@ use serde::Serialize;
 
 use super::analysis::{Metric, OrderFit};
 use super::failures::{CreepPoint, MissedPoint, RegimePoint, ReversalPoint};
-use super::problems::PERIODS;
+use super::problems::{title, PERIODS};
 use super::sweep::{is_compiled_peer, method_kind, MethodKind, SweepPoint};
 use super::Studies;
 use crate::output::format::sig;
@@ -102,7 +102,7 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
             ok.len(),
             p.n_events.unwrap_or(0),
             p.n_events_exact,
-            p.problem,
+            title(&p.problem),
             setting_of(p)
         ),
     };
@@ -155,7 +155,7 @@ fn reversal_row(m: &str, ok: &[&SweepPoint], points: &[ReversalPoint]) -> Failur
         format!(
             "max {} per period ({}, {}); exact: 0",
             sig(Some(per_period), 3),
-            p.problem,
+            title(&p.problem),
             setting_of(p)
         )
     } else {
@@ -174,7 +174,11 @@ fn reversal_row(m: &str, ok: &[&SweepPoint], points: &[ReversalPoint]) -> Failur
         .into_iter()
         .filter_map(|id| {
             let k = super::failures::reversal_slope(points, id, m)?;
-            Some(format!("{id} ∝ h^{}", super::charts::slope_text(Some(k))))
+            Some(format!(
+                "{} ∝ h^{}",
+                title(id),
+                super::charts::slope_text(Some(k))
+            ))
         })
         .collect();
     if per_period > 0.0 && !slopes.is_empty() {
@@ -188,13 +192,13 @@ fn creep_row(m: &str, creep: &[CreepPoint]) -> FailureRow {
     let parts: Vec<String> = mine
         .iter()
         .map(|c| match (&c.error, c.creep_m) {
-            (Some(e), _) => format!("{}: error ({e})", c.problem),
+            (Some(e), _) => format!("{}: error ({e})", title(&c.problem)),
             (None, v) if c.at_rest == Some(true) && v.is_some_and(|v| v > 0.0) => format!(
                 "{}: at rest (v = 0) at both ends; the two runs' positions differ by {} m",
-                c.problem,
+                title(&c.problem),
                 sig(v, 3)
             ),
-            (None, v) => format!("{}: {} m", c.problem, sig(v, 3)),
+            (None, v) => format!("{}: {} m", title(&c.problem), sig(v, 3)),
         })
         .collect();
     let fails = mine.iter().any(|c| {
@@ -247,7 +251,7 @@ fn regime_row(m: &str, regime: &[RegimePoint]) -> FailureRow {
             let exact = wrong.first().map_or(String::new(), |r| {
                 format!("{}/{}", r.exact_slips, r.exact_sticks)
             });
-            format!("{case} (exact {exact}): {}", found.join(", "))
+            format!("{} (exact {exact}): {}", title(case), found.join(", "))
         })
         .collect();
     let measured = if n_wrong == 0 {
@@ -279,7 +283,7 @@ fn missed_row(m: &str, missed: &[MissedPoint]) -> FailureRow {
             w.missed.unwrap_or(0),
             w.n_exact,
             w.tolerance,
-            w.problem
+            title(&w.problem)
         ));
     }
     if errors > 0 {
@@ -311,19 +315,23 @@ fn order_row(m: &str, orders: &[OrderFit], pts: &[&SweepPoint]) -> FailureRow {
                 .collect();
             let miscounted = runs.iter().filter(|p| p.count_mismatch()).count();
             match o.order {
-                Some(_) => format!("{} {}", o.problem, super::charts::slope_text(o.order)),
+                Some(_) => format!(
+                    "{} {}",
+                    title(&o.problem),
+                    super::charts::slope_text(o.order)
+                ),
                 None if !runs.is_empty() && miscounted == runs.len() => {
                     all_miscounted = true;
                     format!(
                         "{} — (no fit: all {} runs find a wrong number of events)",
-                        o.problem,
+                        title(&o.problem),
                         runs.len()
                     )
                 }
                 None => format!(
                     "{} — (fewer than 3 runs with the right event count and an error above \
                      round-off)",
-                    o.problem
+                    title(&o.problem)
                 ),
             }
         })
@@ -381,7 +389,8 @@ fn stiffness_row(m: &str, sweep: &[CreepPoint]) -> FailureRow {
                 let growth = b / a;
                 fails |= growth > STIFF_GROWTH;
                 parts.push(format!(
-                    "{id}: {} → {} rhs/period from ε = {e_hi:.0e} to {e_lo:.0e} m/s (×{})",
+                    "{}: {} → {} rhs/period from ε = {e_hi:.0e} to {e_lo:.0e} m/s (×{})",
+                    title(id),
                     sig(Some(a), 3),
                     sig(Some(b), 3),
                     sig(Some(growth), 3)

@@ -43,7 +43,13 @@ pub fn peer_section(r: &BenchResults) -> PeerSection {
         } else {
             protocol(points)
         },
-        failures: points.iter().filter_map(failure).collect(),
+        failures: points
+            .iter()
+            .filter_map(|p| {
+                let title = r.problems.iter().find(|q| q.id == p.problem);
+                failure(p, title.map_or(p.problem.as_str(), |q| q.title.as_str()))
+            })
+            .collect(),
         comparison: comparison(r),
         targets: targets(r),
     }
@@ -76,9 +82,9 @@ fn protocol(points: &[PeerPoint]) -> String {
     )
 }
 
-/// A failed run in words, or none for a run that succeeded.
-fn failure(p: &PeerPoint) -> Option<String> {
-    let run = format!("{}, {}, tolerance {:.0e}", p.problem, p.method, p.tol);
+/// A failed run on the problem titled `problem`, in words, or none for a run that succeeded.
+fn failure(p: &PeerPoint, problem: &str) -> Option<String> {
+    let run = format!("{problem}, {}, tolerance {:.0e}", p.method, p.tol);
     if !p.ok() {
         return Some(format!(
             "{run}: {}",
@@ -207,17 +213,18 @@ mod tests {
 
     #[test]
     fn a_run_with_a_wrong_event_count_says_what_it_missed() {
-        let text = failure(&point(40, Some((40, 0.08887113616788032, "stick")))).unwrap();
+        let missed = Some((40, 0.08887113616788032, "stick"));
+        let text = failure(&point(40, missed), "Woodpecker, Fig. 15, harmonic law").unwrap();
         assert_eq!(
             text,
-            "woodpecker_fig15_harmonic, DOP853, tolerance 1e-3: 40 of 80 events; 40 exact events \
+            "Woodpecker, Fig. 15, harmonic law, DOP853, tolerance 1e-3: 40 of 80 events; 40 exact events \
              missed (none of the same kind within T/100), the first a stick at 0.0888711 s"
         );
     }
 
     #[test]
     fn a_run_with_the_exact_event_count_is_not_a_failure() {
-        assert_eq!(failure(&point(80, None)), None);
+        assert_eq!(failure(&point(80, None), "Woodpecker"), None);
     }
 
     #[test]

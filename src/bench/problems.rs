@@ -161,6 +161,24 @@ pub fn boundary_problems() -> Result<Vec<BenchProblem>> {
     Ok(out)
 }
 
+/// The title of the sweep or boundary problem `id` ("Pulled mass, set B, linear law"), for the
+/// tables a person reads; an unknown id is returned as it is.
+pub fn title(id: &str) -> String {
+    static TITLES: std::sync::OnceLock<Vec<(String, String)>> = std::sync::OnceLock::new();
+    let titles = TITLES.get_or_init(|| {
+        let all = [sweep_problems(), boundary_problems()];
+        all.into_iter()
+            .flatten()
+            .flatten()
+            .map(|bp| (bp.id, bp.title))
+            .collect()
+    });
+    titles
+        .iter()
+        .find(|(k, _)| k == id)
+        .map_or_else(|| id.to_string(), |(_, t)| t.clone())
+}
+
 fn sign_char(sign: f64) -> char {
     if sign < 0.0 {
         '−'
@@ -209,6 +227,19 @@ pub const REFERENCE_TOLERANCE: f64 = 1e-15;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn ids_read_as_titles() {
+        assert_eq!(
+            title("pulled_mass_b_linear"),
+            "Pulled mass, set B, linear law"
+        );
+        assert_eq!(
+            title("woodpecker_halt_below_harmonic"),
+            "Woodpecker, z0 = 7.0646 mm, harmonic law"
+        );
+        assert_eq!(title("no_such_problem"), "no_such_problem");
+    }
 
     #[test]
     fn set_b_references_have_one_slip_and_one_stick_per_period() {

@@ -158,7 +158,7 @@ pub fn orders(r: &BenchResults) -> Table {
             .map(|o| {
                 row(
                     vec![
-                        o.problem.clone(),
+                        super::problems::title(&o.problem),
                         o.method.clone(),
                         o.metric.id().to_string(),
                         sig(o.order, 3),
@@ -286,7 +286,7 @@ pub fn regime(r: &BenchResults) -> Table {
                 };
                 row(
                     vec![
-                        p.case.clone(),
+                        super::problems::title(&p.case),
                         p.method.clone(),
                         p.setting.clone(),
                         got,
@@ -319,7 +319,7 @@ pub fn creep(r: &BenchResults) -> Table {
             .map(|c| {
                 row(
                     vec![
-                        c.problem.clone(),
+                        super::problems::title(&c.problem),
                         c.method.clone(),
                         c.epsilon_m_s.map_or("—".into(), |e| format!("{e:.0e}")),
                         format!(
