@@ -9,12 +9,12 @@
 //! Absent Python or mpmath is a plain statement on the page, never an error.
 
 use std::io::Write;
-use std::path::PathBuf;
 use std::process::{Command, Stdio};
 
 use serde::Serialize;
 use serde_json::{json, Value};
 
+use super::peer::script_path;
 use super::problems::{BenchProblem, Reference, PERIODS};
 
 /// The script, relative to the working directory or to the crate.
@@ -65,15 +65,6 @@ impl ReferenceCheck {
     }
 }
 
-fn script_path() -> Option<PathBuf> {
-    [
-        PathBuf::from(SCRIPT),
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(SCRIPT),
-    ]
-    .into_iter()
-    .find(|p| p.is_file())
-}
-
 /// Runs the 40-digit integration on `pairs` and compares it with their exact references.
 pub fn check(pairs: &[(&BenchProblem, &Reference)]) -> ReferenceCheck {
     let started = std::time::Instant::now();
@@ -93,7 +84,7 @@ pub fn check(pairs: &[(&BenchProblem, &Reference)]) -> ReferenceCheck {
 }
 
 fn run_script(pairs: &[(&BenchProblem, &Reference)]) -> Result<Vec<Value>, String> {
-    let script = script_path().ok_or_else(|| format!("{SCRIPT} was not found"))?;
+    let script = script_path(SCRIPT).ok_or_else(|| format!("{SCRIPT} was not found"))?;
     let input = Value::Array(
         pairs
             .iter()

@@ -175,11 +175,12 @@ impl PeerReport {
     }
 }
 
-/// The script's path: under the working directory, else under the crate's source folder.
-fn script_path() -> Option<PathBuf> {
+/// A script of the repository (`rel`): under the working directory, else under the crate's
+/// source folder.
+pub(super) fn script_path(rel: &str) -> Option<PathBuf> {
     [
-        PathBuf::from(SCRIPT),
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(SCRIPT),
+        PathBuf::from(rel),
+        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel),
     ]
     .into_iter()
     .find(|p| p.is_file())
@@ -268,7 +269,7 @@ pub fn run(
             format!("SciPy comparison not available: {reason}."),
         );
     }
-    let Some(script) = script_path() else {
+    let Some(script) = script_path(SCRIPT) else {
         return PeerReport::without(
             true,
             "absent",
@@ -473,7 +474,7 @@ mod tests {
             eprintln!("skipped: {reason}");
             return None;
         }
-        Some(script_path().expect("bench/scipy_peer.py"))
+        Some(script_path(SCRIPT).expect("bench/scipy_peer.py"))
     }
 
     /// Times over several periods: every piece start and middle, and irregular ones.
