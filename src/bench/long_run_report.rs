@@ -67,6 +67,7 @@ fn case_table(r: &LongRuns, case: &str) -> Table {
     let mut header = vec!["method".to_string(), "setting".to_string()];
     header.extend(r.checkpoints.iter().map(|n| format!("{n} periods")));
     header.push("x error grows as".to_string());
+    header.push("x error / x_exact grows as".to_string());
     let rows = series(r, case)
         .into_iter()
         .map(|((m, s), pts)| {
@@ -78,10 +79,12 @@ fn case_table(r: &LongRuns, case: &str) -> Table {
                         .map_or("—".to_string(), |p| cell(p)),
                 );
             }
-            cells.push(match growth(&pts) {
-                Some(k) => format!("N^{k:.2}"),
-                None => "—".to_string(),
-            });
+            for relative in [false, true] {
+                cells.push(match growth(&pts, relative) {
+                    Some(k) => format!("N^{k:.2}"),
+                    None => "—".to_string(),
+                });
+            }
             let failed = pts.iter().any(|p| p.failed());
             row(cells, if failed { "fail" } else { "" })
         })
@@ -149,8 +152,11 @@ pub fn protocol(r: &LongRuns) -> String {
          |t − t_exact| over all slips, sticks and reversals matched in order (given only when \
          the kinds and the count agree with the exact ones), and |x(t_end) − x_exact(t_end)|. \
          A run with a different number or order of events is marked wrong, with what it missed \
-         or added. The growth column is the slope of log10 |x error| against log10 N between \
-         the shortest and the longest right run.",
+         or added. The growth columns are the slopes of log10 |x error|, and of log10 of it \
+         divided by the distance travelled |x_exact|, against log10 N between the shortest and \
+         the longest right run: where the body travels ever faster (continuous slip) an error \
+         growing faster than N can still be a constant or slowly growing fraction of the \
+         distance.",
         list(r.checkpoints.iter().map(u32::to_string).collect()),
         list(TOLERANCES.iter().map(|t| format!("{t:.0e}")).collect()),
         list(STEPS_PER_PERIOD.iter().map(|n| format!("T/{n}")).collect()),

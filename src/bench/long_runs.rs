@@ -134,6 +134,8 @@ pub struct LongPoint {
     /// Max event-time error (s), only when kinds and count agree with the exact events.
     pub err_event_s: Option<f64>,
     pub err_x_m: Option<f64>,
+    /// The exact position at the end of the run (m).
+    pub x_exact_m: f64,
     /// What differs from the exact events, in words (`None`: same kinds in the same order).
     pub wrong_events: Option<String>,
     pub rhs_evals: Option<u64>,
@@ -245,6 +247,7 @@ pub fn point(
         n_exact: exact.events.len(),
         err_event_s: None,
         err_x_m: None,
+        x_exact_m: exact.x_end,
         wrong_events: None,
         rhs_evals: None,
         error: None,
@@ -350,17 +353,18 @@ fn settings_rank(label: &str) -> (u8, i64) {
 }
 
 /// Slope of log10 |x error| against log10 periods between the shortest and the longest run
-/// without failure (the growth exponent p of error ∝ N^p).
-pub fn growth(points: &[&LongPoint]) -> Option<f64> {
+/// without failure (the growth exponent p of error ∝ N^p); with `relative`, of the error
+/// divided by the distance travelled, |x error| / |x_exact|.
+pub fn growth(points: &[&LongPoint], relative: bool) -> Option<f64> {
     let ok: Vec<(f64, f64)> = points
         .iter()
         .filter(|p| !p.failed())
         .filter_map(|p| {
-            Some((
-                f64::from(p.periods).log10(),
-                p.err_x_m.filter(|e| *e > 0.0)?,
-            ))
+            let err = p.err_x_m.filter(|e| *e > 0.0)?;
+            let scale = if relative { p.x_exact_m.abs() } else { 1.0 };
+            Some((f64::from(p.periods).log10(), err / scale))
         })
+        .filter(|(_, e)| e.is_finite() && *e > 0.0)
         .map(|(n, e)| (n, e.log10()))
         .collect();
     let (first, last) = (ok.first()?, ok.last()?);
@@ -441,6 +445,14 @@ mod tests {
         let (short, long) = (points[0].err_x_m.unwrap(), points[1].err_x_m.unwrap());
         assert!(long > 10.0 * short, "{short:e} → {long:e}");
         let refs: Vec<&LongPoint> = points.iter().collect();
-        assert!(growth(&refs).is_some_and(|p| p > 0.5));
+        assert!(growth(&refs, false).is_some_and(|p| p > 0.5));
+        // The body advances about equally every period: the relative error grows one power
+        // of N less.
+        let relative = growth(&refs, true).expect("relative growth");
+        let absolute = growth(&refs, false).expect("growth");
+        assert!(
+            (absolute - relative - 1.0).abs() < 0.1,
+            "{absolute} {relative}"
+        );
     }
 }
