@@ -25,11 +25,13 @@
 
 use std::hint::black_box;
 
+#[path = "../tests/common/random_sets.rs"]
+mod random_sets;
+
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use stickslip::engine::{integrate, Body, ForceLaw, Run, RunOptions};
 use stickslip::models::pulled_mass::PulledMassParams;
-use stickslip::models::woodpecker::formula::Counterpart;
-use stickslip::models::woodpecker::{OmegaMode, WoodpeckerParams};
+use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::{pulled_mass, woodpecker, LawKind};
 
 /// Periods per run, as in benches/engine.rs.
@@ -112,10 +114,6 @@ const FNV_START: u64 = 0xcbf2_9ce4_8422_2325;
 /// Random sets per model and law of the `fingerprint` mode.
 const RANDOM_SETS: usize = 2000;
 
-fn log_uniform(rng: &mut StdRng, lo: f64, hi: f64) -> f64 {
-    10f64.powf(rng.gen_range(lo.log10()..hi.log10()))
-}
-
 /// A pulled-mass set as in tests/reference.rs: φ log-uniform from 1e-9 up to the immediate-slip
 /// bound 2μs, μd = μs for every third set.
 fn random_pulled_mass(rng: &mut StdRng, i: usize) -> PulledMassParams {
@@ -125,7 +123,7 @@ fn random_pulled_mass(rng: &mut StdRng, i: usize) -> PulledMassParams {
     } else {
         mu_s * rng.gen_range(0.3..1.0)
     };
-    let phi = log_uniform(rng, 1e-9, 2.0 * mu_s * 0.9999);
+    let phi = random_sets::log_uniform(rng, 1e-9, 2.0 * mu_s * 0.9999);
     let (mass, k, g) = (rng.gen_range(0.01..1.0), rng.gen_range(1.0..100.0), 9.81);
     PulledMassParams {
         mu_s,
@@ -134,35 +132,6 @@ fn random_pulled_mass(rng: &mut StdRng, i: usize) -> PulledMassParams {
         k,
         force: phi * mass * g,
         g,
-    }
-}
-
-/// A woodpecker set as in tests/reference.rs (light sleeves make short slips).
-fn random_woodpecker(rng: &mut StdRng, i: usize) -> WoodpeckerParams {
-    let mu_s = rng.gen_range(0.2..1.0);
-    let d0 = rng.gen_range(0.002..0.02);
-    WoodpeckerParams {
-        mu_s,
-        mu_d: if i % 3 == 0 {
-            mu_s
-        } else {
-            mu_s * rng.gen_range(0.3..=1.0)
-        },
-        k: rng.gen_range(2.0..60.0),
-        m_sleeve: log_uniform(rng, 1e-8, 0.03),
-        m_bird: rng.gen_range(0.003..0.05),
-        l: 0.016,
-        h: 0.007,
-        z0: d0 * rng.gen_range(-0.2..0.999),
-        d0,
-        g: 9.81,
-        lever: Some(rng.gen_range(0.8..5.0)),
-        omega: OmegaMode::Bird,
-        counterpart: [
-            Counterpart::Extremes,
-            Counterpart::Zeros,
-            Counterpart::Tangent,
-        ][rng.gen_range(0..3)],
     }
 }
 
@@ -187,7 +156,7 @@ fn random_fingerprints(list: bool) {
                 print_events(&format!("{law_kind:?} pulled mass {i}"), &run);
             }
             pulled = run.map_or(pulled ^ 1, |r| fingerprint(pulled, &r));
-            let w = random_woodpecker(&mut rng, i);
+            let w = random_sets::woodpecker(&mut rng, i);
             let run = woodpecker::force_law(&w, law_kind)
                 .and_then(|law| integrate(&woodpecker::body(&w), &law, &opts));
             if list {

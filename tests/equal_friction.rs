@@ -3,6 +3,9 @@
 //! sets of both models and both laws integrate without error, and each slip of the linear pulled
 //! mass starts at τ_SL of (13), not a few ulps later.
 
+#[path = "common/random_sets.rs"]
+mod random_sets;
+
 use rand::{rngs::StdRng, Rng, SeedableRng};
 use stickslip::engine::{integrate, EventKind, RunOptions};
 use stickslip::models::pulled_mass::formula as cf;
@@ -18,18 +21,14 @@ const OPTS: RunOptions = RunOptions {
     dissipation: false,
 };
 
-fn log_uniform(rng: &mut StdRng, lo: f64, hi: f64) -> f64 {
-    10f64.powf(rng.gen_range(lo.log10()..hi.log10()))
-}
-
 fn pulled_mass_set(rng: &mut StdRng, i: usize) -> PulledMassParams {
     let mu = rng.gen_range(0.05..1.2);
     // Half of the sets just below the immediate-slip bound 2μ (the slip starts next to t = 0,
     // where the onset is ill-conditioned), the others log-uniform from 1e-9 up.
     let phi = if i % 2 == 0 {
-        2.0 * mu * (1.0 - log_uniform(rng, 1e-15, 1e-2))
+        2.0 * mu * (1.0 - random_sets::log_uniform(rng, 1e-15, 1e-2))
     } else {
-        log_uniform(rng, 1e-9, 2.0 * mu)
+        random_sets::log_uniform(rng, 1e-9, 2.0 * mu)
     };
     let (mass, g) = (rng.gen_range(0.005..2.0), rng.gen_range(1.0..25.0));
     PulledMassParams {
@@ -104,7 +103,7 @@ fn woodpecker_sets_with_equal_coefficients_integrate() {
             mu_s: mu,
             mu_d: mu,
             k: rng.gen_range(2.0..60.0),
-            m_sleeve: log_uniform(&mut rng, 1e-8, 0.03),
+            m_sleeve: random_sets::log_uniform(&mut rng, 1e-8, 0.03),
             m_bird: rng.gen_range(0.003..0.05),
             l: 0.016,
             h: 0.007,

@@ -13,6 +13,9 @@
 //! errors is printed with `cargo test --release --test reference -- --nocapture`;
 //! `STICKSLIP_REFERENCE=report` prints it without asserting (to measure an older engine).
 
+#[path = "common/random_sets.rs"]
+mod random_sets;
+
 use std::io::Write;
 use std::process::{Command, Stdio};
 
@@ -20,8 +23,6 @@ use rand::{rngs::StdRng, Rng, SeedableRng};
 use serde_json::{json, Value};
 use stickslip::engine::{integrate, Body, EventKind, ForceLaw, Run, RunOptions};
 use stickslip::models::pulled_mass::PulledMassParams;
-use stickslip::models::woodpecker::formula::Counterpart;
-use stickslip::models::woodpecker::{OmegaMode, WoodpeckerParams};
 use stickslip::models::{pulled_mass, woodpecker, LawKind};
 
 const PERIODS: u32 = 12;
@@ -39,10 +40,6 @@ struct Case {
     body: Body,
 }
 
-fn log_uniform(rng: &mut StdRng, lo: f64, hi: f64) -> f64 {
-    10f64.powf(rng.gen_range(lo.log10()..hi.log10()))
-}
-
 fn pulled_mass_cases(rng: &mut StdRng, law: LawKind, group: &'static str) -> Vec<Case> {
     (0..SETS_PER_GROUP)
         .map(|i| {
@@ -55,9 +52,9 @@ fn pulled_mass_cases(rng: &mut StdRng, law: LawKind, group: &'static str) -> Vec
             // φ log-uniform from 1e-9 to just below 2μs (the immediate-slip bound), and every
             // fourth set within 1e-14..1e-2 (relative) of that bound: the slip starts near t = 0.
             let phi = if i % 4 == 1 {
-                2.0 * mu_s * (1.0 - log_uniform(rng, 1e-14, 1e-2))
+                2.0 * mu_s * (1.0 - random_sets::log_uniform(rng, 1e-14, 1e-2))
             } else {
-                log_uniform(rng, 1e-9, 2.0 * mu_s * 0.9999)
+                random_sets::log_uniform(rng, 1e-9, 2.0 * mu_s * 0.9999)
             };
             let (mass, k, g) = (rng.gen_range(0.01..1.0), rng.gen_range(1.0..100.0), 9.81);
             let p = PulledMassParams {
@@ -81,32 +78,7 @@ fn pulled_mass_cases(rng: &mut StdRng, law: LawKind, group: &'static str) -> Vec
 fn woodpecker_cases(rng: &mut StdRng, law: LawKind, group: &'static str) -> Vec<Case> {
     let mut out = Vec::new();
     while out.len() < SETS_PER_GROUP {
-        let mu_s = rng.gen_range(0.2..1.0);
-        let d0 = rng.gen_range(0.002..0.02);
-        let p = WoodpeckerParams {
-            mu_s,
-            mu_d: if out.len() % 3 == 0 {
-                mu_s
-            } else {
-                mu_s * rng.gen_range(0.3..=1.0)
-            },
-            k: rng.gen_range(2.0..60.0),
-            // Light sleeves make short slips (W_S small against the spring force).
-            m_sleeve: log_uniform(rng, 1e-8, 0.03),
-            m_bird: rng.gen_range(0.003..0.05),
-            l: 0.016,
-            h: 0.007,
-            z0: d0 * rng.gen_range(-0.2..0.999),
-            d0,
-            g: 9.81,
-            lever: Some(rng.gen_range(0.8..5.0)),
-            omega: OmegaMode::Bird,
-            counterpart: [
-                Counterpart::Extremes,
-                Counterpart::Zeros,
-                Counterpart::Tangent,
-            ][rng.gen_range(0..3)],
-        };
+        let p = random_sets::woodpecker(rng, out.len());
         if p.validate().is_err() {
             continue;
         }
