@@ -68,7 +68,7 @@
 
 use std::hint::black_box;
 
-use stickslip::engine::Body;
+use stickslip::engine::{Basis, Body, Piece};
 use stickslip::models::pulled_mass::{self, PulledMassParams};
 use stickslip::models::LawKind;
 use stickslip::solver::dopri5::tableau::*;
@@ -213,15 +213,20 @@ fn textbook(
     y
 }
 
+/// The single piece of the harmonic law of `problem`, with its ω (rad/s).
+fn harmonic_piece(problem: &Problem) -> (Piece, f64) {
+    let piece = problem.law.pieces[0];
+    match piece.basis {
+        Basis::Cos { omega } => (piece, omega),
+        Basis::Linear { .. } => unreachable!("the harmonic law"),
+    }
+}
+
 /// `runs` textbook integrations of the slip equation of `problem` (s = +1) over its period
 /// boundaries; the function callgrind collects in.
 #[inline(never)]
 fn textbook_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats) {
-    let piece = problem.law.pieces[0];
-    let omega = match piece.basis {
-        stickslip::engine::Basis::Cos { omega } => omega,
-        stickslip::engine::Basis::Linear { .. } => unreachable!("the harmonic law"),
-    };
+    let (piece, omega) = harmonic_piece(problem);
     let body: Body = problem.body;
     let stops: Vec<f64> = (1..=PERIODS as u32)
         .map(|k| f64::from(k) * problem.law.period)
@@ -315,11 +320,7 @@ fn fingerprints() {
 /// function callgrind collects in.
 #[inline(never)]
 fn smooth_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats) {
-    let piece = problem.law.pieces[0];
-    let omega = match piece.basis {
-        stickslip::engine::Basis::Cos { omega } => omega,
-        stickslip::engine::Basis::Linear { .. } => unreachable!("the harmonic law"),
-    };
+    let (piece, omega) = harmonic_piece(problem);
     let body: Body = problem.body;
     let mut last = ([0.0; 2], Stats::default());
     for _ in 0..runs {
