@@ -68,8 +68,8 @@ fn expected_on(side: i8) -> (usize, usize) {
 
 /// The study's introduction for the page: the probes, and the counts the closed form gives.
 pub fn intro() -> String {
+    use super::long_runs::plural;
     let count = |(slips, sticks): (usize, usize)| {
-        let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
         format!("{} and {}", plural(slips, "slip"), plural(sticks, "stick"))
     };
     format!(
