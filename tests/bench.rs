@@ -33,7 +33,7 @@ const TOP_KEYS: [&str; 14] = [
     "elapsed_s",
 ];
 /// Keys of `failures`: the table and the studies behind it.
-const FAILURE_KEYS: [&str; 9] = [
+const FAILURE_KEYS: [&str; 10] = [
     "table",
     "reversals",
     "creep",
@@ -43,6 +43,7 @@ const FAILURE_KEYS: [&str; 9] = [
     "orders",
     "near_tangent",
     "step_boundary",
+    "crowding",
 ];
 /// Keys of `machine`.
 const MACHINE_KEYS: [&str; 6] = ["crate_version", "profile", "nproc", "cpu", "os", "arch"];
@@ -388,4 +389,28 @@ fn near_tangent_and_step_boundary_studies_measure_what_they_claim() {
         .expect("moreau on a slip");
     let late = moreau_slip["steps_late_on"].as_f64().expect("reported");
     assert!(late > 0.5, "{moreau_slip}");
+}
+
+#[test]
+fn crowding_study_resolves_shrinking_slips_with_the_exact_engine_and_dopri5() {
+    let crowding = array(&quick().json["failures"], "crowding");
+    let of = |m: &str| -> Vec<&Value> { crowding.iter().filter(|p| p["method"] == m).collect() };
+    assert_eq!(of("exact").len(), 10, "5 ratios × 2 laws");
+    assert!(of("exact").iter().all(|p| p["wrong"] == false));
+    let dopri5_tight: Vec<&Value> = of("dopri5")
+        .into_iter()
+        .filter(|p| p["setting"] == "tol 1e-9")
+        .collect();
+    assert_eq!(dopri5_tight.len(), 10);
+    assert!(
+        dopri5_tight.iter().all(|p| p["wrong"] == false),
+        "{dopri5_tight:?}"
+    );
+    assert!(
+        of("moreau").iter().any(|p| p["wrong"] == true),
+        "a slip far shorter than moreau's step is lost"
+    );
+    let page = std::fs::read_to_string(quick().out.join("bench.md")).expect("bench.md");
+    assert!(page.contains("### Crowding events: a slip that shrinks to nothing"));
+    assert!(page.contains("#### Harmonic law, against the exact engine"));
 }

@@ -5,6 +5,7 @@ use serde::Serialize;
 
 use super::charts;
 use super::cost_tables;
+use super::crowding::{crowd_tables, CrowdTable};
 use super::failures::reversal_slope;
 use super::long_run_report::{self, LongRunCtx};
 use super::near_tangent::tangent_table;
@@ -60,6 +61,8 @@ pub struct Ctx {
     near_tangent: Table,
     near_tangent_intro: String,
     step_boundary: Table,
+    crowding: Vec<CrowdTable>,
+    crowding_intro: String,
     pub long_runs: Vec<LongRunCtx>,
     long_run_protocol: String,
     peer: PeerSection,
@@ -198,6 +201,8 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         near_tangent,
         near_tangent_intro: super::near_tangent::intro(),
         step_boundary,
+        crowding: crowd_tables(&r.failures.studies.crowding),
+        crowding_intro: super::crowding::intro(),
         long_runs,
         long_run_protocol,
         peer: peer_section(r),

@@ -117,6 +117,7 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
     rows.push(creep_row(m, &s.creep));
     rows.push(regime_row(m, &s.regime));
     rows.push(super::near_tangent::failure_row(m, &s.near_tangent));
+    rows.push(super::crowding::failure_row(m, &s.crowding));
     if is_compiled_peer(m) {
         rows.push(missed_row(m, &s.missed));
     }

@@ -26,6 +26,7 @@ pub mod analysis;
 pub mod charts;
 pub mod context;
 pub mod cost_tables;
+pub mod crowding;
 pub mod failure_table;
 pub mod failures;
 pub mod independent;

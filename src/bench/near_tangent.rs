@@ -18,7 +18,7 @@ use super::failure_table::FailureRow;
 use super::failures::regime_settings;
 use super::problems::{self, transitions, BenchProblem};
 use super::sweep::method_kind;
-use super::tables::{row, table, Table};
+use super::tables::{by_method_and_setting, row, table, Table};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::phi_continuous;
 use crate::models::pulled_mass::PulledMassParams;
@@ -198,32 +198,15 @@ fn found(p: &TangentPoint) -> String {
     }
 }
 
-/// The settings of method `m` in the order run, with their points.
-fn by_setting<'a>(m: &str, points: &'a [TangentPoint]) -> Vec<(String, Vec<&'a TangentPoint>)> {
-    let mut out: Vec<(String, Vec<&TangentPoint>)> = Vec::new();
-    for p in points.iter().filter(|p| p.method == m) {
-        match out.iter_mut().find(|(s, _)| *s == p.setting) {
-            Some((_, v)) => v.push(p),
-            None => out.push((p.setting.clone(), vec![p])),
-        }
-    }
-    out
-}
-
 /// One row per method and setting, one column per offset: "right", or what was found.
 pub fn tangent_table(points: &[TangentPoint]) -> Table {
     let mut header = vec!["method".to_string(), "setting".to_string()];
     header.extend(OFFSETS.iter().map(|d| format!("δ = {d:.0e}")));
-    let mut methods: Vec<&str> = Vec::new();
-    for p in points {
-        if !methods.contains(&p.method.as_str()) {
-            methods.push(&p.method);
-        }
-    }
-    let mut rows = Vec::new();
-    for m in methods {
-        for (setting, pts) in by_setting(m, points) {
-            let mut cells = vec![m.to_string(), setting];
+    let all: Vec<&TangentPoint> = points.iter().collect();
+    let rows = by_method_and_setting(&all, |p| &p.method, |p| &p.setting)
+        .into_iter()
+        .map(|(m, setting, pts)| {
+            let mut cells = vec![m.to_string(), setting.to_string()];
             let mut any_wrong = false;
             for &d in &OFFSETS {
                 let wrong: Vec<String> = pts
@@ -238,20 +221,21 @@ pub fn tangent_table(points: &[TangentPoint]) -> Table {
                     format!("wrong ({})", wrong.join("; "))
                 });
             }
-            rows.push(row(cells, if any_wrong { "fail" } else { "pass" }));
-        }
-    }
+            row(cells, if any_wrong { "fail" } else { "pass" })
+        })
+        .collect();
     let header: Vec<&str> = header.iter().map(String::as_str).collect();
     table(&header, rows)
 }
 
 /// The failures-table row of method `m`: per setting, down to which offset it is right.
 pub fn failure_row(m: &str, points: &[TangentPoint]) -> FailureRow {
-    let settings = by_setting(m, points);
+    let mine: Vec<&TangentPoint> = points.iter().filter(|p| p.method == m).collect();
+    let settings = by_method_and_setting(&mine, |p| &p.method, |p| &p.setting);
     let mut fails = false;
     let parts: Vec<String> = settings
         .iter()
-        .map(|(setting, pts)| {
+        .map(|(_, setting, pts)| {
             let wrong_at = |d: f64| pts.iter().any(|p| p.offset == d && p.wrong);
             match OFFSETS.iter().position(|&d| wrong_at(d)) {
                 None => format!("{setting}: right down to δ = {:.0e}", OFFSETS[5]),

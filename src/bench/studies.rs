@@ -1,13 +1,14 @@
 //! The failure studies of `stickslip bench`, run after the timed sweep and untimed, so in
 //! parallel: creep of every method and of the tanh methods over ε, regime classification and
 //! missed events near the regime boundaries, and the fitted orders of the fixed-step methods;
-//! near-tangent sticks ([`super::near_tangent`]) and events on a step boundary
-//! ([`super::step_boundary`]).
+//! near-tangent sticks ([`super::near_tangent`]), events on a step boundary
+//! ([`super::step_boundary`]) and crowding events ([`super::crowding`]).
 
 use rayon::prelude::*;
 use serde::Serialize;
 
 use super::analysis::{fit_order, Metric, OrderFit};
+use super::crowding::{self, CrowdPoint};
 use super::failures::{self, CreepPoint, MissedPoint, RegimePoint, ReversalPoint, EPSILONS};
 use super::near_tangent::{self, TangentPoint};
 use super::problems::{self, BenchProblem, Reference};
@@ -31,6 +32,8 @@ pub struct Studies {
     pub near_tangent: Vec<TangentPoint>,
     /// Fixed-step methods with an exact event on a step boundary.
     pub step_boundary: Vec<BoundaryPoint>,
+    /// Slips and sticks of an ever weaker pull, the slip shrinking to nothing (Zeno-like).
+    pub crowding: Vec<CrowdPoint>,
 }
 
 /// The fitted orders of the fixed-step methods on every problem and metric.
@@ -160,5 +163,6 @@ pub fn run(
         orders: orders(methods, pairs, sweep),
         near_tangent: near_tangent::run(methods)?,
         step_boundary: step_boundary::run(methods)?,
+        crowding: crowding::run(methods)?,
     })
 }

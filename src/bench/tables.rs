@@ -338,3 +338,28 @@ pub fn creep(r: &BenchResults) -> Table {
             .collect(),
     )
 }
+
+/// `points` grouped by (method, setting), methods in order of first appearance and each
+/// method's settings likewise: the rows of the studies' tables.
+pub fn by_method_and_setting<'a, P>(
+    points: &[&'a P],
+    method: impl Fn(&'a P) -> &'a str,
+    setting: impl Fn(&'a P) -> &'a str,
+) -> Vec<(&'a str, &'a str, Vec<&'a P>)> {
+    let mut out: Vec<(&str, &str, Vec<&P>)> = Vec::new();
+    for &p in points {
+        let (m, s) = (method(p), setting(p));
+        match out.iter_mut().find(|(om, os, _)| *om == m && *os == s) {
+            Some((_, _, v)) => v.push(p),
+            None => {
+                // After the method's last group, so that a method's settings stay together.
+                let at = out
+                    .iter()
+                    .rposition(|(om, _, _)| *om == m)
+                    .map_or(out.len(), |i| i + 1);
+                out.insert(at, (m, s, vec![p]));
+            }
+        }
+    }
+    out
+}
