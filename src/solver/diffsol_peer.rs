@@ -8,8 +8,8 @@
 //! stuck:                  y = (x, 0) constant                         the dopri5 stuck walk
 //! ```
 //!
-//! * Slip phase: one diffsol problem per solve (rtol = tol, atol = (tol, tol)), restarted at
-//!   each slip onset (its initial step by diffsol's own Hairer heuristic); its stop time
+//! * Slip phase: one diffsol problem and one solver per solve (rtol = tol, atol = (tol, tol)),
+//!   restarted at each slip onset (its initial step by diffsol's own Hairer heuristic); its stop time
 //!   (`set_stop_time`) is the next breakpoint of the force law or t_end, so steps end where the
 //!   right-hand side has kinks, as in dopri5.
 //! * Stick event: diffsol's root finding (a sign change of g between step ends, located by the
@@ -27,7 +27,8 @@
 use std::cell::Cell;
 
 use diffsol::{
-    DiffsolError, NalgebraMat, OdeBuilder, OdeSolverMethod, OdeSolverStopReason, Vector,
+    DiffsolError, ExplicitRk, NalgebraContext, NalgebraMat, NalgebraVec, NonLinearOp, OdeBuilder,
+    OdeEquations, OdeSolverMethod, OdeSolverStopReason, Tableau, Vector,
 };
 
 use super::dopri5::{drive, next_breakpoint, Forces, Labels, Options, SlipEnd, MAX_STEPS};
@@ -69,7 +70,6 @@ fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
     // The slip direction s and the position x0 at the slip onset are read by the closures, so
     // one diffsol problem serves every slip phase (only its t0 changes).
     let dir = Cell::new(0.0_f64);
-    let x0 = Cell::new(0.0_f64);
     let evals = Cell::new(0_u64);
     let forces = Forces::new(problem);
     let rhs = |y: &[f64], _p: &[f64], t: f64, dy: &mut [f64]| {
@@ -78,14 +78,12 @@ fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
         dy[0] = y[1];
         dy[1] = body.slip_acceleration(d, n, dir.get());
     };
-    let init = |_p: &[f64], _t: f64, y: &mut [f64]| {
-        y[0] = x0.get();
-        y[1] = 0.0;
-    };
+    // Each slip phase sets its own initial state (`restart`).
+    let init = |_p: &[f64], _t: f64, y: &mut [f64]| y.fill(0.0);
     let stick = |y: &[f64], _p: &[f64], _t: f64, g: &mut [f64]| {
         g[0] = dir.get() * y[1];
     };
-    let mut ode = OdeBuilder::<M>::new()
+    let ode = OdeBuilder::<M>::new()
         .rtol(tol)
         .atol([tol, tol])
         .rhs(rhs)
@@ -93,6 +91,8 @@ fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
         .root(stick, 1)
         .build()
         .map_err(library(0.0))?;
+    let order = Tableau::<f64>::tsit45().order();
+    let mut solver = ode.tsit45().map_err(library(0.0))?;
     let labels = Labels {
         recurring: "diffsol_tsit45: events keep recurring at one instant",
         too_many_steps: "diffsol_tsit45: too many steps",
@@ -103,43 +103,60 @@ fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
         &labels,
         |_, t0, x, s, stats| {
             dir.set(s);
-            x0.set(x);
-            ode.t0 = t0;
             evals.set(0);
-            let end = slip(&ode, problem, t0, s, stats);
+            restart(&mut solver, &ode, order, t0, x);
+            let end = slip(&mut solver, problem, t0, s, stats);
             stats.rhs_evals += evals.get();
             end
         },
     )
 }
 
-/// One slip phase in direction `dir` from the problem's t0 until s·v reaches 0 (diffsol's
-/// root, or [`unreported_stop`]) or t_end; the steps diffsol took go into `stats`.
-fn slip<Eqn>(
-    ode: &diffsol::OdeSolverProblem<Eqn>,
+/// Starts a slip phase on the one solver of the run: the state at rest at (t0, x), its
+/// derivative, and diffsol's own initial step (Hairer's heuristic, as a new solver would
+/// compute it); diffsol re-initializes its root finder and stop time at the next step. Two
+/// evaluations of the right-hand side, as for a new solver, without building one (building
+/// one per slip was ~24 µs of a 20-period solve).
+fn restart<'a, Eqn>(
+    solver: &mut ExplicitRk<'a, Eqn, M>,
+    ode: &'a diffsol::OdeSolverProblem<Eqn>,
+    order: usize,
+    t0: f64,
+    x: f64,
+) where
+    Eqn: OdeEquations<T = f64, V = NalgebraVec<f64>, C = NalgebraContext, M = M>,
+{
+    let mut state = solver.state_mut();
+    state.y.set_index(0, x);
+    state.y.set_index(1, 0.0);
+    *state.t = t0;
+    ode.eqn.rhs().call_inplace(state.y, t0, state.dy);
+    state.set_step_size(ode.h0, &ode.atol, ode.rtol, &ode.eqn, order);
+}
+
+/// One slip phase in direction `dir` from t0 (the solver restarted there) until s·v reaches 0
+/// (diffsol's root, or [`unreported_stop`]) or t_end; the steps diffsol took go into `stats`.
+fn slip<'a, Eqn>(
+    solver: &mut ExplicitRk<'a, Eqn, M>,
     problem: &Problem,
     t0: f64,
     dir: f64,
     stats: &mut Stats,
 ) -> Result<SlipEnd>
 where
-    Eqn: diffsol::OdeEquations<
-        T = f64,
-        V = diffsol::NalgebraVec<f64>,
-        C = diffsol::NalgebraContext,
-        M = M,
-    >,
+    Eqn: OdeEquations<T = f64, V = NalgebraVec<f64>, C = NalgebraContext, M = M> + 'a,
 {
-    let mut solver = ode.tsit45().map_err(library(t0))?;
     let t_end = problem.t_end;
     let mut stop = t0;
-    let taken = |solver: &diffsol::ExplicitRk<'_, Eqn>| {
+    let taken = |solver: &ExplicitRk<'a, Eqn, M>| {
         let statistics = solver.get_statistics();
         (
             statistics.number_of_steps as u64,
             statistics.number_of_error_test_failures as u64,
         )
     };
+    // diffsol's counts run over the whole solve.
+    let before = taken(solver);
     let result = loop {
         let (t, h) = (solver.state().t, solver.state().h);
         // The next stop: a breakpoint or t_end, beyond diffsol's own roundoff of "now" (it
@@ -159,8 +176,8 @@ where
                 break Err(library(t)(e));
             }
         }
-        let (accepted, rejected) = taken(&solver);
-        if stats.steps + accepted + rejected >= MAX_STEPS {
+        let (accepted, rejected) = taken(solver);
+        if stats.steps + accepted + rejected - before.0 - before.1 >= MAX_STEPS {
             break Err(Error::Stalled {
                 t,
                 reason: "diffsol_tsit45: too many steps",
@@ -169,7 +186,7 @@ where
         match solver.step() {
             Ok(OdeSolverStopReason::InternalTimestep | OdeSolverStopReason::TstopReached) => {
                 if dir * solver.state().y.get_index(1) < 0.0 {
-                    break unreported_stop(&solver, dir, t, solver.state().t);
+                    break unreported_stop(solver, dir, t, solver.state().t);
                 }
             }
             Ok(OdeSolverStopReason::RootFound(te, _)) => {
@@ -184,7 +201,8 @@ where
             Err(e) => break Err(library(t)(e)),
         }
     };
-    let (accepted, rejected) = taken(&solver);
+    let (accepted, rejected) = taken(solver);
+    let (accepted, rejected) = (accepted - before.0, rejected - before.1);
     stats.accepted += accepted;
     stats.rejected += rejected;
     stats.steps += accepted + rejected;
@@ -199,15 +217,14 @@ where
 /// this reason; here the zero is located on diffsol's interpolant by bisection between a
 /// point where s·v > 0 (halving the step from t1 towards t0: the slip starts with s·a > 0)
 /// and t1, to the ulp.
-fn unreported_stop<'a, Eqn, S>(solver: &S, dir: f64, t0: f64, t1: f64) -> Result<SlipEnd>
+fn unreported_stop<'a, Eqn>(
+    solver: &ExplicitRk<'a, Eqn, M>,
+    dir: f64,
+    t0: f64,
+    t1: f64,
+) -> Result<SlipEnd>
 where
-    Eqn: diffsol::OdeEquations<
-            T = f64,
-            V = diffsol::NalgebraVec<f64>,
-            C = diffsol::NalgebraContext,
-            M = M,
-        > + 'a,
-    S: OdeSolverMethod<'a, Eqn>,
+    Eqn: OdeEquations<T = f64, V = NalgebraVec<f64>, C = NalgebraContext, M = M> + 'a,
 {
     let g = |t: f64| -> Result<f64> {
         let y = solver.interpolate(t).map_err(library(t))?;
