@@ -114,6 +114,45 @@ fn weighted_norm(e: State, a: State, b: State, tol: f64) -> f64 {
     (0.5 * sum).sqrt()
 }
 
+/// A right-hand side y' = f(t, y) of the integrator: any closure, or [`Slip`].
+pub(crate) trait Field {
+    /// f(t, y).
+    fn at(&self, t: f64, y: State) -> State;
+
+    /// f(t, y) given k = f(t, z) at the same t: the last stage of a step (FSAL) is taken at
+    /// the time of the sixth, so a field whose time-dependent part does not depend on y
+    /// passes it on instead of evaluating it again.
+    #[inline]
+    fn at_same_time(&self, t: f64, y: State, k: State) -> State {
+        let _ = k;
+        self.at(t, y)
+    }
+}
+
+impl<F: Fn(f64, State) -> State> Field for F {
+    #[inline]
+    fn at(&self, t: f64, y: State) -> State {
+        self(t, y)
+    }
+}
+
+/// The slip equations x' = v, v' = a(t), with the acceleration a(t) (m/s²) of a slip phase:
+/// a depends on t only, so the FSAL stage reuses the sixth stage's (the same bits: one
+/// evaluation of the force law less per step).
+struct Slip<A>(A);
+
+impl<A: Fn(f64) -> f64> Field for Slip<A> {
+    #[inline]
+    fn at(&self, t: f64, y: State) -> State {
+        [y[1], (self.0)(t)]
+    }
+
+    #[inline]
+    fn at_same_time(&self, _t: f64, y: State, k: State) -> State {
+        [y[1], k[1]]
+    }
+}
+
 /// The continuous extension of one accepted step on [t0, t0 + h]: Hairer's 4th-order
 /// interpolant, p(θ) = r1 + θ(r2 + (1−θ)(r3 + θ(r4 + (1−θ) r5))), θ = (t − t0)/h, which
 /// matches y and f at both ends.
@@ -186,15 +225,8 @@ struct Integrator {
 impl Integrator {
     /// Starts at (t0, y0) towards `t_dir_end`, choosing the first step by Hairer's heuristic
     /// (HNW I, II.4): h such that the explicit Euler error estimate is about tol.
-    fn new(
-        f: impl Fn(f64, State) -> State,
-        t0: f64,
-        y0: State,
-        t_end: f64,
-        tol: f64,
-        stats: &mut Stats,
-    ) -> Self {
-        let k1 = f(t0, y0);
+    fn new(f: &impl Field, t0: f64, y0: State, t_end: f64, tol: f64, stats: &mut Stats) -> Self {
+        let k1 = f.at(t0, y0);
         stats.rhs_evals += 1;
         let span = (t_end - t0).abs().max(f64::MIN_POSITIVE);
         let norm = |e: State| weighted_norm(e, y0, y0, tol);
@@ -205,7 +237,7 @@ impl Integrator {
             (0.01 * d0 / d1).min(span)
         };
         let y1 = axpy(y0, &[(h0, k1)]);
-        let k2 = f(t0 + h0, y1);
+        let k2 = f.at(t0 + h0, y1);
         stats.rhs_evals += 1;
         let d2 = norm([k2[0] - k1[0], k2[1] - k1[1]]) / h0;
         let h1 = if d1.max(d2) <= 1e-15 {
@@ -227,7 +259,7 @@ impl Integrator {
     /// with a smaller step. Returns the step's dense output; (t, y, k1) move to its end.
     fn step(
         &mut self,
-        f: impl Fn(f64, State) -> State,
+        f: &impl Field,
         t_stop: f64,
         h_max: f64,
         stats: &mut Stats,
@@ -255,13 +287,13 @@ impl Integrator {
                 });
             }
             stats.steps += 1;
-            let k2 = f(t + C2 * h, axpy(y, &[(h * A21, k1)]));
-            let k3 = f(t + C3 * h, axpy(y, &[(h * A31, k1), (h * A32, k2)]));
-            let k4 = f(
+            let k2 = f.at(t + C2 * h, axpy(y, &[(h * A21, k1)]));
+            let k3 = f.at(t + C3 * h, axpy(y, &[(h * A31, k1), (h * A32, k2)]));
+            let k4 = f.at(
                 t + C4 * h,
                 axpy(y, &[(h * A41, k1), (h * A42, k2), (h * A43, k3)]),
             );
-            let k5 = f(
+            let k5 = f.at(
                 t + C5 * h,
                 axpy(
                     y,
@@ -269,7 +301,7 @@ impl Integrator {
                 ),
             );
             let t1 = if last { t_stop } else { t + h };
-            let k6 = f(
+            let k6 = f.at(
                 t1,
                 axpy(
                     y,
@@ -292,7 +324,7 @@ impl Integrator {
                     (h * A76, k6),
                 ],
             );
-            let k7 = f(t1, y1);
+            let k7 = f.at_same_time(t1, y1, k6);
             stats.rhs_evals += 6;
             let e = axpy(
                 [0.0; 2],
@@ -587,11 +619,11 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
     };
     drive(problem, opts, &labels, |forces, t, x, s, stats| {
         let body = problem.body;
-        let f = |t: f64, y: State| {
+        let f = Slip(|t| {
             let (d, n) = forces.at(t);
-            [y[1], body.slip_acceleration(d, n, s)]
-        };
-        let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, stats);
+            body.slip_acceleration(d, n, s)
+        });
+        let mut slide = Integrator::new(&f, t, [x, 0.0], problem.t_end, tol, stats);
         let mut stop = f64::NAN;
         loop {
             match slip_advance(&mut slide, forces, &mut stop, s, opts, stats)? {
@@ -725,18 +757,18 @@ fn slip_advance(
     };
     let dense = match on_piece {
         Some(piece) => {
-            let f = |t: f64, y: State| {
+            let f = Slip(|t| {
                 let (d, n) = piece.at(t);
-                [y[1], body.slip_acceleration(d, n, s)]
-            };
-            run.step(f, *stop, opts.h_max, stats)?
+                body.slip_acceleration(d, n, s)
+            });
+            run.step(&f, *stop, opts.h_max, stats)?
         }
         None => {
-            let f = |t: f64, y: State| {
+            let f = Slip(|t| {
                 let (d, n) = forces.at(t);
-                [y[1], body.slip_acceleration(d, n, s)]
-            };
-            run.step(f, *stop, opts.h_max, stats)?
+                body.slip_acceleration(d, n, s)
+            });
+            run.step(&f, *stop, opts.h_max, stats)?
         }
     };
     let samples = if opts.interior_checks { SAMPLES } else { 1 };
@@ -1103,9 +1135,9 @@ mod tests {
     fn a_dip_of_the_speed_between_samples_is_found_by_the_minimum_check() {
         let mut stats = Stats::default();
         let f = |t: f64, y: State| [y[1], 2.0 * t - 1.1];
-        let mut run = Integrator::new(f, 0.0, [0.0, 0.52 * 0.58], 1.0, 1e6, &mut stats);
+        let mut run = Integrator::new(&f, 0.0, [0.0, 0.52 * 0.58], 1.0, 1e6, &mut stats);
         run.h = 1.0;
-        let dense = run.step(f, 1.0, f64::INFINITY, &mut stats).unwrap();
+        let dense = run.step(&f, 1.0, f64::INFINITY, &mut stats).unwrap();
         assert_eq!(dense.t1, 1.0);
         for t in [0.0, 0.5, 0.625, 1.0] {
             assert!(dense.y(t)[1] > 0.0, "positive at the samples t = {t}");
