@@ -15,7 +15,7 @@
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
 //!   Shampine's coefficients), which matches y and y' at both step ends.
 //! * Stick events: a step on which s·v of the interpolant is provably positive (a lower bound
-//!   from its coefficients, [`Dense::positive`]) has none; otherwise s·v is sampled at 8 points
+//!   from its coefficients, [`positive`]) has none; otherwise s·v is sampled at 8 points
 //!   of the step and at every minimum of s·v bracketed between them (where the interpolated
 //!   s·a goes from − to +), so that a dip below zero and back inside one step is not missed
 //!   (SciPy issue 9228);
@@ -153,6 +153,63 @@ impl<A: Fn(f64) -> f64> Field for Slip<A> {
     }
 }
 
+/// One accepted step on [t0, t0 + h]: its ends and the stages its interpolant is formed from
+/// (k2 has no weight in it), so that a step which needs no interpolant forms none.
+#[derive(Clone, Copy, Debug)]
+struct Accepted {
+    t0: f64,
+    t1: f64,
+    h: f64,
+    y0: State,
+    y1: State,
+    /// The stages k1, k3, k4, k5, k6, k7.
+    k: [State; 6],
+}
+
+impl Accepted {
+    /// The coefficients r1 … r5 of component i of the step's interpolant ([`Dense`]).
+    fn coefficients(&self, i: usize) -> [f64; 5] {
+        let (h, k) = (self.h, &self.k);
+        let ydiff = self.y1[i] - self.y0[i];
+        let bspl = h * k[0][i] - ydiff;
+        let r4 = ydiff - h * k[5][i] - bspl;
+        let r5 = [D1, D3, D4, D5, D6, D7]
+            .iter()
+            .zip(k)
+            .fold(0.0, |r, (&d, k)| r + h * d * k[i]);
+        [self.y0[i], ydiff, bspl, r4, r5]
+    }
+
+    /// The step's interpolant.
+    fn dense(&self) -> Dense {
+        let c = [self.coefficients(0), self.coefficients(1)];
+        Dense {
+            t0: self.t0,
+            t1: self.t1,
+            h: self.h,
+            r: std::array::from_fn(|j| [c[0][j], c[1][j]]),
+            y1: self.y1,
+        }
+    }
+}
+
+/// True when s·p is positive on the whole step for the interpolant's component p with
+/// coefficients `r` ([`Accepted::coefficients`]), by a margin that covers the rounding of any
+/// evaluation of it (64 ε Σ|r_j|): the linear part is smallest at an end, and θ(1−θ) ≤ 1/4,
+/// θ ≤ 1 bound the rest.
+///
+/// ```text
+/// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
+/// ```
+fn positive(r: [f64; 5], s: f64) -> bool {
+    let [r1, r2, r3, r4, r5] = r;
+    let (r1, r2, r3, r4, r5) = (s * r1, s * r2, s * r3, s * r4, s * r5);
+    let curve = r3.abs() + r4.abs() + 0.25 * r5.abs();
+    let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
+    // Plain comparisons: a NaN fails them, as it should.
+    r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin
+}
+
 /// The continuous extension of one accepted step on [t0, t0 + h]: Hairer's 4th-order
 /// interpolant, p(θ) = r1 + θ(r2 + (1−θ)(r3 + θ(r4 + (1−θ) r5))), θ = (t − t0)/h, which
 /// matches y and f at both ends.
@@ -178,21 +235,6 @@ impl Dense {
         std::array::from_fn(|i| {
             r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
         })
-    }
-
-    /// True when component `i` of the interpolant times `s` is positive on the whole step by
-    /// a margin that covers the rounding of any evaluation of it (64 ε Σ|r_j|): the linear
-    /// part is smallest at an end, and θ(1−θ) ≤ 1/4, θ ≤ 1 bound the rest.
-    ///
-    /// ```text
-    /// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
-    /// ```
-    fn positive(&self, i: usize, s: f64) -> bool {
-        let [r1, r2, r3, r4, r5] = self.r.map(|r| s * r[i]);
-        let curve = r3.abs() + r4.abs() + 0.25 * r5.abs();
-        let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
-        // Plain comparisons: a NaN fails them, as it should.
-        r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin
     }
 
     /// Time derivative of the interpolant at time t.
@@ -256,14 +298,15 @@ impl Integrator {
     }
 
     /// One accepted step that ends at or before `t_stop` (> t); rejected attempts are retried
-    /// with a smaller step. Returns the step's dense output; (t, y, k1) move to its end.
+    /// with a smaller step. Returns the step (its dense output is formed on demand); (t, y, k1)
+    /// move to its end.
     fn step(
         &mut self,
         f: &impl Field,
         t_stop: f64,
         h_max: f64,
         stats: &mut Stats,
-    ) -> Result<Dense> {
+    ) -> Result<Accepted> {
         let (t, y, k1) = (self.t, self.y, self.k1);
         let mut h = self.h.min(h_max);
         let mut rejected_last = false;
@@ -350,29 +393,13 @@ impl Integrator {
                 if rejected_last {
                     fac = fac.min(1.0);
                 }
-                let ydiff = [y1[0] - y[0], y1[1] - y[1]];
-                let bspl = [h * k1[0] - ydiff[0], h * k1[1] - ydiff[1]];
-                let r4 = [
-                    ydiff[0] - h * k7[0] - bspl[0],
-                    ydiff[1] - h * k7[1] - bspl[1],
-                ];
-                let r5 = axpy(
-                    [0.0; 2],
-                    &[
-                        (h * D1, k1),
-                        (h * D3, k3),
-                        (h * D4, k4),
-                        (h * D5, k5),
-                        (h * D6, k6),
-                        (h * D7, k7),
-                    ],
-                );
-                let dense = Dense {
+                let accepted = Accepted {
                     t0: t,
                     t1,
                     h,
-                    r: [y, ydiff, bspl, r4, r5],
+                    y0: y,
                     y1,
+                    k: [k1, k3, k4, k5, k6, k7],
                 };
                 self.t = t1;
                 self.y = y1;
@@ -383,7 +410,7 @@ impl Integrator {
                 } else {
                     h * fac
                 };
-                return Ok(dense);
+                return Ok(accepted);
             }
             stats.rejected += 1;
             rejected_last = true;
@@ -755,7 +782,7 @@ fn slip_advance(
     } else {
         forces.on_piece(run.t, run.t + h)
     };
-    let dense = match on_piece {
+    let step = match on_piece {
         Some(piece) => {
             let f = Slip(|t| {
                 let (d, n) = piece.at(t);
@@ -771,12 +798,17 @@ fn slip_advance(
             run.step(&f, *stop, opts.h_max, stats)?
         }
     };
-    let samples = if opts.interior_checks { SAMPLES } else { 1 };
-    if let Some(te) = first_stick(&dense, s, samples) {
-        return Ok(Advance::Event {
-            t: te,
-            x: dense.y(te)[0],
-        });
+    // Most steps are far from a stick: s·v > 0 on the whole step, so every sample of
+    // `first_stick` would be positive and nothing would be found.
+    if !positive(step.coefficients(1), s) {
+        let dense = step.dense();
+        let samples = if opts.interior_checks { SAMPLES } else { 1 };
+        if let Some(te) = first_stick(&dense, s, samples) {
+            return Ok(Advance::Event {
+                t: te,
+                x: dense.y(te)[0],
+            });
+        }
     }
     if run.t >= problem.t_end {
         return Ok(Advance::End { y: run.y });
@@ -789,11 +821,6 @@ fn slip_advance(
 /// bracketed between them (d(s·v)/dt from − to +): a dip of s·v below 0 and back inside one
 /// step is seen (SciPy issue 9228 is this dip missed).
 fn first_stick(dense: &Dense, s: f64, samples: u32) -> Option<f64> {
-    // Most steps are far from a stick: s·v > 0 on the whole step, so every sample below
-    // would be positive and nothing would be found.
-    if dense.positive(1, s) {
-        return None;
-    }
     let g = |t: f64| s * dense.y(t)[1];
     let dg = |t: f64| s * dense.dy(t)[1];
     let t0 = dense.t0;
@@ -1058,28 +1085,28 @@ mod tests {
 
     #[test]
     fn the_positivity_test_of_the_interpolant_is_a_lower_bound() {
-        let dense = |r: [f64; 5]| Dense {
-            t0: 0.0,
-            t1: 1.0,
-            h: 1.0,
-            r: r.map(|r| [0.0, r]),
-            y1: [0.0, r[0] + r[1]],
-        };
         // Positive on [0, 1] (min ≈ 0.26), and the bound 0.3 − (0.1 + 0.05 + 0.1)/4 > 0.
         let r = [0.3, 0.2, -0.1, 0.05, 0.4];
-        assert!(dense(r).positive(1, 1.0));
-        assert!(!dense(r).positive(1, -1.0));
+        assert!(positive(r, 1.0));
+        assert!(!positive(r, -1.0));
         // Zero at θ = ½ (0.3 + 0.1 − 0.4): not positive.
-        assert!(!dense([0.3, 0.2, -1.6, 0.0, 0.0]).positive(1, 1.0));
+        assert!(!positive([0.3, 0.2, -1.6, 0.0, 0.0], 1.0));
         // Positive (min ≈ 0.043 at θ = 3/7), but the bound 0.3 − 1.4/4 does not show it:
         // the samples decide.
-        assert!(!dense([0.3, 0.2, -1.4, 0.0, 0.0]).positive(1, 1.0));
+        assert!(!positive([0.3, 0.2, -1.4, 0.0, 0.0], 1.0));
         // A NaN is not positive.
-        assert!(!dense([f64::NAN, 0.2, 0.0, 0.0, 0.0]).positive(1, 1.0));
+        assert!(!positive([f64::NAN, 0.2, 0.0, 0.0, 0.0], 1.0));
         // Sampled: the bound holds wherever it says positive.
         for r3 in [-0.5, -0.1, 0.0, 0.3] {
-            let d = dense([0.2, -0.1, r3, 0.2, -0.3]);
-            if d.positive(1, 1.0) {
+            let r = [0.2, -0.1, r3, 0.2, -0.3];
+            let d = Dense {
+                t0: 0.0,
+                t1: 1.0,
+                h: 1.0,
+                r: r.map(|r| [0.0, r]),
+                y1: [0.0, r[0] + r[1]],
+            };
+            if positive(r, 1.0) {
                 for j in 0..=100 {
                     assert!(d.y(f64::from(j) / 100.0)[1] > 0.0);
                 }
@@ -1137,7 +1164,10 @@ mod tests {
         let f = |t: f64, y: State| [y[1], 2.0 * t - 1.1];
         let mut run = Integrator::new(&f, 0.0, [0.0, 0.52 * 0.58], 1.0, 1e6, &mut stats);
         run.h = 1.0;
-        let dense = run.step(&f, 1.0, f64::INFINITY, &mut stats).unwrap();
+        let dense = run
+            .step(&f, 1.0, f64::INFINITY, &mut stats)
+            .unwrap()
+            .dense();
         assert_eq!(dense.t1, 1.0);
         for t in [0.0, 0.5, 0.625, 1.0] {
             assert!(dense.y(t)[1] > 0.0, "positive at the samples t = {t}");
