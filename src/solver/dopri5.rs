@@ -516,9 +516,9 @@ impl<'a> Forces<'a> {
     /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
     /// [t_a, t_b] then has its τ in [start, end), so [`OnPiece::at`] is [`Forces::at`]
     /// without the check.
-    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece<'a>> {
+    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
         let (hi, lo, i) = self.cache.get();
-        let piece = self.problem.law.pieces.get(i)?;
+        let piece = *self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
@@ -544,15 +544,16 @@ impl<'a> Forces<'a> {
 }
 
 /// One piece of the force law and its period offset hi + lo (see [`Forces`]), for times known
-/// to lie on it.
+/// to lie on it; a copy, so that its coefficients stay in registers across the evaluations of
+/// a step.
 #[derive(Clone, Copy)]
-struct OnPiece<'a> {
+struct OnPiece {
     hi: f64,
     lo: f64,
-    piece: &'a crate::engine::Piece,
+    piece: crate::engine::Piece,
 }
 
-impl OnPiece<'_> {
+impl OnPiece {
     /// (D, N_f) at absolute time t on the piece (N).
     #[inline]
     fn at(&self, t: f64) -> (f64, f64) {
