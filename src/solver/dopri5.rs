@@ -469,39 +469,41 @@ fn smooth(
 
 /// D(t) and N_f(t) of a problem, bit for bit [`Problem::forces`], with the period and the
 /// piece of the previous call remembered: the right-hand side is evaluated many times per
-/// piece, so the general lookup (a `rem_euclid`, a search over the pieces, and all of it once
-/// for D and once for N_f) is done only when t leaves the piece.
+/// piece, so the lookup is done only when t leaves the piece, and the general one (a
+/// `rem_euclid`, a search over the pieces, and all of it once for D and once for N_f) only
+/// when t leaves the remembered period other than into the next one.
 ///
 /// ```text
-/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), once per lookup, for t ≥ 0)
+/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), for t ≥ 0)
 /// fast path: τ = (t − hi) − lo, taken when τ ∈ [start, end) of the remembered piece
+/// on leaving it: the same τ, or that of period k + 1, when in [0, T), and a search of the pieces
 /// ```
 ///
 /// Why bit for bit: t mod T (`fmod`, what `rem_euclid` is for t ≥ 0) is the exactly
 /// representable t − nT with n = ⌊t/T⌋. τ is the one rounding of the real t − kT: either
 /// lo = 0 (k = 0, 1, 2, …: kT exact), or k ≥ 3 and t − hi is exact (Sterbenz) unless t < hi/2
-/// or t > 2 hi, where |t − hi| ≥ hi/2 > T puts τ outside [0, T). Rounding is monotone and the
-/// piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T),
-/// hence k = n, the real value is representable and τ equals it; the piece containing τ is
-/// the one [`crate::engine::ForceLaw::piece_at`] picks.
+/// or t > 2 hi, where |t − hi| ≥ hi/2 > T puts τ outside [0, T). Rounding is monotone and 0,
+/// T and the piece bounds are floats, so τ ∈ [0, T) implies the real t − kT ∈ [0, T), hence
+/// k = n, the real value is representable and τ equals it; the piece containing τ is the one
+/// [`crate::engine::ForceLaw::piece_at`] picks.
 pub(crate) struct Forces<'a> {
     problem: &'a Problem,
-    /// hi, lo of the last general lookup (NaN: none yet) and its piece.
-    cache: std::cell::Cell<(f64, f64, usize)>,
+    /// k, hi, lo of the remembered period (NaN: none yet) and the remembered piece.
+    cache: std::cell::Cell<(f64, f64, f64, usize)>,
 }
 
 impl<'a> Forces<'a> {
     pub(crate) fn new(problem: &'a Problem) -> Self {
         Self {
             problem,
-            cache: std::cell::Cell::new((f64::NAN, 0.0, 0)),
+            cache: std::cell::Cell::new((f64::NAN, f64::NAN, 0.0, 0)),
         }
     }
 
     /// (D, N_f) at absolute time t (N).
     #[inline]
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
-        let (hi, lo, i) = self.cache.get();
+        let (_, hi, lo, i) = self.cache.get();
         let pieces = &self.problem.law.pieces;
         if let Some(piece) = pieces.get(i) {
             let local = (t - hi) - lo;
@@ -517,27 +519,45 @@ impl<'a> Forces<'a> {
     /// [t_a, t_b] then has its τ in [start, end), so [`OnPiece::at`] is [`Forces::at`]
     /// without the check.
     fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
-        let (hi, lo, i) = self.cache.get();
+        let (_, hi, lo, i) = self.cache.get();
         let piece = *self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
 
-    /// The general path: [`Problem::forces`], remembering the period and the piece.
+    /// t off the remembered piece: in the remembered period or the next one (as a step
+    /// crosses a period boundary), otherwise by the general path, remembering the period (for
+    /// t ≥ 0) and the piece.
     #[cold]
     fn lookup(&self, t: f64) -> (f64, f64) {
-        let law = &self.problem.law;
-        let local = t.rem_euclid(law.period);
-        let i = law
-            .pieces
-            .partition_point(|p| p.end <= local)
-            .min(law.pieces.len() - 1);
-        if t >= 0.0 {
-            let k = ((t - local) / law.period).round();
-            let hi = k * law.period;
-            self.cache.set((hi, k.mul_add(law.period, -hi), i));
+        let period = self.problem.law.period;
+        let (k, hi, lo, _) = self.cache.get();
+        let next = k + 1.0;
+        let hi_next = next * period;
+        for (k, hi, lo) in [(k, hi, lo), (next, hi_next, next.mul_add(period, -hi_next))] {
+            let local = (t - hi) - lo;
+            if local >= 0.0 && local < period {
+                return self.forces_at(local, Some((k, hi, lo)));
+            }
         }
-        let piece = &law.pieces[i];
+        let local = t.rem_euclid(period);
+        let k = ((t - local) / period).round();
+        let hi = k * period;
+        let kept = (t >= 0.0).then(|| (k, hi, k.mul_add(period, -hi)));
+        self.forces_at(local, kept)
+    }
+
+    /// (D, N_f) at `local` = t mod T on the piece containing it, remembering that piece and
+    /// the period `kept` (k, hi, lo) if any.
+    fn forces_at(&self, local: f64, kept: Option<(f64, f64, f64)>) -> (f64, f64) {
+        let pieces = &self.problem.law.pieces;
+        let i = pieces
+            .partition_point(|p| p.end <= local)
+            .min(pieces.len() - 1);
+        if let Some((k, hi, lo)) = kept {
+            self.cache.set((k, hi, lo, i));
+        }
+        let piece = &pieces[i];
         let b = piece.basis.eval(local);
         (piece.drive.at(b), piece.normal.at(b))
     }
