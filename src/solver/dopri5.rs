@@ -193,13 +193,16 @@ impl Accepted {
     }
 }
 
-/// True when s·p is positive on the whole step for the interpolant's component p with
-/// coefficients `r` ([`Accepted::coefficients`]), by a margin that covers the rounding of any
-/// evaluation of it (64 ε Σ|r_j|): the linear part is smallest at an end, and θ(1−θ) ≤ 1/4,
-/// θ ≤ 1 bound the rest.
+/// True when s·p is positive on the step after its start (θ ∈ (0, 1]) for the interpolant's
+/// component p with coefficients `r` ([`Accepted::coefficients`]), by a margin that covers
+/// the rounding of any evaluation of it (64 ε Σ|r_j|): positive on the whole step by the first
+/// bound (the linear part is smallest at an end, θ(1−θ) ≤ 1/4, θ ≤ 1 bound the rest), or
+/// s·r1 ≥ 0 (a step from a slip onset has s·r1 = 0) and q positive by the second
+/// (θ(1−θ)² ≤ 4/27).
 ///
 /// ```text
 /// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
+/// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5 ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
 /// ```
 fn positive(r: [f64; 5], s: f64) -> bool {
     let [r1, r2, r3, r4, r5] = r;
@@ -207,7 +210,11 @@ fn positive(r: [f64; 5], s: f64) -> bool {
     let curve = r3.abs() + r4.abs() + 0.25 * r5.abs();
     let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
     // Plain comparisons: a NaN fails them, as it should.
-    r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin
+    if r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin {
+        return true;
+    }
+    let bend = 0.25 * r4.abs() + 0.15 * r5.abs();
+    r1 >= 0.0 && r2 - bend > margin && (r2 + r3) - bend > margin
 }
 
 /// The continuous extension of one accepted step on [t0, t0 + h]: Hairer's 4th-order
@@ -1117,9 +1124,19 @@ mod tests {
         assert!(!positive([0.3, 0.2, -1.4, 0.0, 0.0], 1.0));
         // A NaN is not positive.
         assert!(!positive([f64::NAN, 0.2, 0.0, 0.0, 0.0], 1.0));
-        // Sampled: the bound holds wherever it says positive.
-        for r3 in [-0.5, -0.1, 0.0, 0.3] {
-            let r = [0.2, -0.1, r3, 0.2, -0.3];
+        // From rest (a slip onset): 0 at θ = 0, positive after by the second bound
+        // (0.2 − 0.1/4 − 0.15·0.3 > 0, 0.2 − 0.1 − … > 0); not so going the other way.
+        let onset = [0.0, 0.2, -0.1, 0.1, 0.3];
+        assert!(positive(onset, 1.0));
+        assert!(!positive(onset, -1.0));
+        // q = 0.2 − 0.3 (1 − θ) < 0 near θ = 0: p dips below 0 first.
+        assert!(!positive([0.0, 0.2, -0.3, 0.0, 0.0], 1.0));
+        // Sampled: the bounds hold wherever they say positive.
+        for (r1, r3) in [0.0, 0.2]
+            .into_iter()
+            .flat_map(|r1| [-0.5, -0.1, 0.0, 0.3].map(|r3| (r1, r3)))
+        {
+            let r = [r1, 0.2 - r1 / 2.0, r3, 0.2, -0.3];
             let d = Dense {
                 t0: 0.0,
                 t1: 1.0,
@@ -1128,8 +1145,8 @@ mod tests {
                 y1: [0.0, r[0] + r[1]],
             };
             if positive(r, 1.0) {
-                for j in 0..=100 {
-                    assert!(d.y(f64::from(j) / 100.0)[1] > 0.0);
+                for j in 1..=100 {
+                    assert!(d.y(f64::from(j) / 100.0)[1] > 0.0, "{r:?}");
                 }
             }
         }
