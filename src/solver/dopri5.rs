@@ -205,15 +205,17 @@ impl Accepted {
 /// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5 ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
 /// ```
 fn positive(r: [f64; 5], s: f64) -> bool {
+    // s = ±1 (or NaN, which fails every comparison): |s·r_j| = |r_j|.
     let [r1, r2, r3, r4, r5] = r;
-    let (r1, r2, r3, r4, r5) = (s * r1, s * r2, s * r3, s * r4, s * r5);
-    let curve = r3.abs() + r4.abs() + 0.25 * r5.abs();
+    let (r1, r2) = (s * r1, s * r2);
+    let (r3, r4) = (s * r3, r4.abs());
+    let curve = r3.abs() + r4 + 0.25 * r5.abs();
     let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
     // Plain comparisons: a NaN fails them, as it should.
     if r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin {
         return true;
     }
-    let bend = 0.25 * r4.abs() + 0.15 * r5.abs();
+    let bend = 0.25 * r4 + 0.15 * r5.abs();
     r1 >= 0.0 && r2 - bend > margin && (r2 + r3) - bend > margin
 }
 
@@ -330,7 +332,8 @@ impl Integrator {
                 h = t_stop - t;
             }
             let smallest = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
-            if h.is_nan() || h <= smallest || h.is_infinite() {
+            // Plain comparisons: a NaN fails them.
+            if !(h > smallest && h < f64::INFINITY) {
                 return Err(Error::Stalled {
                     t,
                     reason: "dopri5: step size underflow",
@@ -745,7 +748,7 @@ pub(crate) fn drive(
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
                         record(onset, "slip");
-                        dir = problem.forces(onset).0.signum();
+                        dir = forces.at(onset).0.signum();
                         t = onset;
                         continue 'phases;
                     }
@@ -760,7 +763,7 @@ pub(crate) fn drive(
         match slip(&forces, t, x, s, &mut stats)? {
             SlipEnd::Stop { t: te, x: xe } => {
                 (t, x) = (te, xe);
-                let (d, n) = problem.forces(te);
+                let (d, n) = forces.at(te);
                 if d.abs() <= problem.body.mu_s * n {
                     record(te, "stick");
                     dir = 0.0;
