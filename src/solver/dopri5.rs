@@ -13,9 +13,10 @@
 //!   Hairer's heuristic. Steps end at the breakpoints of the force law (its piece boundaries,
 //!   where the right-hand side has kinks) and at t_end.
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
-//!   Shampine's coefficients), which matches y and y' at both step ends.
-//! * Stick events: a step on which s·v of the interpolant is provably positive (a lower bound
-//!   from its coefficients, [`positive`]) has none; otherwise s·v is sampled at 8 points
+//!   Shampine's coefficients), which matches y and y' at both step ends; formed only on a step
+//!   whose stick check needs it ([`Accepted::dense`]).
+//! * Stick events: a step on which s·v of the interpolant is provably positive after its start
+//!   (lower bounds from v's coefficients, [`positive`]) has none; otherwise s·v is sampled at 8 points
 //!   of the step and at every minimum of s·v bracketed between them (where the interpolated
 //!   s·a goes from − to +), so that a dip below zero and back inside one step is not missed
 //!   (SciPy issue 9228);
@@ -28,11 +29,13 @@
 //!   maxima refined by golden-section search, so a brief excursion above 0 is seen); the onset
 //!   is located on the exact force law by the same root finder, direction sgn D. Each G
 //!   evaluation counts as one right-hand-side evaluation, each T/16 stretch as one step.
-//! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage, on the
-//!   piece remembered from the previous evaluation ([`Forces`]), with no check at all on a
-//!   step known to stay on that piece; the next breakpoint is kept while ahead. About 1.45×
-//!   the instructions per step of a textbook DOPRI5 on the same slip equation (3.8× before),
-//!   with the same bits in every result.
+//! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage but the
+//!   last (FSAL: at the sixth's time, [`Slip`]), on the piece remembered from the previous
+//!   evaluation ([`Forces`], which also crosses a period boundary without `rem_euclid`), with
+//!   no check at all on a step known to stay on that piece; the next breakpoint is kept while
+//!   ahead; the interpolant is formed only where a stick is possible. About 1.2–1.3× the
+//!   instructions per step of a textbook DOPRI5 on the same slip equation (3.8× before), with
+//!   the same bits in every result.
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
@@ -205,17 +208,16 @@ impl Accepted {
 /// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5 ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
 /// ```
 fn positive(r: [f64; 5], s: f64) -> bool {
-    // s = ±1 (or NaN, which fails every comparison): |s·r_j| = |r_j|.
-    let [r1, r2, r3, r4, r5] = r;
-    let (r1, r2) = (s * r1, s * r2);
-    let (r3, r4) = (s * r3, r4.abs());
-    let curve = r3.abs() + r4 + 0.25 * r5.abs();
+    // s = ±1 (a NaN fails every comparison below): only the signed terms take it.
+    let [r1, r2, r3] = [s * r[0], s * r[1], s * r[2]];
+    let (a4, a5) = (r[3].abs(), r[4].abs());
+    let curve = r3.abs() + a4 + 0.25 * a5;
     let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
     // Plain comparisons: a NaN fails them, as it should.
     if r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin {
         return true;
     }
-    let bend = 0.25 * r4 + 0.15 * r5.abs();
+    let bend = 0.25 * a4 + 0.15 * a5;
     r1 >= 0.0 && r2 - bend > margin && (r2 + r3) - bend > margin
 }
 
