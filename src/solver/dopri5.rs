@@ -16,12 +16,12 @@
 //!   Shampine's coefficients), which matches y and y' at both step ends; formed only on a step
 //!   whose stick check needs it ([`Accepted::dense`]).
 //! * Stick events: a step on which s·v of the interpolant is provably positive after its start
-//!   (lower bounds from v's coefficients, [`positive`]) has none; otherwise s·v is sampled at 8 points
-//!   of the step and at every minimum of s·v bracketed between them (where the interpolated
-//!   s·a goes from − to +), so that a dip below zero and back inside one step is not missed
-//!   (SciPy issue 9228);
-//!   the first crossing is located by Illinois regula falsi on the interpolant to a few ulps of
-//!   t. [`Dopri5EndpointsOnly`] checks the step ends only, to show that failure.
+//!   (lower bounds from v's coefficients, [`positive`]) has none; otherwise s·v is sampled at
+//!   8 points of the step and at every minimum of s·v bracketed between them (where the
+//!   interpolated s·a goes from − to +), so that a dip below zero and back inside one step is
+//!   not missed (SciPy issue 9228); the first crossing is located by Illinois regula falsi on
+//!   the interpolant to a few ulps of t. [`Dopri5EndpointsOnly`] checks the step ends only, to
+//!   show that failure.
 //! * Transitions (physics.md §0): at a stick time v := 0; STUCK if |D| ≤ μs N_f, otherwise a
 //!   reversal to direction sgn D. The integration restarts from the event in the new mode
 //!   (new first step, new FSAL stage).
@@ -205,7 +205,8 @@ impl Accepted {
 ///
 /// ```text
 /// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
-/// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5 ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
+/// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5
+///                  ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
 /// ```
 fn positive(r: [f64; 5], s: f64) -> bool {
     // s = ±1 (a NaN fails every comparison below): only the signed terms take it.
