@@ -13,14 +13,15 @@
 //!   Hairer's heuristic. Steps end at the breakpoints of the force law (its piece boundaries,
 //!   where the right-hand side has kinks) and at t_end.
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
-//!   Shampine's coefficients), which matches y and y' at both step ends.
-//! * Stick events: a step on which s·v of the interpolant is provably positive (a lower bound
-//!   from its coefficients, [`Dense::positive`]) has none; otherwise s·v is sampled at 8 points
-//!   of the step and at every minimum of s·v bracketed between them (where the interpolated
-//!   s·a goes from − to +), so that a dip below zero and back inside one step is not missed
-//!   (SciPy issue 9228);
-//!   the first crossing is located by Illinois regula falsi on the interpolant to a few ulps of
-//!   t. [`Dopri5EndpointsOnly`] checks the step ends only, to show that failure.
+//!   Shampine's coefficients), which matches y and y' at both step ends; formed only on a step
+//!   whose stick check needs it ([`Accepted::dense`]).
+//! * Stick events: a step on which s·v of the interpolant is provably positive after its start
+//!   (lower bounds from v's coefficients, [`positive`]) has none; otherwise s·v is sampled at
+//!   8 points of the step and at every minimum of s·v bracketed between them (where the
+//!   interpolated s·a goes from − to +), so that a dip below zero and back inside one step is
+//!   not missed (SciPy issue 9228); the first crossing is located by Illinois regula falsi on
+//!   the interpolant to a few ulps of t. [`Dopri5EndpointsOnly`] checks the step ends only, to
+//!   show that failure.
 //! * Transitions (physics.md §0): at a stick time v := 0; STUCK if |D| ≤ μs N_f, otherwise a
 //!   reversal to direction sgn D. The integration restarts from the event in the new mode
 //!   (new first step, new FSAL stage).
@@ -28,11 +29,13 @@
 //!   maxima refined by golden-section search, so a brief excursion above 0 is seen); the onset
 //!   is located on the exact force law by the same root finder, direction sgn D. Each G
 //!   evaluation counts as one right-hand-side evaluation, each T/16 stretch as one step.
-//! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage, on the
-//!   piece remembered from the previous evaluation ([`Forces`]), with no check at all on a
-//!   step known to stay on that piece; the next breakpoint is kept while ahead. About 1.45×
-//!   the instructions per step of a textbook DOPRI5 on the same slip equation (3.8× before),
-//!   with the same bits in every result.
+//! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage but the
+//!   last (FSAL: at the sixth's time, [`Slip`]), on the piece remembered from the previous
+//!   evaluation ([`Forces`], which also crosses a period boundary without `rem_euclid`), with
+//!   no check at all on a step known to stay on that piece; the next breakpoint is kept while
+//!   ahead; the interpolant is formed only where a stick is possible. About 1.2–1.3× the
+//!   instructions per step of a textbook DOPRI5 on the same slip equation (3.8× before), with
+//!   the same bits in every result.
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
@@ -114,6 +117,111 @@ fn weighted_norm(e: State, a: State, b: State, tol: f64) -> f64 {
     (0.5 * sum).sqrt()
 }
 
+/// A right-hand side y' = f(t, y) of the integrator: any closure, or [`Slip`].
+pub(crate) trait Field {
+    /// f(t, y).
+    fn at(&self, t: f64, y: State) -> State;
+
+    /// f(t, y) given k = f(t, z) at the same t: the last stage of a step (FSAL) is taken at
+    /// the time of the sixth, so a field whose time-dependent part does not depend on y
+    /// passes it on instead of evaluating it again.
+    #[inline]
+    fn at_same_time(&self, t: f64, y: State, k: State) -> State {
+        let _ = k;
+        self.at(t, y)
+    }
+}
+
+impl<F: Fn(f64, State) -> State> Field for F {
+    #[inline]
+    fn at(&self, t: f64, y: State) -> State {
+        self(t, y)
+    }
+}
+
+/// The slip equations x' = v, v' = a(t), with the acceleration a(t) (m/s²) of a slip phase:
+/// a depends on t only, so the FSAL stage reuses the sixth stage's (the same bits: one
+/// evaluation of the force law less per step).
+struct Slip<A>(A);
+
+impl<A: Fn(f64) -> f64> Field for Slip<A> {
+    #[inline]
+    fn at(&self, t: f64, y: State) -> State {
+        [y[1], (self.0)(t)]
+    }
+
+    #[inline]
+    fn at_same_time(&self, _t: f64, y: State, k: State) -> State {
+        [y[1], k[1]]
+    }
+}
+
+/// One accepted step on [t0, t0 + h]: its ends and the stages its interpolant is formed from
+/// (k2 has no weight in it), so that a step which needs no interpolant forms none.
+#[derive(Clone, Copy, Debug)]
+struct Accepted {
+    t0: f64,
+    t1: f64,
+    h: f64,
+    y0: State,
+    y1: State,
+    /// The stages k1, k3, k4, k5, k6, k7.
+    k: [State; 6],
+}
+
+impl Accepted {
+    /// The coefficients r1 … r5 of component i of the step's interpolant ([`Dense`]).
+    fn coefficients(&self, i: usize) -> [f64; 5] {
+        let (h, k) = (self.h, &self.k);
+        let ydiff = self.y1[i] - self.y0[i];
+        let bspl = h * k[0][i] - ydiff;
+        let r4 = ydiff - h * k[5][i] - bspl;
+        let r5 = [D1, D3, D4, D5, D6, D7]
+            .iter()
+            .zip(k)
+            .fold(0.0, |r, (&d, k)| r + h * d * k[i]);
+        [self.y0[i], ydiff, bspl, r4, r5]
+    }
+
+    /// The step's interpolant.
+    fn dense(&self) -> Dense {
+        let c = [self.coefficients(0), self.coefficients(1)];
+        Dense {
+            t0: self.t0,
+            t1: self.t1,
+            h: self.h,
+            r: std::array::from_fn(|j| [c[0][j], c[1][j]]),
+            y1: self.y1,
+        }
+    }
+}
+
+/// True when s·p is positive on the step after its start (θ ∈ (0, 1]) for the interpolant's
+/// component p with coefficients `r` ([`Accepted::coefficients`]), by a margin that covers
+/// the rounding of any evaluation of it (64 ε Σ|r_j|): positive on the whole step by the first
+/// bound (the linear part is smallest at an end, θ(1−θ) ≤ 1/4, θ ≤ 1 bound the rest), or
+/// s·r1 ≥ 0 (a step from a slip onset has s·r1 = 0) and q positive by the second
+/// (θ(1−θ)² ≤ 4/27).
+///
+/// ```text
+/// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
+/// p = r1 + θ q,  q = r2 + (1−θ) r3 + θ(1−θ) r4 + θ(1−θ)² r5
+///                  ≥ min(r2, r2 + r3) − |r4|/4 − 4|r5|/27
+/// ```
+fn positive(r: [f64; 5], s: f64) -> bool {
+    // s = ±1 (a NaN fails every comparison below): only the signed terms take it.
+    let [r1, r2, r3] = [s * r[0], s * r[1], s * r[2]];
+    let (a4, a5) = (r[3].abs(), r[4].abs());
+    let curve = r3.abs() + a4 + 0.25 * a5;
+    let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
+    // Plain comparisons: a NaN fails them, as it should.
+    if r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin {
+        return true;
+    }
+    let bend = 0.25 * a4 + 0.15 * a5;
+    r1 >= 0.0 && r2 - bend > margin && (r2 + r3) - bend > margin
+}
+
 /// The continuous extension of one accepted step on [t0, t0 + h]: Hairer's 4th-order
 /// interpolant, p(θ) = r1 + θ(r2 + (1−θ)(r3 + θ(r4 + (1−θ) r5))), θ = (t − t0)/h, which
 /// matches y and f at both ends.
@@ -139,21 +247,6 @@ impl Dense {
         std::array::from_fn(|i| {
             r[0][i] + th * (r[1][i] + th1 * (r[2][i] + th * (r[3][i] + th1 * r[4][i])))
         })
-    }
-
-    /// True when component `i` of the interpolant times `s` is positive on the whole step by
-    /// a margin that covers the rounding of any evaluation of it (64 ε Σ|r_j|): the linear
-    /// part is smallest at an end, and θ(1−θ) ≤ 1/4, θ ≤ 1 bound the rest.
-    ///
-    /// ```text
-    /// p = r1 + θ r2 + θ(1−θ) (r3 + θ r4 + θ(1−θ) r5) ≥ min(r1, r1 + r2) − (|r3| + |r4| + |r5|/4)/4
-    /// ```
-    fn positive(&self, i: usize, s: f64) -> bool {
-        let [r1, r2, r3, r4, r5] = self.r.map(|r| s * r[i]);
-        let curve = r3.abs() + r4.abs() + 0.25 * r5.abs();
-        let margin = 64.0 * f64::EPSILON * (r1.abs() + r2.abs() + curve);
-        // Plain comparisons: a NaN fails them, as it should.
-        r1 - 0.25 * curve > margin && (r1 + r2) - 0.25 * curve > margin
     }
 
     /// Time derivative of the interpolant at time t.
@@ -186,15 +279,8 @@ struct Integrator {
 impl Integrator {
     /// Starts at (t0, y0) towards `t_dir_end`, choosing the first step by Hairer's heuristic
     /// (HNW I, II.4): h such that the explicit Euler error estimate is about tol.
-    fn new(
-        f: impl Fn(f64, State) -> State,
-        t0: f64,
-        y0: State,
-        t_end: f64,
-        tol: f64,
-        stats: &mut Stats,
-    ) -> Self {
-        let k1 = f(t0, y0);
+    fn new(f: &impl Field, t0: f64, y0: State, t_end: f64, tol: f64, stats: &mut Stats) -> Self {
+        let k1 = f.at(t0, y0);
         stats.rhs_evals += 1;
         let span = (t_end - t0).abs().max(f64::MIN_POSITIVE);
         let norm = |e: State| weighted_norm(e, y0, y0, tol);
@@ -205,7 +291,7 @@ impl Integrator {
             (0.01 * d0 / d1).min(span)
         };
         let y1 = axpy(y0, &[(h0, k1)]);
-        let k2 = f(t0 + h0, y1);
+        let k2 = f.at(t0 + h0, y1);
         stats.rhs_evals += 1;
         let d2 = norm([k2[0] - k1[0], k2[1] - k1[1]]) / h0;
         let h1 = if d1.max(d2) <= 1e-15 {
@@ -224,14 +310,15 @@ impl Integrator {
     }
 
     /// One accepted step that ends at or before `t_stop` (> t); rejected attempts are retried
-    /// with a smaller step. Returns the step's dense output; (t, y, k1) move to its end.
+    /// with a smaller step. Returns the step (its dense output is formed on demand); (t, y, k1)
+    /// move to its end.
     fn step(
         &mut self,
-        f: impl Fn(f64, State) -> State,
+        f: &impl Field,
         t_stop: f64,
         h_max: f64,
         stats: &mut Stats,
-    ) -> Result<Dense> {
+    ) -> Result<Accepted> {
         let (t, y, k1) = (self.t, self.y, self.k1);
         let mut h = self.h.min(h_max);
         let mut rejected_last = false;
@@ -248,20 +335,21 @@ impl Integrator {
                 h = t_stop - t;
             }
             let smallest = 8.0 * f64::EPSILON * t.abs().max(f64::MIN_POSITIVE);
-            if h.is_nan() || h <= smallest || h.is_infinite() {
+            // Plain comparisons: a NaN fails them.
+            if !(h > smallest && h < f64::INFINITY) {
                 return Err(Error::Stalled {
                     t,
                     reason: "dopri5: step size underflow",
                 });
             }
             stats.steps += 1;
-            let k2 = f(t + C2 * h, axpy(y, &[(h * A21, k1)]));
-            let k3 = f(t + C3 * h, axpy(y, &[(h * A31, k1), (h * A32, k2)]));
-            let k4 = f(
+            let k2 = f.at(t + C2 * h, axpy(y, &[(h * A21, k1)]));
+            let k3 = f.at(t + C3 * h, axpy(y, &[(h * A31, k1), (h * A32, k2)]));
+            let k4 = f.at(
                 t + C4 * h,
                 axpy(y, &[(h * A41, k1), (h * A42, k2), (h * A43, k3)]),
             );
-            let k5 = f(
+            let k5 = f.at(
                 t + C5 * h,
                 axpy(
                     y,
@@ -269,7 +357,7 @@ impl Integrator {
                 ),
             );
             let t1 = if last { t_stop } else { t + h };
-            let k6 = f(
+            let k6 = f.at(
                 t1,
                 axpy(
                     y,
@@ -292,7 +380,7 @@ impl Integrator {
                     (h * A76, k6),
                 ],
             );
-            let k7 = f(t1, y1);
+            let k7 = f.at_same_time(t1, y1, k6);
             stats.rhs_evals += 6;
             let e = axpy(
                 [0.0; 2],
@@ -318,29 +406,13 @@ impl Integrator {
                 if rejected_last {
                     fac = fac.min(1.0);
                 }
-                let ydiff = [y1[0] - y[0], y1[1] - y[1]];
-                let bspl = [h * k1[0] - ydiff[0], h * k1[1] - ydiff[1]];
-                let r4 = [
-                    ydiff[0] - h * k7[0] - bspl[0],
-                    ydiff[1] - h * k7[1] - bspl[1],
-                ];
-                let r5 = axpy(
-                    [0.0; 2],
-                    &[
-                        (h * D1, k1),
-                        (h * D3, k3),
-                        (h * D4, k4),
-                        (h * D5, k5),
-                        (h * D6, k6),
-                        (h * D7, k7),
-                    ],
-                );
-                let dense = Dense {
+                let accepted = Accepted {
                     t0: t,
                     t1,
                     h,
-                    r: [y, ydiff, bspl, r4, r5],
+                    y0: y,
                     y1,
+                    k: [k1, k3, k4, k5, k6, k7],
                 };
                 self.t = t1;
                 self.y = y1;
@@ -351,7 +423,7 @@ impl Integrator {
                 } else {
                     h * fac
                 };
-                return Ok(dense);
+                return Ok(accepted);
             }
             stats.rejected += 1;
             rejected_last = true;
@@ -410,39 +482,41 @@ fn smooth(
 
 /// D(t) and N_f(t) of a problem, bit for bit [`Problem::forces`], with the period and the
 /// piece of the previous call remembered: the right-hand side is evaluated many times per
-/// piece, so the general lookup (a `rem_euclid`, a search over the pieces, and all of it once
-/// for D and once for N_f) is done only when t leaves the piece.
+/// piece, so the lookup is done only when t leaves the piece, and the general one (a
+/// `rem_euclid`, a search over the pieces, and all of it once for D and once for N_f) only
+/// when t leaves the remembered period other than into the next one.
 ///
 /// ```text
-/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), once per lookup, for t ≥ 0)
+/// kT = hi + lo exactly (hi = fl(kT), lo = fma(k, T, −hi), for t ≥ 0)
 /// fast path: τ = (t − hi) − lo, taken when τ ∈ [start, end) of the remembered piece
+/// on leaving it: the same τ, or that of period k + 1, when in [0, T), and a search of the pieces
 /// ```
 ///
 /// Why bit for bit: t mod T (`fmod`, what `rem_euclid` is for t ≥ 0) is the exactly
 /// representable t − nT with n = ⌊t/T⌋. τ is the one rounding of the real t − kT: either
 /// lo = 0 (k = 0, 1, 2, …: kT exact), or k ≥ 3 and t − hi is exact (Sterbenz) unless t < hi/2
-/// or t > 2 hi, where |t − hi| ≥ hi/2 > T puts τ outside [0, T). Rounding is monotone and the
-/// piece bounds are floats, so τ ∈ [start, end) ⊂ [0, T) implies the real t − kT ∈ [0, T),
-/// hence k = n, the real value is representable and τ equals it; the piece containing τ is
-/// the one [`crate::engine::ForceLaw::piece_at`] picks.
+/// or t > 2 hi, where |t − hi| ≥ hi/2 > T puts τ outside [0, T). Rounding is monotone and 0,
+/// T and the piece bounds are floats, so τ ∈ [0, T) implies the real t − kT ∈ [0, T), hence
+/// k = n, the real value is representable and τ equals it; the piece containing τ is the one
+/// [`crate::engine::ForceLaw::piece_at`] picks.
 pub(crate) struct Forces<'a> {
     problem: &'a Problem,
-    /// hi, lo of the last general lookup (NaN: none yet) and its piece.
-    cache: std::cell::Cell<(f64, f64, usize)>,
+    /// k, hi, lo of the remembered period (NaN: none yet) and the remembered piece.
+    cache: std::cell::Cell<(f64, f64, f64, usize)>,
 }
 
 impl<'a> Forces<'a> {
     pub(crate) fn new(problem: &'a Problem) -> Self {
         Self {
             problem,
-            cache: std::cell::Cell::new((f64::NAN, 0.0, 0)),
+            cache: std::cell::Cell::new((f64::NAN, f64::NAN, 0.0, 0)),
         }
     }
 
     /// (D, N_f) at absolute time t (N).
     #[inline]
     pub(crate) fn at(&self, t: f64) -> (f64, f64) {
-        let (hi, lo, i) = self.cache.get();
+        let (_, hi, lo, i) = self.cache.get();
         let pieces = &self.problem.law.pieces;
         if let Some(piece) = pieces.get(i) {
             let local = (t - hi) - lo;
@@ -457,43 +531,62 @@ impl<'a> Forces<'a> {
     /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
     /// [t_a, t_b] then has its τ in [start, end), so [`OnPiece::at`] is [`Forces::at`]
     /// without the check.
-    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece<'a>> {
-        let (hi, lo, i) = self.cache.get();
-        let piece = self.problem.law.pieces.get(i)?;
+    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
+        let (_, hi, lo, i) = self.cache.get();
+        let piece = *self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
 
-    /// The general path: [`Problem::forces`], remembering the period and the piece.
+    /// t off the remembered piece: in the remembered period or the next one (as a step
+    /// crosses a period boundary), otherwise by the general path, remembering the period (for
+    /// t ≥ 0) and the piece.
     #[cold]
     fn lookup(&self, t: f64) -> (f64, f64) {
-        let law = &self.problem.law;
-        let local = t.rem_euclid(law.period);
-        let i = law
-            .pieces
-            .partition_point(|p| p.end <= local)
-            .min(law.pieces.len() - 1);
-        if t >= 0.0 {
-            let k = ((t - local) / law.period).round();
-            let hi = k * law.period;
-            self.cache.set((hi, k.mul_add(law.period, -hi), i));
+        let period = self.problem.law.period;
+        let (k, hi, lo, _) = self.cache.get();
+        let next = k + 1.0;
+        let hi_next = next * period;
+        for (k, hi, lo) in [(k, hi, lo), (next, hi_next, next.mul_add(period, -hi_next))] {
+            let local = (t - hi) - lo;
+            if local >= 0.0 && local < period {
+                return self.forces_at(local, Some((k, hi, lo)));
+            }
         }
-        let piece = &law.pieces[i];
+        let local = t.rem_euclid(period);
+        let k = ((t - local) / period).round();
+        let hi = k * period;
+        let kept = (t >= 0.0).then(|| (k, hi, k.mul_add(period, -hi)));
+        self.forces_at(local, kept)
+    }
+
+    /// (D, N_f) at `local` = t mod T on the piece containing it, remembering that piece and
+    /// the period `kept` (k, hi, lo) if any.
+    fn forces_at(&self, local: f64, kept: Option<(f64, f64, f64)>) -> (f64, f64) {
+        let pieces = &self.problem.law.pieces;
+        let i = pieces
+            .partition_point(|p| p.end <= local)
+            .min(pieces.len() - 1);
+        if let Some((k, hi, lo)) = kept {
+            self.cache.set((k, hi, lo, i));
+        }
+        let piece = &pieces[i];
         let b = piece.basis.eval(local);
         (piece.drive.at(b), piece.normal.at(b))
     }
 }
 
 /// One piece of the force law and its period offset hi + lo (see [`Forces`]), for times known
-/// to lie on it.
+/// to lie on it; a copy, so that its coefficients stay in registers across the evaluations of
+/// a step.
 #[derive(Clone, Copy)]
-struct OnPiece<'a> {
+struct OnPiece {
     hi: f64,
     lo: f64,
-    piece: &'a crate::engine::Piece,
+    piece: crate::engine::Piece,
 }
 
-impl OnPiece<'_> {
+impl OnPiece {
     /// (D, N_f) at absolute time t on the piece (N).
     #[inline]
     fn at(&self, t: f64) -> (f64, f64) {
@@ -587,11 +680,11 @@ pub fn solve_with(problem: &Problem, tol: f64, opts: &Options) -> Result<Solutio
     };
     drive(problem, opts, &labels, |forces, t, x, s, stats| {
         let body = problem.body;
-        let f = |t: f64, y: State| {
+        let f = Slip(|t| {
             let (d, n) = forces.at(t);
-            [y[1], body.slip_acceleration(d, n, s)]
-        };
-        let mut slide = Integrator::new(f, t, [x, 0.0], problem.t_end, tol, stats);
+            body.slip_acceleration(d, n, s)
+        });
+        let mut slide = Integrator::new(&f, t, [x, 0.0], problem.t_end, tol, stats);
         let mut stop = f64::NAN;
         loop {
             match slip_advance(&mut slide, forces, &mut stop, s, opts, stats)? {
@@ -658,7 +751,7 @@ pub(crate) fn drive(
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
                         record(onset, "slip");
-                        dir = problem.forces(onset).0.signum();
+                        dir = forces.at(onset).0.signum();
                         t = onset;
                         continue 'phases;
                     }
@@ -673,7 +766,7 @@ pub(crate) fn drive(
         match slip(&forces, t, x, s, &mut stats)? {
             SlipEnd::Stop { t: te, x: xe } => {
                 (t, x) = (te, xe);
-                let (d, n) = problem.forces(te);
+                let (d, n) = forces.at(te);
                 if d.abs() <= problem.body.mu_s * n {
                     record(te, "stick");
                     dir = 0.0;
@@ -723,28 +816,33 @@ fn slip_advance(
     } else {
         forces.on_piece(run.t, run.t + h)
     };
-    let dense = match on_piece {
+    let step = match on_piece {
         Some(piece) => {
-            let f = |t: f64, y: State| {
+            let f = Slip(|t| {
                 let (d, n) = piece.at(t);
-                [y[1], body.slip_acceleration(d, n, s)]
-            };
-            run.step(f, *stop, opts.h_max, stats)?
+                body.slip_acceleration(d, n, s)
+            });
+            run.step(&f, *stop, opts.h_max, stats)?
         }
         None => {
-            let f = |t: f64, y: State| {
+            let f = Slip(|t| {
                 let (d, n) = forces.at(t);
-                [y[1], body.slip_acceleration(d, n, s)]
-            };
-            run.step(f, *stop, opts.h_max, stats)?
+                body.slip_acceleration(d, n, s)
+            });
+            run.step(&f, *stop, opts.h_max, stats)?
         }
     };
-    let samples = if opts.interior_checks { SAMPLES } else { 1 };
-    if let Some(te) = first_stick(&dense, s, samples) {
-        return Ok(Advance::Event {
-            t: te,
-            x: dense.y(te)[0],
-        });
+    // Most steps are far from a stick: s·v > 0 on the whole step, so every sample of
+    // `first_stick` would be positive and nothing would be found.
+    if !positive(step.coefficients(1), s) {
+        let dense = step.dense();
+        let samples = if opts.interior_checks { SAMPLES } else { 1 };
+        if let Some(te) = first_stick(&dense, s, samples) {
+            return Ok(Advance::Event {
+                t: te,
+                x: dense.y(te)[0],
+            });
+        }
     }
     if run.t >= problem.t_end {
         return Ok(Advance::End { y: run.y });
@@ -757,11 +855,6 @@ fn slip_advance(
 /// bracketed between them (d(s·v)/dt from − to +): a dip of s·v below 0 and back inside one
 /// step is seen (SciPy issue 9228 is this dip missed).
 fn first_stick(dense: &Dense, s: f64, samples: u32) -> Option<f64> {
-    // Most steps are far from a stick: s·v > 0 on the whole step, so every sample below
-    // would be positive and nothing would be found.
-    if dense.positive(1, s) {
-        return None;
-    }
     let g = |t: f64| s * dense.y(t)[1];
     let dg = |t: f64| s * dense.dy(t)[1];
     let t0 = dense.t0;
@@ -1026,30 +1119,40 @@ mod tests {
 
     #[test]
     fn the_positivity_test_of_the_interpolant_is_a_lower_bound() {
-        let dense = |r: [f64; 5]| Dense {
-            t0: 0.0,
-            t1: 1.0,
-            h: 1.0,
-            r: r.map(|r| [0.0, r]),
-            y1: [0.0, r[0] + r[1]],
-        };
         // Positive on [0, 1] (min ≈ 0.26), and the bound 0.3 − (0.1 + 0.05 + 0.1)/4 > 0.
         let r = [0.3, 0.2, -0.1, 0.05, 0.4];
-        assert!(dense(r).positive(1, 1.0));
-        assert!(!dense(r).positive(1, -1.0));
+        assert!(positive(r, 1.0));
+        assert!(!positive(r, -1.0));
         // Zero at θ = ½ (0.3 + 0.1 − 0.4): not positive.
-        assert!(!dense([0.3, 0.2, -1.6, 0.0, 0.0]).positive(1, 1.0));
+        assert!(!positive([0.3, 0.2, -1.6, 0.0, 0.0], 1.0));
         // Positive (min ≈ 0.043 at θ = 3/7), but the bound 0.3 − 1.4/4 does not show it:
         // the samples decide.
-        assert!(!dense([0.3, 0.2, -1.4, 0.0, 0.0]).positive(1, 1.0));
+        assert!(!positive([0.3, 0.2, -1.4, 0.0, 0.0], 1.0));
         // A NaN is not positive.
-        assert!(!dense([f64::NAN, 0.2, 0.0, 0.0, 0.0]).positive(1, 1.0));
-        // Sampled: the bound holds wherever it says positive.
-        for r3 in [-0.5, -0.1, 0.0, 0.3] {
-            let d = dense([0.2, -0.1, r3, 0.2, -0.3]);
-            if d.positive(1, 1.0) {
-                for j in 0..=100 {
-                    assert!(d.y(f64::from(j) / 100.0)[1] > 0.0);
+        assert!(!positive([f64::NAN, 0.2, 0.0, 0.0, 0.0], 1.0));
+        // From rest (a slip onset): 0 at θ = 0, positive after by the second bound
+        // (0.2 − 0.1/4 − 0.15·0.3 > 0, 0.2 − 0.1 − … > 0); not so going the other way.
+        let onset = [0.0, 0.2, -0.1, 0.1, 0.3];
+        assert!(positive(onset, 1.0));
+        assert!(!positive(onset, -1.0));
+        // q = 0.2 − 0.3 (1 − θ) < 0 near θ = 0: p dips below 0 first.
+        assert!(!positive([0.0, 0.2, -0.3, 0.0, 0.0], 1.0));
+        // Sampled: the bounds hold wherever they say positive.
+        for (r1, r3) in [0.0, 0.2]
+            .into_iter()
+            .flat_map(|r1| [-0.5, -0.1, 0.0, 0.3].map(|r3| (r1, r3)))
+        {
+            let r = [r1, 0.2 - r1 / 2.0, r3, 0.2, -0.3];
+            let d = Dense {
+                t0: 0.0,
+                t1: 1.0,
+                h: 1.0,
+                r: r.map(|r| [0.0, r]),
+                y1: [0.0, r[0] + r[1]],
+            };
+            if positive(r, 1.0) {
+                for j in 1..=100 {
+                    assert!(d.y(f64::from(j) / 100.0)[1] > 0.0, "{r:?}");
                 }
             }
         }
@@ -1103,9 +1206,12 @@ mod tests {
     fn a_dip_of_the_speed_between_samples_is_found_by_the_minimum_check() {
         let mut stats = Stats::default();
         let f = |t: f64, y: State| [y[1], 2.0 * t - 1.1];
-        let mut run = Integrator::new(f, 0.0, [0.0, 0.52 * 0.58], 1.0, 1e6, &mut stats);
+        let mut run = Integrator::new(&f, 0.0, [0.0, 0.52 * 0.58], 1.0, 1e6, &mut stats);
         run.h = 1.0;
-        let dense = run.step(f, 1.0, f64::INFINITY, &mut stats).unwrap();
+        let dense = run
+            .step(&f, 1.0, f64::INFINITY, &mut stats)
+            .unwrap()
+            .dense();
         assert_eq!(dense.t1, 1.0);
         for t in [0.0, 0.5, 0.625, 1.0] {
             assert!(dense.y(t)[1] > 0.0, "positive at the samples t = {t}");
