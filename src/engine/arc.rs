@@ -88,13 +88,6 @@ pub trait ArcMotion: Copy {
     /// Velocity at the start (m/s).
     fn v_start(&self) -> f64;
 
-    /// Acceleration at the start (m/s²).
-    fn a_start(&self) -> f64;
-
-    /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
-    /// basis.
-    fn jerk_bound(&self) -> f64;
-
     /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
     /// (Sterbenz), and t_c.lo is then subtracted.
     fn w(&self, t: f64) -> f64;
@@ -106,15 +99,10 @@ pub trait ArcMotion: Copy {
     /// [`ArcMotion::at`] at a time close to the last one evaluated with the same `seed`, as in a
     /// root search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the
     /// kernels follow from the seed's by the angle-addition formulas, without sin and cos (each
-    /// addition adds about an ulp to them). The seed is then moved to t.
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point;
-
-    /// Acceleration (m/s²) a time w after the start.
-    fn a_at(&self, w: f64) -> f64;
-
-    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
-    /// allocation, this is on the hot path).
-    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2];
+    /// addition adds about an ulp to them); else, where δ/2 is one of the `known` half angles
+    /// (worked out once for the times a run meets in every period, see run.rs), from it, with
+    /// the bits of sin and cos. The seed is then moved to t.
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point;
 
     /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1 (see
     /// [`Arc::integrate_normal_times_speed`]).
@@ -125,12 +113,6 @@ pub trait ArcMotion: Copy {
     fn v(&self, t: f64) -> f64 {
         self.at(t).v
     }
-}
-
-/// The zeros of a in (lo, hi).
-#[inline(always)]
-fn within(zeros: [Option<f64>; 2], lo: f64, hi: f64) -> [Option<f64>; 2] {
-    zeros.map(|z| z.filter(|&t| t > lo && t < hi))
 }
 
 impl ArcMotion for PolyArc {
@@ -145,18 +127,14 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn a_start(&self) -> f64 {
-        self.a_c
-    }
-
-    #[inline(always)]
-    fn jerk_bound(&self) -> f64 {
-        self.jerk.abs()
-    }
-
-    #[inline(always)]
     fn w(&self, t: f64) -> f64 {
-        (t - self.t_c) - self.t_lo
+        since(
+            t,
+            Dd {
+                hi: self.t_c,
+                lo: self.t_lo,
+            },
+        )
     }
 
     #[inline(always)]
@@ -179,30 +157,8 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>) -> Point {
+    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &[HalfAngle]) -> Point {
         self.at(t)
-    }
-
-    #[inline(always)]
-    fn a_at(&self, w: f64) -> f64 {
-        self.a_c + self.jerk * w
-    }
-
-    #[inline]
-    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        let PolyArc {
-            t_c,
-            t_lo,
-            a_c,
-            jerk,
-            ..
-        } = *self;
-        let w = -a_c / jerk;
-        within(
-            [(jerk != 0.0 && w > 0.0).then_some(t_c + (t_lo + w)), None],
-            lo,
-            hi,
-        )
     }
 
     #[inline]
@@ -259,18 +215,14 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn a_start(&self) -> f64 {
-        self.a_c
-    }
-
-    #[inline(always)]
-    fn jerk_bound(&self) -> f64 {
-        (self.a1 * self.omega).abs()
-    }
-
-    #[inline(always)]
     fn w(&self, t: f64) -> f64 {
-        (t - self.t_c) - self.t_lo
+        since(
+            t,
+            Dd {
+                hi: self.t_c,
+                lo: self.t_lo,
+            },
+        )
     }
 
     #[inline(always)]
@@ -279,57 +231,12 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
         self.at_with(t, |delta| {
-            let kernels = Kernels::near(delta, *seed);
+            let kernels = Kernels::near(delta, *seed, known);
             *seed = Some(kernels.half);
             kernels
         })
-    }
-
-    #[inline]
-    fn a_at(&self, w: f64) -> f64 {
-        let TrigArc {
-            a_c,
-            a1,
-            omega,
-            sin_c,
-            cos_c,
-            ..
-        } = *self;
-        let k = Kernels::new(omega * w);
-        a_c + a1 * (-cos_c * k.one_minus_cos - sin_c * k.sin)
-    }
-
-    fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        let TrigArc {
-            t_c,
-            t_lo,
-            a_c,
-            a1,
-            omega,
-            cos_c,
-            ..
-        } = *self;
-        let zeros = if a1 == 0.0 {
-            [None, None]
-        } else if a_c == 0.0 {
-            // a = a1 (cos ωt − cos θc): zero at the start and at its mirror 2π − θc, which
-            // is after the start when θc < π.
-            let mirror = (Dd::TAU.div_f64(omega) + Dd::new(-t_c, -t_lo)).value();
-            [(mirror > t_c).then_some(mirror), None]
-        } else {
-            // cos ωt = cos θc − a_c/a1 (in two parts): ωt = θ or 2π − θ.
-            let (hi_part, lo_part) = dd::two_sum(cos_c, -a_c / a1);
-            match dd::acos(Dd::new(hi_part, lo_part)) {
-                Some(theta) => [
-                    Some(theta.value() / omega),
-                    Some((Dd::TAU + -theta).value() / omega),
-                ],
-                None => [None, None],
-            }
-        };
-        within(zeros, lo, hi)
     }
 
     fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
@@ -427,17 +334,6 @@ impl Arc {
         either!(self, arc => arc.v_start())
     }
 
-    /// Acceleration at the start (m/s²).
-    pub fn a_start(&self) -> f64 {
-        either!(self, arc => arc.a_start())
-    }
-
-    /// An upper bound of |da/dt| on the arc (m/s³): |A1| on a linear basis, |A1|·ω on a cos
-    /// basis.
-    pub fn jerk_bound(&self) -> f64 {
-        either!(self, arc => arc.jerk_bound())
-    }
-
     /// w = t − t_c, the time since the start (s): t − t_c.hi is exact near the start
     /// (Sterbenz), and t_c.lo is then subtracted.
     #[inline]
@@ -455,20 +351,14 @@ impl Arc {
 
     /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
-    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
-        either!(self, arc => arc.at_near(t, seed))
+    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
+        either!(self, arc => arc.at_near(t, seed, known))
     }
 
     /// Acceleration a(t) (m/s²).
     #[inline]
     pub fn a(&self, t: f64) -> f64 {
         self.at(t).a
-    }
-
-    /// Acceleration (m/s²) a time w after the start.
-    #[inline]
-    pub fn a_at(&self, w: f64) -> f64 {
-        either!(self, arc => arc.a_at(w))
     }
 
     /// Velocity v(t) (m/s).
@@ -481,12 +371,6 @@ impl Arc {
     #[inline]
     pub fn x(&self, t: f64) -> f64 {
         self.at(t).x
-    }
-
-    /// Times in the open interval (lo, hi) where a(t) = 0, ascending (at most two; no
-    /// allocation, this is on the hot path).
-    pub fn accel_zeros(&self, lo: f64, hi: f64) -> [Option<f64>; 2] {
-        either!(self, arc => arc.accel_zeros(lo, hi))
     }
 
     /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1, over which v keeps its sign (N·m),
@@ -532,6 +416,64 @@ pub struct HalfAngle {
     cos: f64,
 }
 
+impl HalfAngle {
+    /// sin and cos of δ/2, where δ = ω·(t − t_c) is the angle an arc of angular frequency ω
+    /// (rad/s) that starts at t_c (s, in two parts) has turned through at t (s): the same δ and
+    /// bits as the arc's own evaluation at t.
+    pub fn between(omega: f64, t_c: Dd, t: f64) -> HalfAngle {
+        Kernels::new(omega * since(t, t_c)).half
+    }
+}
+
+/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]): at
+/// most [`KnownAngles::CAPACITY`], the later ones dropped.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct KnownAngles {
+    angles: [HalfAngle; KnownAngles::CAPACITY],
+    len: usize,
+}
+
+impl KnownAngles {
+    pub const CAPACITY: usize = 8;
+
+    pub const fn new() -> KnownAngles {
+        let none = HalfAngle {
+            angle: f64::NAN,
+            sin: f64::NAN,
+            cos: f64::NAN,
+        };
+        KnownAngles {
+            angles: [none; KnownAngles::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// Adds a half angle (when there is room).
+    pub fn push(&mut self, half: HalfAngle) {
+        if self.len < KnownAngles::CAPACITY {
+            self.angles[self.len] = half;
+            self.len += 1;
+        }
+    }
+
+    pub fn as_slice(&self) -> &[HalfAngle] {
+        &self.angles[..self.len]
+    }
+}
+
+impl Default for KnownAngles {
+    fn default() -> Self {
+        KnownAngles::new()
+    }
+}
+
+/// w = t − t_c (s): t − t_c.hi is exact near the start (Sterbenz), and t_c.lo is then
+/// subtracted.
+#[inline(always)]
+fn since(t: f64, t_c: Dd) -> f64 {
+    (t - t_c.hi) - t_c.lo
+}
+
 /// The largest change of δ/2 taken by the angle-addition formulas: there the Taylor sums of
 /// [`SIN_TAYLOR`] and [`ONE_MINUS_COS_TAYLOR`] are exact to a relative 3e-18.
 pub const ADDITION_MAX: f64 = 0.1;
@@ -558,9 +500,10 @@ impl Kernels {
 
     /// The kernels at δ from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
     /// sin(x + e) = sin x + (cos x sin e − sin x (1 − cos e)) and
-    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`].
+    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else from the `known` half
+    /// angle equal to δ/2 (the same bits as [`Kernels::new`]); else by [`Kernels::new`].
     #[inline]
-    fn near(delta: f64, seed: Option<HalfAngle>) -> Kernels {
+    fn near(delta: f64, seed: Option<HalfAngle>, known: &[HalfAngle]) -> Kernels {
         let angle = 0.5 * delta;
         match seed {
             Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
@@ -576,7 +519,10 @@ impl Kernels {
                 };
                 Kernels::from_half(delta, half)
             }
-            _ => Kernels::new(delta),
+            _ => match known.iter().find(|k| k.angle == angle) {
+                Some(&half) => Kernels::from_half(delta, half),
+                None => Kernels::new(delta),
+            },
         }
     }
 
@@ -781,7 +727,7 @@ mod tests {
         let mut seed = None;
         let times = [0.0944, 0.0893, 0.08887, 0.088_871_2, 0.088_871_136, 0.03];
         for t in times {
-            let (near, direct) = (arc.at_near(t, &mut seed), arc.at(t));
+            let (near, direct) = (arc.at_near(t, &mut seed, &[]), arc.at(t));
             let scale = |d: f64| 8.0 * f64::EPSILON * d.abs().max(1.0);
             assert!((near.v - direct.v).abs() <= scale(direct.v), "v at {t}");
             assert!((near.a - direct.a).abs() <= scale(direct.a), "a at {t}");
@@ -792,7 +738,7 @@ mod tests {
             );
         }
         // The last step (δ/2 moves by about 1.1) is evaluated afresh.
-        assert_eq!(arc.at_near(0.03, &mut seed), arc.at(0.03));
+        assert_eq!(arc.at_near(0.03, &mut seed, &[]), arc.at(0.03));
     }
 
     #[test]

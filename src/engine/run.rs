@@ -2,7 +2,8 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and (when
 //! asked for) friction dissipation.
 
-use super::arc::{phase, Arc, ArcMotion, Point, Start};
+use super::accel::SignChanges;
+use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, Start};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
@@ -373,8 +374,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
                     None => Arc::from_start(piece.basis, slope, start),
                 };
-                let mut on_max = |tm: f64| {
-                    let at_max = arc.at(tm);
+                let mut on_max = |tm: f64, at_max: Point| {
                     rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
                 };
                 let work_normal = opts.dissipation.then_some(normal_start);
@@ -463,6 +463,13 @@ struct PreparedPiece<'a> {
     /// Per direction of slip: the slope A1 of the acceleration in the basis while slipping
     /// ([`Body::slip_acceleration_affine`]).
     slope: [f64; 2],
+    /// Per direction of slip: where the acceleration changes sign on the piece (the same for
+    /// every arc in that direction).
+    accel: [SignChanges; 2],
+    /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
+    /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
+    /// of the acceleration: the same in every period, where a slide evaluates its arc.
+    known: KnownAngles,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -489,14 +496,48 @@ impl PreparedPiece<'_> {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
         };
+        let onsets = [onset(1), onset(-1)];
+        let accel = [1.0, -1.0].map(|s: f64| {
+            // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
+            let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
+            let exact = || {
+                let coefficient = |d: f64, n: f64| Dd::from(s * d) + Dd::prod(-body.mu_d, n);
+                (
+                    coefficient(piece.drive.c0, piece.normal.c0),
+                    coefficient(piece.drive.c1, piece.normal.c1),
+                )
+            };
+            SignChanges::new(piece.basis, h, exact)
+        });
+        // The kernels are a function of the angle only: one list serves the arcs in either
+        // direction.
+        let mut known = KnownAngles::new();
+        if let Basis::Cos { omega } = piece.basis {
+            for (onsets, accel) in onsets.iter().zip(&accel) {
+                let roots = match onsets {
+                    Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
+                    _ => [None, None],
+                };
+                let starts = std::iter::once(Dd::from(piece.start))
+                    .chain(roots.into_iter().flatten().map(|c| c.t));
+                let ends = std::iter::once(piece.end).chain(accel.zeros());
+                for end in ends.filter(|&t| t > piece.start && t <= piece.end) {
+                    for t_c in starts.clone().filter(|t_c| t_c.hi < end) {
+                        known.push(HalfAngle::between(omega, t_c, end));
+                    }
+                }
+            }
+        }
         PreparedPiece {
             piece,
             start_phase: match piece.basis {
                 Basis::Linear { .. } => (0.0, 1.0),
                 Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
             },
-            onsets: [onset(1), onset(-1)],
+            onsets,
             slope: [slope(1.0), slope(-1.0)],
+            accel,
+            known,
         }
     }
 
@@ -630,19 +671,6 @@ fn carry_over(
     }
 }
 
-/// `x.signum() as i8` (±1 for ±0 as for any number, 0 for NaN) from the sign bit, without the
-/// saturating conversion of a float to an integer.
-#[inline(always)]
-fn sign_of(x: f64) -> i8 {
-    if x.is_nan() {
-        0
-    } else if x.is_sign_negative() {
-        -1
-    } else {
-        1
-    }
-}
-
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
@@ -654,11 +682,12 @@ fn slide<M: ArcMotion>(
     normal_start: Option<f64>,
     snap: f64,
     accel_sign: &mut i8,
-    mut on_max: impl FnMut(f64),
+    mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
+    let known = prepared.known.as_slice();
+    let accel = &prepared.accel[side(dir)];
     let from = arc.t_start();
-    let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
     // progress instead of sticking where it started. From rest, a zero within `snap` of the
     // start is the onset itself (μd = μs: a = 0 there).
@@ -669,9 +698,11 @@ fn slide<M: ArcMotion>(
     };
     let mut bounds = [piece.end; 3];
     let mut count = 0;
-    for zero in arc.accel_zeros(after, piece.end).into_iter().flatten() {
-        bounds[count] = zero;
-        count += 1;
+    for zero in accel.zeros() {
+        if zero > after && zero < piece.end {
+            bounds[count] = zero;
+            count += 1;
+        }
     }
     bounds[count] = piece.end;
     let bounds = &bounds[..=count];
@@ -682,32 +713,11 @@ fn slide<M: ArcMotion>(
     // The half angle of the last evaluation on a trigonometric arc, from which the root search
     // and the motion at the stick step on without sin and cos.
     let mut seed = None;
-    // The sign of s·a on the last part, which changes at each zero of a (all simple).
-    let mut part_sign: i8 = 0;
-    // a keeps the sign of a_c from the start for longer than the zeros of a left out before
-    // `after`, and than its rounding (about eps·|da/dt|·T, below jerk_bound·snap).
-    let start_sign = arc.a_start().abs() > 2.0 * arc.jerk_bound() * (after - from + snap);
     for (i, &q) in bounds.iter().enumerate() {
-        // The sign of a on (p, q): the opposite of the last part's past a zero of a, that of a_c
-        // on the first part where it holds, else at the midpoint; on the first part measured
-        // from the arc's exact start (its time has a low part), so that a sub-ulp part is not
-        // misjudged.
-        let sign = if part_sign != 0 {
-            -part_sign
-        } else if i == 0 && start_sign {
-            sign_of(s * arc.a_start())
-        } else {
-            let w_mid = if i == 0 {
-                0.5 * arc.w(q)
-            } else {
-                arc.w(0.5 * (p + q))
-            };
-            sign_of(s * arc.a_at(w_mid))
-        };
-        part_sign = sign;
-        if *accel_sign > 0 && sign < 0 {
-            on_max(p);
-        }
+        // The sign of s·a on (p, q), from the zeros of a: just after `after` on the first part,
+        // just after the zero p on the others.
+        let sign = accel.sign_after(if i == 0 { after } else { p });
+        let at_max = *accel_sign > 0 && sign < 0;
         if sign != 0 {
             *accel_sign = sign;
         }
@@ -715,15 +725,22 @@ fn slide<M: ArcMotion>(
             (p, speed_p) = (q, None);
             continue;
         }
-        let at_p = speed_p.unwrap_or_else(|| speed(p));
-        let point_q = arc.at_near(q, &mut seed);
+        let mut point_p = || arc.at_near(p, &mut seed, known);
+        let at_p = if at_max {
+            let point = point_p();
+            on_max(p, point);
+            speed_p.unwrap_or(s * point.v)
+        } else {
+            speed_p.unwrap_or_else(|| s * point_p().v)
+        };
+        let point_q = arc.at_near(q, &mut seed, known);
         let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                let at = arc.at_near(t, &mut seed);
+                let at = arc.at_near(t, &mut seed, known);
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
@@ -742,7 +759,7 @@ fn slide<M: ArcMotion>(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        end: arc.at_near(end, &mut seed),
+        end: arc.at_near(end, &mut seed, known),
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
         }),
