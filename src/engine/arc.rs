@@ -41,6 +41,9 @@ pub struct Point {
     pub jerk: f64,
     /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
     pub db: f64,
+    /// (sin ωt, cos ωt) on a cos basis (from the arc's phase at its start and the kernels, to
+    /// about an ulp), none on a linear one.
+    pub phase: Option<(f64, f64)>,
 }
 
 /// The motion from a start (t_c, x_c, v_c, a_c) under a slope A1 of a in b(t); t is time in the
@@ -153,6 +156,7 @@ impl ArcMotion for PolyArc {
             a: a_c + jerk * w,
             jerk,
             db: w,
+            phase: None,
         }
     }
 
@@ -199,6 +203,7 @@ impl TrigArc {
             a: a_c + a1 * q,
             jerk: -a1 * omega * sin_t,
             db: q,
+            phase: Some((sin_t, cos_c + q)),
         }
     }
 }

@@ -314,6 +314,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         for prepared in prepared.iter().flatten() {
             let piece = prepared.piece;
             let mut t = piece.start;
+            // (sin ωt, cos ωt) at t on a cos basis where known: at the piece's start, at a stick.
+            let mut phase_t = prepared.start_phase;
             let mut transitions = 0;
             loop {
                 transitions += 1;
@@ -324,7 +326,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(prepared, t, snap);
+                    let onset = slip_onset(prepared, t, snap, phase_t);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     if opts.record_segments {
                         record(t, t_end, Motion::Rest { x });
@@ -350,17 +352,11 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                                 carry_over(body, prev, piece, a, normal, s)
                             })
                             .unwrap_or_else(|| {
-                                let b = piece.basis.eval(t);
+                                let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
                                 let normal = piece.normal.at(b);
                                 (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                             });
-                        let at_piece_start = t == piece.start;
-                        (
-                            Dd::from(t),
-                            a,
-                            normal,
-                            at_piece_start.then_some(prepared.start_phase),
-                        )
+                        (Dd::from(t), a, normal, phase_t)
                     }
                 };
                 let start = Start {
@@ -413,6 +409,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         rec.retract_slip(f64::from(n) * period + t);
                         dir = 0;
                         t = (t + snap).min(piece.end);
+                        phase_t = None;
                         if t >= piece.end {
                             break;
                         }
@@ -422,6 +419,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         rec.push(n, t_stick, EventKind::Stick { dir }, x, 0.0);
                         dir = 0;
                         t = t_stick;
+                        phase_t = end.phase;
                     }
                     None => {
                         v = end.v;
@@ -454,9 +452,9 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
 /// A piece of the force law with what a run computes once for it: the same in every period.
 struct PreparedPiece<'a> {
     piece: &'a Piece,
-    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
-    /// there ((0, 1) on a linear basis, where it is not used).
-    start_phase: (f64, f64),
+    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start on a cos basis, for the
+    /// arcs and the searches for a slip onset that start there.
+    start_phase: Option<(f64, f64)>,
     /// Per direction of slip (+1, −1, see [`side`]): the slip onsets; none where the switching
     /// function stays below zero over the piece.
     onsets: [Option<Onsets>; 2],
@@ -531,8 +529,8 @@ impl PreparedPiece<'_> {
         PreparedPiece {
             piece,
             start_phase: match piece.basis {
-                Basis::Linear { .. } => (0.0, 1.0),
-                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
+                Basis::Linear { .. } => None,
+                Basis::Cos { omega } => Some(phase(omega, Dd::from(piece.start))),
             },
             onsets,
             slope: [slope(1.0), slope(-1.0)],
@@ -587,12 +585,18 @@ impl PreparedPiece<'_> {
 
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp (see [`PreparedPiece::new`]).
+/// better than its ulp (see [`PreparedPiece::new`]). `phase` is (sin ωt, cos ωt) at `from` on a
+/// cos basis where known.
 #[inline]
-fn slip_onset(prepared: &PreparedPiece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
+fn slip_onset(
+    prepared: &PreparedPiece,
+    from: f64,
+    snap: f64,
+    phase: Option<(f64, f64)>,
+) -> Option<(Crossing, i8)> {
     let first = |onset: &Option<Onsets>| {
         let (crossings, _) = onset.as_ref()?;
-        crossings.first(from, snap)
+        crossings.first(from, snap, phase)
     };
     let [up, down] = &prepared.onsets;
     // The earlier of the two, the upward one at a tie.
@@ -632,7 +636,9 @@ fn onset_acceleration(body: &Body, piece: &Piece, c: &Crossing, s: f64) -> (f64,
             (0.0, if from_drive { s * d / body.mu_s } else { n })
         }
         None => {
-            let b = piece.basis.eval(c.t.hi);
+            let b = c
+                .phase
+                .map_or_else(|| piece.basis.eval(c.t.hi), |(_, cos)| cos);
             let normal = piece.normal.at(b);
             let g = s * piece.drive.at(b) - body.mu_s * normal;
             (g.max(0.0), normal)
