@@ -47,18 +47,20 @@ impl SignChanges {
             return none;
         }
         let (c0, c1) = exact();
-        // The basis value where h = 0, in two parts.
-        let root_b = -c0 / c1;
         let rising = sign_of(h.c1);
         match basis {
+            // The zero t_ref − c0/c1 from the exact coefficients rounded once each: the sum
+            // with t_ref rounds more than the quotient's last bits.
             Basis::Linear { t_ref } => SignChanges {
-                zeros: [(Dd::from(t_ref) + root_b).value(), f64::INFINITY],
+                zeros: [t_ref - c0.value() / c1.value(), f64::INFINITY],
                 before: -rising,
             },
             Basis::Cos { omega } => {
                 // dh/dt = c1·d(cos ωt)/dt: cos ωt falls through the first crossing θ/ω and rises
                 // through the second (2π − θ)/ω. Where |b| ≥ 1 there is none, and h keeps the
                 // sign of h(b = 0) = c0.
+                // The basis value where h = 0, in two parts (cos ωt is ill-conditioned near ±1).
+                let root_b = -c0 / c1;
                 match cos_level_crossings_dd(root_b, omega, f64::NEG_INFINITY, f64::INFINITY) {
                     [Some((first, _)), Some((second, _))] => SignChanges {
                         zeros: [first.value(), second.value()],

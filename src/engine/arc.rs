@@ -439,7 +439,7 @@ pub struct KnownAngles {
 }
 
 impl KnownAngles {
-    pub const CAPACITY: usize = 8;
+    pub const CAPACITY: usize = 6;
 
     pub const fn new() -> KnownAngles {
         let none = HalfAngle {
