@@ -77,6 +77,9 @@ pub struct TrigArc {
     a_c: f64,
     a1: f64,
     omega: f64,
+    /// A1/ω (m/s) and A1/ω² (m), the scales of P and R.
+    v1: f64,
+    x1: f64,
     /// sin ωt_c and cos ωt_c, with both parts of t_c.
     sin_c: f64,
     cos_c: f64,
@@ -102,9 +105,11 @@ pub trait ArcMotion: Copy {
     /// [`ArcMotion::at`] at a time close to the last one evaluated with the same `seed`, as in a
     /// root search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the
     /// kernels follow from the seed's by the angle-addition formulas, without sin and cos (each
-    /// addition adds about an ulp to them); else, where δ/2 is one of the `known` half angles
-    /// (worked out once for the times a run meets in every period, see run.rs), from it, with
-    /// the bits of sin and cos. The seed is then moved to t.
+    /// addition adds about an ulp to them), unless δ/2 is one of the `known` half angles
+    /// (worked out once for the times a run meets in every period, see run.rs): then from it,
+    /// with the bits of sin and cos. The seed is the last half angle whose sin and cos were
+    /// evaluated or known, not one reached by addition, so that the additions' rounding does not
+    /// accumulate along a search.
     fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point;
 
     /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1 (see
@@ -177,29 +182,29 @@ impl ArcMotion for PolyArc {
 }
 
 impl TrigArc {
-    /// The motion at time t, with the kernels from `kernels(δ)`.
+    /// The motion a time w after the start, with the kernels of δ = ωw.
     #[inline(always)]
-    fn at_with(&self, t: f64, kernels: impl FnOnce(f64) -> Kernels) -> Point {
+    fn at_kernels(&self, w: f64, k: Kernels) -> Point {
         let TrigArc {
             x_c,
             v_c,
             a_c,
             a1,
             omega,
+            v1,
+            x1,
             sin_c,
             cos_c,
             ..
         } = *self;
-        let w = self.w(t);
-        let k = kernels(omega * w);
         let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
         let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
         let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
         // sin(θc + δ)
         let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
         Point {
-            x: x_c + (w * (v_c + 0.5 * a_c * w) + a1 / (omega * omega) * r),
-            v: v_c + a_c * w + a1 / omega * p,
+            x: x_c + (w * (v_c + 0.5 * a_c * w) + x1 * r),
+            v: v_c + a_c * w + v1 * p,
             a: a_c + a1 * q,
             jerk: -a1 * omega * sin_t,
             db: q,
@@ -232,16 +237,14 @@ impl ArcMotion for TrigArc {
 
     #[inline(always)]
     fn at(&self, t: f64) -> Point {
-        self.at_with(t, Kernels::new)
+        let w = self.w(t);
+        self.at_kernels(w, Kernels::new(self.omega * w))
     }
 
     #[inline(always)]
     fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
-        self.at_with(t, |delta| {
-            let kernels = Kernels::near(delta, *seed, known);
-            *seed = Some(kernels.half);
-            kernels
-        })
+        let w = self.w(t);
+        self.at_kernels(w, Kernels::near(self.omega * w, seed, known))
     }
 
     fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
@@ -259,7 +262,7 @@ impl ArcMotion for TrigArc {
         let k = Kernels::new(delta);
         let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
         let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
-        let dx = w1 * (v_c + 0.5 * a_c * w1) + a1 / (omega * omega) * r;
+        let dx = w1 * (v_c + 0.5 * a_c * w1) + self.x1 * r;
         let moment = v_c * p + a_c / omega * (delta * p - r) + 0.5 * a1 / omega * p * p;
         (n_c * dx + n1 / omega * moment).abs()
     }
@@ -323,6 +326,8 @@ impl Arc {
                 a_c: start.a,
                 a1,
                 omega,
+                v1: a1 / omega,
+                x1: a1 / (omega * omega),
                 sin_c,
                 cos_c,
             }),
@@ -480,19 +485,33 @@ fn since(t: f64, t_c: Dd) -> f64 {
 }
 
 /// The largest change of δ/2 taken by the angle-addition formulas: there the Taylor sums of
-/// [`SIN_TAYLOR`] and [`ONE_MINUS_COS_TAYLOR`] are exact to a relative 3e-18.
-pub const ADDITION_MAX: f64 = 0.1;
+/// [`SIN_TAYLOR`] and [`ONE_MINUS_COS_TAYLOR`] are exact to a relative 1e-19, and a root search
+/// from the end of a piece reaches a stick up to 1.2 rad before it without sin and cos.
+pub const ADDITION_MAX: f64 = 0.6;
 
-/// sin e / e = Σ (−1)^k e^{2k}/(2k+1)!, to e^8.
-const SIN_TAYLOR: [f64; 5] = [1.0, -1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0];
+/// sin e / e = Σ (−1)^k e^{2k}/(2k+1)!, to e^16.
+const SIN_TAYLOR: [f64; 9] = [
+    1.0,
+    -1.0 / 6.0,
+    1.0 / 120.0,
+    -1.0 / 5040.0,
+    1.0 / 362_880.0,
+    -1.0 / 39_916_800.0,
+    1.0 / 6_227_020_800.0,
+    -1.0 / 1_307_674_368_000.0,
+    1.0 / 355_687_428_096_000.0,
+];
 
-/// (1 − cos e) / e² = Σ (−1)^k e^{2k}/(2k+2)!, to e^8.
-const ONE_MINUS_COS_TAYLOR: [f64; 5] = [
+/// (1 − cos e) / e² = Σ (−1)^k e^{2k}/(2k+2)!, to e^14.
+const ONE_MINUS_COS_TAYLOR: [f64; 8] = [
     0.5,
     -1.0 / 24.0,
     1.0 / 720.0,
     -1.0 / 40320.0,
     1.0 / 3_628_800.0,
+    -1.0 / 479_001_600.0,
+    1.0 / 87_178_291_200.0,
+    -1.0 / 20_922_789_888_000.0,
 ];
 
 impl Kernels {
@@ -503,14 +522,19 @@ impl Kernels {
         Kernels::from_half(delta, HalfAngle { angle, sin, cos })
     }
 
-    /// The kernels at δ from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
+    /// The kernels at δ from the `known` half angle equal to δ/2 (the same bits as
+    /// [`Kernels::new`]); else from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
     /// sin(x + e) = sin x + (cos x sin e − sin x (1 − cos e)) and
-    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else from the `known` half
-    /// angle equal to δ/2 (the same bits as [`Kernels::new`]); else by [`Kernels::new`].
-    #[inline]
-    fn near(delta: f64, seed: Option<HalfAngle>, known: &[HalfAngle]) -> Kernels {
+    /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`]. A
+    /// known or newly evaluated half angle becomes the seed.
+    #[inline(always)]
+    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Kernels {
         let angle = 0.5 * delta;
-        match seed {
+        if let Some(&half) = known.iter().find(|k| k.angle == angle) {
+            *seed = Some(half);
+            return Kernels::from_half(delta, half);
+        }
+        match *seed {
             Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
                 let e = angle - x.angle;
                 let (sin_e, one_minus_cos_e) = (
@@ -524,10 +548,11 @@ impl Kernels {
                 };
                 Kernels::from_half(delta, half)
             }
-            _ => match known.iter().find(|k| k.angle == angle) {
-                Some(&half) => Kernels::from_half(delta, half),
-                None => Kernels::new(delta),
-            },
+            _ => {
+                let kernels = Kernels::new(delta);
+                *seed = Some(kernels.half);
+                kernels
+            }
         }
     }
 

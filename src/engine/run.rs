@@ -746,7 +746,8 @@ fn slide<M: ArcMotion>(
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                let at = arc.at_near(t, &mut seed, known);
+                // The iterates are no piece's known times.
+                let at = arc.at_near(t, &mut seed, &[]);
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
