@@ -595,10 +595,25 @@ impl Kernels {
 /// most a factor 6 to cancellation.
 const SERIES_MAX: f64 = 1.5;
 
-/// Σ c_k z^k by Horner.
-#[inline]
-fn series(z: f64, c: &[f64]) -> f64 {
-    c.iter().rev().fold(0.0, |acc, &ck| acc * z + ck)
+/// Σ c_k z^k by Estrin's scheme: c_2i + c_2i+1·z in pairs, the pairs combined with z², those
+/// with z⁴, …: about log₂ N dependent steps instead of Horner's N, which a root search, whose
+/// every step waits for the last evaluation, feels (the loops unroll for a constant N).
+#[inline(always)]
+fn series<const N: usize>(z: f64, c: &[f64; N]) -> f64 {
+    let mut terms = *c;
+    let (mut n, mut power) = (N, z);
+    while n > 1 {
+        let pairs = n.div_ceil(2);
+        for i in 0..pairs {
+            terms[i] = if 2 * i + 1 < n {
+                terms[2 * i] + terms[2 * i + 1] * power
+            } else {
+                terms[2 * i]
+            };
+        }
+        (n, power) = (pairs, power * power);
+    }
+    terms[0]
 }
 
 /// (δ − sin δ)/δ³ = Σ (−1)^k δ^{2k}/(2k+3)!, to a relative 1e-19 for |δ| < 1.5.
