@@ -508,19 +508,23 @@ impl PreparedPiece<'_> {
             SignChanges::new(piece.basis, h, exact)
         });
         // The kernels are a function of the angle only: one list serves the arcs in either
-        // direction.
+        // direction. The most used first (a full list drops the rest): from the piece's start
+        // and from the located onsets to the end of the piece, then to the zeros of a.
         let mut known = KnownAngles::new();
         if let Basis::Cos { omega } = piece.basis {
-            for (onsets, accel) in onsets.iter().zip(&accel) {
-                let roots = match onsets {
-                    Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
-                    _ => [None, None],
-                };
-                let starts = std::iter::once(Dd::from(piece.start))
-                    .chain(roots.into_iter().flatten().map(|c| c.t));
-                let ends = std::iter::once(piece.end).chain(accel.zeros());
-                for end in ends.filter(|&t| t > piece.start && t <= piece.end) {
-                    for t_c in starts.clone().filter(|t_c| t_c.hi < end) {
+            let roots = onsets.iter().flat_map(|onsets| match onsets {
+                Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
+                _ => [None, None],
+            });
+            let mut starts = [None; 5];
+            starts[0] = Some(Dd::from(piece.start));
+            for (place, root) in starts[1..].iter_mut().zip(roots) {
+                *place = root.map(|c| c.t);
+            }
+            let zeros = accel.iter().flat_map(|a| a.zeros());
+            for end in std::iter::once(piece.end).chain(zeros) {
+                for t_c in starts.into_iter().flatten() {
+                    if t_c.hi < end && end > piece.start && end <= piece.end {
                         known.push(HalfAngle::between(omega, t_c, end));
                     }
                 }
