@@ -17,6 +17,7 @@
 //! so a slip of duration φT with accelerations O(φ g) loses nothing to the O(μd g) terms that
 //! make up A0 and A1 b: the old form A0 w + (A1/ω)(sin ωt − sin ωt_c) lost eps·μd/φ.
 
+use super::accel::{sign_of, SignChanges};
 use super::dd::{self, Dd};
 use super::law::{Affine, Basis};
 use crate::fmath;
@@ -91,6 +92,12 @@ pub trait ArcMotion: Copy {
     /// Start time t_c of the arc (s, within the period; the high part).
     fn t_start(&self) -> f64;
 
+    /// Where s·a changes sign, given those located for the piece in direction s (`located`):
+    /// on a cos basis those; on a linear basis where a_c + A1·w = 0, w = −a_c/A1, one division
+    /// from the arc's own start (cheaper per arc than locating the zero once per run in two
+    /// parts, which costs a short run more than it saves).
+    fn sign_changes(&self, s: f64, located: &SignChanges) -> SignChanges;
+
     /// Velocity at the start (m/s).
     fn v_start(&self) -> f64;
 
@@ -127,6 +134,21 @@ impl ArcMotion for PolyArc {
     #[inline(always)]
     fn t_start(&self) -> f64 {
         self.t_c
+    }
+
+    #[inline(always)]
+    fn sign_changes(&self, s: f64, _located: &SignChanges) -> SignChanges {
+        let PolyArc {
+            t_c,
+            t_lo,
+            a_c,
+            jerk,
+            ..
+        } = *self;
+        if jerk == 0.0 {
+            return SignChanges::once(None, sign_of(s * a_c));
+        }
+        SignChanges::once(Some(t_c + (t_lo + -a_c / jerk)), -sign_of(s * jerk))
     }
 
     #[inline(always)]
@@ -217,6 +239,11 @@ impl ArcMotion for TrigArc {
     #[inline(always)]
     fn t_start(&self) -> f64 {
         self.t_c
+    }
+
+    #[inline(always)]
+    fn sign_changes(&self, _s: f64, located: &SignChanges) -> SignChanges {
+        *located
     }
 
     #[inline(always)]

@@ -461,8 +461,8 @@ struct PreparedPiece<'a> {
     /// Per direction of slip: the slope A1 of the acceleration in the basis while slipping
     /// ([`Body::slip_acceleration_affine`]).
     slope: [f64; 2],
-    /// Per direction of slip: where the acceleration changes sign on the piece (the same for
-    /// every arc in that direction).
+    /// Per direction of slip, on a cos basis: where the acceleration changes sign on the piece
+    /// (the same for every arc in that direction).
     accel: [SignChanges; 2],
     /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
     /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
@@ -495,17 +495,22 @@ impl PreparedPiece<'_> {
                 .c1
         };
         let onsets = [onset(1), onset(-1)];
-        let accel = [1.0, -1.0].map(|s: f64| {
-            // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
-            let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
-            let exact = || {
-                let coefficient = |d: f64, n: f64| Dd::from(s * d) + Dd::prod(-body.mu_d, n);
-                (
-                    coefficient(piece.drive.c0, piece.normal.c0),
-                    coefficient(piece.drive.c1, piece.normal.c1),
-                )
-            };
-            SignChanges::new(piece.basis, h, exact)
+        // On a cos basis the zeros of a are located once, in two parts; on a linear one each
+        // arc finds its own (see [`ArcMotion::sign_changes`]).
+        let accel = [1.0, -1.0].map(|s: f64| match piece.basis {
+            Basis::Linear { .. } => SignChanges::UNKNOWN,
+            Basis::Cos { omega } => {
+                // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
+                let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
+                let exact = || {
+                    let coefficient = |d: f64, n: f64| Dd::from(s * d) + Dd::prod(-body.mu_d, n);
+                    (
+                        coefficient(piece.drive.c0, piece.normal.c0),
+                        coefficient(piece.drive.c1, piece.normal.c1),
+                    )
+                };
+                SignChanges::cos(omega, h, exact)
+            }
         });
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
@@ -696,7 +701,7 @@ fn slide<M: ArcMotion>(
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
     let known = prepared.known.as_slice();
-    let accel = &prepared.accel[side(dir)];
+    let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
     // progress instead of sticking where it started. From rest, a zero within `snap` of the
