@@ -18,11 +18,11 @@
 //! of benches/engine_instructions.rs do not, and compare versions of the engine:
 //!
 //! ```text
-//! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  libm calls/period
-//! pulled mass, linear law                  44 430    35 534    24 058    21 995  0
-//! pulled mass, harmonic law                98 625    77 755    59 804    58 312  23.1 → 11.2 | 9.35
-//! woodpecker, linear law                   81 649    69 598    46 945    42 858  0
-//! woodpecker, harmonic law                237 437   166 374   136 548   133 204  53.0 → 19.4 | 21.85
+//! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  4th pass  libm calls/period
+//! pulled mass, linear law                  44 430    35 534    24 058    21 995    22 918  0
+//! pulled mass, harmonic law                98 625    77 755    59 804    58 312    44 100  23.1 → 11.2 | 9.35 → 0.8
+//! woodpecker, linear law                   81 649    69 598    46 945    42 858    44 444  0
+//! woodpecker, harmonic law                237 437   166 374   136 548   133 204   110 373  53.0 → 19.4 | 21.85 → 1.8
 //! ```
 //!
 //! (libm calls before and after the first pass with a sin and a cos of one angle counted once;
@@ -58,6 +58,31 @@
 //! 14.1 µs: the harmonic laws 3 % faster (the woodpecker's within its 15 µs), the linear laws
 //! unchanged within the noise although they run 9 % fewer instructions, so their time is not
 //! the instruction count (still 3–7 % above their 1.65 and 3.15 µs at this load).
+//!
+//! Fourth pass (the harmonic laws): in direction s the acceleration a = (D − s μd N_f)/M depends
+//! on time only, so on a cos basis its zeros on a piece are located once per run, in two parts
+//! like the slip onsets (src/engine/accel.rs), and the sign of s·a on each part of a slide is
+//! read off them: no arccosine per arc. sin and cos of the half angles an arc meets in every
+//! period (from the piece's start or a located onset to the piece's end and to the zeros of a)
+//! are worked out once per run; a search for a slip onset takes sin and cos of its start from
+//! the piece's phase or from the arc that stuck; the stick search steps by angle addition up to
+//! 0.6 rad of δ/2 from the last evaluated half angle (Taylor sums to e^16; the seed does not move
+//! with the additions, so their rounding does not accumulate); the kernels' series are summed
+//! by Estrin's scheme (the search waits for each evaluation, and without FMA a Horner step is a
+//! dependent multiply and add); a trigonometric arc keeps A1/ω and A1/ω². libm calls per period
+//! (callgrind, every call counted, preparation included): pulled mass 9.35 → 0.8, woodpecker
+//! 21.85 → 1.8, all of them the per-run preparation. Linear laws: every event bit for bit as
+//! before (fingerprints unchanged); harmonic laws: kinds and counts of events unchanged on the
+//! 8000 fingerprint sets, transition times within 5e-16 relative, the reference's worst event
+//! error unchanged (2.5e-15 T); speed maxima near θ = π move by up to 2.6e-13 relative, to
+//! mpmath's value (the old zero took the rounding of cos θc). The third pass re-counted on the
+//! build of the fourth: 22 004, 58 430, 42 877 and 133 556 (harmonic −25 % and −17 %; linear
+//! +4 %: the event loop's extra bookkeeping, not located). Back to back with the third pass,
+//! three alternating rounds at load average 1.1–1.2 (2026-11-25): 1.76 / 1.79 / 1.76 → 1.81 /
+//! 1.81 / 1.77, 6.55 / 6.53 / 6.42 → 4.79 / 4.83 / 5.04, 3.44 / 3.47 / 3.48 → 3.71 / 3.67 /
+//! 3.72 and 14.7 / 14.9 / 14.6 → 10.7 / 10.8 / 11.0 µs: the harmonic laws 26 % faster, the
+//! linear ones 1–3 % and 7 % slower (the woodpecker's 4 pieces; a standalone timing loop on
+//! the core build puts its cost at about 12 ns per period and 70 ns per run).
 
 use std::hint::black_box;
 

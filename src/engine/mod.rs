@@ -12,6 +12,7 @@
 //! form ([`arc::Arc`]), so the integration is exact: no step size anywhere, events are located by
 //! bracketed root finding on monotone intervals ([`roots`]) to about 1e-15 relative.
 
+pub mod accel;
 pub mod arc;
 pub mod dd;
 pub mod law;

@@ -25,11 +25,12 @@ pub struct Crossing {
 }
 
 impl Crossing {
-    fn at_once(t: f64) -> Crossing {
+    /// At time t, with (sin ωt, cos ωt) on a cos basis when known.
+    fn at_once(t: f64, phase: Option<(f64, f64)>) -> Crossing {
         Crossing {
             t: Dd::from(t),
             root_b: None,
-            phase: None,
+            phase,
         }
     }
 }
@@ -48,7 +49,7 @@ pub fn first_up_crossing(
     to: f64,
     snap: f64,
 ) -> Option<Crossing> {
-    UpCrossings::new(basis, g, exact, to, snap).first(from, snap)
+    UpCrossings::new(basis, g, exact, to, snap).first(from, snap, None)
 }
 
 /// [`first_up_crossing`] with what does not depend on `from` worked out once: the roots of g on
@@ -152,18 +153,21 @@ impl UpCrossings {
         }
     }
 
-    /// The earliest up-crossing in [from, to), see [`first_up_crossing`].
-    pub fn first(&self, from: f64, snap: f64) -> Option<Crossing> {
+    /// The earliest up-crossing in [from, to), see [`first_up_crossing`]. On a cos basis
+    /// `phase` is (sin ωt, cos ωt) at t = `from` where the caller knows it (the start of a piece,
+    /// a stick), else it is evaluated; a crossing at once carries it to the arc that starts
+    /// there.
+    pub fn first(&self, from: f64, snap: f64, phase: Option<(f64, f64)>) -> Option<Crossing> {
         match *self {
             UpCrossings::Linear { t_ref, g, rising } => match rising {
                 Some((root, located)) => {
                     if root <= from + snap {
-                        Some(Crossing::at_once(from))
+                        Some(Crossing::at_once(from, None))
                     } else {
                         located
                     }
                 }
-                None if g.at(from - t_ref) > 0.0 => Some(Crossing::at_once(from)),
+                None if g.at(from - t_ref) > 0.0 => Some(Crossing::at_once(from, None)),
                 None => None,
             },
             UpCrossings::Never => None,
@@ -175,15 +179,16 @@ impl UpCrossings {
                 // At g = 0, look at the slope, and at the curvature where the slope vanishes too
                 // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
                 // sin ωt only where g = 0.
-                let cos = fmath::cos(omega * from);
+                let cos = phase.map_or_else(|| fmath::cos(omega * from), |(_, cos)| cos);
                 let g_from = g.at(cos);
                 let rising = || {
-                    let slope = -g.c1 * omega * fmath::sin(omega * from);
+                    let sin = phase.map_or_else(|| fmath::sin(omega * from), |(sin, _)| sin);
+                    let slope = -g.c1 * omega * sin;
                     let curvature = -g.c1 * omega * omega * cos;
                     slope > 0.0 || (slope == 0.0 && curvature > 0.0)
                 };
                 if g_from > 0.0 || (g_from == 0.0 && rising()) {
-                    return Some(Crossing::at_once(from));
+                    return Some(Crossing::at_once(from, phase));
                 }
                 // An up-crossing within snap before `from` happens at `from`.
                 let lo = from - snap;
@@ -192,7 +197,7 @@ impl UpCrossings {
                     .flatten()
                     .find(|c| c.t.value() >= lo)?;
                 if c.t.value() < from {
-                    return Some(Crossing::at_once(from));
+                    return Some(Crossing::at_once(from, phase));
                 }
                 Some(c)
             }

@@ -2,7 +2,8 @@
 //! between STUCK and SLIP at located events, and records events, per-period positions and (when
 //! asked for) friction dissipation.
 
-use super::arc::{phase, Arc, ArcMotion, Point, Start};
+use super::accel::SignChanges;
+use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, Start};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
@@ -313,6 +314,8 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         for prepared in prepared.iter().flatten() {
             let piece = prepared.piece;
             let mut t = piece.start;
+            // (sin ωt, cos ωt) at t on a cos basis where known: at the piece's start, at a stick.
+            let mut phase_t = prepared.start_phase;
             let mut transitions = 0;
             loop {
                 transitions += 1;
@@ -323,7 +326,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     });
                 }
                 if dir == 0 {
-                    let onset = slip_onset(prepared, t, snap);
+                    let onset = slip_onset(prepared, t, snap, phase_t);
                     let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
                     if opts.record_segments {
                         record(t, t_end, Motion::Rest { x });
@@ -349,17 +352,11 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                                 carry_over(body, prev, piece, a, normal, s)
                             })
                             .unwrap_or_else(|| {
-                                let b = piece.basis.eval(t);
+                                let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
                                 let normal = piece.normal.at(b);
                                 (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                             });
-                        let at_piece_start = t == piece.start;
-                        (
-                            Dd::from(t),
-                            a,
-                            normal,
-                            at_piece_start.then_some(prepared.start_phase),
-                        )
+                        (Dd::from(t), a, normal, phase_t)
                     }
                 };
                 let start = Start {
@@ -373,8 +370,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                     Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
                     None => Arc::from_start(piece.basis, slope, start),
                 };
-                let mut on_max = |tm: f64| {
-                    let at_max = arc.at(tm);
+                let mut on_max = |tm: f64, at_max: Point| {
                     rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
                 };
                 let work_normal = opts.dissipation.then_some(normal_start);
@@ -413,6 +409,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         rec.retract_slip(f64::from(n) * period + t);
                         dir = 0;
                         t = (t + snap).min(piece.end);
+                        phase_t = None;
                         if t >= piece.end {
                             break;
                         }
@@ -422,6 +419,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                         rec.push(n, t_stick, EventKind::Stick { dir }, x, 0.0);
                         dir = 0;
                         t = t_stick;
+                        phase_t = end.phase;
                     }
                     None => {
                         v = end.v;
@@ -454,15 +452,22 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
 /// A piece of the force law with what a run computes once for it: the same in every period.
 struct PreparedPiece<'a> {
     piece: &'a Piece,
-    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start, for the arcs that start
-    /// there ((0, 1) on a linear basis, where it is not used).
-    start_phase: (f64, f64),
+    /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start on a cos basis, for the
+    /// arcs and the searches for a slip onset that start there.
+    start_phase: Option<(f64, f64)>,
     /// Per direction of slip (+1, −1, see [`side`]): the slip onsets; none where the switching
     /// function stays below zero over the piece.
     onsets: [Option<Onsets>; 2],
     /// Per direction of slip: the slope A1 of the acceleration in the basis while slipping
     /// ([`Body::slip_acceleration_affine`]).
     slope: [f64; 2],
+    /// Per direction of slip, on a cos basis: where the acceleration changes sign on the piece
+    /// (the same for every arc in that direction).
+    accel: [SignChanges; 2],
+    /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
+    /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
+    /// of the acceleration: the same in every period, where a slide evaluates its arc.
+    known: KnownAngles,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -489,14 +494,57 @@ impl PreparedPiece<'_> {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
         };
+        let onsets = [onset(1), onset(-1)];
+        // On a cos basis the zeros of a are located once, in two parts; on a linear one each
+        // arc finds its own (see [`ArcMotion::sign_changes`]).
+        let accel = [1.0, -1.0].map(|s: f64| match piece.basis {
+            Basis::Linear { .. } => SignChanges::UNKNOWN,
+            Basis::Cos { omega } => {
+                // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
+                let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
+                let exact = || {
+                    let coefficient = |d: f64, n: f64| Dd::from(s * d) + Dd::prod(-body.mu_d, n);
+                    (
+                        coefficient(piece.drive.c0, piece.normal.c0),
+                        coefficient(piece.drive.c1, piece.normal.c1),
+                    )
+                };
+                SignChanges::cos(omega, h, exact)
+            }
+        });
+        // The kernels are a function of the angle only: one list serves the arcs in either
+        // direction. The most used first (a full list drops the rest): from the piece's start
+        // and from the located onsets to the end of the piece, then to the zeros of a.
+        let mut known = KnownAngles::new();
+        if let Basis::Cos { omega } = piece.basis {
+            let roots = onsets.iter().flat_map(|onsets| match onsets {
+                Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
+                _ => [None, None],
+            });
+            let mut starts = [None; 5];
+            starts[0] = Some(Dd::from(piece.start));
+            for (place, root) in starts[1..].iter_mut().zip(roots) {
+                *place = root.map(|c| c.t);
+            }
+            let zeros = accel.iter().flat_map(|a| a.zeros());
+            for end in std::iter::once(piece.end).chain(zeros) {
+                for t_c in starts.into_iter().flatten() {
+                    if t_c.hi < end && end > piece.start && end <= piece.end {
+                        known.push(HalfAngle::between(omega, t_c, end));
+                    }
+                }
+            }
+        }
         PreparedPiece {
             piece,
             start_phase: match piece.basis {
-                Basis::Linear { .. } => (0.0, 1.0),
-                Basis::Cos { omega } => phase(omega, Dd::from(piece.start)),
+                Basis::Linear { .. } => None,
+                Basis::Cos { omega } => Some(phase(omega, Dd::from(piece.start))),
             },
-            onsets: [onset(1), onset(-1)],
+            onsets,
             slope: [slope(1.0), slope(-1.0)],
+            accel,
+            known,
         }
     }
 
@@ -546,12 +594,18 @@ impl PreparedPiece<'_> {
 
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp (see [`PreparedPiece::new`]).
+/// better than its ulp (see [`PreparedPiece::new`]). `phase` is (sin ωt, cos ωt) at `from` on a
+/// cos basis where known.
 #[inline]
-fn slip_onset(prepared: &PreparedPiece, from: f64, snap: f64) -> Option<(Crossing, i8)> {
+fn slip_onset(
+    prepared: &PreparedPiece,
+    from: f64,
+    snap: f64,
+    phase: Option<(f64, f64)>,
+) -> Option<(Crossing, i8)> {
     let first = |onset: &Option<Onsets>| {
         let (crossings, _) = onset.as_ref()?;
-        crossings.first(from, snap)
+        crossings.first(from, snap, phase)
     };
     let [up, down] = &prepared.onsets;
     // The earlier of the two, the upward one at a tie.
@@ -591,7 +645,9 @@ fn onset_acceleration(body: &Body, piece: &Piece, c: &Crossing, s: f64) -> (f64,
             (0.0, if from_drive { s * d / body.mu_s } else { n })
         }
         None => {
-            let b = piece.basis.eval(c.t.hi);
+            let b = c
+                .phase
+                .map_or_else(|| piece.basis.eval(c.t.hi), |(_, cos)| cos);
             let normal = piece.normal.at(b);
             let g = s * piece.drive.at(b) - body.mu_s * normal;
             (g.max(0.0), normal)
@@ -630,19 +686,6 @@ fn carry_over(
     }
 }
 
-/// `x.signum() as i8` (±1 for ±0 as for any number, 0 for NaN) from the sign bit, without the
-/// saturating conversion of a float to an integer.
-#[inline(always)]
-fn sign_of(x: f64) -> i8 {
-    if x.is_nan() {
-        0
-    } else if x.is_sign_negative() {
-        -1
-    } else {
-        1
-    }
-}
-
 /// Slides along `arc` from its start to the end of the piece or to the first stick. The
 /// interval is split at the zeros of a, so that s·v is monotone on each part; a speed maximum is
 /// reported where s·a changes from + to −, a stick where s·v reaches 0 (or grazes it at a zero of
@@ -654,11 +697,12 @@ fn slide<M: ArcMotion>(
     normal_start: Option<f64>,
     snap: f64,
     accel_sign: &mut i8,
-    mut on_max: impl FnMut(f64),
+    mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
+    let known = prepared.known.as_slice();
+    let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
-    let speed = |t: f64| s * arc.v(t);
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
     // progress instead of sticking where it started. From rest, a zero within `snap` of the
     // start is the onset itself (μd = μs: a = 0 there).
@@ -669,9 +713,11 @@ fn slide<M: ArcMotion>(
     };
     let mut bounds = [piece.end; 3];
     let mut count = 0;
-    for zero in arc.accel_zeros(after, piece.end).into_iter().flatten() {
-        bounds[count] = zero;
-        count += 1;
+    for zero in accel.zeros() {
+        if zero > after && zero < piece.end {
+            bounds[count] = zero;
+            count += 1;
+        }
     }
     bounds[count] = piece.end;
     let bounds = &bounds[..=count];
@@ -682,32 +728,11 @@ fn slide<M: ArcMotion>(
     // The half angle of the last evaluation on a trigonometric arc, from which the root search
     // and the motion at the stick step on without sin and cos.
     let mut seed = None;
-    // The sign of s·a on the last part, which changes at each zero of a (all simple).
-    let mut part_sign: i8 = 0;
-    // a keeps the sign of a_c from the start for longer than the zeros of a left out before
-    // `after`, and than its rounding (about eps·|da/dt|·T, below jerk_bound·snap).
-    let start_sign = arc.a_start().abs() > 2.0 * arc.jerk_bound() * (after - from + snap);
     for (i, &q) in bounds.iter().enumerate() {
-        // The sign of a on (p, q): the opposite of the last part's past a zero of a, that of a_c
-        // on the first part where it holds, else at the midpoint; on the first part measured
-        // from the arc's exact start (its time has a low part), so that a sub-ulp part is not
-        // misjudged.
-        let sign = if part_sign != 0 {
-            -part_sign
-        } else if i == 0 && start_sign {
-            sign_of(s * arc.a_start())
-        } else {
-            let w_mid = if i == 0 {
-                0.5 * arc.w(q)
-            } else {
-                arc.w(0.5 * (p + q))
-            };
-            sign_of(s * arc.a_at(w_mid))
-        };
-        part_sign = sign;
-        if *accel_sign > 0 && sign < 0 {
-            on_max(p);
-        }
+        // The sign of s·a on (p, q), from the zeros of a: just after `after` on the first part,
+        // just after the zero p on the others.
+        let sign = accel.sign_after(if i == 0 { after } else { p });
+        let at_max = *accel_sign > 0 && sign < 0;
         if sign != 0 {
             *accel_sign = sign;
         }
@@ -715,15 +740,23 @@ fn slide<M: ArcMotion>(
             (p, speed_p) = (q, None);
             continue;
         }
-        let at_p = speed_p.unwrap_or_else(|| speed(p));
-        let point_q = arc.at_near(q, &mut seed);
+        let mut point_p = || arc.at_near(p, &mut seed, known);
+        let at_p = if at_max {
+            let point = point_p();
+            on_max(p, point);
+            speed_p.unwrap_or(s * point.v)
+        } else {
+            speed_p.unwrap_or_else(|| s * point_p().v)
+        };
+        let point_q = arc.at_near(q, &mut seed, known);
         let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                let at = arc.at_near(t, &mut seed);
+                // The iterates are no piece's known times.
+                let at = arc.at_near(t, &mut seed, &[]);
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
@@ -742,7 +775,7 @@ fn slide<M: ArcMotion>(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        end: arc.at_near(end, &mut seed),
+        end: arc.at_near(end, &mut seed, known),
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
         }),
