@@ -18,11 +18,10 @@
 //! adaptive method's work grows as the events crowd (a Zeno-like failure would show as work
 //! growing without bound).
 
-use rayon::prelude::*;
 use serde::Serialize;
 
 use super::failure_table::FailureRow;
-use super::failures::{regime_settings, setting_label};
+use super::failures::{probe_all, setting_label};
 use super::problems::{self, transitions, BenchProblem};
 use super::sweep::{method_kind, MethodKind};
 use super::tables::{by_method_and_setting, row, table, Table};
@@ -157,15 +156,7 @@ pub struct CrowdPoint {
 /// Runs every method at its three boundary-study settings on every probe (in parallel).
 pub fn run(methods: &[&dyn Method]) -> Result<Vec<CrowdPoint>> {
     let cases = cases()?;
-    let mut jobs = Vec::new();
-    for m in methods {
-        for (_, s) in regime_settings(method_kind(m.name()), cases[0].bp.period()) {
-            for c in &cases {
-                jobs.push((*m, s, c));
-            }
-        }
-    }
-    Ok(jobs.par_iter().map(|(m, s, c)| probe(*m, *s, c)).collect())
+    Ok(probe_all(methods, cases[0].bp.period(), &cases, probe))
 }
 
 /// Runs `method` at `setting` on probe `c`.

@@ -273,6 +273,25 @@ pub fn regime_settings(kind: MethodKind, period: f64) -> Vec<(&'static str, Sett
     }
 }
 
+/// Every method at each of its [`regime_settings`] on every case, in parallel: the probes of
+/// the near-tangent and crowding studies (`period` sets the fixed steps).
+pub fn probe_all<'a, C: Sync, P: Send>(
+    methods: &[&'a dyn Method],
+    period: f64,
+    cases: &'a [C],
+    probe: impl Fn(&dyn Method, Setting, &C) -> P + Sync,
+) -> Vec<P> {
+    let jobs: Vec<(&dyn Method, Setting, &C)> = methods
+        .iter()
+        .flat_map(|m| {
+            regime_settings(method_kind(m.name()), period)
+                .into_iter()
+                .flat_map(move |(_, s)| cases.iter().map(move |c| (*m, s, c)))
+        })
+        .collect();
+    jobs.par_iter().map(|(m, s, c)| probe(*m, *s, c)).collect()
+}
+
 /// (slips, sticks) among `events` in the last period of `bp`.
 pub fn last_period_counts(events: &[MethodEvent], bp: &BenchProblem) -> (usize, usize) {
     let t0 = bp.problem.t_end - bp.period();

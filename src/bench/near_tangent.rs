@@ -11,13 +11,11 @@
 //! δ = 1e-3, 1e-5, …, 1e-13;  φ_c = 4 μs μd / (2 μs + √(2D)) in closed form
 //! ```
 
-use rayon::prelude::*;
 use serde::Serialize;
 
 use super::failure_table::FailureRow;
-use super::failures::regime_settings;
+use super::failures::probe_all;
 use super::problems::{self, transitions, BenchProblem};
-use super::sweep::method_kind;
 use super::tables::{by_method_and_setting, row, table, Table};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::phi_continuous;
@@ -142,18 +140,7 @@ pub struct TangentPoint {
 /// Runs every method at its three boundary-study settings on every probe (in parallel).
 pub fn run(methods: &[&dyn Method]) -> Result<Vec<TangentPoint>> {
     let cases = cases()?;
-    let mut jobs = Vec::new();
-    for m in methods {
-        for (level, s) in regime_settings(method_kind(m.name()), cases[0].bp.period()) {
-            for c in &cases {
-                jobs.push((*m, level, s, c));
-            }
-        }
-    }
-    Ok(jobs
-        .par_iter()
-        .map(|(m, _, s, c)| probe(*m, *s, c))
-        .collect())
+    Ok(probe_all(methods, cases[0].bp.period(), &cases, probe))
 }
 
 /// Runs `method` at `setting` on probe `c`.
