@@ -89,6 +89,17 @@ pub struct TrigArc {
 /// What the event search asks of an arc, answered by each kind of arc on its own: code generic
 /// over it (run.rs's slide) is compiled once per kind, without the other kind's branches.
 pub trait ArcMotion: Copy {
+    /// On a cos basis: the arc's points carry their phase (sin ωt, cos ωt).
+    const TRIG: bool;
+
+    /// The arc of this kind on `basis` (of this kind) from `start` whose acceleration has slope
+    /// `a1` (m/s² per unit of b), with (sin θc, cos θc) = [`phase`]`(ω, t_c)` on a cos basis
+    /// when known (a piece's start and a located onset have the same phase in every period).
+    fn from_start(basis: Basis, a1: f64, start: Start, phase: Option<(f64, f64)>) -> Self;
+
+    /// The arc as either kind.
+    fn arc(self) -> Arc;
+
     /// Start time t_c of the arc (s, within the period; the high part).
     fn t_start(&self) -> f64;
 
@@ -131,6 +142,25 @@ pub trait ArcMotion: Copy {
 }
 
 impl ArcMotion for PolyArc {
+    const TRIG: bool = false;
+
+    #[inline(always)]
+    fn from_start(_basis: Basis, a1: f64, start: Start, _phase: Option<(f64, f64)>) -> Self {
+        PolyArc {
+            t_c: start.t.hi,
+            t_lo: start.t.lo,
+            x_c: start.x,
+            v_c: start.v,
+            a_c: start.a,
+            jerk: a1,
+        }
+    }
+
+    #[inline(always)]
+    fn arc(self) -> Arc {
+        Arc::Poly(self)
+    }
+
     #[inline(always)]
     fn t_start(&self) -> f64 {
         self.t_c
@@ -236,6 +266,35 @@ impl TrigArc {
 }
 
 impl ArcMotion for TrigArc {
+    const TRIG: bool = true;
+
+    #[inline(always)]
+    fn from_start(basis: Basis, a1: f64, start: Start, phase: Option<(f64, f64)>) -> Self {
+        let omega = match basis {
+            Basis::Cos { omega } => omega,
+            Basis::Linear { .. } => unreachable!("a trigonometric arc on a linear basis"),
+        };
+        let (sin_c, cos_c) = phase.unwrap_or_else(|| super::arc::phase(omega, start.t));
+        TrigArc {
+            t_c: start.t.hi,
+            t_lo: start.t.lo,
+            x_c: start.x,
+            v_c: start.v,
+            a_c: start.a,
+            a1,
+            omega,
+            v1: a1 / omega,
+            x1: a1 / (omega * omega),
+            sin_c,
+            cos_c,
+        }
+    }
+
+    #[inline(always)]
+    fn arc(self) -> Arc {
+        Arc::Trig(self)
+    }
+
     #[inline(always)]
     fn t_start(&self) -> f64 {
         self.t_c
@@ -320,44 +379,9 @@ impl Arc {
 
     /// The arc from `start` whose acceleration has slope `a1` (m/s² per unit of b).
     pub fn from_start(basis: Basis, a1: f64, start: Start) -> Arc {
-        let phase = match basis {
-            Basis::Linear { .. } => (0.0, 1.0),
-            Basis::Cos { omega } => phase(omega, start.t),
-        };
-        Arc::from_start_at_phase(basis, a1, start, phase)
-    }
-
-    /// [`Arc::from_start`] with (sin θc, cos θc) = [`phase`]`(ω, t_c)` given (it is not used on
-    /// a linear basis): a piece's start has the same phase in every period.
-    pub fn from_start_at_phase(
-        basis: Basis,
-        a1: f64,
-        start: Start,
-        (sin_c, cos_c): (f64, f64),
-    ) -> Arc {
-        let (t_c, t_lo) = (start.t.hi, start.t.lo);
         match basis {
-            Basis::Linear { .. } => Arc::Poly(PolyArc {
-                t_c,
-                t_lo,
-                x_c: start.x,
-                v_c: start.v,
-                a_c: start.a,
-                jerk: a1,
-            }),
-            Basis::Cos { omega } => Arc::Trig(TrigArc {
-                t_c,
-                t_lo,
-                x_c: start.x,
-                v_c: start.v,
-                a_c: start.a,
-                a1,
-                omega,
-                v1: a1 / omega,
-                x1: a1 / (omega * omega),
-                sin_c,
-                cos_c,
-            }),
+            Basis::Linear { .. } => PolyArc::from_start(basis, a1, start, None).arc(),
+            Basis::Cos { .. } => TrigArc::from_start(basis, a1, start, None).arc(),
         }
     }
 

@@ -157,6 +157,7 @@ impl UpCrossings {
     /// `phase` is (sin ωt, cos ωt) at t = `from` where the caller knows it (the start of a piece,
     /// a stick), else it is evaluated; a crossing at once carries it to the arc that starts
     /// there.
+    #[inline(always)]
     pub fn first(&self, from: f64, snap: f64, phase: Option<(f64, f64)>) -> Option<Crossing> {
         match *self {
             UpCrossings::Linear { t_ref, g, rising } => match rising {

@@ -3,7 +3,7 @@
 //! asked for) friction dissipation.
 
 use super::accel::SignChanges;
-use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, Start};
+use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
@@ -275,13 +275,15 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
             .collect();
         &heap
     };
-    let (mut x, mut v) = (0.0_f64, 0.0_f64);
-    // Direction of slip, 0 when stuck.
-    let mut dir: i8 = 0;
-    // Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
-    let mut accel_sign: i8 = 0;
-    // The onset (its crossing, a, N_f) where the slip begins, for the next arc.
-    let mut onset_start: Option<(Crossing, f64, f64)> = None;
+    let mut state = State {
+        x: 0.0,
+        v: 0.0,
+        dir: 0,
+        accel_sign: 0,
+        onset_start: None,
+        carried: None,
+        normal_work: 0.0,
+    };
 
     for n in 0..periods {
         let period_start = f64::from(n) * period;
@@ -305,137 +307,42 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
                 });
             }
         };
-        x_at_period_start.push(x);
-        v_at_period_start.push(v);
-        let mut normal_work = 0.0;
-        // The piece, acceleration and N_f at the end of the last arc when the slip goes on into
-        // the next piece of the same period.
-        let mut carried: Option<(&Piece, f64, f64)> = None;
+        x_at_period_start.push(state.x);
+        v_at_period_start.push(state.v);
+        state.normal_work = 0.0;
+        state.carried = None;
         for prepared in prepared.iter().flatten() {
-            let piece = prepared.piece;
-            let mut t = piece.start;
-            // (sin ωt, cos ωt) at t on a cos basis where known: at the piece's start, at a stick.
-            let mut phase_t = prepared.start_phase;
-            let mut transitions = 0;
-            loop {
-                transitions += 1;
-                if transitions > MAX_TRANSITIONS_PER_PIECE {
-                    return Err(Error::Stalled {
-                        t: period_start + t,
-                        reason: "too many transitions within one piece of the force law",
-                    });
-                }
-                if dir == 0 {
-                    let onset = slip_onset(prepared, t, snap, phase_t);
-                    let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
-                    if opts.record_segments {
-                        record(t, t_end, Motion::Rest { x });
-                    }
-                    let Some((crossing, s)) = onset else { break };
-                    rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, x, 0.0);
-                    dir = s;
-                    accel_sign = 0;
-                    t = crossing.t.hi;
-                    let (a, normal) = prepared.onset_acceleration(body, &crossing, s);
-                    onset_start = Some((crossing, a, normal));
-                    continue;
-                }
-                let s = f64::from(dir);
-                // From an onset, or through a piece boundary (and after a reversal) where the
-                // acceleration is Newton's (D − s μd N_f)/M at that instant.
-                let (t_start, a_start, normal_start, phase) = match onset_start.take() {
-                    Some((crossing, a, normal)) => (crossing.t, a, normal, crossing.phase),
-                    None => {
-                        let (a, normal) = carried
-                            .take()
-                            .and_then(|(prev, a, normal)| {
-                                carry_over(body, prev, piece, a, normal, s)
-                            })
-                            .unwrap_or_else(|| {
-                                let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
-                                let normal = piece.normal.at(b);
-                                (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
-                            });
-                        (Dd::from(t), a, normal, phase_t)
-                    }
-                };
-                let start = Start {
-                    t: t_start,
-                    x,
-                    v,
-                    a: a_start,
-                };
-                let slope = prepared.slope[side(dir)];
-                let arc = match phase {
-                    Some(phase) => Arc::from_start_at_phase(piece.basis, slope, start, phase),
-                    None => Arc::from_start(piece.basis, slope, start),
-                };
-                let mut on_max = |tm: f64, at_max: Point| {
-                    rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
-                };
-                let work_normal = opts.dissipation.then_some(normal_start);
-                // The slide compiled for each kind of arc.
-                let slide = match &arc {
-                    Arc::Poly(poly) => slide(
-                        poly,
-                        dir,
-                        prepared,
-                        work_normal,
-                        snap,
-                        &mut accel_sign,
-                        &mut on_max,
-                    ),
-                    Arc::Trig(trig) => slide(
-                        trig,
-                        dir,
-                        prepared,
-                        work_normal,
-                        snap,
-                        &mut accel_sign,
-                        &mut on_max,
-                    ),
-                };
-                normal_work += slide.normal_work;
-                let t_end = slide.stick.unwrap_or(piece.end);
-                if opts.record_segments {
-                    record(t, t_end, Motion::Slide { arc });
-                }
-                let end = slide.end;
-                x = end.x;
-                match slide.stick {
-                    // A slip from rest that sticks where it started is shorter than the event
-                    // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
-                    Some(t_stick) if t_stick == t && v == 0.0 => {
-                        rec.retract_slip(f64::from(n) * period + t);
-                        dir = 0;
-                        t = (t + snap).min(piece.end);
-                        phase_t = None;
-                        if t >= piece.end {
-                            break;
-                        }
-                    }
-                    Some(t_stick) => {
-                        v = 0.0;
-                        rec.push(n, t_stick, EventKind::Stick { dir }, x, 0.0);
-                        dir = 0;
-                        t = t_stick;
-                        phase_t = end.phase;
-                    }
-                    None => {
-                        v = end.v;
-                        let normal_end = normal_start + piece.normal.c1 * end.db;
-                        carried = Some((piece, end.a, normal_end));
-                        break;
-                    }
-                }
+            // The walk compiled for each kind of basis: the phase bookkeeping of a cos basis
+            // is absent from a linear one's.
+            match prepared.piece.basis {
+                Basis::Linear { .. } => walk_piece::<PolyArc>(
+                    body,
+                    opts,
+                    snap,
+                    (n, period_start),
+                    prepared,
+                    &mut state,
+                    &mut rec,
+                    &mut record,
+                )?,
+                Basis::Cos { .. } => walk_piece::<TrigArc>(
+                    body,
+                    opts,
+                    snap,
+                    (n, period_start),
+                    prepared,
+                    &mut state,
+                    &mut rec,
+                    &mut record,
+                )?,
             }
         }
         if opts.dissipation {
-            dissipation.push(body.mu_d * normal_work);
+            dissipation.push(body.mu_d * state.normal_work);
         }
     }
-    x_at_period_start.push(x);
-    v_at_period_start.push(v);
+    x_at_period_start.push(state.x);
+    v_at_period_start.push(state.v);
     Ok(Run {
         period,
         periods,
@@ -447,6 +354,155 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         dissipation,
         segments,
     })
+}
+
+/// The state of the body that a walk through a piece carries on.
+#[derive(Clone, Copy)]
+struct State<'a> {
+    /// Position (m) and velocity (m/s).
+    x: f64,
+    v: f64,
+    /// Direction of slip, 0 when stuck.
+    dir: i8,
+    /// Sign of s·a on the last slipping stretch, to find speed maxima across pieces.
+    accel_sign: i8,
+    /// The onset (its crossing, a, N_f) where the slip begins, for the next arc.
+    onset_start: Option<(Crossing, f64, f64)>,
+    /// The piece, acceleration and N_f at the end of the last arc when the slip goes on into
+    /// the next piece of the same period.
+    carried: Option<(&'a Piece, f64, f64)>,
+    /// ∫ N_f |v| dt in the period so far (when asked for).
+    normal_work: f64,
+}
+
+/// Walks the body through one piece of period `n` (starting at `period_start`), with the arcs
+/// of kind `M` (the piece's basis).
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn walk_piece<'a, M: ArcMotion>(
+    body: &Body,
+    opts: &RunOptions,
+    snap: f64,
+    (n, period_start): (u32, f64),
+    prepared: &PreparedPiece<'a>,
+    state: &mut State<'a>,
+    rec: &mut Recorder,
+    record: &mut impl FnMut(f64, f64, Motion),
+) -> Result<()> {
+    let period = rec.period;
+    let piece = prepared.piece;
+    let mut t = piece.start;
+    // (sin ωt, cos ωt) at t on a cos basis where known: at the piece's start, at a stick.
+    let mut phase_t = if M::TRIG { prepared.start_phase } else { None };
+    let mut transitions = 0;
+    loop {
+        transitions += 1;
+        if transitions > MAX_TRANSITIONS_PER_PIECE {
+            return Err(Error::Stalled {
+                t: period_start + t,
+                reason: "too many transitions within one piece of the force law",
+            });
+        }
+        if state.dir == 0 {
+            let onset = slip_onset::<M>(prepared, t, snap, phase_t);
+            let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
+            if opts.record_segments {
+                record(t, t_end, Motion::Rest { x: state.x });
+            }
+            let Some((crossing, s)) = onset else { break };
+            rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, state.x, 0.0);
+            state.dir = s;
+            state.accel_sign = 0;
+            t = crossing.t.hi;
+            let (a, normal) = prepared.onset_acceleration(body, &crossing, s);
+            state.onset_start = Some((crossing, a, normal));
+            continue;
+        }
+        let s = f64::from(state.dir);
+        // From an onset, or through a piece boundary (and after a reversal) where the
+        // acceleration is Newton's (D − s μd N_f)/M at that instant.
+        let (t_start, a_start, normal_start, phase) = match state.onset_start.take() {
+            Some((crossing, a, normal)) => (
+                crossing.t,
+                a,
+                normal,
+                if M::TRIG { crossing.phase } else { None },
+            ),
+            None => {
+                let (a, normal) = state
+                    .carried
+                    .take()
+                    .and_then(|(prev, a, normal)| carry_over(body, prev, piece, a, normal, s))
+                    .unwrap_or_else(|| {
+                        let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
+                        let normal = piece.normal.at(b);
+                        (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
+                    });
+                (Dd::from(t), a, normal, phase_t)
+            }
+        };
+        let start = Start {
+            t: t_start,
+            x: state.x,
+            v: state.v,
+            a: a_start,
+        };
+        let slope = prepared.slope[side(state.dir)];
+        let arc = M::from_start(piece.basis, slope, start, phase);
+        let mut on_max = |tm: f64, at_max: Point| {
+            rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
+        };
+        let work_normal = opts.dissipation.then_some(normal_start);
+        let slide = slide(
+            &arc,
+            state.dir,
+            prepared,
+            work_normal,
+            snap,
+            &mut state.accel_sign,
+            &mut on_max,
+        );
+        state.normal_work += slide.normal_work;
+        let t_end = slide.stick.unwrap_or(piece.end);
+        if opts.record_segments {
+            record(t, t_end, Motion::Slide { arc: arc.arc() });
+        }
+        let end = slide.end;
+        state.x = end.x;
+        match slide.stick {
+            // A slip from rest that sticks where it started is shorter than the event
+            // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
+            Some(t_stick) if t_stick == t && state.v == 0.0 => {
+                rec.retract_slip(f64::from(n) * period + t);
+                state.dir = 0;
+                t = (t + snap).min(piece.end);
+                phase_t = None;
+                if t >= piece.end {
+                    break;
+                }
+            }
+            Some(t_stick) => {
+                state.v = 0.0;
+                rec.push(
+                    n,
+                    t_stick,
+                    EventKind::Stick { dir: state.dir },
+                    state.x,
+                    0.0,
+                );
+                state.dir = 0;
+                t = t_stick;
+                phase_t = if M::TRIG { end.phase } else { None };
+            }
+            None => {
+                state.v = end.v;
+                let normal_end = normal_start + piece.normal.c1 * end.db;
+                state.carried = Some((piece, end.a, normal_end));
+                break;
+            }
+        }
+    }
+    Ok(())
 }
 
 /// A piece of the force law with what a run computes once for it: the same in every period.
@@ -595,9 +651,12 @@ impl PreparedPiece<'_> {
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
 /// better than its ulp (see [`PreparedPiece::new`]). `phase` is (sin ωt, cos ωt) at `from` on a
-/// cos basis where known.
+/// cos basis where known. `M`, the kind of arc of the piece's basis, is not used: it makes one
+/// copy per kind, each inlined or not into its walk on its own (shared, it was called out of
+/// line from both).
+#[allow(clippy::extra_unused_type_parameters)]
 #[inline]
-fn slip_onset(
+fn slip_onset<M: ArcMotion>(
     prepared: &PreparedPiece,
     from: f64,
     snap: f64,
