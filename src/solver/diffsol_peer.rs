@@ -9,9 +9,9 @@
 //! ```
 //!
 //! * Slip phase: one diffsol problem and one solver per solve (rtol = tol, atol = (tol, tol)),
-//!   restarted at each slip onset (its initial step by diffsol's own Hairer heuristic); its stop time
-//!   (`set_stop_time`) is the next breakpoint of the force law or t_end, so steps end where the
-//!   right-hand side has kinks, as in dopri5.
+//!   restarted at each slip onset (its initial step by diffsol's own Hairer heuristic); its stop
+//!   time (`set_stop_time`) is the next breakpoint of the force law or t_end, so steps end where
+//!   the right-hand side has kinks, as in dopri5.
 //! * Stick event: diffsol's root finding (a sign change of g between step ends, located by the
 //!   Illinois-modified secant of SUNDIALS on its interpolant). Like most event-locating codes,
 //!   and unlike the tool's dopri5, it checks step ends only: a dip of s·v below 0 and back
@@ -67,8 +67,8 @@ fn library(t: f64) -> impl Fn(DiffsolError) -> Error {
 /// Integrates `problem` with diffsol's Tsit45 at rtol = atol = `tol` on the shared event loop.
 fn solve(problem: &Problem, tol: f64) -> Result<Solution> {
     let body = problem.body;
-    // The slip direction s and the position x0 at the slip onset are read by the closures, so
-    // one diffsol problem serves every slip phase (only its t0 changes).
+    // The slip direction s is read by the closures, so one diffsol problem and one solver serve
+    // every slip phase (`restart` sets the state at its onset).
     let dir = Cell::new(0.0_f64);
     let evals = Cell::new(0_u64);
     let forces = Forces::new(problem);
