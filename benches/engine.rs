@@ -18,11 +18,11 @@
 //! of benches/engine_instructions.rs do not, and compare versions of the engine:
 //!
 //! ```text
-//! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  4th pass  5th pass  libm calls/period
-//! pulled mass, linear law                  44 430    35 534    24 058    21 995    22 918    21 491  0
-//! pulled mass, harmonic law                98 625    77 755    59 804    58 312    44 100    43 792  23.1 → 11.2 | 9.35 → 0.8
-//! woodpecker, linear law                   81 649    69 598    46 945    42 858    44 444    41 511  0
-//! woodpecker, harmonic law                237 437   166 374   136 548   133 204   110 373   110 499  53.0 → 19.4 | 21.85 → 1.8
+//! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  4th pass  5th pass  6th pass  libm calls/period
+//! pulled mass, linear law                  44 430    35 534    24 058    21 995    22 918    21 491    20 575  0
+//! pulled mass, harmonic law                98 625    77 755    59 804    58 312    44 100    43 792    43 435  23.1 → 11.2 | 9.35 → 0.8
+//! woodpecker, linear law                   81 649    69 598    46 945    42 858    44 444    41 511    39 591  0
+//! woodpecker, harmonic law                237 437   166 374   136 548   133 204   110 373   110 499   109 700  53.0 → 19.4 | 21.85 → 1.8
 //! ```
 //!
 //! (libm calls before and after the first pass with a sin and a cos of one angle counted once;
@@ -96,6 +96,18 @@
 //! 10.22 / 10.11 µs: the linear laws 12 % and 16 % faster (within their 1.65 and 3.15 µs),
 //! the harmonic ones 4 % and 3 % faster. The fourth pass re-counted on the build of the fifth:
 //! 22 924, 44 219, 44 456 and 110 726.
+//!
+//! Sixth pass: the root finder `monotone_zero` (src/engine/roots.rs) is inlined into the slide
+//! that calls it, so the bracket ends and the values at them stay in registers (the evaluations
+//! of the motion are still a call each). Fingerprints unchanged; the fifth pass re-counted on the
+//! build of the sixth: 21 493, 43 794, 41 513 and 110 501 (−4.3 %, −0.8 %, −4.6 %, −0.7 %).
+//! Tried and dropped: the bracket update as two selects instead of a branch on the sign of f
+//! (+1 % instructions, the harmonic woodpecker 3 % slower: the branch predicts well). Back to
+//! back with the fifth pass, two alternating rounds of all four at load average 2.3–3.4 and two
+//! of the harmonic woodpecker at 2.0–2.3 (2026-11-26): 1.59 / 1.55 → 1.61 / 1.49, 5.45 / 4.53 →
+//! 4.42 / 4.39, 3.28 / 2.89 → 2.81 / 2.72 and 10.66 / 9.99 / 10.16 / 10.23 → 10.23 / 10.27 /
+//! 10.01 / 10.12 µs: the linear laws 4–6 % faster, the harmonic pulled mass 3 %, the harmonic
+//! woodpecker within the noise (about 1 %); the 8 µs stretch goal is not reached.
 
 use std::hint::black_box;
 

@@ -218,6 +218,7 @@ impl UpCrossings {
 /// 2ff′/(2f′² − ff″) vanishes with f′ while f does not, and such a point is no root. The test
 /// comes before the bracket test, so a sub-ulp step that lands on a bracket end ends the search
 /// instead of restarting it by bisection.
+#[inline]
 pub fn monotone_zero(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
     (lo, f_lo): (f64, f64),
