@@ -38,7 +38,9 @@
 //!   the same bits in every result.
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
+use crate::engine::Basis;
 use crate::error::{Error, Result};
+use crate::fmath;
 
 /// State (x, v) of the 2-D systems integrated here.
 pub type State = [f64; 2];
@@ -529,8 +531,8 @@ impl<'a> Forces<'a> {
     }
 
     /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
-    /// [t_a, t_b] then has its τ in [start, end), so [`OnPiece::at`] is [`Forces::at`]
-    /// without the check.
+    /// [t_a, t_b] then has its τ in [start, end), so the piece's (D, N_f) at (t − hi) − lo is
+    /// [`Forces::at`] without the check.
     fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
         let (_, hi, lo, i) = self.cache.get();
         let piece = *self.problem.law.pieces.get(i)?;
@@ -584,15 +586,6 @@ struct OnPiece {
     hi: f64,
     lo: f64,
     piece: crate::engine::Piece,
-}
-
-impl OnPiece {
-    /// (D, N_f) at absolute time t on the piece (N).
-    #[inline]
-    fn at(&self, t: f64) -> (f64, f64) {
-        let b = self.piece.basis.eval((t - self.hi) - self.lo);
-        (self.piece.drive.at(b), self.piece.normal.at(b))
-    }
 }
 
 /// Switching-function checks per accepted step: the interpolant is sampled at this many
@@ -817,13 +810,23 @@ fn slip_advance(
         forces.on_piece(run.t, run.t + h)
     };
     let step = match on_piece {
-        Some(piece) => {
-            let f = Slip(|t| {
-                let (d, n) = piece.at(t);
-                body.slip_acceleration(d, n, s)
-            });
-            run.step(&f, *stop, opts.h_max, stats)?
-        }
+        // The basis matched once per step, not at each evaluation (the same operations).
+        Some(OnPiece { hi, lo, piece }) => match piece.basis {
+            Basis::Cos { omega } => {
+                let f = Slip(|t| {
+                    let b = fmath::cos(omega * ((t - hi) - lo));
+                    body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
+                });
+                run.step(&f, *stop, opts.h_max, stats)?
+            }
+            Basis::Linear { t_ref } => {
+                let f = Slip(|t| {
+                    let b = ((t - hi) - lo) - t_ref;
+                    body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
+                });
+                run.step(&f, *stop, opts.h_max, stats)?
+            }
+        },
         None => {
             let f = Slip(|t| {
                 let (d, n) = forces.at(t);
