@@ -813,14 +813,14 @@ fn slip_advance(
         // The basis matched once per step, not at each evaluation (the same operations).
         Some(OnPiece { hi, lo, piece }) => match piece.basis {
             Basis::Cos { omega } => {
-                let f = Slip(|t| {
+                let f = Slip(move |t| {
                     let b = fmath::cos(omega * ((t - hi) - lo));
                     body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
                 });
                 run.step(&f, *stop, opts.h_max, stats)?
             }
             Basis::Linear { t_ref } => {
-                let f = Slip(|t| {
+                let f = Slip(move |t| {
                     let b = ((t - hi) - lo) - t_ref;
                     body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
                 });
