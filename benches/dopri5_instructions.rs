@@ -51,15 +51,15 @@
 //! ours before (f6f836f)              3325       3700        3378    (3.7–3.8× the textbook)
 //! ours at 18331a2                    1485       1462        1307    (1.49–1.66×)
 //! ours at 5932b79                    1184       1199        1076    (1.22–1.32×)
-//! ours now (basis matched per step)  1182       1190        1068    (1.21–1.32×)
+//! ours now (basis matched per step)  1180       1187        1063    (1.21–1.32×)
 //! ours plain integrator (smooth)        –       1102           –    (1.13×; 208 + 26 steps)
 //!     (1149 at 18331a2)
-//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1210 now per
+//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1208 now per
 //!     accepted step (342 + 19 steps)
 //! ```
 //!
-//! Where ours' 1199 went at 1e-8 at 5932b79 (textbook 979; now 1190: the basis of the force law is
-//! matched once per step, not at each evaluation): cos 447 (the `libm` crate's of src/fmath.rs, ≈
+//! Where ours' 1199 went at 1e-8 at 5932b79 (textbook 979; now 1187: the basis of the force law is
+//! matched once per step, not at each evaluation, and the piece is not copied): cos 447 (the `libm` crate's of src/fmath.rs, ≈
 //! 80 per call, 5 calls per attempt: the FSAL stage reuses the sixth stage's force; the textbook's
 //! glibc `cos` costs 602, ≈ 108 per call, and LLVM merges its two calls at t + h as it knows
 //! `f64::cos` is pure), pow 140 (same), the integrator and the stick/slip machinery 600 (textbook

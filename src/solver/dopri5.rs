@@ -533,9 +533,9 @@ impl<'a> Forces<'a> {
     /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
     /// [t_a, t_b] then has its τ in [start, end), so the piece's (D, N_f) at (t − hi) − lo is
     /// [`Forces::at`] without the check.
-    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
+    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece<'a>> {
         let (_, hi, lo, i) = self.cache.get();
-        let piece = *self.problem.law.pieces.get(i)?;
+        let piece = self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
@@ -579,13 +579,12 @@ impl<'a> Forces<'a> {
 }
 
 /// One piece of the force law and its period offset hi + lo (see [`Forces`]), for times known
-/// to lie on it; a copy, so that its coefficients stay in registers across the evaluations of
-/// a step.
+/// to lie on it.
 #[derive(Clone, Copy)]
-struct OnPiece {
+struct OnPiece<'a> {
     hi: f64,
     lo: f64,
-    piece: crate::engine::Piece,
+    piece: &'a crate::engine::Piece,
 }
 
 /// Switching-function checks per accepted step: the interpolant is sampled at this many
