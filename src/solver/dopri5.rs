@@ -185,6 +185,21 @@ impl Accepted {
         [self.y0[i], ydiff, bspl, r4, r5]
     }
 
+    /// [`Accepted::coefficients`] for [`positive`], which takes r5 only as |r5|: the sum of r5
+    /// starts from its first term, not from 0 (the same |r5|: 0 + x is x but for x = −0).
+    #[inline]
+    fn bound_coefficients(&self, i: usize) -> [f64; 5] {
+        let (h, k) = (self.h, &self.k);
+        let ydiff = self.y1[i] - self.y0[i];
+        let bspl = h * k[0][i] - ydiff;
+        let r4 = ydiff - h * k[5][i] - bspl;
+        let r5 = [D3, D4, D5, D6, D7]
+            .iter()
+            .zip(&k[1..])
+            .fold(h * D1 * k[0][i], |r, (&d, k)| r + h * d * k[i]);
+        [self.y0[i], ydiff, bspl, r4, r5]
+    }
+
     /// The step's interpolant.
     fn dense(&self) -> Dense {
         let c = [self.coefficients(0), self.coefficients(1)];
@@ -836,7 +851,7 @@ fn slip_advance(
     };
     // Most steps are far from a stick: s·v > 0 on the whole step, so every sample of
     // `first_stick` would be positive and nothing would be found.
-    if !positive(step.coefficients(1), s) {
+    if !positive(step.bound_coefficients(1), s) {
         let dense = step.dense();
         let samples = if opts.interior_checks { SAMPLES } else { 1 };
         if let Some(te) = first_stick(&dense, s, samples) {
