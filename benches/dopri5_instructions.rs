@@ -52,8 +52,8 @@
 //! ours at 18331a2                    1485       1462        1307    (1.49–1.66×)
 //! ours at 5932b79                    1184       1199        1076    (1.22–1.32×)
 //! ours now                           1168       1171        1047    (1.19–1.31×)
-//! ours plain integrator (smooth)        –       1102           –    (1.13×; 208 + 26 steps)
-//!     (1149 at 18331a2)
+//! ours plain integrator (smooth)        –       1097           –    (1.12×; 208 + 26 steps)
+//!     (1149 at 18331a2, 1102 at 5932b79)
 //! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1192 now per
 //!     accepted step (342 + 19 steps)
 //! ```
