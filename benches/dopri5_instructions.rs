@@ -50,27 +50,30 @@
 //! textbook DOPRI5                     894        979         880
 //! ours before (f6f836f)              3325       3700        3378    (3.7–3.8× the textbook)
 //! ours at 18331a2                    1485       1462        1307    (1.49–1.66×)
-//! ours now                           1184       1199        1076    (1.22–1.32×)
-//! ours plain integrator (smooth)        –       1102           –    (1.13×; 208 + 26 steps)
-//!     (1149 at 18331a2)
-//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 now per accepted step
-//!     (342 + 19 steps)
+//! ours at 5932b79                    1184       1199        1076    (1.22–1.32×)
+//! ours now                           1168       1171        1047    (1.19–1.31×)
+//! ours plain integrator (smooth)        –       1097           –    (1.12×; 208 + 26 steps)
+//!     (1149 at 18331a2, 1102 at 5932b79)
+//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1192 now per
+//!     accepted step (342 + 19 steps)
 //! ```
 //!
-//! Where ours' 1199 go at 1e-8 (textbook 979): cos 447 (the `libm` crate's of src/fmath.rs,
-//! ≈ 80 per call, 5 calls per attempt: the FSAL stage reuses the sixth stage's force; the
-//! textbook's glibc `cos` costs 602, ≈ 108 per call, and LLVM merges its two calls at t + h
-//! as it knows `f64::cos` is pure), pow 140 (same), the integrator and the stick/slip
-//! machinery 600 (textbook 292): the tableau's bit-exact (h·a_ij)·k_j products, the positivity
-//! bound of s·v on the interpolant (≈ 78: v's coefficients only; the interpolant itself is
-//! formed only where it fails), the step's dispatch (breakpoint, on-piece and stall checks,
-//! ≈ 100), the force law's piece offset per evaluation and the crossings of the period
-//! boundaries. At 1e-4 nearly half the steps end on a period boundary, where the force law is
-//! looked up again. Before f6f836f: 2 cosines, 4 `fmod` and 2 piece searches per evaluation
-//! (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its derivative on
-//! every step.
+//! Where ours' 1199 went at 1e-8 at 5932b79 (textbook 979; now 1171: the basis of the force law is
+//! matched once per step, not at each evaluation, the step's piece is not copied, and the sums of
+//! r5 for the positivity bound, of the error estimate and of the error norm start from their first
+//! terms): cos 447 (the `libm` crate's of src/fmath.rs, ≈ 80 per call, 5 calls per attempt: the
+//! FSAL stage reuses the sixth stage's force; the textbook's glibc `cos` costs 602, ≈ 108 per call,
+//! and LLVM merges its two calls at t + h as it knows `f64::cos` is pure), pow 140 (same), the
+//! integrator and the stick/slip machinery 600 (textbook 292): the tableau's bit-exact (h·a_ij)·k_j
+//! products, the positivity bound of s·v on the interpolant (≈ 78: v's coefficients only; the
+//! interpolant itself is formed only where it fails), the step's dispatch (breakpoint, on-piece and
+//! stall checks, ≈ 100), the force law's piece offset per evaluation and the crossings of the
+//! period boundaries. At 1e-4 nearly half the steps end on a period boundary, where the force law
+//! is looked up again. Before f6f836f: 2 cosines, 4 `fmod` and 2 piece searches per evaluation
+//! (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its derivative on every
+//! step.
 //!
-//! The results are bit for bit those of f6f836f and 18331a2 (`fingerprint` prints the same
+//! The results are bit for bit those of f6f836f, 18331a2 and 5932b79 (`fingerprint` prints the same
 //! hashes before and after): event times, end states and work counters on all 66 runs.
 
 use std::hint::black_box;

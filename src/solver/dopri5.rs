@@ -38,7 +38,9 @@
 //!   the same bits in every result.
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
+use crate::engine::Basis;
 use crate::error::{Error, Result};
+use crate::fmath;
 
 /// State (x, v) of the 2-D systems integrated here.
 pub type State = [f64; 2];
@@ -109,12 +111,9 @@ fn axpy(y: State, terms: &[(f64, State)]) -> State {
 
 /// RMS norm of `e` weighted by atol + rtol·max(|a|, |b|) with atol = rtol = tol.
 fn weighted_norm(e: State, a: State, b: State, tol: f64) -> f64 {
-    let mut sum = 0.0;
-    for i in 0..2 {
-        let scale = tol + tol * a[i].abs().max(b[i].abs());
-        sum += (e[i] / scale).powi(2);
-    }
-    (0.5 * sum).sqrt()
+    // Summed from the first square, not from 0 (a square is never −0: the same bits).
+    let term = |i: usize| (e[i] / (tol + tol * a[i].abs().max(b[i].abs()))).powi(2);
+    (0.5 * (term(0) + term(1))).sqrt()
 }
 
 /// A right-hand side y' = f(t, y) of the integrator: any closure, or [`Slip`].
@@ -180,6 +179,21 @@ impl Accepted {
             .iter()
             .zip(k)
             .fold(0.0, |r, (&d, k)| r + h * d * k[i]);
+        [self.y0[i], ydiff, bspl, r4, r5]
+    }
+
+    /// [`Accepted::coefficients`] for [`positive`], which takes r5 only as |r5|: the sum of r5
+    /// starts from its first term, not from 0 (the same |r5|: 0 + x is x but for x = −0).
+    #[inline]
+    fn bound_coefficients(&self, i: usize) -> [f64; 5] {
+        let (h, k) = (self.h, &self.k);
+        let ydiff = self.y1[i] - self.y0[i];
+        let bspl = h * k[0][i] - ydiff;
+        let r4 = ydiff - h * k[5][i] - bspl;
+        let r5 = [D3, D4, D5, D6, D7]
+            .iter()
+            .zip(&k[1..])
+            .fold(h * D1 * k[0][i], |r, (&d, k)| r + h * d * k[i]);
         [self.y0[i], ydiff, bspl, r4, r5]
     }
 
@@ -382,10 +396,12 @@ impl Integrator {
             );
             let k7 = f.at_same_time(t1, y1, k6);
             stats.rhs_evals += 6;
+            // Summed from its first term, not from 0: e differs at most in the sign of a zero,
+            // which the norm squares away.
+            let e1 = h * E1;
             let e = axpy(
-                [0.0; 2],
+                [e1 * k1[0], e1 * k1[1]],
                 &[
-                    (h * E1, k1),
                     (h * E3, k3),
                     (h * E4, k4),
                     (h * E5, k5),
@@ -529,11 +545,11 @@ impl<'a> Forces<'a> {
     }
 
     /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
-    /// [t_a, t_b] then has its τ in [start, end), so [`OnPiece::at`] is [`Forces::at`]
-    /// without the check.
-    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece> {
+    /// [t_a, t_b] then has its τ in [start, end), so the piece's (D, N_f) at (t − hi) − lo is
+    /// [`Forces::at`] without the check.
+    fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece<'a>> {
         let (_, hi, lo, i) = self.cache.get();
-        let piece = *self.problem.law.pieces.get(i)?;
+        let piece = self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
@@ -577,22 +593,12 @@ impl<'a> Forces<'a> {
 }
 
 /// One piece of the force law and its period offset hi + lo (see [`Forces`]), for times known
-/// to lie on it; a copy, so that its coefficients stay in registers across the evaluations of
-/// a step.
+/// to lie on it.
 #[derive(Clone, Copy)]
-struct OnPiece {
+struct OnPiece<'a> {
     hi: f64,
     lo: f64,
-    piece: crate::engine::Piece,
-}
-
-impl OnPiece {
-    /// (D, N_f) at absolute time t on the piece (N).
-    #[inline]
-    fn at(&self, t: f64) -> (f64, f64) {
-        let b = self.piece.basis.eval((t - self.hi) - self.lo);
-        (self.piece.drive.at(b), self.piece.normal.at(b))
-    }
+    piece: &'a crate::engine::Piece,
 }
 
 /// Switching-function checks per accepted step: the interpolant is sampled at this many
@@ -817,13 +823,23 @@ fn slip_advance(
         forces.on_piece(run.t, run.t + h)
     };
     let step = match on_piece {
-        Some(piece) => {
-            let f = Slip(|t| {
-                let (d, n) = piece.at(t);
-                body.slip_acceleration(d, n, s)
-            });
-            run.step(&f, *stop, opts.h_max, stats)?
-        }
+        // The basis matched once per step, not at each evaluation (the same operations).
+        Some(OnPiece { hi, lo, piece }) => match piece.basis {
+            Basis::Cos { omega } => {
+                let f = Slip(move |t| {
+                    let b = fmath::cos(omega * ((t - hi) - lo));
+                    body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
+                });
+                run.step(&f, *stop, opts.h_max, stats)?
+            }
+            Basis::Linear { t_ref } => {
+                let f = Slip(move |t| {
+                    let b = ((t - hi) - lo) - t_ref;
+                    body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
+                });
+                run.step(&f, *stop, opts.h_max, stats)?
+            }
+        },
         None => {
             let f = Slip(|t| {
                 let (d, n) = forces.at(t);
@@ -834,7 +850,7 @@ fn slip_advance(
     };
     // Most steps are far from a stick: s·v > 0 on the whole step, so every sample of
     // `first_stick` would be positive and nothing would be found.
-    if !positive(step.coefficients(1), s) {
+    if !positive(step.bound_coefficients(1), s) {
         let dense = step.dense();
         let samples = if opts.interior_checks { SAMPLES } else { 1 };
         if let Some(te) = first_stick(&dense, s, samples) {
