@@ -172,14 +172,11 @@ impl Accepted {
     /// The coefficients r1 … r5 of component i of the step's interpolant ([`Dense`]).
     fn coefficients(&self, i: usize) -> [f64; 5] {
         let (h, k) = (self.h, &self.k);
-        let ydiff = self.y1[i] - self.y0[i];
-        let bspl = h * k[0][i] - ydiff;
-        let r4 = ydiff - h * k[5][i] - bspl;
         let r5 = [D1, D3, D4, D5, D6, D7]
             .iter()
             .zip(k)
             .fold(0.0, |r, (&d, k)| r + h * d * k[i]);
-        [self.y0[i], ydiff, bspl, r4, r5]
+        self.coefficients_with(i, r5)
     }
 
     /// [`Accepted::coefficients`] for [`positive`], which takes r5 only as |r5|: the sum of r5
@@ -187,13 +184,19 @@ impl Accepted {
     #[inline]
     fn bound_coefficients(&self, i: usize) -> [f64; 5] {
         let (h, k) = (self.h, &self.k);
-        let ydiff = self.y1[i] - self.y0[i];
-        let bspl = h * k[0][i] - ydiff;
-        let r4 = ydiff - h * k[5][i] - bspl;
         let r5 = [D3, D4, D5, D6, D7]
             .iter()
             .zip(&k[1..])
             .fold(h * D1 * k[0][i], |r, (&d, k)| r + h * d * k[i]);
+        self.coefficients_with(i, r5)
+    }
+
+    /// r1 … r4 of component i, with the given r5.
+    #[inline(always)]
+    fn coefficients_with(&self, i: usize, r5: f64) -> [f64; 5] {
+        let ydiff = self.y1[i] - self.y0[i];
+        let bspl = self.h * self.k[0][i] - ydiff;
+        let r4 = ydiff - self.h * self.k[5][i] - bspl;
         [self.y0[i], ydiff, bspl, r4, r5]
     }
 
