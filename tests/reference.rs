@@ -16,11 +16,9 @@
 #[path = "common/random_sets.rs"]
 mod random_sets;
 
-use std::io::Write;
-use std::process::{Command, Stdio};
-
 use rand::{rngs::StdRng, Rng, SeedableRng};
-use serde_json::{json, Value};
+use serde_json::Value;
+use stickslip::bench::independent::{integrate_40_digits, ScriptError};
 use stickslip::engine::{integrate, Body, EventKind, ForceLaw, Run, RunOptions};
 use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::{pulled_mass, woodpecker, LawKind};
@@ -141,43 +139,15 @@ fn cases() -> Vec<Case> {
 
 /// Runs the mpmath script on the cases; `None` when python3 or mpmath is missing.
 fn reference(cases: &[Case]) -> Option<Vec<Value>> {
-    let input = Value::Array(
-        cases
-            .iter()
-            .map(|c| json!({"law": c.law, "body": c.body, "periods": PERIODS}))
-            .collect(),
-    );
-    let script = concat!(env!("CARGO_MANIFEST_DIR"), "/tests/reference/mp_engine.py");
-    let mut child = match Command::new("python3")
-        .arg(script)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-    {
-        Ok(child) => child,
-        Err(e) => {
-            eprintln!("skipped: python3 not available ({e})");
-            return None;
+    let problems: Vec<_> = cases.iter().map(|c| (&c.law, &c.body)).collect();
+    match integrate_40_digits(&problems, PERIODS) {
+        Ok(results) => Some(results),
+        Err(ScriptError::Unavailable(reason)) => {
+            eprintln!("skipped: {reason}");
+            None
         }
-    };
-    // A script that exits at once (no mpmath) closes the pipe: its exit code tells.
-    let _ = child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.to_string().as_bytes());
-    let out = child.wait_with_output().unwrap();
-    if out.status.code() == Some(3) {
-        eprintln!("skipped: mpmath not installed (python3 -m pip install mpmath)");
-        return None;
+        Err(ScriptError::Failed(reason)) => panic!("reference failed: {reason}"),
     }
-    assert!(
-        out.status.success(),
-        "reference failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    Some(serde_json::from_slice::<Vec<Value>>(&out.stdout).unwrap())
 }
 
 fn num(v: &Value) -> f64 {

@@ -16,6 +16,7 @@ use serde_json::{json, Value};
 
 use super::peer::script_path;
 use super::problems::{BenchProblem, Reference, PERIODS};
+use crate::engine::{Body, ForceLaw};
 
 /// The script, relative to the working directory or to the crate.
 pub const SCRIPT: &str = "tests/reference/mp_engine.py";
@@ -68,7 +69,11 @@ impl ReferenceCheck {
 /// Runs the 40-digit integration on `pairs` and compares it with their exact references.
 pub fn check(pairs: &[(&BenchProblem, &Reference)]) -> ReferenceCheck {
     let started = std::time::Instant::now();
-    match run_script(pairs) {
+    let problems: Vec<_> = pairs
+        .iter()
+        .map(|(bp, _)| (&bp.problem.law, &bp.problem.body))
+        .collect();
+    match integrate_40_digits(&problems, PERIODS) {
         Ok(out) => ReferenceCheck {
             status: "ok".into(),
             reason: String::new(),
@@ -79,18 +84,35 @@ pub fn check(pairs: &[(&BenchProblem, &Reference)]) -> ReferenceCheck {
                 .collect(),
             elapsed_s: started.elapsed().as_secs_f64(),
         },
-        Err(reason) => ReferenceCheck::skipped(reason),
+        Err(reason) => ReferenceCheck::skipped(reason.to_string()),
     }
 }
 
-fn run_script(pairs: &[(&BenchProblem, &Reference)]) -> Result<Vec<Value>, String> {
-    let script = script_path(SCRIPT).ok_or_else(|| format!("{SCRIPT} was not found"))?;
+/// Why the 40-digit integration gave no results.
+#[derive(Debug, thiserror::Error)]
+pub enum ScriptError {
+    /// python3, mpmath or the script is missing: a plain statement, never a failure.
+    #[error("{0}")]
+    Unavailable(String),
+    /// The script ran and failed, or did not write one result per problem.
+    #[error("{0}")]
+    Failed(String),
+}
+
+/// The 40-digit integration (`mp_engine.py`) of `periods` periods of every (law, body), one JSON
+/// result per problem in order: `events` per period as [t, kind, …] with t a decimal string,
+/// `x_at_period_start` as decimal strings. Used here and by tests/reference.rs.
+pub fn integrate_40_digits(
+    problems: &[(&ForceLaw, &Body)],
+    periods: u32,
+) -> Result<Vec<Value>, ScriptError> {
+    use ScriptError::{Failed, Unavailable};
+    let script =
+        script_path(SCRIPT).ok_or_else(|| Unavailable(format!("{SCRIPT} was not found")))?;
     let input = Value::Array(
-        pairs
+        problems
             .iter()
-            .map(|(bp, _)| {
-                json!({"law": bp.problem.law, "body": bp.problem.body, "periods": PERIODS})
-            })
+            .map(|(law, body)| json!({"law": law, "body": body, "periods": periods}))
             .collect(),
     );
     let mut child = Command::new("python3")
@@ -99,32 +121,34 @@ fn run_script(pairs: &[(&BenchProblem, &Reference)]) -> Result<Vec<Value>, Strin
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| format!("python3 was not found ({e})"))?;
+        .map_err(|e| Unavailable(format!("python3 was not found ({e})")))?;
     // A script that exits at once (no mpmath) closes the pipe: its exit code tells.
     if let Some(mut stdin) = child.stdin.take() {
         let _ = stdin.write_all(input.to_string().as_bytes());
     }
     let out = child
         .wait_with_output()
-        .map_err(|e| format!("python3 did not finish ({e})"))?;
+        .map_err(|e| Failed(format!("python3 did not finish ({e})")))?;
     if out.status.code() == Some(NO_MPMATH) {
-        return Err("mpmath is not installed (python3 -m pip install mpmath)".into());
+        return Err(Unavailable(
+            "mpmath is not installed (python3 -m pip install mpmath)".into(),
+        ));
     }
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
-        return Err(format!(
+        return Err(Failed(format!(
             "the 40-digit integration failed: {}",
             err.lines().last().unwrap_or("no message")
-        ));
+        )));
     }
     let list: Vec<Value> = serde_json::from_slice(&out.stdout)
-        .map_err(|e| format!("the 40-digit integration wrote no JSON list ({e})"))?;
-    if list.len() != pairs.len() {
-        return Err(format!(
+        .map_err(|e| Failed(format!("the 40-digit integration wrote no JSON list ({e})")))?;
+    if list.len() != problems.len() {
+        return Err(Failed(format!(
             "the 40-digit integration returned {} results for {} problems",
             list.len(),
-            pairs.len()
-        ));
+            problems.len()
+        )));
     }
     Ok(list)
 }
