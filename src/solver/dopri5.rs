@@ -761,7 +761,8 @@ pub(crate) fn drive(
     mut slip: impl FnMut(&Forces, f64, f64, f64, &mut Stats) -> Result<SlipEnd>,
 ) -> Result<Solution> {
     let mut stats = Stats::default();
-    let mut events = Vec::new();
+    // The capacity of a vector's first growth, allocated at once.
+    let mut events = Vec::with_capacity(4);
     let (mut t, mut x) = (0.0_f64, 0.0_f64);
     let mut v_end = 0.0;
     // Direction of slip, 0 when stuck.
