@@ -51,30 +51,46 @@
 //! ours before (f6f836f)              3325       3700        3378    (3.7–3.8× the textbook)
 //! ours at 18331a2                    1485       1462        1307    (1.49–1.66×)
 //! ours at 5932b79                    1184       1199        1076    (1.22–1.32×)
-//! ours now                           1168       1171        1047    (1.19–1.31×)
+//! ours at 58a1b64                    1168       1171        1047    (1.19–1.31×)
+//!     (58a1b64 measured again with rustc 1.95: 1179, 1186, 1062)
+//! ours now                           1177       1185        1062    (1.21–1.32×, rustc 1.95)
 //! ours plain integrator (smooth)        –       1097           –    (1.12×; 208 + 26 steps)
 //!     (1149 at 18331a2, 1102 at 5932b79)
-//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1192 now per
-//!     accepted step (342 + 19 steps)
+//! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1192 (58a1b64;
+//!     1209 measured again with rustc 1.95), 1209 now per accepted step (342 + 19 steps)
 //! ```
 //!
-//! Where ours' 1199 went at 1e-8 at 5932b79 (textbook 979; now 1171: the basis of the force law is
-//! matched once per step, not at each evaluation, the step's piece is not copied, and the sums of
-//! r5 for the positivity bound, of the error estimate and of the error norm start from their first
-//! terms): cos 447 (the `libm` crate's of src/fmath.rs, ≈ 80 per call, 5 calls per attempt: the
-//! FSAL stage reuses the sixth stage's force; the textbook's glibc `cos` costs 602, ≈ 108 per call,
-//! and LLVM merges its two calls at t + h as it knows `f64::cos` is pure), pow 140 (same), the
-//! integrator and the stick/slip machinery 600 (textbook 292): the tableau's bit-exact (h·a_ij)·k_j
-//! products, the positivity bound of s·v on the interpolant (≈ 78: v's coefficients only; the
-//! interpolant itself is formed only where it fails), the step's dispatch (breakpoint, on-piece and
-//! stall checks, ≈ 100), the force law's piece offset per evaluation and the crossings of the
-//! period boundaries. At 1e-4 nearly half the steps end on a period boundary, where the force law
-//! is looked up again. Before f6f836f: 2 cosines, 4 `fmod` and 2 piece searches per evaluation
-//! (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its derivative on every
-//! step.
+//! Where a run's 51,800 instructions go at 1e-4 (44 steps, 20 periods; textbook 39,360): cos 17,200
+//! (203 calls; the textbook's glibc cos 21,100), pow 5,600 (45 calls, the same), the integrator and
+//! the machinery ≈ 28,800 (textbook 12,600): ≈ 380 per step taken on the remembered piece, ≈ 470
+//! per step whose evaluations check their piece (25 of the 44: the 20 steps that land on a period
+//! boundary, whose sixth stage is on the next period's piece, and 5 that start from a boundary
+//! whose τ rounded below T, still on the old piece), 65 per step for the stop and on-piece checks,
+//! 92 per step for the stick bound (r5 alone 32), and per period a look-up of the next piece
+//! (≈ 85 with its `fma`, 20 per run) and `next_breakpoint` (≈ 40 with its `floor`, 21 per run). Taking
+//! the landing steps on the piece (the stage at the stop checked, by a compare per evaluation, a
+//! separate `Field` method or an out-of-line step) gave the same bits but 11–40 more instructions
+//! per ordinary step at 1e-8: the hot step's code is one inlined body whose register allocation
+//! every further copy of the step degrades.
 //!
-//! The results are bit for bit those of f6f836f, 18331a2 and 5932b79 (`fingerprint` prints the same
-//! hashes before and after): event times, end states and work counters on all 66 runs.
+//! Where ours' 1199 went at 1e-8 at 5932b79 (textbook 979; 1171 at 58a1b64: the basis of the force
+//! law is matched once per step, not at each evaluation, the step's piece is not copied, and the
+//! sums of r5 for the positivity bound, of the error estimate and of the error norm start from
+//! their first terms): cos 447 (the `libm` crate's of src/fmath.rs, ≈ 80 per call, 5 calls per
+//! attempt: the FSAL stage reuses the sixth stage's force; the textbook's glibc `cos` costs 602,
+//! ≈ 108 per call, and LLVM merges its two calls at t + h as it knows `f64::cos` is pure), pow 140
+//! (same), the integrator and the stick/slip machinery 600 (textbook 292): the tableau's bit-exact
+//! (h·a_ij)·k_j products, the positivity bound of s·v on the interpolant (≈ 78: v's coefficients
+//! only; the interpolant itself is formed only where it fails), the step's dispatch (breakpoint,
+//! on-piece and stall checks, ≈ 100), the force law's piece offset per evaluation and the crossings
+//! of the period boundaries. At 1e-4 nearly half the steps end on a period boundary, where the
+//! force law is looked up again. Before f6f836f: 2 cosines, 4 `fmod` and 2 piece searches per
+//! evaluation (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its derivative
+//! on every step.
+//!
+//! The results are bit for bit those of f6f836f, 18331a2, 5932b79 and 58a1b64 (`fingerprint`
+//! prints the same hashes before and after): event times, end states and work counters on all 66
+//! runs.
 
 use std::hint::black_box;
 

@@ -557,11 +557,14 @@ impl<'a> Forces<'a> {
         (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
     }
 
-    /// t off the remembered piece: in the remembered period or the next one (as a step
-    /// crosses a period boundary), otherwise by the general path, remembering the period (for
-    /// t ≥ 0) and the piece.
+    /// t off the remembered piece: on the piece after it (as a step crosses its end), in the
+    /// remembered period or the next one, otherwise by the general path, remembering the
+    /// period (for t ≥ 0) and the piece.
     #[cold]
     fn lookup(&self, t: f64) -> (f64, f64) {
+        if let Some(forces) = self.next_piece_at(t) {
+            return forces;
+        }
         let period = self.problem.law.period;
         let (k, hi, lo, _) = self.cache.get();
         let next = k + 1.0;
@@ -577,6 +580,31 @@ impl<'a> Forces<'a> {
         let hi = k * period;
         let kept = (t >= 0.0).then(|| (k, hi, k.mul_add(period, -hi)));
         self.forces_at(local, kept)
+    }
+
+    /// (D, N_f) at t on the piece that follows the remembered one (the next of the period, or
+    /// the first of the next period: hi and lo of k + 1), remembered when it holds t: no search
+    /// where a step crosses a breakpoint. Its τ in [start, end) gives the bits of
+    /// [`Forces::at`] as the remembered piece's does.
+    fn next_piece_at(&self, t: f64) -> Option<(f64, f64)> {
+        let pieces = &self.problem.law.pieces;
+        let (k, hi, lo, i) = self.cache.get();
+        let next = if i + 1 < pieces.len() {
+            (k, hi, lo, i + 1)
+        } else {
+            let (period, k) = (self.problem.law.period, k + 1.0);
+            let hi = k * period;
+            (k, hi, k.mul_add(period, -hi), 0)
+        };
+        let (_, hi, lo, i) = next;
+        let piece = pieces.get(i)?;
+        let local = (t - hi) - lo;
+        if !(local >= piece.start && local < piece.end) {
+            return None;
+        }
+        self.cache.set(next);
+        let b = piece.basis.eval(local);
+        Some((piece.drive.at(b), piece.normal.at(b)))
     }
 
     /// (D, N_f) at `local` = t mod T on the piece containing it, remembering that piece and
@@ -733,7 +761,8 @@ pub(crate) fn drive(
     mut slip: impl FnMut(&Forces, f64, f64, f64, &mut Stats) -> Result<SlipEnd>,
 ) -> Result<Solution> {
     let mut stats = Stats::default();
-    let mut events = Vec::new();
+    // The capacity of a vector's first growth, allocated at once.
+    let mut events = Vec::with_capacity(4);
     let (mut t, mut x) = (0.0_f64, 0.0_f64);
     let mut v_end = 0.0;
     // Direction of slip, 0 when stuck.
