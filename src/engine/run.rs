@@ -819,7 +819,7 @@ fn slide<M: ArcMotion>(
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
-            Some(monotone_zero(f, (p, at_p), (q, hi)))
+            Some(monotone_zero(f, (p, at_p), (q, hi), M::TRIG))
         } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
             Some(q)
         } else {
