@@ -553,7 +553,7 @@ impl PreparedPiece<'_> {
         let onsets = [onset(1), onset(-1)];
         // On a cos basis the zeros of a are located once, in two parts; on a linear one each
         // arc finds its own (see [`ArcMotion::sign_changes`]).
-        let accel = [1.0, -1.0].map(|s: f64| match piece.basis {
+        let sign_changes = |s: f64| match piece.basis {
             Basis::Linear { .. } => SignChanges::UNKNOWN,
             Basis::Cos { omega } => {
                 // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
@@ -567,7 +567,8 @@ impl PreparedPiece<'_> {
                 };
                 SignChanges::cos(omega, h, exact)
             }
-        });
+        };
+        let accel = [sign_changes(1.0), sign_changes(-1.0)];
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
