@@ -19,10 +19,10 @@
 //!
 //! ```text
 //! instructions per 20-period run  before issue 14  1st pass  2nd pass  3rd pass  4th pass  5th pass  6th pass  7th pass  libm calls/period
-//! pulled mass, linear law                  44 430    35 534    24 058    21 995    22 918    21 491    20 575    20 473  0
-//! pulled mass, harmonic law                98 625    77 755    59 804    58 312    44 100    43 792    43 435    34 956  23.1 → 11.2 | 9.35 → 0.8
-//! woodpecker, linear law                   81 649    69 598    46 945    42 858    44 444    41 511    39 591    39 385  0
-//! woodpecker, harmonic law                237 437   166 374   136 548   133 204   110 373   110 499   109 700    89 775  53.0 → 19.4 | 21.85 → 1.8
+//! pulled mass, linear law                  44 430    35 534    24 058    21 995    22 918    21 491    20 575    20 355  0
+//! pulled mass, harmonic law                98 625    77 755    59 804    58 312    44 100    43 792    43 435    34 915  23.1 → 11.2 | 9.35 → 0.8
+//! woodpecker, linear law                   81 649    69 598    46 945    42 858    44 444    41 511    39 591    39 313  0
+//! woodpecker, harmonic law                237 437   166 374   136 548   133 204   110 373   110 499   109 700    85 406  53.0 → 19.4 | 21.85 → 1.8
 //! ```
 //!
 //! (libm calls before and after the first pass with a sin and a cos of one angle counted once;
@@ -115,14 +115,15 @@
 //! distance off); the step after a converging Halley step is predicted, |h₁|·|h₁/h₀|³, and the
 //! search ends without the evaluation that would only confirm it where that is below eps/64 of
 //! t; the later iterates and the stick turn from the first iterate's half angle by Taylor sums
-//! to e⁴ (|e| ≤ 2.5e-3, at most two additions from evaluated sin and cos); the acceleration's
-//! zeros per direction without an array map. Evaluations per stick search 4 → 2 (plus the stick
-//! itself, now by the short sums). A polynomial arc's search is as before (its parabola start is
+//! to e⁴ (|e| ≤ 2.5e-3, at most two additions from evaluated sin and cos); the known angles of
+//! a piece keep their whole kernels, δ − sin δ and δ²/2 − (1 − cos δ) summed once per run (the
+//! same bits); the acceleration's zeros per direction without an array map. Evaluations per
+//! stick search 4 → 2 (plus the stick itself, now by the short sums). A polynomial arc's search is as before (its parabola start is
 //! exact). Linear fingerprints unchanged; harmonic laws: kinds and counts of events unchanged on
 //! the 8000 fingerprint sets, transition times within 8e-16 relative (2.1e-16 of the run's
 //! length), positions and velocities within 6e-15 and 2e-15 of their largest in the run. The
-//! sixth pass re-counted before it: 20 569, 43 318, 39 579 and 109 353 (−0.5 %, −19 %, −0.5 %,
-//! −18 %). Tried and dropped: the Taylor sums of every angle addition cut by |e| (the turn from
+//! sixth pass re-counted before it: 20 569, 43 318, 39 579 and 109 353 (−1.0 %, −19 %, −0.7 %,
+//! −22 %). Tried and dropped: the Taylor sums of every angle addition cut by |e| (the turn from
 //! a known angle is 0.1–0.4 rad on the woodpecker: +2 % instructions).
 
 use std::hint::black_box;

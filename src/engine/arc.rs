@@ -128,7 +128,7 @@ pub trait ArcMotion: Copy {
     /// with the bits of sin and cos. The seed is the last half angle whose sin and cos were
     /// evaluated or known, not one reached by addition, so that the additions' rounding does not
     /// accumulate along a search.
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point;
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point;
 
     /// [`ArcMotion::at_near`] at an iterate of a root search or at the root it ends on: where
     /// δ/2 turned by at most [`SHORT_TURN_MAX`] from the half angle of an earlier iterate
@@ -231,7 +231,7 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &[HalfAngle]) -> Point {
+    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &[Kernels]) -> Point {
         self.at(t)
     }
 
@@ -272,9 +272,9 @@ impl TrigArc {
             cos_c,
             ..
         } = *self;
-        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin;
         let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
-        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        let r = -sin_c * k.minus_sin - cos_c * k.minus_cos;
         // sin(θc + δ)
         let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
         Point {
@@ -351,7 +351,7 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point {
         let w = self.w(t);
         self.at_kernels(w, Kernels::near(self.omega * w, seed, known))
     }
@@ -391,8 +391,8 @@ impl ArcMotion for TrigArc {
         let w1 = self.w(t1);
         let delta = omega * w1;
         let k = Kernels::new(delta);
-        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin;
+        let r = -sin_c * k.minus_sin - cos_c * k.minus_cos;
         let dx = w1 * (v_c + 0.5 * a_c * w1) + self.x1 * r;
         let moment = v_c * p + a_c / omega * (delta * p - r) + 0.5 * a1 / omega * p * p;
         (n_c * dx + n1 / omega * moment).abs()
@@ -457,7 +457,7 @@ impl Arc {
 
     /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
-    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
+    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point {
         either!(self, arc => arc.at_near(t, seed, known))
     }
 
@@ -505,10 +505,15 @@ pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
 
 /// sin δ and 1 − cos δ from sin and cos of δ/2 (both keep their relative accuracy for small δ),
 /// and the higher differences δ − sin δ and δ²/2 − (1 − cos δ).
-struct Kernels {
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kernels {
     delta: f64,
     sin: f64,
     one_minus_cos: f64,
+    /// δ − sin δ and δ²/2 − (1 − cos δ) (an evaluation inlined where it needs neither position
+    /// nor speed does not sum their series).
+    minus_sin: f64,
+    minus_cos: f64,
     /// sin and cos of δ/2, from which the others are formed.
     half: HalfAngle,
 }
@@ -531,11 +536,12 @@ impl HalfAngle {
     }
 }
 
-/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]): at
-/// most [`KnownAngles::CAPACITY`], the later ones dropped.
+/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]), with
+/// their kernels (the series of δ − sin δ and δ²/2 − (1 − cos δ) summed once too): at most
+/// [`KnownAngles::CAPACITY`], the later ones dropped.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KnownAngles {
-    angles: [HalfAngle; KnownAngles::CAPACITY],
+    angles: [Kernels; KnownAngles::CAPACITY],
     len: usize,
 }
 
@@ -543,10 +549,17 @@ impl KnownAngles {
     pub const CAPACITY: usize = 6;
 
     pub const fn new() -> KnownAngles {
-        let none = HalfAngle {
-            angle: f64::NAN,
+        let none = Kernels {
+            delta: f64::NAN,
             sin: f64::NAN,
-            cos: f64::NAN,
+            one_minus_cos: f64::NAN,
+            minus_sin: f64::NAN,
+            minus_cos: f64::NAN,
+            half: HalfAngle {
+                angle: f64::NAN,
+                sin: f64::NAN,
+                cos: f64::NAN,
+            },
         };
         KnownAngles {
             angles: [none; KnownAngles::CAPACITY],
@@ -554,15 +567,15 @@ impl KnownAngles {
         }
     }
 
-    /// Adds a half angle (when there is room).
+    /// Adds a half angle δ/2 (when there is room), with the kernels of δ (twice it, exactly).
     pub fn push(&mut self, half: HalfAngle) {
         if self.len < KnownAngles::CAPACITY {
-            self.angles[self.len] = half;
+            self.angles[self.len] = Kernels::from_half(2.0 * half.angle, half);
             self.len += 1;
         }
     }
 
-    pub fn as_slice(&self) -> &[HalfAngle] {
+    pub fn as_slice(&self) -> &[Kernels] {
         &self.angles[..self.len]
     }
 }
@@ -649,11 +662,11 @@ impl Kernels {
     /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`]. A
     /// known or newly evaluated half angle becomes the seed.
     #[inline(always)]
-    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Kernels {
+    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Kernels {
         let angle = 0.5 * delta;
-        if let Some(&half) = known.iter().find(|k| k.angle == angle) {
-            *seed = Some(half);
-            return Kernels::from_half(delta, half);
+        if let Some(&kernels) = known.iter().find(|k| k.half.angle == angle) {
+            *seed = Some(kernels.half);
+            return kernels;
         }
         match *seed {
             Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
@@ -685,37 +698,39 @@ impl Kernels {
     }
 
     /// The kernels at δ from sin and cos of δ/2.
-    #[inline]
+    #[inline(always)]
     fn from_half(delta: f64, half: HalfAngle) -> Kernels {
+        let sin = 2.0 * half.sin * half.cos;
+        let one_minus_cos = 2.0 * half.sin * half.sin;
         Kernels {
             delta,
-            sin: 2.0 * half.sin * half.cos,
-            one_minus_cos: 2.0 * half.sin * half.sin,
+            sin,
+            one_minus_cos,
+            minus_sin: minus_sin(delta, sin),
+            minus_cos: minus_cos(delta, one_minus_cos),
             half,
         }
     }
+}
 
-    /// δ − sin δ.
-    #[inline]
-    fn minus_sin(&self) -> f64 {
-        let d = self.delta;
-        if d.abs() < SERIES_MAX {
-            d * d * d * series(d * d, &MINUS_SIN)
-        } else {
-            d - self.sin
-        }
+/// δ − sin δ, given sin δ.
+#[inline(always)]
+fn minus_sin(d: f64, sin: f64) -> f64 {
+    if d.abs() < SERIES_MAX {
+        d * d * d * series(d * d, &MINUS_SIN)
+    } else {
+        d - sin
     }
+}
 
-    /// δ²/2 − (1 − cos δ).
-    #[inline]
-    fn minus_cos(&self) -> f64 {
-        let d = self.delta;
-        if d.abs() < SERIES_MAX {
-            let z = d * d;
-            z * z * series(z, &MINUS_COS)
-        } else {
-            0.5 * d * d - self.one_minus_cos
-        }
+/// δ²/2 − (1 − cos δ), given 1 − cos δ.
+#[inline(always)]
+fn minus_cos(d: f64, one_minus_cos: f64) -> f64 {
+    if d.abs() < SERIES_MAX {
+        let z = d * d;
+        z * z * series(z, &MINUS_COS)
+    } else {
+        0.5 * d * d - one_minus_cos
     }
 }
 
@@ -933,13 +948,13 @@ mod tests {
             let k = Kernels::new(d);
             let direct_sin = d - d.sin();
             let direct_cos = 0.5 * d * d - (1.0 - d.cos());
-            assert!(((k.minus_sin() - direct_sin) / direct_sin).abs() < 8.0 * f64::EPSILON);
-            assert!(((k.minus_cos() - direct_cos) / direct_cos).abs() < 16.0 * f64::EPSILON);
+            assert!(((k.minus_sin - direct_sin) / direct_sin).abs() < 8.0 * f64::EPSILON);
+            assert!(((k.minus_cos - direct_cos) / direct_cos).abs() < 16.0 * f64::EPSILON);
         }
         let d = 1e-5;
         let k = Kernels::new(d);
-        assert!((k.minus_sin() / (d * d * d / 6.0 * (1.0 - d * d / 20.0)) - 1.0).abs() < 1e-15);
-        assert!((k.minus_cos() / (d.powi(4) / 24.0 * (1.0 - d * d / 30.0)) - 1.0).abs() < 1e-15);
+        assert!((k.minus_sin / (d * d * d / 6.0 * (1.0 - d * d / 20.0)) - 1.0).abs() < 1e-15);
+        assert!((k.minus_cos / (d.powi(4) / 24.0 * (1.0 - d * d / 30.0)) - 1.0).abs() < 1e-15);
     }
 
     /// A short slip near θ = π, where N_f ∝ 1 + cos ωt nearly vanishes (the pulled mass at
