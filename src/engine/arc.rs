@@ -128,7 +128,21 @@ pub trait ArcMotion: Copy {
     /// with the bits of sin and cos. The seed is the last half angle whose sin and cos were
     /// evaluated or known, not one reached by addition, so that the additions' rounding does not
     /// accumulate along a search.
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point;
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point;
+
+    /// [`ArcMotion::at_near`] at an iterate of a root search or at the root it ends on: where
+    /// δ/2 turned by at most [`SHORT_TURN_MAX`] from the half angle of an earlier iterate
+    /// (`iterate`), the kernels follow from that one's by the angle-addition formulas with the
+    /// Taylor sums to e⁴; else from the `seed` as by [`ArcMotion::at_near`]
+    /// without known angles (the iterates are no piece's known times), and that half angle
+    /// becomes `iterate`. An iterate's half angle is one addition from sin and cos evaluated or
+    /// known, so the rounding of the additions still does not accumulate beyond two.
+    fn at_iterate(
+        &self,
+        t: f64,
+        seed: &mut Option<HalfAngle>,
+        iterate: &mut Option<HalfAngle>,
+    ) -> Point;
 
     /// ∫ N_f(t)·|v(t)| dt from the start of the arc to t1 (see
     /// [`Arc::integrate_normal_times_speed`]).
@@ -218,7 +232,17 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &[HalfAngle]) -> Point {
+    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &[Kernels]) -> Point {
+        self.at(t)
+    }
+
+    #[inline(always)]
+    fn at_iterate(
+        &self,
+        t: f64,
+        _seed: &mut Option<HalfAngle>,
+        _iterate: &mut Option<HalfAngle>,
+    ) -> Point {
         self.at(t)
     }
 
@@ -249,9 +273,9 @@ impl TrigArc {
             cos_c,
             ..
         } = *self;
-        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin;
         let q = -cos_c * k.one_minus_cos - sin_c * k.sin;
-        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        let r = -sin_c * k.minus_sin - cos_c * k.minus_cos;
         // sin(θc + δ)
         let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
         Point {
@@ -328,9 +352,31 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point {
         let w = self.w(t);
         self.at_kernels(w, Kernels::near(self.omega * w, seed, known))
+    }
+
+    #[inline(always)]
+    fn at_iterate(
+        &self,
+        t: f64,
+        seed: &mut Option<HalfAngle>,
+        iterate: &mut Option<HalfAngle>,
+    ) -> Point {
+        let w = self.w(t);
+        let delta = self.omega * w;
+        let kernels = match *iterate {
+            Some(x) if (0.5 * delta - x.angle).abs() <= SHORT_TURN_MAX => {
+                Kernels::turned(delta, x, short_turn(0.5 * delta - x.angle))
+            }
+            _ => {
+                let kernels = Kernels::near(delta, seed, &[]);
+                *iterate = Some(kernels.half);
+                kernels
+            }
+        };
+        self.at_kernels(w, kernels)
     }
 
     fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
@@ -346,8 +392,8 @@ impl ArcMotion for TrigArc {
         let w1 = self.w(t1);
         let delta = omega * w1;
         let k = Kernels::new(delta);
-        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin();
-        let r = -sin_c * k.minus_sin() - cos_c * k.minus_cos();
+        let p = -sin_c * k.one_minus_cos - cos_c * k.minus_sin;
+        let r = -sin_c * k.minus_sin - cos_c * k.minus_cos;
         let dx = w1 * (v_c + 0.5 * a_c * w1) + self.x1 * r;
         let moment = v_c * p + a_c / omega * (delta * p - r) + 0.5 * a1 / omega * p * p;
         (n_c * dx + n1 / omega * moment).abs()
@@ -412,7 +458,7 @@ impl Arc {
 
     /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
-    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Point {
+    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Point {
         either!(self, arc => arc.at_near(t, seed, known))
     }
 
@@ -460,10 +506,15 @@ pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
 
 /// sin δ and 1 − cos δ from sin and cos of δ/2 (both keep their relative accuracy for small δ),
 /// and the higher differences δ − sin δ and δ²/2 − (1 − cos δ).
-struct Kernels {
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kernels {
     delta: f64,
     sin: f64,
     one_minus_cos: f64,
+    /// δ − sin δ and δ²/2 − (1 − cos δ) (an evaluation inlined where it needs neither position
+    /// nor speed does not sum their series).
+    minus_sin: f64,
+    minus_cos: f64,
     /// sin and cos of δ/2, from which the others are formed.
     half: HalfAngle,
 }
@@ -486,11 +537,12 @@ impl HalfAngle {
     }
 }
 
-/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]): at
-/// most [`KnownAngles::CAPACITY`], the later ones dropped.
+/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]), with
+/// their kernels (the series of δ − sin δ and δ²/2 − (1 − cos δ) summed once too): at most
+/// [`KnownAngles::CAPACITY`], the later ones dropped.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct KnownAngles {
-    angles: [HalfAngle; KnownAngles::CAPACITY],
+    angles: [Kernels; KnownAngles::CAPACITY],
     len: usize,
 }
 
@@ -498,10 +550,17 @@ impl KnownAngles {
     pub const CAPACITY: usize = 6;
 
     pub const fn new() -> KnownAngles {
-        let none = HalfAngle {
-            angle: f64::NAN,
+        let none = Kernels {
+            delta: f64::NAN,
             sin: f64::NAN,
-            cos: f64::NAN,
+            one_minus_cos: f64::NAN,
+            minus_sin: f64::NAN,
+            minus_cos: f64::NAN,
+            half: HalfAngle {
+                angle: f64::NAN,
+                sin: f64::NAN,
+                cos: f64::NAN,
+            },
         };
         KnownAngles {
             angles: [none; KnownAngles::CAPACITY],
@@ -509,15 +568,15 @@ impl KnownAngles {
         }
     }
 
-    /// Adds a half angle (when there is room).
+    /// Adds a half angle δ/2 (when there is room), with the kernels of δ (twice it, exactly).
     pub fn push(&mut self, half: HalfAngle) {
         if self.len < KnownAngles::CAPACITY {
-            self.angles[self.len] = half;
+            self.angles[self.len] = Kernels::from_half(2.0 * half.angle, half);
             self.len += 1;
         }
     }
 
-    pub fn as_slice(&self) -> &[HalfAngle] {
+    pub fn as_slice(&self) -> &[Kernels] {
         &self.angles[..self.len]
     }
 }
@@ -565,6 +624,31 @@ const ONE_MINUS_COS_TAYLOR: [f64; 8] = [
     -1.0 / 20_922_789_888_000.0,
 ];
 
+/// The largest turn e of the half angle between the iterates of a root search that
+/// [`ArcMotion::at_iterate`] takes by [`short_turn`]: there the first terms it leaves out,
+/// e⁶/7! of sin e/e and e⁶/8! of (1 − cos e)/e², are below a relative 1e-19 of the sums.
+pub const SHORT_TURN_MAX: f64 = 2.5e-3;
+
+/// The first three terms of [`SIN_TAYLOR`], to e⁴.
+const SIN_TAYLOR_SHORT: [f64; 3] = [SIN_TAYLOR[0], SIN_TAYLOR[1], SIN_TAYLOR[2]];
+
+/// The first three terms of [`ONE_MINUS_COS_TAYLOR`], to e⁴.
+const ONE_MINUS_COS_TAYLOR_SHORT: [f64; 3] = [
+    ONE_MINUS_COS_TAYLOR[0],
+    ONE_MINUS_COS_TAYLOR[1],
+    ONE_MINUS_COS_TAYLOR[2],
+];
+
+/// (sin e, 1 − cos e) for a turn |e| ≤ [`SHORT_TURN_MAX`], by Taylor sums to e⁴.
+#[inline(always)]
+fn short_turn(e: f64) -> (f64, f64) {
+    let z = e * e;
+    (
+        e * series(z, &SIN_TAYLOR_SHORT),
+        z * series(z, &ONE_MINUS_COS_TAYLOR_SHORT),
+    )
+}
+
 impl Kernels {
     #[inline]
     fn new(delta: f64) -> Kernels {
@@ -579,25 +663,20 @@ impl Kernels {
     /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`]. A
     /// known or newly evaluated half angle becomes the seed.
     #[inline(always)]
-    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: &[HalfAngle]) -> Kernels {
+    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: &[Kernels]) -> Kernels {
         let angle = 0.5 * delta;
-        if let Some(&half) = known.iter().find(|k| k.angle == angle) {
-            *seed = Some(half);
-            return Kernels::from_half(delta, half);
+        if let Some(&kernels) = known.iter().find(|k| k.half.angle == angle) {
+            *seed = Some(kernels.half);
+            return kernels;
         }
         match *seed {
             Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
                 let e = angle - x.angle;
-                let (sin_e, one_minus_cos_e) = (
+                let turn = (
                     e * series(e * e, &SIN_TAYLOR),
                     e * e * series(e * e, &ONE_MINUS_COS_TAYLOR),
                 );
-                let half = HalfAngle {
-                    angle,
-                    sin: x.sin + (x.cos * sin_e - x.sin * one_minus_cos_e),
-                    cos: x.cos - (x.sin * sin_e + x.cos * one_minus_cos_e),
-                };
-                Kernels::from_half(delta, half)
+                Kernels::turned(delta, x, turn)
             }
             _ => {
                 let kernels = Kernels::new(delta);
@@ -607,38 +686,52 @@ impl Kernels {
         }
     }
 
+    /// The kernels at δ from those of the half angle `x` turned by e = δ/2 − x (given as
+    /// (sin e, 1 − cos e)), by the angle-addition formulas of [`Kernels::near`].
+    #[inline(always)]
+    fn turned(delta: f64, x: HalfAngle, (sin_e, one_minus_cos_e): (f64, f64)) -> Kernels {
+        let half = HalfAngle {
+            angle: 0.5 * delta,
+            sin: x.sin + (x.cos * sin_e - x.sin * one_minus_cos_e),
+            cos: x.cos - (x.sin * sin_e + x.cos * one_minus_cos_e),
+        };
+        Kernels::from_half(delta, half)
+    }
+
     /// The kernels at δ from sin and cos of δ/2.
-    #[inline]
+    #[inline(always)]
     fn from_half(delta: f64, half: HalfAngle) -> Kernels {
+        let sin = 2.0 * half.sin * half.cos;
+        let one_minus_cos = 2.0 * half.sin * half.sin;
         Kernels {
             delta,
-            sin: 2.0 * half.sin * half.cos,
-            one_minus_cos: 2.0 * half.sin * half.sin,
+            sin,
+            one_minus_cos,
+            minus_sin: minus_sin(delta, sin),
+            minus_cos: minus_cos(delta, one_minus_cos),
             half,
         }
     }
+}
 
-    /// δ − sin δ.
-    #[inline]
-    fn minus_sin(&self) -> f64 {
-        let d = self.delta;
-        if d.abs() < SERIES_MAX {
-            d * d * d * series(d * d, &MINUS_SIN)
-        } else {
-            d - self.sin
-        }
+/// δ − sin δ, given sin δ.
+#[inline(always)]
+fn minus_sin(d: f64, sin: f64) -> f64 {
+    if d.abs() < SERIES_MAX {
+        d * d * d * series(d * d, &MINUS_SIN)
+    } else {
+        d - sin
     }
+}
 
-    /// δ²/2 − (1 − cos δ).
-    #[inline]
-    fn minus_cos(&self) -> f64 {
-        let d = self.delta;
-        if d.abs() < SERIES_MAX {
-            let z = d * d;
-            z * z * series(z, &MINUS_COS)
-        } else {
-            0.5 * d * d - self.one_minus_cos
-        }
+/// δ²/2 − (1 − cos δ), given 1 − cos δ.
+#[inline(always)]
+fn minus_cos(d: f64, one_minus_cos: f64) -> f64 {
+    if d.abs() < SERIES_MAX {
+        let z = d * d;
+        z * z * series(z, &MINUS_COS)
+    } else {
+        0.5 * d * d - one_minus_cos
     }
 }
 
@@ -835,6 +928,18 @@ mod tests {
         }
         // The last step (δ/2 moves by about 1.1) is evaluated afresh.
         assert_eq!(arc.at_near(0.03, &mut seed, &[]), arc.at(0.03));
+        // As a root search's iterates: the 4th and 5th turn by less than SHORT_TURN_MAX from the
+        // 3rd (by 2e-5 and 1e-5), by the short Taylor sums, and agree as well.
+        let Arc::Trig(trig) = arc else {
+            unreachable!("an arc on a cos basis")
+        };
+        let (mut seed, mut iterate) = (None, None);
+        for t in times {
+            let (near, direct) = (trig.at_iterate(t, &mut seed, &mut iterate), arc.at(t));
+            let scale = |d: f64| 8.0 * f64::EPSILON * d.abs().max(1.0);
+            assert!((near.v - direct.v).abs() <= scale(direct.v), "v at {t}");
+            assert!((near.x - direct.x).abs() <= scale(direct.x), "x at {t}");
+        }
     }
 
     #[test]
@@ -844,13 +949,13 @@ mod tests {
             let k = Kernels::new(d);
             let direct_sin = d - d.sin();
             let direct_cos = 0.5 * d * d - (1.0 - d.cos());
-            assert!(((k.minus_sin() - direct_sin) / direct_sin).abs() < 8.0 * f64::EPSILON);
-            assert!(((k.minus_cos() - direct_cos) / direct_cos).abs() < 16.0 * f64::EPSILON);
+            assert!(((k.minus_sin - direct_sin) / direct_sin).abs() < 8.0 * f64::EPSILON);
+            assert!(((k.minus_cos - direct_cos) / direct_cos).abs() < 16.0 * f64::EPSILON);
         }
         let d = 1e-5;
         let k = Kernels::new(d);
-        assert!((k.minus_sin() / (d * d * d / 6.0 * (1.0 - d * d / 20.0)) - 1.0).abs() < 1e-15);
-        assert!((k.minus_cos() / (d.powi(4) / 24.0 * (1.0 - d * d / 30.0)) - 1.0).abs() < 1e-15);
+        assert!((k.minus_sin / (d * d * d / 6.0 * (1.0 - d * d / 20.0)) - 1.0).abs() < 1e-15);
+        assert!((k.minus_cos / (d.powi(4) / 24.0 * (1.0 - d * d / 30.0)) - 1.0).abs() < 1e-15);
     }
 
     /// A short slip near θ = π, where N_f ∝ 1 + cos ωt nearly vanishes (the pulled mass at

@@ -553,7 +553,7 @@ impl PreparedPiece<'_> {
         let onsets = [onset(1), onset(-1)];
         // On a cos basis the zeros of a are located once, in two parts; on a linear one each
         // arc finds its own (see [`ArcMotion::sign_changes`]).
-        let accel = [1.0, -1.0].map(|s: f64| match piece.basis {
+        let sign_changes = |s: f64| match piece.basis {
             Basis::Linear { .. } => SignChanges::UNKNOWN,
             Basis::Cos { omega } => {
                 // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
@@ -567,7 +567,8 @@ impl PreparedPiece<'_> {
                 };
                 SignChanges::cos(omega, h, exact)
             }
-        });
+        };
+        let accel = [sign_changes(1.0), sign_changes(-1.0)];
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
@@ -785,8 +786,11 @@ fn slide<M: ArcMotion>(
     let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
     // The half angle of the last evaluation on a trigonometric arc, from which the root search
-    // and the motion at the stick step on without sin and cos.
+    // steps on without sin and cos.
     let mut seed = None;
+    // The half angle of the stick search's first iterate on a trigonometric arc, from which the
+    // later ones and the stick turn by little.
+    let mut iterate = None;
     for (i, &q) in bounds.iter().enumerate() {
         // The sign of s·a on (p, q), from the zeros of a: just after `after` on the first part,
         // just after the zero p on the others.
@@ -815,11 +819,11 @@ fn slide<M: ArcMotion>(
         } else if at_q <= 0.0 {
             let f = |t: f64| {
                 // The iterates are no piece's known times.
-                let at = arc.at_near(t, &mut seed, &[]);
+                let at = arc.at_iterate(t, &mut seed, &mut iterate);
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
-            Some(monotone_zero(f, (p, at_p), (q, hi)))
+            Some(monotone_zero(f, (p, at_p), (q, hi), M::TRIG))
         } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
             Some(q)
         } else {
@@ -834,7 +838,11 @@ fn slide<M: ArcMotion>(
     let end = stick.unwrap_or(piece.end);
     Slide {
         stick,
-        end: arc.at_near(end, &mut seed, known),
+        end: if iterate.is_some() {
+            arc.at_iterate(end, &mut seed, &mut iterate)
+        } else {
+            arc.at_near(end, &mut seed, known)
+        },
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
         }),
