@@ -133,9 +133,8 @@ pub trait ArcMotion: Copy {
     /// [`ArcMotion::at_near`] at an iterate of a root search or at the root it ends on: where
     /// δ/2 turned by at most [`SHORT_TURN_MAX`] from the half angle of an earlier iterate
     /// (`iterate`), the kernels follow from that one's by the angle-addition formulas with the
-    /// Taylor sums to e⁴; else from the `seed` as by [`ArcMotion::at_near`]
-    /// without known angles (the iterates are no piece's known times), and that half angle
-    /// becomes `iterate`. An iterate's half angle is one addition from sin and cos evaluated or
+    /// Taylor sums to e⁴; else from the `seed` as by [`ArcMotion::at_near`] without known
+    /// angles (the iterates are no piece's known times), and that half angle becomes `iterate`. An iterate's half angle is one addition from sin and cos evaluated or
     /// known, so the rounding of the additions still does not accumulate beyond two.
     fn at_iterate(
         &self,

@@ -214,8 +214,8 @@ impl UpCrossings {
 /// one Newton step on the cubic through the parabola and f(lo) ([`cubic_start`]), taken where it
 /// stays inside the bracket: on the woodpecker's and the pulled mass' harmonic laws the search
 /// then converges one evaluation sooner (the parabola alone starts about 10 % of the way from
-/// `hi` off). Halley steps (cubic convergence) are accepted while they stay inside the shrinking bracket,
-/// bisection otherwise.
+/// `hi` off). Halley steps (cubic convergence) are accepted while they stay inside the
+/// shrinking bracket, bisection otherwise.
 ///
 /// Convergence is a Halley step below a few ulps of t whose Newton step f/f′ is as small: near
 /// a tangency (f′ ≈ 0, e.g. a speed maximum at the end of the bracket) the Halley step
@@ -228,11 +228,10 @@ impl UpCrossings {
 /// and its search keeps its bits without the cubic's and the prediction's divisions): with
 /// cubic convergence, steps h₀, h₁ of consecutive Halley iterates (or the parabola's step from
 /// `hi` and the first Halley step; not the cubic's step, whose error is no cube of a step) give
-/// the next one as about |h₁|·|h₁/h₀|³. Where that is
-/// below [`PREDICTED_STEP_MAX`] ulps of t, and h₁ is a contraction by at least
-/// [`CONTRACTION_MAX`] whose Newton step agrees with the Halley step (within a factor 2: no
-/// tangency), the search ends at t − h₁ (within the bracket) without the one more evaluation of
-/// f that would only confirm it.
+/// the next one as about |h₁|·|h₁/h₀|³. Where that is below [`PREDICTED_STEP_MAX`]·eps·|t|,
+/// and h₁ is a contraction by at least [`CONTRACTION_MAX`] whose Newton step agrees with the
+/// Halley step (within a factor 2: no tangency), the search ends at t − h₁ (within the
+/// bracket) without the one more evaluation of f that would only confirm it.
 #[inline]
 pub fn monotone_zero(
     mut f: impl FnMut(f64) -> (f64, f64, f64),
