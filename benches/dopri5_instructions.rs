@@ -53,16 +53,22 @@
 //! ours at 5932b79                    1184       1199        1076    (1.22–1.32×)
 //! ours at 58a1b64                    1168       1171        1047    (1.19–1.31×)
 //!     (58a1b64 measured again with rustc 1.95: 1179, 1186, 1062)
-//! ours now                           1177       1185        1062    (1.21–1.32×, rustc 1.95)
-//! ours plain integrator (smooth)        –       1097           –    (1.12×; 208 + 26 steps)
-//!     (1149 at 18331a2, 1102 at 5932b79)
+//! ours at b638ea1                    1177       1185        1062    (1.21–1.32×, rustc 1.95)
+//! ours at e009c57                    1109       1112         998    (1.13–1.24×, rustc 1.95)
+//! ours plain integrator (smooth)        –       1072           –    (1.10×; 208 + 26 steps)
+//!     (1149 at 18331a2, 1102 at 5932b79, 1097 at b638ea1)
 //! set B (stick-slip), ours: 3104 (f6f836f), 1525 (18331a2), 1215 (5932b79), 1192 (58a1b64;
-//!     1209 measured again with rustc 1.95), 1209 now per accepted step (342 + 19 steps)
+//!     1209 measured again with rustc 1.95), 1209 (b638ea1), 1174 (e009c57) per accepted step
+//!     (342 + 19 steps)
 //! ```
 //!
-//! Where a run's 51,800 instructions go at 1e-4 (44 steps, 20 periods; textbook 39,360): cos 17,200
-//! (203 calls; the textbook's glibc cos 21,100), pow 5,600 (45 calls, the same), the integrator and
-//! the machinery ≈ 28,800 (textbook 12,600): ≈ 380 per step taken on the remembered piece, ≈ 470
+//! At e009c57 the stage states, y1, the error estimate and r5 of the interpolant are formed as the
+//! textbook forms them, y + h·Σ a_ij k_j: one product by h per sum instead of one per coefficient
+//! (the (h·a_ij)·k_j products below), 64–73 instructions less per step; a run at 1e-4 takes 48,800.
+//!
+//! Where a run's 51,800 instructions went at 1e-4 at b638ea1 (44 steps, 20 periods; textbook
+//! 39,360): cos 17,200 (203 calls; the textbook's glibc cos 21,100), pow 5,600 (45 calls, the
+//! same), the integrator and the machinery ≈ 28,800 (textbook 12,600): ≈ 380 per step taken on the remembered piece, ≈ 470
 //! per step whose evaluations check their piece (25 of the 44: the 20 steps that land on a period
 //! boundary, whose sixth stage is on the next period's piece, and 5 that start from a boundary
 //! whose τ rounded below T, still on the old piece), 65 per step for the stop and on-piece checks,
@@ -88,9 +94,13 @@
 //! evaluation (1200 + 700 + 640 per step), the interpolant sampled at 8 points with its derivative
 //! on every step.
 //!
-//! The results are bit for bit those of f6f836f, 18331a2, 5932b79 and 58a1b64 (`fingerprint`
-//! prints the same hashes before and after): event times, end states and work counters on all 66
-//! runs.
+//! The results of f6f836f, 18331a2, 5932b79, 58a1b64 and b638ea1 are bit for bit the same
+//! (`fingerprint` printed the same hashes): event times, end states and work counters on all 66
+//! runs. Those of e009c57 differ from them in rounding only: on the 66 runs, the same events
+//! (kinds and counts), event times within 1.1e-14 s, x_end within 8.2e-14 m, v_end within
+//! 2.3e-14 m/s, the same accepted and rejected steps but at 1e-11 on the harmonic woodpecker
+//! (1099 accepted instead of 1100), and right-hand-side evaluations of the stick location
+//! differing by a few; ours and the textbook still take the same steps at 1e-4, 1e-8 and 1e-12.
 
 use std::hint::black_box;
 
