@@ -68,8 +68,8 @@
 //!
 //! Where a run's 51,800 instructions went at 1e-4 at b638ea1 (44 steps, 20 periods; textbook
 //! 39,360): cos 17,200 (203 calls; the textbook's glibc cos 21,100), pow 5,600 (45 calls, the
-//! same), the integrator and the machinery ≈ 28,800 (textbook 12,600): ≈ 380 per step taken on the remembered piece, ≈ 470
-//! per step whose evaluations check their piece (25 of the 44: the 20 steps that land on a period
+//! same), the integrator and the machinery ≈ 28,800 (textbook 12,600): ≈ 380 per step taken on
+//! the remembered piece, ≈ 470 per step whose evaluations check their piece (25 of the 44: the 20 steps that land on a period
 //! boundary, whose sixth stage is on the next period's piece, and 5 that start from a boundary
 //! whose τ rounded below T, still on the old piece), 65 per step for the stop and on-piece checks,
 //! 92 per step for the stick bound (r5 alone 32), and per period a look-up of the next piece
