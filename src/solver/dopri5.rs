@@ -32,12 +32,13 @@
 //! * Cost (benches/dopri5_instructions.rs): the force law is evaluated once per stage but the
 //!   last (FSAL: at the sixth's time, [`Slip`]), on the piece remembered from the previous
 //!   evaluation ([`Forces`], which also crosses a period boundary without `rem_euclid`), with
-//!   no check at all on a step known to stay on that piece; the next breakpoint is kept while
-//!   ahead; the interpolant is formed only where a stick is possible; the stage states, the
-//!   new state, the error estimate and r5 of the interpolant are formed as a textbook forms
-//!   them, y + h·Σ a_ij k_j (one product by h per sum, not one per coefficient). About
-//!   1.13–1.24× the instructions per step of a textbook DOPRI5 on the same slip equation
-//!   (3.8× before).
+//!   no check at all on a step known to stay on one piece, the steps that land on a breakpoint
+//!   or start from one included (the piece's formula continued to the breakpoint, where the
+//!   law is continuous); the next breakpoint is kept while ahead; the interpolant is formed
+//!   only where a stick is possible; the stage states, the new state, the error estimate and
+//!   r5 of the interpolant are formed as a textbook forms them, y + h·Σ a_ij k_j (one product
+//!   by h per sum, not one per coefficient). About 1.13–1.19× the instructions per step of a
+//!   textbook DOPRI5 on the same slip equation (3.8× before).
 
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::engine::Basis;
@@ -468,6 +469,8 @@ fn smooth(
 /// on leaving it: the same τ, or that of period k + 1, when in [0, T), and a search of the pieces
 /// ```
 ///
+/// A step known to stay on one piece evaluates it without these checks ([`Forces::on_piece`]).
+///
 /// Why bit for bit: t mod T (`fmod`, what `rem_euclid` is for t ≥ 0) is the exactly
 /// representable t − nT with n = ⌊t/T⌋. τ is the one rounding of the real t − kT: either
 /// lo = 0 (k = 0, 1, 2, …: kT exact), or k ≥ 3 and t − hi is exact (Sterbenz) unless t < hi/2
@@ -479,13 +482,28 @@ pub(crate) struct Forces<'a> {
     problem: &'a Problem,
     /// k, hi, lo of the remembered period (NaN: none yet) and the remembered piece.
     cache: std::cell::Cell<(f64, f64, f64, usize)>,
+    /// One piece per period, a cosine of the period (ωT a multiple of 2π to 1e-12): the
+    /// piece's formula is T-periodic, so any period's offset gives its values up to rounding.
+    periodic: bool,
 }
 
 impl<'a> Forces<'a> {
     pub(crate) fn new(problem: &'a Problem) -> Self {
+        let law = &problem.law;
+        let periodic = match law.pieces.as_slice() {
+            [only] => match only.basis {
+                Basis::Cos { omega } => {
+                    let turns = omega * law.period / std::f64::consts::TAU;
+                    (turns - turns.round()).abs() < 1e-12
+                }
+                Basis::Linear { .. } => false,
+            },
+            _ => false,
+        };
         Self {
             problem,
             cache: std::cell::Cell::new((f64::NAN, f64::NAN, 0.0, 0)),
+            periodic,
         }
     }
 
@@ -504,14 +522,69 @@ impl<'a> Forces<'a> {
         self.lookup(t)
     }
 
-    /// The remembered piece, when it holds [t_a, t_b]: by monotone rounding every t in
-    /// [t_a, t_b] then has its τ in [start, end), so the piece's (D, N_f) at (t − hi) − lo is
-    /// [`Forces::at`] without the check.
+    /// The piece that holds the times [t_a, t_b] of a step, to a few ulps of t_b at either end:
+    /// the remembered one, or else the one after it (the next of the period, or the first of
+    /// the next period), which is then remembered. Every t in [t_a, t_b] then has its τ in
+    /// [start − slack, end + slack] by monotone rounding, so the piece's (D, N_f) at
+    /// (t − hi) − lo is [`Forces::at`] without the check, but for the few ulps at the ends:
+    /// there the piece's formula continues across its boundary, which gives the neighbouring
+    /// piece's values up to rounding (the force laws are continuous in t; at a period boundary
+    /// the harmonic law is smooth, the linear law has a kink). So a step that lands on the
+    /// piece's end, and the step that starts from it, need no lookup per evaluation.
+    ///
+    /// A [`Forces::periodic`] law's step that lands on the period's end is taken on the next
+    /// period (τ ∈ [−h, 0], when h ≤ T/2), which is then remembered: the same formula up to
+    /// rounding, and the cosine of an argument near 0 costs less than one near 2π.
     fn on_piece(&self, t_a: f64, t_b: f64) -> Option<OnPiece<'a>> {
-        let (_, hi, lo, i) = self.cache.get();
+        let slack = 4.0 * f64::EPSILON * t_b.abs();
+        let cache = self.cache.get();
+        let held = self.holding(cache, t_a, t_b, (slack, slack));
+        let (_, hi, lo, _) = cache;
+        if let Some(on) = held {
+            if !self.periodic || (t_b - hi) - lo < on.piece.end {
+                return held;
+            }
+        }
+        let next = self.following(cache);
+        let back = if self.periodic {
+            0.5 * self.problem.law.period
+        } else {
+            slack
+        };
+        match self.holding(next, t_a, t_b, (back, slack)) {
+            Some(on) => {
+                self.cache.set(next);
+                Some(on)
+            }
+            None => held,
+        }
+    }
+
+    /// The piece of `cache` (k, hi, lo, i) when its τ of t_a and t_b lie in
+    /// [start − before, end + after].
+    #[inline]
+    fn holding(
+        &self,
+        (_, hi, lo, i): (f64, f64, f64, usize),
+        t_a: f64,
+        t_b: f64,
+        (before, after): (f64, f64),
+    ) -> Option<OnPiece<'a>> {
         let piece = self.problem.law.pieces.get(i)?;
         let (a, b) = ((t_a - hi) - lo, (t_b - hi) - lo);
-        (a >= piece.start && b < piece.end).then_some(OnPiece { hi, lo, piece })
+        (a >= piece.start - before && b <= piece.end + after).then_some(OnPiece { hi, lo, piece })
+    }
+
+    /// (k, hi, lo, i) of the piece after that of `cache`: the next of the period, or the first
+    /// of period k + 1 (hi + lo = (k + 1)T exactly).
+    fn following(&self, (k, hi, lo, i): (f64, f64, f64, usize)) -> (f64, f64, f64, usize) {
+        if i + 1 < self.problem.law.pieces.len() {
+            (k, hi, lo, i + 1)
+        } else {
+            let (period, k) = (self.problem.law.period, k + 1.0);
+            let hi = k * period;
+            (k, hi, k.mul_add(period, -hi), 0)
+        }
     }
 
     /// t off the remembered piece: on the piece after it (as a step crosses its end), in the
@@ -544,17 +617,9 @@ impl<'a> Forces<'a> {
     /// where a step crosses a breakpoint. Its τ in [start, end) gives the bits of
     /// [`Forces::at`] as the remembered piece's does.
     fn next_piece_at(&self, t: f64) -> Option<(f64, f64)> {
-        let pieces = &self.problem.law.pieces;
-        let (k, hi, lo, i) = self.cache.get();
-        let next = if i + 1 < pieces.len() {
-            (k, hi, lo, i + 1)
-        } else {
-            let (period, k) = (self.problem.law.period, k + 1.0);
-            let hi = k * period;
-            (k, hi, k.mul_add(period, -hi), 0)
-        };
+        let next = self.following(self.cache.get());
         let (_, hi, lo, i) = next;
-        let piece = pieces.get(i)?;
+        let piece = self.problem.law.pieces.get(i)?;
         let local = (t - hi) - lo;
         if !(local >= piece.start && local < piece.end) {
             return None;
@@ -786,11 +851,15 @@ pub(crate) fn drive(
 /// `stop` is the end of the previous step's search (NaN at the start of a slip): it is still
 /// the next breakpoint while it lies beyond the slack of [`next_breakpoint`].
 ///
-/// The right-hand side is v' = (D − s μd N_f)/M. When the step's first attempt does not reach
-/// `stop` (so no attempt goes past t + h) and [t, t + h] lies on the piece of the force law
-/// remembered by `forces`, every stage of the step is on that piece: its right-hand side then
-/// checks nothing per evaluation, which lets the compiler schedule the six stages like a
-/// textbook DOPRI5's (the values are the same bits either way).
+/// The right-hand side is v' = (D − s μd N_f)/M. No attempt of the step goes past its reach:
+/// `stop` when the first attempt may land on it, otherwise t + h. When [t, reach] lies on one
+/// piece of the force law, up to a few ulps at its ends ([`Forces::on_piece`]: the remembered
+/// piece or the one after it; a landing step on the end of a period of the harmonic law is
+/// taken on the next period), every stage of the step is evaluated on that piece: its
+/// right-hand side then checks nothing per evaluation, which lets the compiler schedule the
+/// six stages like a textbook DOPRI5's. The values are [`Forces::at`]'s but at a step's ends
+/// that lie on a breakpoint, where the piece's formula is continued to it (the force laws
+/// are continuous: a difference in rounding only).
 fn slip_advance(
     run: &mut Integrator,
     forces: &Forces,
@@ -806,11 +875,13 @@ fn slip_advance(
     }
     let body = problem.body;
     let h = run.h.min(opts.h_max);
-    let on_piece = if run.t + 1.01 * h >= *stop {
-        None
+    // A step that may land on `stop` reaches it, otherwise t + h at most.
+    let reach = if run.t + 1.01 * h >= *stop {
+        *stop
     } else {
-        forces.on_piece(run.t, run.t + h)
+        run.t + h
     };
+    let on_piece = forces.on_piece(run.t, reach);
     let step = match on_piece {
         // The basis matched once per step, not at each evaluation (the same operations).
         Some(OnPiece { hi, lo, piece }) => match piece.basis {
