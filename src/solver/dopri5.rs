@@ -482,8 +482,9 @@ pub(crate) struct Forces<'a> {
     problem: &'a Problem,
     /// k, hi, lo of the remembered period (NaN: none yet) and the remembered piece.
     cache: std::cell::Cell<(f64, f64, f64, usize)>,
-    /// One piece per period, a cosine of the period (ωT a multiple of 2π to 1e-12): the
-    /// piece's formula is T-periodic, so any period's offset gives its values up to rounding.
+    /// One piece per period, a cosine of the period (ωT a multiple of 2π up to rounding, as
+    /// T = 2π/ω): the piece's formula is T-periodic, so any period's offset gives its values
+    /// up to rounding.
     periodic: bool,
 }
 
@@ -494,7 +495,8 @@ impl<'a> Forces<'a> {
             [only] => match only.basis {
                 Basis::Cos { omega } => {
                     let turns = omega * law.period / std::f64::consts::TAU;
-                    (turns - turns.round()).abs() < 1e-12
+                    turns.round() >= 1.0
+                        && (turns - turns.round()).abs() <= 8.0 * f64::EPSILON * turns
                 }
                 Basis::Linear { .. } => false,
             },
@@ -1417,6 +1419,39 @@ mod tests {
         // Measured: 5e-16 s (slip), 4.8e-10 s (stick).
         assert!(event_error(&got, &want) < 1e-8, "{:?}", got.events);
         assert!((got.x_end - want.x_end).abs() < 1e-10);
+    }
+
+    /// Only a one-piece cosine law whose ωT is a multiple of 2π up to rounding is taken as
+    /// periodic (a landing step is then evaluated on the next period).
+    #[test]
+    fn a_one_piece_cosine_law_is_periodic_only_when_its_period_is_the_cosines() {
+        let periodic = |omega: f64, period: f64| {
+            let piece = Piece {
+                start: 0.0,
+                end: period,
+                basis: Basis::Cos { omega },
+                drive: Affine::new(0.5, -0.5),
+                normal: Affine::new(1.0, 1.0),
+            };
+            let problem = Problem {
+                body: Body {
+                    mass: 1.0,
+                    mu_s: 0.4,
+                    mu_d: 0.35,
+                },
+                law: ForceLaw::new(period, vec![piece]).unwrap(),
+                t_end: period,
+            };
+            Forces::new(&problem).periodic
+        };
+        let omega = 27.386_127_875_258_3;
+        assert!(periodic(omega, std::f64::consts::TAU / omega));
+        assert!(periodic(omega, 2.0 * std::f64::consts::TAU / omega));
+        assert!(!periodic(
+            omega * (1.0 + 1e-13),
+            std::f64::consts::TAU / omega
+        ));
+        assert!(!periodic(0.5 * omega, std::f64::consts::TAU / omega));
     }
 
     #[test]
