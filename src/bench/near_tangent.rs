@@ -225,7 +225,10 @@ pub fn failure_row(m: &str, points: &[TangentPoint]) -> FailureRow {
         .map(|(_, setting, pts)| {
             let wrong_at = |d: f64| pts.iter().any(|p| p.offset == d && p.wrong);
             match OFFSETS.iter().position(|&d| wrong_at(d)) {
-                None => format!("{setting}: right down to δ = {:.0e}", OFFSETS[5]),
+                None => format!(
+                    "{setting}: right down to δ = {:.0e}",
+                    OFFSETS[OFFSETS.len() - 1]
+                ),
                 Some(0) => {
                     fails = true;
                     format!("{setting}: wrong already at δ = {:.0e}", OFFSETS[0])
