@@ -151,6 +151,12 @@ pub enum Error {
     /// A fit that ended without converging (results are still reported, flagged).
     #[error("the fit did not converge: {}", excerpt(reason, REASON_CHARS))]
     NotConverged { reason: String },
+    /// A negative verdict on the user's own input, reached and reported in full: a formula
+    /// that disagrees with the exact integration (`check`), tracked data the model does not
+    /// describe (`fit`). Its results are written; the exit code lets a script or CI job tell it
+    /// from success and from bad input.
+    #[error("{}", excerpt(reason, REASON_CHARS))]
+    Verdict { reason: String },
 }
 
 /// `text` made safe for a one-line message: control characters, line and paragraph separators
@@ -233,8 +239,9 @@ impl Error {
     /// parsed, an unknown scene, an unwritable output, `--pdf` without Chromium); 1 when the
     /// program or the tool it runs failed on valid input (the engine stalled, a force law our
     /// own code built is invalid, a figure or template failed to render, a fit did not
-    /// converge, Chromium failed to print). The match is exhaustive: a new variant has to be
-    /// classified.
+    /// converge, Chromium failed to print); 3 for a negative verdict on the user's own input
+    /// (`check`: the formula disagrees; `fit`: the model does not describe the data), whose
+    /// results are complete. The match is exhaustive: a new variant has to be classified.
     pub fn exit_code(&self) -> u8 {
         match self {
             Self::InvalidParam { .. }
@@ -254,6 +261,7 @@ impl Error {
             | Self::Template { .. }
             | Self::NotConverged { .. }
             | Self::Pdf { .. } => 1,
+            Self::Verdict { .. } => 3,
         }
     }
 }

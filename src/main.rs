@@ -3,7 +3,9 @@
 //! Exit codes: 0 success; 2 bad input (usage, parameter out of range, unreadable or malformed
 //! scenario or tracked data, unknown scene, unwritable output, `--pdf` without Chromium); 1 an
 //! internal failure: the engine, a figure or template, a fit that did not converge (its results
-//! are written, flagged), or Chromium failing to print. [`Error::exit_code`] holds the rule.
+//! are written, flagged), or Chromium failing to print; 3 a negative verdict on the user's own
+//! input, reported in full (`check`: the formula disagrees with the exact integration; `fit`:
+//! the model does not describe the data). [`Error::exit_code`] holds the rule.
 
 use std::process::ExitCode;
 
