@@ -311,10 +311,10 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     if args.symbols {
         return print_stdout(&crate::check::symbols_text(&case));
     }
-    let pairs = match (&args.formulas, &args.formula, &args.quantity) {
-        (Some(file), _, _) => crate::check::read_formulas(file)?,
-        (None, Some(formula), Some(quantity)) => vec![(formula.clone(), quantity.clone())],
-        _ => anyhow::bail!("give a FORMULA and --quantity, or --formulas FILE"),
+    let pairs = match (&args.formulas, &args.formula) {
+        (Some(file), _) => crate::check::read_formulas(file)?,
+        (None, Some(formula)) => vec![(formula.clone(), args.quantity.clone())],
+        _ => anyhow::bail!("give a FORMULA (and --quantity NAME), or --formulas FILE"),
     };
     let reports = pairs
         .into_iter()
@@ -355,7 +355,12 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
             .map(crate::check::text)
             .collect::<Vec<_>>()
             .join("\n"),
-    })
+    })?;
+    // Reported in full above; the exit code (3) lets a script or CI job act on the verdict.
+    match reports.iter().find_map(crate::check::Report::negative) {
+        Some(verdict) => Err(verdict.into()),
+        None => Ok(()),
+    }
 }
 
 /// The CSV dialect asked for.
