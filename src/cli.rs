@@ -218,7 +218,12 @@ pub struct CheckArgs {
     /// condition; not needed when the formula's left side names it.
     #[arg(long, value_name = "NAME")]
     pub quantity: Option<String>,
-    /// Several formulas from a TOML file: `[[check]]` tables with `formula` and `quantity`.
+    /// Only sets of this closed-form regime (the regime a formula is stated for, e.g.
+    /// slip_stick for the paper's (18) and (27)) [default: every regime].
+    #[arg(long, value_name = "ID")]
+    pub regime: Option<String>,
+    /// Several formulas from a TOML file: `[[check]]` tables with `formula`, `quantity` and
+    /// optionally `regime`.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["formula", "quantity"])]
     pub formulas: Option<PathBuf>,
     /// Parameter sets drawn (1 to 100000).

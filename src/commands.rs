@@ -311,18 +311,23 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     if args.symbols {
         return print_stdout(&crate::check::symbols_text(&case));
     }
-    let pairs = match (&args.formulas, &args.formula) {
+    let entries = match (&args.formulas, &args.formula) {
         (Some(file), _) => crate::check::read_formulas(file)?,
-        (None, Some(formula)) => vec![(formula.clone(), args.quantity.clone())],
+        (None, Some(formula)) => vec![crate::check::Entry {
+            formula: formula.clone(),
+            quantity: args.quantity.clone(),
+            regime: args.regime.clone(),
+        }],
         _ => anyhow::bail!("give a FORMULA (and --quantity NAME), or --formulas FILE"),
     };
-    let reports = pairs
+    let reports = entries
         .into_iter()
-        .map(|(formula, quantity)| {
+        .map(|e| {
             crate::check::run(&crate::check::Request {
                 case,
-                formula,
-                quantity,
+                formula: e.formula,
+                quantity: e.quantity,
+                regime: e.regime.or_else(|| args.regime.clone()),
                 samples: args.samples,
                 seed: args.seed,
             })

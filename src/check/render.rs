@@ -44,6 +44,9 @@ fn verdict(r: &Report) -> &'static str {
 
 fn summary(r: &Report) -> String {
     let mut s = String::new();
+    if let Some(regime) = &r.regime {
+        let _ = write!(s, "Only sets in the regime: {}. ", regime_words(regime));
+    }
     let _ = write!(
         s,
         "Of {} sets ({} packed against the regime boundaries), {} were compared; {} disagree.",
