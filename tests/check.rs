@@ -70,7 +70,12 @@ fn the_papers_gamma_agrees_in_its_regime_and_twice_it_does_not() {
 #[test]
 fn the_papers_gamma_over_every_regime_fails_in_the_late_stick_band() {
     let r = check_json(
-        &["pulled-mass", r"g T \varphi^3 \Gamma", "--quantity", "v_avg"],
+        &[
+            "pulled-mass",
+            r"g T \varphi^3 \Gamma",
+            "--quantity",
+            "v_avg",
+        ],
         3,
     );
     for row in r["by_regime"].as_array().unwrap() {
@@ -99,9 +104,15 @@ fn a_students_sign_error_is_shown_with_counterexamples_in_words() {
     ] {
         assert!(text.contains(want), "{want}: {text}");
     }
-    assert!(text.starts_with("read as: t_stick = T/2*(1 - varphi*Theta)"), "{text}");
+    assert!(
+        text.starts_with("read as: t_stick = T/2*(1 - varphi*Theta)"),
+        "{text}"
+    );
     let stderr = String::from_utf8(out.get_output().stderr.clone()).unwrap();
-    assert!(stderr.starts_with("verdict: the formula for t_stick disagrees"), "{stderr}");
+    assert!(
+        stderr.starts_with("verdict: the formula for t_stick disagrees"),
+        "{stderr}"
+    );
 }
 
 #[test]
@@ -130,7 +141,10 @@ fn bad_input_is_refused_in_one_line() {
             vec!["pulled-mass", "g*(T", "--quantity", "v_avg"],
             "not closed",
         ),
-        (vec!["pulled-mass", "g*T"], "--quantity NAME, or a left side"),
+        (
+            vec!["pulled-mass", "g*T"],
+            "--quantity NAME, or a left side",
+        ),
         (
             vec!["pulled-mass", "g*T", "--quantity", "v_avg", "--regime", "x"],
             "--regime",

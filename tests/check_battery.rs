@@ -10,7 +10,12 @@ use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::Model;
 
 /// (model, formula, quantity, regime).
-type Case = (&'static str, &'static str, Option<&'static str>, Option<&'static str>);
+type Case = (
+    &'static str,
+    &'static str,
+    Option<&'static str>,
+    Option<&'static str>,
+);
 
 const SAMPLES: usize = 300;
 const SLIP_STICK: Option<&str> = Some("slip_stick");

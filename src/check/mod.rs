@@ -521,9 +521,8 @@ fn draw_sample(
         } else {
             Some((base, None))
         };
-        let wanted = |m: &Model| {
-            m.validate().is_ok() && regime.is_none_or(|r| m.closed_form_regime() == r)
-        };
+        let wanted =
+            |m: &Model| m.validate().is_ok() && regime.is_none_or(|r| m.closed_form_regime() == r);
         if let Some((m, near)) = drawn.filter(|(m, _)| wanted(m)) {
             out.push((m, near));
         }
@@ -601,15 +600,16 @@ fn which_quantity(req: &Request, formula: &Formula, names: &[Named]) -> Result<S
     let named_by = |lhs: &str| {
         names
             .iter()
-            .find(|n| {
-                n.id == lhs || (!n.tex.is_empty() && formula::identifier(&n.tex) == lhs)
-            })
+            .find(|n| n.id == lhs || (!n.tex.is_empty() && formula::identifier(&n.tex) == lhs))
             .map(|n| n.id.clone())
     };
     let from_lhs = match &formula.lhs {
         Some(lhs) => Some(named_by(lhs).ok_or_else(|| Error::Formula {
             formula: crate::error::excerpt(&req.formula, 80),
-            reason: format!("the left side `{lhs}` names no measured quantity ({})", valid()),
+            reason: format!(
+                "the left side `{lhs}` names no measured quantity ({})",
+                valid()
+            ),
         })?),
         None => None,
     };
@@ -807,12 +807,19 @@ mod tests {
             Some("slip_stick"),
         );
         assert!(right.agrees, "{}", text(&right));
-        let wrong = check(r"\frac{T}{2}\left(1 - \varphi\Theta\right)", "t_stick", None);
+        let wrong = check(
+            r"\frac{T}{2}\left(1 - \varphi\Theta\right)",
+            "t_stick",
+            None,
+        );
         assert!(!wrong.agrees, "{}", text(&wrong));
         assert_eq!(wrong.worst.len(), WORST);
         let shown = text(&wrong);
         assert!(shown.contains("DISAGREES") && shown.contains("worst sets"));
-        assert!(shown.starts_with("read as: t_stick = T/2*(1 - varphi*Theta)"), "{shown}");
+        assert!(
+            shown.starts_with("read as: t_stick = T/2*(1 - varphi*Theta)"),
+            "{shown}"
+        );
         assert!(!wrong.nearest_counterexamples.is_empty());
         // In continuous slip the mass never sticks: not measured, and said why.
         assert!(wrong
@@ -836,7 +843,10 @@ mod tests {
             .to_string()
         };
         let e = err("g*T*xi", Some("v_avg"), None);
-        assert!(e.contains("unknown symbol xi") && e.contains("--symbols"), "{e}");
+        assert!(
+            e.contains("unknown symbol xi") && e.contains("--symbols"),
+            "{e}"
+        );
         let all = symbols_text(&Model::PulledMass(PulledMassParams::default()));
         for name in ["mu_s", "phi", "Theta", "Gamma", "tau_ST", "bar_v", "mass"] {
             assert!(all.contains(&format!("  {name} ")), "{name}: {all}");
@@ -847,9 +857,15 @@ mod tests {
         let e = err("g*T", None, None);
         assert!(e.contains("--quantity NAME, or a left side"), "{e}");
         let e = err("v_avg = g*T", Some("t_slip"), None);
-        assert!(e.contains("left side names v_avg, but --quantity is t_slip"), "{e}");
+        assert!(
+            e.contains("left side names v_avg, but --quantity is t_slip"),
+            "{e}"
+        );
         let e = err("g*T", Some("v_avg"), Some("late"));
-        assert!(e.contains("--regime") && e.contains("slip_stick_late"), "{e}");
+        assert!(
+            e.contains("--regime") && e.contains("slip_stick_late"),
+            "{e}"
+        );
     }
 
     proptest::proptest! {

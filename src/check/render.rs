@@ -50,10 +50,7 @@ fn summary(r: &Report) -> String {
     let _ = write!(
         s,
         "Of {} sets ({} packed against the regime boundaries), {} were compared; {} disagree.",
-        r.samples,
-        r.sample_near,
-        r.compared,
-        r.disagree
+        r.samples, r.sample_near, r.compared, r.disagree
     );
     if r.compared > 0 {
         let _ = write!(
@@ -107,7 +104,12 @@ pub fn text(r: &Report) -> String {
         excerpt(&r.read_as.plain, 200),
         excerpt(&r.read_as.latex, 200)
     );
-    let _ = writeln!(o, "stickslip check {}: {}", r.model, excerpt(&r.formula, 200));
+    let _ = writeln!(
+        o,
+        "stickslip check {}: {}",
+        r.model,
+        excerpt(&r.formula, 200)
+    );
     let _ = writeln!(o, "given parameters, {}", given(r));
     let _ = writeln!(o, "sample (seed {}): {}", r.seed, summary(r));
     let _ = writeln!(o, "{}", verdict(r));

@@ -5,15 +5,15 @@ use crate::draws::Draws;
 
 use super::formula as pm;
 use super::formula::Regime as PulledRegime;
-use super::quantity::{any, Key, Key as P};
 use super::params::PHI_RANGE;
+use super::quantity::{any, Key, Key as P};
 use super::{results, PulledMassParams};
 use crate::engine::Run;
 use crate::error::Result;
+use crate::models::param::{MU_MAX, MU_MIN};
 use crate::params::G_STANDARD;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
-use crate::models::param::{MU_MAX, MU_MIN};
 use crate::worksheet::exercise::{Exercise, Measured};
 use crate::worksheet::question::{Kind, Question, Regime};
 use crate::worksheet::sample::round3;
@@ -200,9 +200,8 @@ const BOUNDARIES: [&str; 3] = ["φ = 1/Θ", "φ = φ_c", "φ = 2μs"];
 /// and k log-uniform over twelve decades, g 0.1–100 m/s²; φ log-uniform from its lower limit
 /// in one of the four regimes of §1.5, chosen in turn at random.
 fn probe_set(rng: &mut Draws) -> PulledMassParams {
-    let log_between = |rng: &mut Draws, lo: f64, hi: f64| {
-        (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp()
-    };
+    let log_between =
+        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
     let mu_s = if rng.unit() < 0.75 {
         rng.between(0.05, 1.5)
     } else {

@@ -10,11 +10,11 @@ use super::{results, WoodpeckerParams};
 use crate::derivation::Step;
 use crate::engine::Run;
 use crate::error::Result;
+use crate::models::param::MU_MIN;
 use crate::params::G_STANDARD;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
 use crate::worksheet::answer::{applying, confirmed, Answer};
-use crate::models::param::MU_MIN;
 use crate::worksheet::exercise::Exercise;
 use crate::worksheet::question::{Kind, Question, Regime};
 use crate::worksheet::sample::round3;
@@ -188,10 +188,9 @@ impl Exercise for WoodpeckerParams {
         let c = super::formula::evaluate(&results::linear_inputs(self));
         let halt = if i == 0 { c.mu_d_halt_1 } else { c.mu_d_halt_2 }?;
         let mu_d = halt * (1.0 + offset);
-        (MU_MIN..=self.mu_s).contains(&mu_d).then(|| Self {
-            mu_d,
-            ..*self
-        })
+        (MU_MIN..=self.mu_s)
+            .contains(&mu_d)
+            .then(|| Self { mu_d, ..*self })
     }
 
     fn checks_and_linear_run(
@@ -208,9 +207,8 @@ impl Exercise for WoodpeckerParams {
 /// exactly 1 or small; k, the masses and the lengths over a factor of about ten either way of
 /// the toy's; z0 from a twentieth of d0 to past it.
 fn probe_set(rng: &mut Draws) -> WoodpeckerParams {
-    let log_between = |rng: &mut Draws, lo: f64, hi: f64| {
-        (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp()
-    };
+    let log_between =
+        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
     let mu_s = rng.between(0.1, 1.5);
     let ratio = match rng.unit() {
         u if u < 0.5 => rng.between(0.05, 1.0),
