@@ -194,11 +194,23 @@ impl Report {
     }
 }
 
+/// Where a symbol's value comes from: a parameter (by its key) or a worked step (by its LaTeX
+/// symbol).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Source {
+    Param(&'static str),
+    Step(&'static str),
+}
+
 /// The symbols of `case`: the parameters (by symbol, `m`), then every derived symbol of its
 /// worked steps (`varphi` and `phi`, `T`, `Gamma`, `tau_SL` …, NaN where its formula is
 /// undefined), then the parameters by key (`mass`).
 pub fn symbols(case: &Model) -> Vec<Symbol> {
-    fn params<M: Physics>(p: &M) -> Vec<(Symbol, String)> {
+    sourced_symbols(case).into_iter().map(|(s, _)| s).collect()
+}
+
+fn sourced_symbols(case: &Model) -> Vec<(Symbol, Source)> {
+    fn params<M: Physics>(p: &M) -> Vec<(Symbol, &'static str)> {
         M::PARAMS
             .iter()
             .filter_map(|s| {
@@ -207,45 +219,105 @@ pub fn symbols(case: &Model) -> Vec<Symbol> {
                     tex: s.tex.to_string(),
                     value: (s.get)(p)?,
                 };
-                Some((symbol, s.key.to_string()))
+                Some((symbol, s.key))
             })
             .collect()
     }
     let given = with_model!(case, p => params(p));
-    let mut out: Vec<Symbol> = given.iter().map(|(s, _)| s.clone()).collect();
+    let mut out: Vec<(Symbol, Source)> = given
+        .iter()
+        .map(|(s, key)| (s.clone(), Source::Param(key)))
+        .collect();
     for step in crate::worksheet::answer::steps(case) {
-        // A derived symbol is its formula: defined also where the closed form does not describe
-        // the motion (τ_ST > 1 past the period); NaN where it is not (a formula using it is then
-        // undefined on that set, and counted so).
         // A symbol, not an expression (the slip duration is written `t_{ST} - t_{SL}`, the
         // boundary `1/\Theta`); `\bar v` is one symbol.
         let plain = step.symbol.replace("\\bar ", "");
         if plain.contains(' ') || plain.contains('/') {
             continue;
         }
-        let v = step.value.unwrap_or_else(|| step.expr.eval());
-        let value = if v.is_finite() { v } else { f64::NAN };
+        let value = step_value(&step);
         let name = formula::identifier(step.symbol);
+        let source = Source::Step(step.symbol);
         if name == "varphi" {
-            out.push(Symbol {
+            let symbol = Symbol {
                 name: "phi".to_string(),
                 tex: step.symbol.to_string(),
                 value,
-            });
+            };
+            out.push((symbol, source));
         }
-        out.push(Symbol {
+        let symbol = Symbol {
             name,
             tex: step.symbol.to_string(),
             value,
-        });
+        };
+        out.push((symbol, source));
     }
     // The parameters' keys (`mass`, `force`) as well, last.
-    out.extend(given.into_iter().map(|(s, key)| Symbol { name: key, ..s }));
+    out.extend(
+        given
+            .into_iter()
+            .map(|(s, key)| (Symbol { name: key.to_string(), ..s }, Source::Param(key))),
+    );
     let mut seen = std::collections::HashSet::new();
-    out.retain(|s| {
+    out.retain(|(s, _)| {
         s.name.starts_with(|c: char| c.is_ascii_alphabetic()) && seen.insert(s.name.clone())
     });
     out
+}
+
+/// A derived symbol's value is its formula's: defined also where the closed form does not
+/// describe the motion (τ_ST > 1 past the period); NaN where it is not (a formula using it is
+/// then undefined on that set, and counted so).
+fn step_value(step: &crate::derivation::Step) -> f64 {
+    let v = step.value.unwrap_or_else(|| step.expr.eval());
+    if v.is_finite() {
+        v
+    } else {
+        f64::NAN
+    }
+}
+
+/// The values of a formula's symbols on `case`, in the order of its names, from their sources:
+/// no symbol is named, rendered or looked up by string on the way (the sample's path).
+fn values(case: &Model, sources: &[Source]) -> Vec<f64> {
+    fn param<M: Physics>(p: &M, key: &str) -> f64 {
+        M::PARAMS
+            .iter()
+            .find(|s| s.key == key)
+            .and_then(|s| (s.get)(p))
+            .unwrap_or(f64::NAN)
+    }
+    let needs_steps = sources.iter().any(|s| matches!(s, Source::Step(_)));
+    let steps = if needs_steps {
+        crate::worksheet::answer::steps(case)
+    } else {
+        Vec::new()
+    };
+    sources
+        .iter()
+        .map(|source| match source {
+            Source::Param(key) => with_model!(case, p => param(p, key)),
+            Source::Step(tex) => steps
+                .iter()
+                .find(|s| std::ptr::eq(s.symbol, *tex) || s.symbol == *tex)
+                .map_or(f64::NAN, step_value),
+        })
+        .collect()
+}
+
+/// The sources of a formula's names among the symbols of `case`.
+fn sources(case: &Model, formula: &Formula) -> Vec<Source> {
+    let all = sourced_symbols(case);
+    formula
+        .names
+        .iter()
+        .map(|n| {
+            all.iter()
+                .find(|(s, _)| &s.name == n)
+                .map_or(Source::Param(""), |(_, source)| *source)
+        })
+        .collect()
 }
 
 /// The symbols of `case` one per line with their values (`--symbols`).
@@ -369,8 +441,14 @@ fn measurable(case: &Model) -> Result<Vec<Named>> {
         .collect())
 }
 
-fn sample(formula: &Formula, case: Model, quantity: &str, near: Option<Near>) -> Result<Sample> {
-    let value = formula.value(&symbols(&case));
+fn sample(
+    formula: &Formula,
+    sources: &[Source],
+    case: Model,
+    quantity: &str,
+    near: Option<Near>,
+) -> Result<Sample> {
+    let value = formula.value_of(&values(&case, sources));
     let mut s = Sample {
         params: case,
         regime: case.closed_form_regime(),
@@ -572,7 +650,8 @@ pub fn run(req: &Request) -> Result<Report> {
         .find(|n| n.id == quantity)
         .cloned()
         .unwrap_or_default();
-    let mut given = sample(&formula, req.case, &quantity, None)?;
+    let sources = sources(&req.case, &formula);
+    let mut given = sample(&formula, &sources, req.case, &quantity, None)?;
     if req.regime.as_deref().is_some_and(|r| r != given.regime) {
         given.agrees = None;
         given.rel_error = None;
@@ -580,7 +659,7 @@ pub fn run(req: &Request) -> Result<Report> {
     }
     let samples = drawn
         .into_par_iter()
-        .map(|(case, near)| sample(&formula, case, &quantity, near))
+        .map(|(case, near)| sample(&formula, &sources, case, &quantity, near))
         .collect::<Result<Vec<_>>>()?;
     let read_as = ReadAs {
         plain: formula.plain(),

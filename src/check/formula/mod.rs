@@ -261,12 +261,17 @@ impl Formula {
             .iter()
             .map(|n| known.iter().find(|s| &s.name == n).map(|s| s.value))
             .collect();
-        let values = values?;
-        let lhs = Some(self.expr.eval(&values)).filter(|v| v.is_finite())?;
+        self.value_of(&values?)
+    }
+
+    /// The value with `values[i]` the value of `names[i]`: the path that evaluates a formula
+    /// on many sets without looking symbols up by name.
+    pub fn value_of(&self, values: &[f64]) -> Option<f64> {
+        let lhs = Some(self.expr.eval(values)).filter(|v| v.is_finite())?;
         match &self.condition {
             None => Some(lhs),
             Some((c, rhs)) => {
-                let rhs = Some(rhs.eval(&values)).filter(|v| v.is_finite())?;
+                let rhs = Some(rhs.eval(values)).filter(|v| v.is_finite())?;
                 Some(f64::from(u8::from(c.holds(lhs, rhs))))
             }
         }
