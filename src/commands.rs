@@ -65,6 +65,10 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     };
     for &(key, value) in &args.numbers {
         model.set(key, value);
+        // A value that looks typed in mm or g runs as given, with a word on stderr.
+        if let Some(hint) = model.unit_hint(key, value) {
+            eprintln!("{hint}");
+        }
     }
     for (key, value) in &args.choices {
         model.set_choice(key, value);
