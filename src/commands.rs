@@ -65,8 +65,15 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     };
     for &(key, value) in &args.numbers {
         model.set(key, value);
-        // A value that looks typed in mm or g runs as given, with a word on stderr.
-        if let Some(hint) = model.unit_hint(key, value) {
+    }
+    // A valid value that looks typed in mm or g runs as given, with a word on stderr (an
+    // invalid set gets its one-line error instead).
+    if model.validate().is_ok() {
+        for hint in args
+            .numbers
+            .iter()
+            .filter_map(|&(k, v)| model.unit_hint(k, v))
+        {
             eprintln!("{hint}");
         }
     }

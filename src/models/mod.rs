@@ -189,7 +189,7 @@ impl Model {
         fn hint<M: Physics>(_: &M, key: &str, value: f64) -> Option<String> {
             let spec = M::PARAMS.iter().find(|s| s.key == key)?;
             let (unit, factor) = spec.display;
-            (factor == 1e3 && matches!(unit, "mm" | "g") && value.abs() >= 1.0).then(|| {
+            (factor == 1e3 && matches!(unit, "mm" | "g") && value >= 1.0).then(|| {
                 format!(
                     "hint: {} = {} {} is large for a lab set-up; --{} takes {}: for {} {unit} \
                      give --{} {}",
