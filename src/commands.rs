@@ -37,6 +37,14 @@ pub fn run(cli: Cli) -> Result<()> {
     }
 }
 
+/// Hints for the user gathered while a command runs, printed by `main` when it succeeds.
+static HINTS: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// The hints gathered so far (one line each), emptied.
+pub fn take_hints() -> Vec<String> {
+    std::mem::take(&mut *HINTS.lock().unwrap_or_else(std::sync::PoisonError::into_inner))
+}
+
 /// The model's parameters and the periods to integrate: the defaults, overridden by the
 /// scenario file (if any), overridden by the flags given.
 pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
@@ -66,17 +74,13 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     for &(key, value) in &args.numbers {
         model.set(key, value);
     }
-    // A valid value that looks typed in mm or g runs as given, with a word on stderr (an
-    // invalid set gets its one-line error instead).
-    if model.validate().is_ok() {
-        for hint in args
-            .numbers
-            .iter()
-            .filter_map(|&(k, v)| model.unit_hint(k, v))
-        {
-            eprintln!("{hint}");
-        }
-    }
+    // A value that looks typed in mm or g runs as given, with a word on stderr once the command
+    // has succeeded (a failing one prints its one-line error only).
+    let hints = args.numbers.iter().filter_map(|&(k, v)| model.unit_hint(k, v));
+    HINTS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .extend(hints);
     for (key, value) in &args.choices {
         model.set_choice(key, value);
     }
