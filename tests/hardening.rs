@@ -278,8 +278,11 @@ fn combinations_out_of_double_precision_are_refused_naming_the_parameter() {
         ]),
         2,
     );
+    // Refused by the net of the results, or before it by ε = W_S/(k d0) far below what double
+    // precision resolves (8.7e-78 here): either names what is out of range.
     assert!(
-        msg.contains("out of the range of double precision"),
+        msg.contains("out of the range of double precision")
+            || (msg.contains("m_sleeve") && msg.contains("eps = W_S/(k d0)")),
         "{msg}"
     );
 }

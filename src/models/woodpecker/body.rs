@@ -28,8 +28,11 @@ pub fn linear_amplitudes(p: &WoodpeckerParams) -> Option<(f64, f64)> {
     counterpart(p.z0, p.d0, p.counterpart)
 }
 
-/// The force law of the sleeve for the chosen law. The linear law needs a defined counterpart.
+/// The force law of the sleeve for the chosen law, refused where the slips are too short for
+/// double precision ([`WoodpeckerParams::check_resolution`]). The linear law needs a defined
+/// counterpart.
 pub fn force_law(p: &WoodpeckerParams, law: LawKind) -> Result<ForceLaw> {
+    p.check_resolution()?;
     match law {
         LawKind::Harmonic => harmonic(p),
         LawKind::Linear => {
