@@ -377,18 +377,6 @@ fn sets() -> Vec<Set> {
     out
 }
 
-/// KNOWN DEFECT, open (issue 26): the harmonic woodpecker's force law is written as
-/// k z0 + k d0 cos ωt, so the sleeve's weight W_S (in D = W_S + k z0 + …) and the zero of F_e
-/// where N_f = 2λ|F_e| has its kink carry eps·k d0: v̄, power and v_M lose eps/ε (ε = W_S/(k d0)).
-/// The fix is a cos basis written about the zero of F_e, as the linear law's pieces are; until
-/// then its values are held to 8·eps/ε here, and the table shows what is missing.
-fn known_defect(p: &Params, law: LawKind) -> f64 {
-    match (p, law) {
-        (Params::Wood(w), LawKind::Harmonic) => 8.0 * f64::EPSILON / w.eps(),
-        _ => 0.0,
-    }
-}
-
 #[derive(Default)]
 struct Worst {
     cases: usize,
@@ -519,13 +507,8 @@ fn engine_matches_a_40_digit_integration_of_the_physics() {
                 }
             }
             let errors = changes(&mine, truth);
-            let known = known_defect(&set.params, law);
             for (q, slot) in w.worst.iter_mut().enumerate() {
-                let floor = if q == 5 {
-                    EVENT_TOL
-                } else {
-                    VALUE_TOL.max(known)
-                };
+                let floor = if q == 5 { EVENT_TOL } else { VALUE_TOL };
                 let tol = floor.max(SENSITIVITY_FACTOR * sensitivity[q]);
                 if errors[q].is_nan() || errors[q] / tol > slot.0 / slot.1.max(f64::MIN_POSITIVE) {
                     *slot = (errors[q], tol, small);

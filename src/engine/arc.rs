@@ -366,7 +366,7 @@ impl ArcMotion for TrigArc {
     #[inline(always)]
     fn from_start(basis: Basis, a1: f64, start: Start, phase: Option<(f64, f64)>) -> Self {
         let omega = match basis {
-            Basis::Cos { omega } => omega,
+            Basis::Cos { omega, .. } => omega,
             Basis::Linear { .. } => unreachable!("a trigonometric arc on a linear basis"),
         };
         let (sin_c, cos_c) = phase.unwrap_or_else(|| super::arc::phase(omega, start.t));
@@ -894,7 +894,10 @@ mod tests {
                 0.4,
             ),
             Arc::new(
-                Basis::Cos { omega: 9.0 },
+                Basis::Cos {
+                    omega: 9.0,
+                    shift: 0.0,
+                },
                 Affine::new(0.5, -2.0),
                 0.3,
                 0.2,
@@ -948,7 +951,10 @@ mod tests {
     #[test]
     fn trigonometric_friction_integral_matches_fine_quadrature() {
         let arc = Arc::new(
-            Basis::Cos { omega: 3.0 },
+            Basis::Cos {
+                omega: 3.0,
+                shift: 0.0,
+            },
             Affine::new(0.2, -1.1),
             0.1,
             0.0,
@@ -978,7 +984,10 @@ mod tests {
     #[test]
     fn angle_addition_steps_agree_with_direct_evaluation() {
         let arc = Arc::new(
-            Basis::Cos { omega: 37.8 },
+            Basis::Cos {
+                omega: 37.8,
+                shift: 0.0,
+            },
             Affine::new(0.2, -1.1),
             0.07,
             0.01,
@@ -1045,7 +1054,7 @@ mod tests {
             v: 0.0,
             a: 0.0,
         };
-        let arc = Arc::from_start(Basis::Cos { omega }, a1, start);
+        let arc = Arc::from_start(Basis::Cos { omega, shift: 0.0 }, a1, start);
         let (sin_c, cos_c) = theta_c.sin_cos();
         let p = |d: f64| {
             -sin_c * d * d / 2.0 - cos_c * d.powi(3) / 6.0

@@ -438,7 +438,10 @@ fn walk_piece<'a, M: ArcMotion>(
                     .take()
                     .and_then(|(prev, a, normal)| carry_over(body, prev, piece, a, normal, s))
                     .unwrap_or_else(|| {
-                        let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
+                        let b = phase_t.map_or_else(
+                            || piece.basis.eval(t),
+                            |(_, cos)| cos - piece.basis.shift(),
+                        );
                         let normal = piece.normal.at(b);
                         (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                     });
@@ -559,7 +562,7 @@ impl PreparedPiece<'_> {
         // arc finds its own (see [`ArcMotion::sign_changes`]).
         let sign_changes = |s: f64| match piece.basis {
             Basis::Linear { .. } => SignChanges::UNKNOWN,
-            Basis::Cos { omega } => {
+            Basis::Cos { omega, shift } => {
                 // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
                 let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
                 let exact = || {
@@ -569,7 +572,7 @@ impl PreparedPiece<'_> {
                         coefficient(piece.drive.c1, piece.normal.c1),
                     )
                 };
-                SignChanges::cos(omega, h, exact)
+                SignChanges::cos(omega, shift, h, exact)
             }
         };
         let accel = [sign_changes(1.0), sign_changes(-1.0)];
@@ -577,7 +580,7 @@ impl PreparedPiece<'_> {
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
         let mut known = KnownAngles::new();
-        if let Basis::Cos { omega } = piece.basis {
+        if let Basis::Cos { omega, .. } = piece.basis {
             let roots = onsets.iter().flat_map(|onsets| match onsets {
                 Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
                 _ => [None, None],
@@ -600,7 +603,7 @@ impl PreparedPiece<'_> {
             piece,
             start_phase: match piece.basis {
                 Basis::Linear { .. } => None,
-                Basis::Cos { omega } => Some(phase(omega, Dd::from(piece.start))),
+                Basis::Cos { omega, .. } => Some(phase(omega, Dd::from(piece.start))),
             },
             onsets,
             slope: [slope(1.0), slope(-1.0)],
@@ -709,9 +712,10 @@ fn onset_acceleration(body: &Body, piece: &Piece, c: &Crossing, s: f64) -> (f64,
             (0.0, if from_drive { s * d / body.mu_s } else { n })
         }
         None => {
-            let b = c
-                .phase
-                .map_or_else(|| piece.basis.eval(c.t.hi), |(_, cos)| cos);
+            let b = c.phase.map_or_else(
+                || piece.basis.eval(c.t.hi),
+                |(_, cos)| cos - piece.basis.shift(),
+            );
             let normal = piece.normal.at(b);
             let g = s * piece.drive.at(b) - body.mu_s * normal;
             (g.max(0.0), normal)

@@ -56,11 +56,16 @@ class Piece:
         """A piece as the engine serializes it."""
         basis = p["basis"]
         linear = basis["kind"] == "linear"
-        return Piece(mpf(p["start"]), mpf(p["end"]),
-                     mpf(basis["t_ref"]) if linear else None,
-                     None if linear else mpf(basis["omega"]),
-                     (mpf(p["drive"]["c0"]), mpf(p["drive"]["c1"])),
-                     (mpf(p["normal"]["c0"]), mpf(p["normal"]["c1"])))
+        piece = Piece(mpf(p["start"]), mpf(p["end"]),
+                      mpf(basis["t_ref"]) if linear else None,
+                      None if linear else mpf(basis["omega"]),
+                      (mpf(p["drive"]["c0"]), mpf(p["drive"]["c1"])),
+                      (mpf(p["normal"]["c0"]), mpf(p["normal"]["c1"])))
+        # b = cos ωt − shift: the same affine functions of cos ωt, c0 − c1·shift + c1 cos ωt.
+        shift = mpf(basis.get("shift", 0))
+        piece.d0 -= piece.d1 * shift
+        piece.n0 -= piece.n1 * shift
+        return piece
 
     def b(self, t):
         return t - self.t_ref if self.linear else mpmath.cos(self.omega * t)

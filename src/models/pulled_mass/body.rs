@@ -29,7 +29,7 @@ pub fn force_law(p: &PulledMassParams, law: LawKind) -> Result<ForceLaw> {
         LawKind::Harmonic => vec![Piece {
             start: 0.0,
             end: period,
-            basis: Basis::Cos { omega },
+            basis: Basis::Cos { omega, shift: 0.0 },
             drive,
             normal: Affine::new(w, w),
         }],
