@@ -43,6 +43,20 @@ const EVENT_TOL: f64 = 1e-12;
 /// The tolerance's floor is this many times the truth's change under a one-ulp input change.
 const SENSITIVITY_FACTOR: f64 = 4.0;
 
+/// The next double above x (f64::next_up, stable after this crate's MSRV).
+fn next_up(x: f64) -> f64 {
+    match x {
+        x if x > 0.0 => f64::from_bits(x.to_bits() + 1),
+        x if x < 0.0 => f64::from_bits(x.to_bits() - 1),
+        _ => f64::from_bits(1),
+    }
+}
+
+/// The next double below a positive x.
+fn next_down(x: f64) -> f64 {
+    f64::from_bits(x.to_bits() - 1)
+}
+
 #[derive(Clone, Copy)]
 enum Params {
     Pulled(PulledMassParams),
@@ -79,7 +93,7 @@ impl Params {
     /// The set with each input moved by one ulp, in turn: up, except μd, which moves down (it
     /// may equal μs, which it must not pass).
     fn nudged(&self) -> Vec<Params> {
-        let up = f64::next_up;
+        let up = next_up;
         match *self {
             Params::Pulled(p) => {
                 let fields: [fn(&mut PulledMassParams) -> &mut f64; 5] = [
@@ -99,7 +113,7 @@ impl Params {
                     })
                     .collect();
                 out.push(Params::Pulled(PulledMassParams {
-                    mu_d: p.mu_d.next_down(),
+                    mu_d: next_down(p.mu_d),
                     ..p
                 }));
                 out
@@ -125,7 +139,7 @@ impl Params {
                     })
                     .collect();
                 out.push(Params::Wood(WoodpeckerParams {
-                    mu_d: p.mu_d.next_down(),
+                    mu_d: next_down(p.mu_d),
                     ..p
                 }));
                 if let Some(lever) = p.lever {
