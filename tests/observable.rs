@@ -117,7 +117,10 @@ fn a_stiff_woodpecker_spring_measures_a_slip_against_its_own_forces() {
         if p.eps() >= stickslip::models::woodpecker::params::EPS_MIN {
             no_fail(&format!("k = {k}"), &wp::evaluate(&p, 8).unwrap().checks);
         } else {
-            let err = wp::evaluate(&p, 8).err().expect("refused").to_string();
+            let Err(err) = wp::evaluate(&p, 8) else {
+                panic!("k = {k} is refused");
+            };
+            let err = err.to_string();
             assert!(err.contains("m_sleeve") && err.contains("eps"), "{err}");
         }
     }
