@@ -21,7 +21,9 @@
 //!
 //! Skips (passes with a note on stderr) when python3 or mpmath is missing. The table of worst
 //! errors per region is printed with `cargo test --release --test reference -- --nocapture`;
-//! `STICKSLIP_REFERENCE=report` prints it without asserting (to measure an older engine).
+//! `STICKSLIP_REFERENCE=report` prints it without asserting; `STICKSLIP_REFERENCE_SETS=FILE`
+//! writes the sets, on which tests/reference/compare_cli.py measures any built binary (an older
+//! one included) against the same truth.
 
 #[path = "common/random_sets.rs"]
 mod random_sets;

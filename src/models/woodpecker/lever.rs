@@ -216,7 +216,9 @@ pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
             finding: format!(
                 "The claim does not apply to the given set: neither λ = 1 nor λ = l/h sticks \
                  there. Fig. 15 set: {}",
-                shown.finding(fig15.z0).replace("of the given set", "of that set")
+                shown
+                    .finding(fig15.z0)
+                    .replace("of the given set", "of that set")
             ),
             numbers: shown.numbers(),
             ..claim_of(w, &e)
