@@ -572,3 +572,43 @@ fn fixed_parameters_that_cannot_describe_the_data_are_an_unconverged_fit_not_bad
     assert!(stderr.contains("the fit did not converge"), "{stderr}");
     assert!(!out.exists());
 }
+
+/// Issue 25's wrong basin: data made with μd 0.30, z0 7.5 mm, d0 9.8 mm (the rest as the
+/// Figs. 26–27 scenario), fitted from the scenario's values (μd 0.332, z0 7.0 mm, d0 9.5 mm).
+fn wrong_basin_truth() -> WoodpeckerParams {
+    WoodpeckerParams {
+        mu_d: 0.30,
+        z0: 0.0075,
+        d0: 0.0098,
+        ..fig26()
+    }
+}
+
+/// A Tracker export of `track` in cm with no units row (title, `t,x,y`), the cells of `x` and
+/// `y` blank in the frames listed in `unmarked` (Tracker leaves a frame without a mark blank).
+fn tracker_cm(track: &stickslip::fit::synthetic::SyntheticTrack, unmarked: &[usize]) -> String {
+    let mut text = String::from("mass A\nt,x,y\n");
+    for (i, (t, y)) in track.t.iter().zip(&track.y).enumerate() {
+        if unmarked.contains(&i) {
+            text.push_str(&format!("{t:.6},,\n"));
+        } else {
+            text.push_str(&format!("{t:.6},1.23,{:.5}\n", y * 100.0));
+        }
+    }
+    text
+}
+
+/// Writes issue 25's example files into `$STICKSLIP_FIT_CASES` (for the before/after runs):
+/// `wrong-basin-N.csv` (N = 1..8, noise seeds) and `tracker-cm.csv`.
+#[test]
+#[ignore = "writes files; run with STICKSLIP_FIT_CASES=dir"]
+fn write_issue_25_cases() {
+    let dir = PathBuf::from(std::env::var_os("STICKSLIP_FIT_CASES").expect("a folder"));
+    fs::create_dir_all(&dir).unwrap();
+    for seed in 1..=8 {
+        let track = synthetic(wrong_basin_truth(), seed).generate().unwrap();
+        write(&dir, &format!("wrong-basin-{seed}.csv"), &track.csv(Unit::Mm, "issue 25"));
+    }
+    let track = Synthetic::example().generate().unwrap();
+    write(&dir, "tracker-cm.csv", &tracker_cm(&track, &[8, 9, 200, 201, 202]));
+}
