@@ -134,14 +134,29 @@ pub const MAX_SPAN_PERIODS: f64 = 100_000.0;
 /// model describes them (the fit is repeated in it to know).
 pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result<Fit> {
     let result = fit_as_read(data, base, free);
-    if matches!(&result, Ok(f) if f.verdict.describes) {
-        return result;
-    }
-    let Some(slip) = unit_slip(data, base, free) else {
+    let Some((mut slip, other)) = unit_slip(data, base, free) else {
         return result;
     };
+    let other = other.filter(|o| o.converged && o.verdict.describes);
+    slip.rms_in_units = other.as_ref().map(|o| o.rms_residual);
     match result {
         Ok(mut f) => {
+            if f.verdict.describes {
+                // The data as read may be described loosely (a 10× slip scales the noise
+                // too); they stand unless the other unit's residual is clearly the noise.
+                let Some(o) = other.filter(|o| o.verdict.less_systematic_than(&f.verdict, f.n))
+                else {
+                    return Ok(f);
+                };
+                f.verdict.describes = false;
+                f.verdict.reasons.push(format!(
+                    "as read the residuals are systematic (lag-1 autocorrelation {}), in {} \
+                     they are noise ({})",
+                    sig(Some(f.verdict.autocorrelation), 2),
+                    o.data.unit.symbol(),
+                    sig(Some(o.verdict.autocorrelation), 2)
+                ));
+            }
             f.verdict.scale = Some(slip);
             Ok(f)
         }
@@ -152,28 +167,30 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
     }
 }
 
-/// The slip of the position unit when the data fall a power of ten faster or slower than the
-/// model at `base` ([`verdict::scale_slip`]), with the fit in the unit that undoes it.
-fn unit_slip(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Option<ScaleSlip> {
+/// A slip of the position unit when the data fall a power of ten faster or slower than the
+/// model at `base` ([`verdict::scale_slip`]), and the fit in the unit that undoes it.
+fn unit_slip(
+    data: &Tracked,
+    base: &WoodpeckerParams,
+    free: &[FitParam],
+) -> Option<(ScaleSlip, Option<Fit>)> {
     let model = steady_state(base).ok()?.1?;
     let ratio = verdict::descent_speed(&data.t, &data.y_metres()) / model;
     let (factor, units) = verdict::scale_slip(ratio, data.unit)?;
-    let rms_in_units = units.and_then(|unit| {
+    let other = units.and_then(|unit| {
         let again = Tracked {
             unit,
             ..data.clone()
         };
-        fit_as_read(&again, base, free)
-            .ok()
-            .filter(|f| f.converged && f.verdict.describes)
-            .map(|f| f.rms_residual)
+        fit_as_read(&again, base, free).ok()
     });
-    Some(ScaleSlip {
+    let slip = ScaleSlip {
         factor,
         ratio,
         units,
-        rms_in_units,
-    })
+        rms_in_units: None,
+    };
+    Some((slip, other))
 }
 
 /// [`fit`] with the positions in the unit `data` says.

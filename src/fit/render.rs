@@ -256,7 +256,11 @@ pub fn text(fit: &Fit, out: &Path) -> String {
             o,
             "verdict:  {}. The values below are the best minimum found, not a measurement of \
              the toy, and their standard errors mean nothing.",
-            v.sentence().replacen("the model does not", "THE MODEL DOES NOT", 1)
+            v.sentence().replacen(
+                "the model does not describe these data",
+                "THE MODEL DOES NOT DESCRIBE THESE DATA",
+                1
+            )
         );
     }
     let _ = writeln!(

@@ -32,7 +32,10 @@
 //! Unit slip: the data fall at v_data (the slope of a straight line through them), the model
 //! at the given parameters at v̄. A ratio within a factor 2 of 10, 100 or 1000 (either way)
 //! points at the unit; the fit is repeated in the unit that undoes it, and that unit is named
-//! when the model then describes the data.
+//! when the model then describes the data. A 10× slip scales the noise with the data, and the
+//! model, flexible, can describe the data as read loosely (RMS 1.4 σ̂, ρ₁ 0.3): the data as read
+//! are then judged not described when the other unit's residual is clearly less systematic
+//! (ρ₁ lower by 3/√n, three spreads of white noise's ρ₁).
 
 use serde::Serialize;
 
@@ -144,6 +147,12 @@ impl Verdict {
 }
 
 impl Verdict {
+    /// This residual is clearly less systematic than `other`'s, of `n` rows: its lag-1
+    /// autocorrelation lower by 3/√n, three spreads of that of white noise.
+    pub fn less_systematic_than(&self, other: &Verdict, n: usize) -> bool {
+        self.autocorrelation < other.autocorrelation - 3.0 / (n as f64).sqrt()
+    }
+
     /// A negative verdict in at most ~120 characters, for the one-line error: the unit that
     /// fits first, as it is what to do.
     pub fn brief(&self) -> String {
@@ -155,9 +164,9 @@ impl Verdict {
         }) = &self.scale
         {
             return format!(
-                "the model does not describe these data as read ({}× off); with --units {} it \
-                 does (RMS {} mm)",
-                sig(Some(*factor), 1),
+                "the model does not describe these data as read (positions {}); with --units {} \
+                 it does (RMS {} mm)",
+                ten_times(*factor),
                 u.symbol(),
                 sig(Some(rms * 1e3), 2)
             );
@@ -175,11 +184,20 @@ impl Verdict {
         ));
         if let Some(slip) = &self.scale {
             s.push_str(&format!(
-                "; {}× off the model: check the unit",
-                sig(Some(slip.factor), 1)
+                "; positions {} for the model: check their unit",
+                ten_times(slip.factor)
             ));
         }
         s
+    }
+}
+
+/// "100× too large", "10× too small".
+fn ten_times(factor: f64) -> String {
+    if factor > 1.0 {
+        format!("{}× too large", sig(Some(factor), 1))
+    } else {
+        format!("{}× too small", sig(Some(1.0 / factor), 1))
     }
 }
 
@@ -310,7 +328,8 @@ mod tests {
     fn a_power_of_ten_in_the_speed_is_a_unit_slip() {
         assert_eq!(scale_slip(95.0, Unit::M), Some((100.0, Some(Unit::Cm))));
         assert_eq!(scale_slip(1300.0, Unit::M), Some((1000.0, Some(Unit::Mm))));
-        assert_eq!(scale_slip(0.011, Unit::Mm), Some((0.01, Some(Unit::M))));
+        assert_eq!(scale_slip(0.0011, Unit::Mm), Some((0.001, Some(Unit::M))));
+        assert_eq!(scale_slip(0.011, Unit::Mm), Some((0.01, None)));
         assert_eq!(scale_slip(9.0, Unit::Cm), Some((10.0, Some(Unit::Mm))));
         assert_eq!(scale_slip(12.0, Unit::M), Some((10.0, None)));
         for near_one in [1.0, 1.8, 0.6, 3.5, 30.0, 1e5, f64::NAN, 0.0] {
