@@ -9,8 +9,9 @@
 //! starts   at each centre, the best local minima of a scan of phases (also at the data's k
 //!          when k is free)
 //! race     a few LM steps from each start; the best goes on to convergence
-//! best     over the centres (in parallel), the lowest residual of a successful run; the
-//!          earliest centre among equals, so a fit the given start already solves is unchanged
+//! best     over the centres (in parallel), the lowest residual, continued if it has not
+//!          converged; the earliest converged centre among equals, so a fit the given start
+//!          already solves is unchanged
 //! errors   cov = s² (JᵀJ)⁻¹, s² = RSS/(n − p), J in the physical parameters at the optimum
 //! ```
 //!
@@ -104,35 +105,53 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
     let tracks = WORK_BUDGET / setup.y.len().max(1);
     let centres = spread(&setup.base, setup.free);
     let used = (tracks / RUN_TRACKS).clamp(1, centres.len());
+    // One share more than the centres: for continuing the winner if it has not converged.
+    let share = tracks / (used + 1);
     let mut runs: Vec<Run> = centres[..used]
         .par_iter()
-        .map(|centre| run_from(setup, centre, data_period, tracks / used))
+        .map(|centre| run_from(setup, centre, data_period, share))
         .collect::<Result<Vec<Option<Run>>>>()?
         .into_iter()
         .flatten()
         .collect();
-    let winner = runs
+    let rss = runs
         .iter()
-        .reduce(|a, b| if b.best.beats(&a.best) { b } else { a })
+        .map(|r| r.best.rss)
+        .min_by(f64::total_cmp)
         .ok_or_else(|| Error::NotConverged {
             reason: "the phase scan found no starting point".to_string(),
         })?;
-    let (successful, rss) = (winner.best.termination.was_successful(), winner.best.rss);
-    // The earliest run at the winner's minimum: a fit that the given start solves keeps the
+    // Across centres the lowest residual wins, converged or not: a run that ran out of
+    // patience near the data beats one that converged far from them. Among the runs at that
+    // minimum the earliest converged one is kept, so a fit the given start solves keeps the
     // given start's numbers to the last bit.
-    let same = |r: &Run| {
-        r.best.termination.was_successful() == successful
-            && (r.best.rss - rss).abs() <= SAME_MINIMUM * rss
-    };
+    let same = |r: &Run| (r.best.rss - rss).abs() <= SAME_MINIMUM * rss || r.best.rss == rss;
     let at_best = runs.iter().filter(|r| same(r)).count();
     let (centres, starts) = (runs.len(), runs.iter().map(|r| r.starts).sum());
-    let chosen = runs.iter().position(same).unwrap_or(0);
+    let chosen = runs
+        .iter()
+        .position(|r| same(r) && r.best.termination.was_successful())
+        .or_else(|| runs.iter().position(same))
+        .unwrap_or(0);
     let Run {
         best,
         start,
         exhausted,
         ..
     } = runs.swap_remove(chosen);
+    let (best, exhausted) = if best.termination.was_successful() {
+        (best, exhausted)
+    } else {
+        let budget = Budget(Cell::new(share));
+        let more = minimize(setup, best.x.clone(), PATIENCE, &budget);
+        let exhausted = budget.0.get() == 0 && !more.termination.was_successful();
+        let more = Attempt {
+            iterations: best.iterations + more.iterations,
+            evaluations: best.evaluations + more.evaluations,
+            ..more
+        };
+        (more, exhausted)
+    };
 
     let k = setup.free.len();
     let params = setup.params(&best.x.as_slice()[..k]);
