@@ -615,13 +615,27 @@ fn write_issue_25_cases() {
     fs::create_dir_all(&dir).unwrap();
     for seed in 1..=8 {
         let track = synthetic(wrong_basin_truth(), seed).generate().unwrap();
-        write(&dir, &format!("wrong-basin-{seed}.csv"), &track.csv(Unit::Mm, "issue 25"));
+        write(
+            &dir,
+            &format!("wrong-basin-{seed}.csv"),
+            &track.csv(Unit::Mm, "issue 25"),
+        );
     }
     let track = Synthetic::example().generate().unwrap();
-    write(&dir, "tracker-cm.csv", &tracker_cm(&track, &[8, 9, 200, 201, 202]));
+    write(
+        &dir,
+        "tracker-cm.csv",
+        &tracker_cm(&track, &[8, 9, 200, 201, 202]),
+    );
     write(&dir, "tracker-cm-whole.csv", &tracker_cm(&track, &[]));
-    for (name, unit, declared) in [("mm-as-m", Unit::Mm, "m"), ("cm-as-mm", Unit::Cm, "mm"), ("mm-as-cm", Unit::Mm, "cm")] {
-        let text = track.csv(unit, name).replace(&format!("s,{}", unit.symbol()), &format!("s,{declared}"));
+    for (name, unit, declared) in [
+        ("mm-as-m", Unit::Mm, "m"),
+        ("cm-as-mm", Unit::Cm, "mm"),
+        ("mm-as-cm", Unit::Mm, "cm"),
+    ] {
+        let text = track
+            .csv(unit, name)
+            .replace(&format!("s,{}", unit.symbol()), &format!("s,{declared}"));
         write(&dir, &format!("{name}.csv"), &text);
     }
 }
@@ -702,7 +716,10 @@ fn a_grid_of_known_parameters_is_recovered_or_declared_not_described() {
     }
     eprintln!("{recovered} recovered, {declared} declared not described or not converged");
     let share = within_two as f64 / (3 * recovered) as f64;
-    assert!(share >= MIN_WITHIN_TWO, "{share} of the values within 2 standard errors");
+    assert!(
+        share >= MIN_WITHIN_TWO,
+        "{share} of the values within 2 standard errors"
+    );
     // The grid lies mostly within reach of the starts: most truths must be recovered.
     assert!(recovered >= 24, "{recovered} of 30 recovered");
 }
@@ -735,7 +752,11 @@ fn the_wrong_basin_of_issue_25_is_left_for_the_true_minimum() {
 fn tracker_positions_in_cm_read_as_metres_are_a_unit_slip_named_with_its_units() {
     let tmp = tempfile::tempdir().unwrap();
     let track = Synthetic::example().generate().unwrap();
-    let file = write(tmp.path(), "tracker.csv", &tracker_cm(&track, &[8, 9, 200, 201, 202]));
+    let file = write(
+        tmp.path(),
+        "tracker.csv",
+        &tracker_cm(&track, &[8, 9, 200, 201, 202]),
+    );
     let out = tmp.path().join("as-read");
     let output = stickslip()
         .arg("fit")
@@ -781,9 +802,21 @@ fn positions_ten_or_a_thousand_times_off_name_the_units_that_fit() {
     let tmp = tempfile::tempdir().unwrap();
     let track = Synthetic::example().generate().unwrap();
     for (written, declared, want) in [
-        (Unit::Mm, "m", "positions 1000× too large); with --units mm it does"),
-        (Unit::Cm, "mm", "positions 10× too small); with --units cm it does"),
-        (Unit::Mm, "cm", "positions 10× too large); with --units mm it does"),
+        (
+            Unit::Mm,
+            "m",
+            "positions 1000× too large); with --units mm it does",
+        ),
+        (
+            Unit::Cm,
+            "mm",
+            "positions 10× too small); with --units cm it does",
+        ),
+        (
+            Unit::Mm,
+            "cm",
+            "positions 10× too large); with --units mm it does",
+        ),
     ] {
         let text = track
             .csv(written, "slip")

@@ -599,13 +599,21 @@ mod tests {
     fn rows_with_a_blank_cell_in_a_used_column_are_skipped_and_counted() {
         let text = format!(
             "mass A\nt,x,y\n,,\n0.5,,\n{}1.5,,\n2.5,1,\n,1,3\n",
-            rows(12, |i| format!("{},,{}", 0.6 + i as f64 * 0.01, 0.5 - i as f64 * 1e-3))
+            rows(12, |i| format!(
+                "{},,{}",
+                0.6 + i as f64 * 0.01,
+                0.5 - i as f64 * 1e-3
+            ))
         );
         let d = parse_text(&text, &ReadOptions::default()).unwrap();
         assert_eq!(d.t.len(), 12);
         assert_eq!((d.skipped_rows, d.first_skipped_line), (4, Some(4)));
         assert_eq!((d.t[0], d.y[11]), (0.6, 0.489));
-        let whole = parse_text(&format!("t,y\n{}", rows(12, |i| format!("{i},{i}"))), &ReadOptions::default()).unwrap();
+        let whole = parse_text(
+            &format!("t,y\n{}", rows(12, |i| format!("{i},{i}"))),
+            &ReadOptions::default(),
+        )
+        .unwrap();
         assert_eq!((whole.skipped_rows, whole.first_skipped_line), (0, None));
     }
 

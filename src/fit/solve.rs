@@ -7,11 +7,11 @@
 //! J        central differences in the parameters, exact in t_shift (s Δv_i) and y_off (1)
 //! centres  the given parameters, then a fixed spread around them (SPREAD, ±15 %)  spread()
 //! starts   at each centre, the best local minima of a scan of phases (also at the data's k
-//!          when k is free)
-//! race     a few LM steps from each start; the best goes on to convergence
-//! best     over the centres (in parallel), the lowest residual, continued if it has not
-//!          converged; the earliest converged centre among equals, so a fit the given start
-//!          already solves is unchanged
+//!          when k is free): 3 at the given parameters, 1 at each other centre
+//! race     a few LM steps from each start (in parallel over the centres)
+//! finish   the given start's leader and the 3 best other leaders go on to convergence
+//! best     the lowest residual, continued if it has not converged; the earliest converged
+//!          centre among equals, so a fit the given start already solves is unchanged
 //! errors   cov = s² (JᵀJ)⁻¹, s² = RSS/(n − p), J in the physical parameters at the optimum
 //! ```
 //!
@@ -54,6 +54,10 @@ pub const WORK_BUDGET: usize = 60_000_000;
 /// as far as the budget gives each this much (all of them below ~5000 rows, only the given
 /// start at 10^5 rows).
 const RUN_TRACKS: usize = 600;
+/// Phase-scan starts raced at each centre of the spread (the given start races [`STARTS`]).
+const SPREAD_STARTS: usize = 1;
+/// Runs that go on to convergence after the race: the given start's and the best others'.
+const FINALISTS: usize = 4;
 /// Relative spread of the centres around the given values (z0: of max(|z0|, d0), its scale).
 pub const SPREAD: f64 = 0.15;
 /// Two runs whose residual sums of squares agree to this relative tolerance ended in the same
@@ -107,13 +111,30 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
     let used = (tracks / RUN_TRACKS).clamp(1, centres.len());
     // One share more than the centres: for continuing the winner if it has not converged.
     let share = tracks / (used + 1);
-    let mut runs: Vec<Run> = centres[..used]
+    let mut runs: Vec<Option<Run>> = centres[..used]
         .par_iter()
-        .map(|centre| run_from(setup, centre, data_period, share))
-        .collect::<Result<Vec<Option<Run>>>>()?
-        .into_iter()
-        .flatten()
-        .collect();
+        .enumerate()
+        .map(|(i, centre)| {
+            let n_starts = if i == 0 { STARTS } else { SPREAD_STARTS };
+            race_at(setup, centre, data_period, n_starts, share)
+        })
+        .collect::<Result<_>>()?;
+    // The given start's run goes on, as it always did (its fit is unchanged when it wins), and
+    // so do the best of the others after the race (the earlier centre among equals).
+    let raced = |i: usize| runs[i].as_ref().map_or(f64::INFINITY, |r| r.best.rss);
+    let mut finalists: Vec<usize> = (1..runs.len()).collect();
+    finalists.sort_by(|&a, &b| raced(a).total_cmp(&raced(b)));
+    finalists.truncate(FINALISTS - 1);
+    finalists.push(0);
+    runs.par_iter_mut()
+        .enumerate()
+        .filter(|(i, _)| finalists.contains(i))
+        .for_each(|(_, run)| {
+            if let Some(run) = run {
+                finish(setup, run);
+            }
+        });
+    let mut runs: Vec<Run> = runs.into_iter().flatten().collect();
     let rss = runs
         .iter()
         .map(|r| r.best.rss)
@@ -205,18 +226,22 @@ struct Run {
     start: Start,
     exhausted: bool,
     starts: usize,
+    /// Model tracks left of its budget.
+    left: usize,
 }
 
-/// The race from the phase-scan starts at `centre`, with its own budget of `tracks` model
-/// tracks (independent of the other centres: the same result in parallel as in sequence);
-/// `None` when the scan finds no start.
-fn run_from(
+/// The race at `centre`: a few LM steps from each of its `n_starts` best phase-scan starts,
+/// with its own budget of `tracks` model tracks (independent of the other centres: the same
+/// result in parallel as in sequence); `None` when the scan finds no start.
+fn race_at(
     setup: &Setup,
     centre: &WoodpeckerParams,
     data_period: f64,
+    n_starts: usize,
     tracks: usize,
 ) -> Result<Option<Run>> {
-    let starts = starts(setup, centre, data_period)?;
+    let mut starts = starts(setup, centre, data_period)?;
+    starts.truncate(n_starts);
     let budget = Budget(Cell::new(tracks));
     let mut leader: Option<(Attempt, &Start)> = None;
     for start in &starts {
@@ -227,25 +252,29 @@ fn run_from(
             leader = Some((attempt, start));
         }
     }
-    let Some((leader, start)) = leader else {
-        return Ok(None);
-    };
-    let best = if leader.termination.was_successful() {
-        leader
-    } else {
-        let more = minimize(setup, leader.x.clone(), PATIENCE, &budget);
-        Attempt {
-            iterations: leader.iterations + more.iterations,
-            evaluations: leader.evaluations + more.evaluations,
-            ..more
-        }
-    };
-    Ok(Some(Run {
-        exhausted: budget.0.get() == 0 && !best.termination.was_successful(),
+    Ok(leader.map(|(best, start)| Run {
         best,
         start: *start,
+        exhausted: false,
         starts: starts.len(),
+        left: budget.0.get(),
     }))
+}
+
+/// A raced run goes on to convergence (at most [`PATIENCE`]), on what is left of its budget.
+fn finish(setup: &Setup, run: &mut Run) {
+    if run.best.termination.was_successful() {
+        return;
+    }
+    let budget = Budget(Cell::new(run.left));
+    let more = minimize(setup, run.best.x.clone(), PATIENCE, &budget);
+    run.exhausted = budget.0.get() == 0 && !more.termination.was_successful();
+    run.left = budget.0.get();
+    run.best = Attempt {
+        iterations: run.best.iterations + more.iterations,
+        evaluations: run.best.evaluations + more.evaluations,
+        ..more
+    };
 }
 
 /// The centres LM starts from: `base` itself, then each free physical parameter alone at

@@ -318,7 +318,9 @@ mod tests {
             .collect();
         let bad = Verdict::judge(&t, &y, &smooth);
         assert!(!bad.describes && bad.reasons.len() == 2, "{bad:?}");
-        assert!(bad.sentence().starts_with("the model does not describe these data: "));
+        assert!(bad
+            .sentence()
+            .starts_with("the model does not describe these data: "));
         // Noise-free residuals at rounding level are no misfit, smooth or not.
         let tiny: Vec<f64> = t.iter().map(|t| 1e-9 * (38.0 * t).sin()).collect();
         assert!(Verdict::judge(&t, &y, &tiny).describes);
