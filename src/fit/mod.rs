@@ -160,8 +160,9 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
             f.verdict.scale = Some(slip);
             Ok(f)
         }
+        // First, as the one-line message is cut to its length.
         Err(Error::NotConverged { reason }) => Err(Error::NotConverged {
-            reason: format!("{reason}; {}", slip.sentence()),
+            reason: format!("{}; {reason}", slip.brief()),
         }),
         Err(e) => Err(e),
     }

@@ -202,6 +202,21 @@ fn ten_times(factor: f64) -> String {
 }
 
 impl ScaleSlip {
+    /// The slip in a few words, for the front of a one-line error.
+    pub fn brief(&self) -> String {
+        match (self.units, self.rms_in_units) {
+            (Some(u), Some(_)) => format!(
+                "positions {} for the model; with --units {} it fits",
+                ten_times(self.factor),
+                u.symbol()
+            ),
+            _ => format!(
+                "positions {} for the model: check their unit",
+                ten_times(self.factor)
+            ),
+        }
+    }
+
     /// The slip in words.
     pub fn sentence(&self) -> String {
         let how = if self.factor > 1.0 {
