@@ -134,7 +134,8 @@ fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()>
 }
 
 /// `stickslip fit`: read, fit, write the files, print; a fit that did not converge is still
-/// written and printed (flagged), then reported as an error (exit 1).
+/// written and printed (flagged), then reported as an error (exit 1); one that converged to a
+/// minimum that does not describe the data likewise, as a negative verdict (exit 3).
 fn fit(args: &FitArgs) -> Result<()> {
     let common = &args.model.args.common;
     reject_flag("fit", "--periods", common.periods.is_some())?;
@@ -160,6 +161,16 @@ fn fit(args: &FitArgs) -> Result<()> {
             reason: format!(
                 "{} (results in {} are flagged \"converged\": false)",
                 fit.termination,
+                shown(&args.out)
+            ),
+        }
+        .into());
+    }
+    if !fit.verdict.describes {
+        return Err(Error::Verdict {
+            reason: format!(
+                "{} (results in {}, flagged)",
+                fit.verdict.brief(),
                 shown(&args.out)
             ),
         }
