@@ -42,7 +42,11 @@ static HINTS: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
 
 /// The hints gathered so far (one line each), emptied.
 pub fn take_hints() -> Vec<String> {
-    std::mem::take(&mut *HINTS.lock().unwrap_or_else(std::sync::PoisonError::into_inner))
+    std::mem::take(
+        &mut *HINTS
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner),
+    )
 }
 
 /// The model's parameters and the periods to integrate: the defaults, overridden by the
@@ -76,7 +80,10 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     }
     // A value that looks typed in mm or g runs as given, with a word on stderr once the command
     // has succeeded (a failing one prints its one-line error only).
-    let hints = args.numbers.iter().filter_map(|&(k, v)| model.unit_hint(k, v));
+    let hints = args
+        .numbers
+        .iter()
+        .filter_map(|&(k, v)| model.unit_hint(k, v));
     HINTS
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)

@@ -849,7 +849,7 @@ mod tests {
         assert!(right.compared > 100);
         let wrong = check(r"2 g T \varphi^3 \Gamma", "v_avg", Some("slip_stick"));
         assert!(!wrong.agrees && wrong.disagree == wrong.compared);
-        assert!((wrong.max_rel_error.unwrap() - 0.5).abs() < 1e-6);
+        assert!((wrong.max_rel_error.unwrap() - 0.5).abs() < 1e-9);
         let everywhere = check("g*T*phi^3*Gamma", "v_avg", None);
         assert_eq!(everywhere.verdict, Verdict::Disagrees);
         for row in &everywhere.by_regime {

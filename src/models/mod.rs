@@ -189,20 +189,22 @@ impl Model {
         fn hint<M: Physics>(_: &M, key: &str, value: f64) -> Option<String> {
             let spec = M::PARAMS.iter().find(|s| s.key == key)?;
             let (unit, factor) = spec.display;
-            (factor == 1e3 && matches!(unit, "mm" | "g") && (1.0..1e4).contains(&value)).then(|| {
-                format!(
-                    "hint: {} = {} {} is large for a lab set-up; --{} takes {}: for {} {unit} \
+            (factor == 1e3 && matches!(unit, "mm" | "g") && (1.0..1e4).contains(&value)).then(
+                || {
+                    format!(
+                        "hint: {} = {} {} is large for a lab set-up; --{} takes {}: for {} {unit} \
                      give --{} {}",
-                    spec.symbol,
-                    crate::error::short(value),
-                    spec.unit,
-                    spec.flag(),
-                    spec.unit,
-                    crate::error::short(value),
-                    spec.flag(),
-                    crate::error::short(value / factor)
-                )
-            })
+                        spec.symbol,
+                        crate::error::short(value),
+                        spec.unit,
+                        spec.flag(),
+                        spec.unit,
+                        crate::error::short(value),
+                        spec.flag(),
+                        crate::error::short(value / factor)
+                    )
+                },
+            )
         }
         with_model!(self, p => hint(p, key, value))
     }
