@@ -19,6 +19,7 @@ use stickslip::error::{excerpt, Error};
 const MESSAGE_CHARS: usize = 300;
 
 fn main() -> ExitCode {
+    ignore_file_size_signal();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
         Err(e) if e.use_stderr() => {
@@ -41,6 +42,16 @@ fn main() -> ExitCode {
             // The library's errors decide (Error::exit_code); the others are usage refused here.
             ExitCode::from(e.downcast_ref::<Error>().map_or(2, Error::exit_code))
         }
+    }
+}
+
+/// A write beyond the file-size limit (`ulimit -f`) fails with EFBIG, reported as "cannot
+/// write", instead of killing the process with SIGXFSZ mid-output.
+fn ignore_file_size_signal() {
+    #[cfg(unix)]
+    // SAFETY: setting the disposition of one signal to SIG_IGN before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
     }
 }
 

@@ -14,6 +14,7 @@ pub mod math;
 pub mod render;
 pub mod scene;
 pub mod sketch;
+pub mod lock;
 pub mod writer;
 
 pub use render::{render, render_with, Format, Material};
