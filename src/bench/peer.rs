@@ -668,7 +668,7 @@ json.dump(out, sys.stdout)
 ";
         let mut child = Command::new("python3")
             .args(["-c", PROGRAM])
-            .arg(&script)
+            .arg(&script.path)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .spawn()
