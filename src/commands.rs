@@ -338,6 +338,21 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
         (None, Some(formula), Some(quantity)) => vec![(formula.clone(), quantity.clone())],
         _ => anyhow::bail!("give a FORMULA and --quantity, or --formulas FILE"),
     };
+    // Every table draws --samples sets: the product is the work, bounded like one formula's.
+    let work = pairs.len().saturating_mul(args.samples);
+    if pairs.len() > 1 && work > crate::check::MAX_SAMPLES {
+        return Err(invalid(
+            "samples",
+            args.samples,
+            format!(
+                "[[check]] tables of --formulas x --samples <= {} (here {} x {})",
+                crate::check::MAX_SAMPLES,
+                pairs.len(),
+                args.samples
+            ),
+        )
+        .into());
+    }
     let reports = pairs
         .into_iter()
         .map(|(formula, quantity)| {
