@@ -411,7 +411,9 @@ fn refuse_overwriting_inputs(
             if std::fs::metadata(&target).is_ok_and(|m| same_file(&m, &input_meta)) {
                 return Err(Error::Output {
                     path: target.display().to_string(),
-                    reason: format!("is the input file {flag} of this command: choose another --out"),
+                    reason: format!(
+                        "is the input file {flag} of this command: choose another --out"
+                    ),
                 }
                 .into());
             }

@@ -22,6 +22,24 @@ fn main() -> ExitCode {
     ignore_file_size_signal();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // `stickslip`, `stickslip eval`: clap prints the help, with no "error:" line.
+            let usage = e.render().to_string();
+            let usage = usage
+                .lines()
+                .find_map(|l| l.trim().strip_prefix("Usage:"))
+                .unwrap_or(" stickslip <COMMAND>")
+                .trim()
+                .to_string();
+            eprintln!(
+                "{}",
+                excerpt(
+                    &format!("error: a subcommand is required: {usage} (see --help)"),
+                    MESSAGE_CHARS
+                )
+            );
+            return ExitCode::from(2);
+        }
         Err(e) if e.use_stderr() => {
             eprintln!(
                 "{}",

@@ -146,7 +146,8 @@ impl Tracked {
 
 /// Reads and checks a tracked-positions file.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Tracked> {
-    let bytes = crate::params::read_input(path, "tracked-data").map_err(|e| data_error(path, None, e))?;
+    let bytes =
+        crate::params::read_input(path, "tracked-data").map_err(|e| data_error(path, None, e))?;
     // Lossy: a Latin-1 "°" or "µ" in a header must not stop a file whose numbers are fine.
     parse(&String::from_utf8_lossy(&bytes), path, opts)
 }

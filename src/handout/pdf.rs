@@ -138,7 +138,8 @@ pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
         .map_err(|e| fail(format!("temporary folder: {e}")))?;
     // Locked while in use: a run killed mid-print leaves the folder (and Chromium's profile,
     // some MB) unlocked, and the next `--pdf` removes it.
-    let work_lock = fs::File::open(work.path()).map_err(|e| fail(format!("temporary folder: {e}")))?;
+    let work_lock =
+        fs::File::open(work.path()).map_err(|e| fail(format!("temporary folder: {e}")))?;
     crate::report::lock::hold(&work_lock);
     let page = work.path().join(name);
     let pdf = work.path().join("out.pdf");

@@ -10,11 +10,11 @@ pub mod classroom;
 pub mod context;
 pub mod explorer;
 pub mod figures;
+pub mod lock;
 pub mod math;
 pub mod render;
 pub mod scene;
 pub mod sketch;
-pub mod lock;
 pub mod writer;
 
 pub use render::{render, render_with, Format, Material};

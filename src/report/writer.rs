@@ -244,9 +244,23 @@ fn commit(root: &Path, journal: &Journal) -> io::Result<()> {
     sync_dir(root)
 }
 
+/// Fault injection for the crash tests (tests/faults.rs): with this variable set to n, the
+/// process aborts (no unwinding, no cleanup, like `kill -9`) after the n-th rename of an
+/// install; unset, nothing happens.
+const CRASH_ENV: &str = "STICKSLIP_CRASH_AFTER_RENAMES";
+
+fn crash_point(renamed: usize) {
+    if let Some(n) = std::env::var_os(CRASH_ENV) {
+        if n.to_str().and_then(|n| n.parse::<usize>().ok()) == Some(renamed) {
+            std::process::abort();
+        }
+    }
+}
+
 /// Renames every staged file of `journal` still in `root` into place (idempotent: a file
 /// already installed has left `new/`). `keep` keeps each replaced file in `old/` for an undo.
 fn install(out: &Path, root: &Path, journal: &Journal, keep: bool) -> Result<()> {
+    crash_point(0);
     for (i, (rel, _)) in journal.files.iter().enumerate() {
         let staged = root.join(NEW).join(rel);
         if entry(&staged)?.is_none() {
@@ -268,6 +282,7 @@ fn install(out: &Path, root: &Path, journal: &Journal, keep: bool) -> Result<()>
                 .map_err(|e| output_error(&target, e))?;
         }
         fs::rename(&staged, &target).map_err(|e| output_error(&target, e))?;
+        crash_point(i + 1);
     }
     Ok(())
 }
