@@ -276,10 +276,11 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     if !missing.is_empty() {
         // A scenario file's own words, or a claim worded for parameters the catalogue has not met.
         eprintln!(
-            "note: {} phrase(s) have no {} translation and stay in English, e.g. {:?}",
+            "note: {} phrase(s) have no {} translation and stay in English, e.g. \"{}\"",
             missing.len(),
             args.lang.code(),
-            missing[0]
+            // A scenario's title can be any length: one bounded line on the terminal.
+            crate::error::excerpt(&missing[0], 80)
         );
     }
     print_stdout(&format!(

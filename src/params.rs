@@ -38,10 +38,13 @@ pub fn one_line(text: &str) -> String {
         .join(" ")
 }
 
-/// `text` without control characters other than line breaks and tabs.
+/// `text` without control characters other than line breaks and tabs, and without the
+/// bidirectional overrides and isolates (U+202A–U+202E, U+2066–U+2069), which reorder what a
+/// page or a terminal shows (a title that reads differently from its bytes).
 fn without_controls(text: &str) -> String {
     text.chars()
         .filter(|c| !c.is_control() || matches!(c, '\n' | '\t'))
+        .filter(|c| !matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}'))
         .collect()
 }
 

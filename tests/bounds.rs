@@ -152,3 +152,50 @@ fn fit_does_not_overwrite_its_own_input() {
     );
     assert_eq!(std::fs::read(&data).unwrap(), before);
 }
+
+#[test]
+fn bidi_overrides_of_a_title_do_not_reach_the_page() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenario = dir.path().join("bidi.toml");
+    std::fs::write(
+        &scenario,
+        "model = \"pulled-mass\"\ntitle = \"abc\u{202e}fdp.exe\u{2066}x\u{2069}\"\n",
+    )
+    .unwrap();
+    let out = dir.path().join("out");
+    let done = run(&[
+        "report",
+        scenario.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(done.status.code(), Some(0));
+    for e in std::fs::read_dir(&out).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_file() {
+            let text = String::from_utf8_lossy(&std::fs::read(&p).unwrap()).into_owned();
+            assert!(
+                !text.contains(['\u{202e}', '\u{2066}', '\u{2069}']),
+                "{}",
+                p.display()
+            );
+        }
+    }
+}
+
+#[test]
+fn duplicate_column_names_in_tracked_data_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("dup.csv");
+    std::fs::write(&data, "t,y,Y\n0,1,2\n0.1,1,2\n0.2,1,2\n").unwrap();
+    let out = dir.path().join("fit");
+    refused(
+        &[
+            "fit",
+            data.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &["columns 2 and 3", "line 1"],
+    );
+}

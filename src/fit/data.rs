@@ -191,6 +191,24 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
         .iter()
         .find(|r| is_units_row(&r.cells));
     let names: Vec<&str> = header.cells.iter().map(String::as_str).collect();
+    // Two columns of one name: a name on the command line could not tell which is meant.
+    for (j, name) in names.iter().enumerate() {
+        let key = name.trim().to_lowercase();
+        if let Some(i) = names[..j]
+            .iter()
+            .position(|n| !key.is_empty() && n.trim().to_lowercase() == key)
+        {
+            return Err(err(
+                Some(header.line),
+                format!(
+                    "columns {} and {} are both named {}: rename one",
+                    i + 1,
+                    j + 1,
+                    crate::error::excerpt(name.trim(), 40)
+                ),
+            ));
+        }
+    }
 
     let (time_col, position_col) = choose_columns(&names, opts.columns.as_ref())
         .map_err(|reason| err(Some(header.line), reason))?;

@@ -84,9 +84,12 @@ pub const HEADLESS_FLAGS: &[&str] = &[
 
 /// Prefix of the private temporary folder of one print (page, profile, PDF, log).
 const WORK_PREFIX: &str = "stickslip-pdf-";
+/// An unlocked work folder untouched for this long is a killed print's.
+const STALE_AFTER: Duration = Duration::from_secs(120);
 
 /// Removes the work folders of earlier prints that were killed: folders of this user named
-/// `stickslip-pdf-*` in `tmp` whose lock no running print holds.
+/// `stickslip-pdf-*` in `tmp`, untouched for [`STALE_AFTER`], whose lock no running print
+/// holds.
 fn remove_stale_work_folders(tmp: &Path) {
     let Ok(entries) = fs::read_dir(tmp) else {
         return;
@@ -99,7 +102,13 @@ fn remove_stale_work_folders(tmp: &Path) {
         let Ok(meta) = fs::symlink_metadata(&path) else {
             continue;
         };
-        if !meta.is_dir() || !owned_by_me(&meta) {
+        // A folder made a moment ago may be a running print's that has not locked it yet.
+        let settled = meta
+            .modified()
+            .ok()
+            .and_then(|m| m.elapsed().ok())
+            .is_some_and(|age| age > STALE_AFTER);
+        if !meta.is_dir() || !owned_by_me(&meta) || !settled {
             continue;
         }
         let Ok(dir) = fs::File::open(&path) else {

@@ -190,6 +190,7 @@ fn stage_and_install(
 ) -> Result<Vec<PathBuf>> {
     let staging = tempfile::Builder::new()
         .prefix(STAGING_PREFIX)
+        .rand_bytes(6)
         .tempdir_in(out)
         .map_err(|e| output_error(out, e))?;
     let root = staging.path();
@@ -316,8 +317,11 @@ fn recover_all(out: &Path) -> Result<()> {
     for e in entries {
         let e = e.map_err(|e| output_error(out, e))?;
         let name = e.file_name();
-        let is_staging = name.to_string_lossy().starts_with(STAGING_PREFIX)
-            && e.file_type().is_ok_and(|t| t.is_dir());
+        // `.stickslip-` and the six random letters of tempfile: no other folder is touched.
+        let is_staging = name.to_str().is_some_and(|n| {
+            n.strip_prefix(STAGING_PREFIX)
+                .is_some_and(|r| r.len() == 6 && r.bytes().all(|b| b.is_ascii_alphanumeric()))
+        }) && e.file_type().is_ok_and(|t| t.is_dir());
         if is_staging {
             recover_one(out, &e.path())?;
         }
@@ -566,5 +570,88 @@ mod tests {
             assert!(err.to_string().starts_with("cannot write"), "{err}");
         }
         assert!(tree(dir.path()).is_empty());
+    }
+
+    /// A staging folder as a crash leaves it: `new/` with the files not yet installed, the
+    /// journal when committed, the rollback marker when undoing.
+    fn crashed(out: &Path, journal: Option<&Journal>, staged: &[&str], rollback: bool) -> PathBuf {
+        let root = out.join(format!("{STAGING_PREFIX}crash0"));
+        fs::create_dir_all(root.join(NEW)).unwrap();
+        fs::create_dir_all(root.join(OLD)).unwrap();
+        for name in staged {
+            fs::write(root.join(NEW).join(name), format!("new {name}")).unwrap();
+        }
+        if let Some(j) = journal {
+            fs::write(root.join(JOURNAL), serde_json::to_vec(j).unwrap()).unwrap();
+        }
+        if rollback {
+            fs::write(root.join(ROLLBACK), b"").unwrap();
+        }
+        root
+    }
+
+    fn journal(names: &[(&str, bool)]) -> Journal {
+        Journal {
+            files: names.iter().map(|(n, e)| (n.to_string(), *e)).collect(),
+            made: Vec::new(),
+        }
+    }
+
+    #[test]
+    fn a_committed_install_cut_short_is_finished_by_the_next_run() {
+        let dir = tempfile::tempdir().unwrap();
+        // a.html was installed before the crash, b.html and c.html were not.
+        fs::write(dir.path().join("a.html"), b"new a.html").unwrap();
+        fs::write(dir.path().join("b.html"), b"old b").unwrap();
+        fs::write(dir.path().join("mine.txt"), b"mine").unwrap();
+        let j = journal(&[("a.html", true), ("b.html", true), ("c.html", false)]);
+        crashed(dir.path(), Some(&j), &["b.html", "c.html"], false);
+        write_all(dir.path(), &files(&["d.html"])).unwrap();
+        assert_eq!(
+            tree(dir.path()),
+            [
+                ("a.html".to_string(), "new a.html".to_string()),
+                ("b.html".to_string(), "new b.html".to_string()),
+                ("c.html".to_string(), "new c.html".to_string()),
+                ("d.html".to_string(), "new d.html".to_string()),
+                ("mine.txt".to_string(), "mine".to_string()),
+            ]
+        );
+    }
+
+    #[test]
+    fn an_uncommitted_staging_folder_is_removed_and_an_undo_is_finished() {
+        let dir = tempfile::tempdir().unwrap();
+        fs::write(dir.path().join("a.html"), b"old a").unwrap();
+        crashed(dir.path(), None, &["a.html"], false);
+        recover(dir.path()).unwrap();
+        assert_eq!(
+            tree(dir.path()),
+            [("a.html".to_string(), "old a".to_string())]
+        );
+        // An undo cut short: a.html was restored already, b.html (new) is still installed.
+        fs::write(dir.path().join("b.html"), b"new b.html").unwrap();
+        let j = journal(&[("a.html", true), ("b.html", false)]);
+        crashed(dir.path(), Some(&j), &[], true);
+        recover(dir.path()).unwrap();
+        assert_eq!(
+            tree(dir.path()),
+            [("a.html".to_string(), "old a".to_string())]
+        );
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn nothing_is_written_through_a_link_below_the_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        let out = dir.path().join("out");
+        let outside = dir.path().join("outside");
+        fs::create_dir_all(&out).unwrap();
+        fs::create_dir_all(&outside).unwrap();
+        std::os::unix::fs::symlink("../outside", out.join("figures")).unwrap();
+        let err = write_all(&out, &files(&["a.html", "figures/b.svg"])).unwrap_err();
+        assert!(err.to_string().contains("symbolic link"), "{err}");
+        assert!(tree(&outside).is_empty());
+        assert!(!out.join("a.html").exists());
     }
 }
