@@ -19,7 +19,8 @@ fn request(case: Model, formula: &str, quantity: &str) -> Request {
     Request {
         case,
         formula: formula.to_string(),
-        quantity: quantity.to_string(),
+        quantity: Some(quantity.to_string()),
+        regime: None,
         samples: DEFAULT_SAMPLES,
         seed: 1,
     }

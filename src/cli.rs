@@ -201,21 +201,29 @@ pub struct SweepArgs {
 /// The formula and sample of `stickslip check`.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
-    /// The formula, plain (`g*T*phi^3*Gamma`) or LaTeX (`g T \varphi^3 \Gamma`), in the
-    /// model's parameters and derived symbols (an unknown symbol lists the known ones).
+    /// The formula, plain (`g*T*phi^3*Gamma`), LaTeX (`g T \varphi^3 \Gamma`) or pasted
+    /// Unicode (`g T φ³ Γ`), in the model's parameters and derived symbols (an unknown symbol
+    /// names the nearest known ones); optionally with the quantity on the left (`v_avg = …`).
+    /// Precedence is the mathematical one (−x² = −(x²)); the output starts with how it was
+    /// read. Exit 0 when it agrees on every compared set, 3 when it disagrees or nothing could
+    /// be compared, 2 on bad input.
     #[arg(
         value_name = "FORMULA",
         allow_hyphen_values = true,
-        required_unless_present_any = ["formulas", "symbols"],
-        requires = "quantity"
+        required_unless_present_any = ["formulas", "symbols"]
     )]
     pub formula: Option<String>,
     /// The measured quantity it gives: a §7 closed-form key (t_slip, t_stick, v_max, v_avg,
     /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker), or `sticks` for a
-    /// condition.
+    /// condition; not needed when the formula's left side names it.
     #[arg(long, value_name = "NAME")]
     pub quantity: Option<String>,
-    /// Several formulas from a TOML file: `[[check]]` tables with `formula` and `quantity`.
+    /// Only sets of this closed-form regime (the regime a formula is stated for, e.g.
+    /// slip_stick for the paper's (18) and (27)) [default: every regime].
+    #[arg(long, value_name = "ID")]
+    pub regime: Option<String>,
+    /// Several formulas from a TOML file: `[[check]]` tables with `formula`, `quantity` and
+    /// optionally `regime`.
     #[arg(long, value_name = "FILE", conflicts_with_all = ["formula", "quantity"])]
     pub formulas: Option<PathBuf>,
     /// Parameter sets drawn (1 to 100000).

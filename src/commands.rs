@@ -65,6 +65,10 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     };
     for &(key, value) in &args.numbers {
         model.set(key, value);
+        // A value that looks typed in mm or g runs as given, with a word on stderr.
+        if let Some(hint) = model.unit_hint(key, value) {
+            eprintln!("{hint}");
+        }
     }
     for (key, value) in &args.choices {
         model.set_choice(key, value);
@@ -334,33 +338,38 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     if let Some(out) = &args.out {
         report::lock::claim_if_exists(out)?;
     }
-    let pairs = match (&args.formulas, &args.formula, &args.quantity) {
-        (Some(file), _, _) => crate::check::read_formulas(file)?,
-        (None, Some(formula), Some(quantity)) => vec![(formula.clone(), quantity.clone())],
-        _ => anyhow::bail!("give a FORMULA and --quantity, or --formulas FILE"),
+    let entries = match (&args.formulas, &args.formula) {
+        (Some(file), _) => crate::check::read_formulas(file)?,
+        (None, Some(formula)) => vec![crate::check::Entry {
+            formula: formula.clone(),
+            quantity: args.quantity.clone(),
+            regime: args.regime.clone(),
+        }],
+        _ => anyhow::bail!("give a FORMULA (and --quantity NAME), or --formulas FILE"),
     };
     // Every table draws --samples sets: the product is the work, bounded like one formula's.
-    let work = pairs.len().saturating_mul(args.samples);
-    if pairs.len() > 1 && work > crate::check::MAX_SAMPLES {
+    let work = entries.len().saturating_mul(args.samples);
+    if entries.len() > 1 && work > crate::check::MAX_SAMPLES {
         return Err(invalid(
             "samples",
             args.samples,
             format!(
                 "[[check]] tables of --formulas x --samples <= {} (here {} x {})",
                 crate::check::MAX_SAMPLES,
-                pairs.len(),
+                entries.len(),
                 args.samples
             ),
         )
         .into());
     }
-    let reports = pairs
+    let reports = entries
         .into_iter()
-        .map(|(formula, quantity)| {
+        .map(|e| {
             crate::check::run(&crate::check::Request {
                 case,
-                formula,
-                quantity,
+                formula: e.formula,
+                quantity: e.quantity,
+                regime: e.regime.or_else(|| args.regime.clone()),
                 samples: args.samples,
                 seed: args.seed,
             })
@@ -393,7 +402,12 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
             .map(crate::check::text)
             .collect::<Vec<_>>()
             .join("\n"),
-    })
+    })?;
+    // Reported in full above; the exit code (3) lets a script or CI job act on the verdict.
+    match reports.iter().find_map(crate::check::Report::negative) {
+        Some(verdict) => Err(verdict.into()),
+        None => Ok(()),
+    }
 }
 
 /// An output that would replace one of the command's own input files is refused (exit 2)

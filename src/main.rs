@@ -55,10 +55,13 @@ fn main() -> ExitCode {
     match run(cli) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            // One line, control bytes escaped, bounded (the library's messages already are).
-            eprintln!("{}", excerpt(&format!("error: {e:#}"), MESSAGE_CHARS));
             // The library's errors decide (Error::exit_code); the others are usage refused here.
-            ExitCode::from(e.downcast_ref::<Error>().map_or(2, Error::exit_code))
+            let code = e.downcast_ref::<Error>().map_or(2, Error::exit_code);
+            // A negative verdict (3) is the result of a complete run, not a failure.
+            let label = if code == 3 { "verdict" } else { "error" };
+            // One line, control bytes escaped, bounded (the library's messages already are).
+            eprintln!("{}", excerpt(&format!("{label}: {e:#}"), MESSAGE_CHARS));
+            ExitCode::from(code)
         }
     }
 }

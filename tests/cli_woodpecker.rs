@@ -273,3 +273,25 @@ fn claims_are_computed_with_verdicts_and_numbers() {
         "{text}"
     );
 }
+
+/// A teacher thinking in millimetres (`--z0 7`) gets the run as typed and a one-line hint with
+/// the value in metres; a value in range gets none.
+#[test]
+fn a_length_typed_in_millimetres_gets_a_hint() {
+    let out = stickslip()
+        .args(["eval", "woodpecker", "--z0", "7"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.starts_with("hint: z0 = 7 m is large") && stderr.contains("--z0 0.007"),
+        "{stderr}"
+    );
+    let out = stickslip()
+        .args(["eval", "woodpecker", "--z0", "0.007"])
+        .output()
+        .unwrap();
+    assert!(out.stderr.is_empty());
+}

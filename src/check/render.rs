@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{Report, Sample, STICKS};
+use super::{Report, Sample, Verdict, STICKS};
 use crate::error::{excerpt, Error, Result};
 use crate::models::{with_model, Model, Physics};
 use crate::output::format::people;
@@ -35,58 +35,63 @@ fn value(r: &Report, v: Option<f64>, digits: usize) -> String {
 }
 
 fn verdict(r: &Report) -> &'static str {
-    if r.compared == 0 {
-        "NOT COMPARED"
-    } else if r.agrees {
-        "AGREES"
-    } else {
-        "DISAGREES"
+    match r.verdict {
+        Verdict::Agrees => "AGREES",
+        Verdict::Disagrees => "DISAGREES",
+        Verdict::NotCompared => "NOT COMPARED",
     }
 }
 
 fn summary(r: &Report) -> String {
     let mut s = String::new();
-    if !r.unmeasured_regimes.is_empty() {
-        let words: Vec<&str> = r
-            .unmeasured_regimes
-            .iter()
-            .map(|id| regime_words(id))
-            .collect();
-        let _ = write!(
-            s,
-            "The exact integration does not measure this quantity in: {}; the sets are drawn \
-             from the other regimes. ",
-            words.join("; ")
-        );
+    if let Some(regime) = &r.regime {
+        let _ = write!(s, "Only sets in the regime: {}. ", regime_words(regime));
     }
     let _ = write!(
         s,
-        "Of {} sets, {} were compared ({} where the formula is undefined, {} where the exact \
-         integration does not measure the quantity); {} disagree.",
-        r.samples, r.compared, r.undefined, r.not_measured, r.disagree
+        "Of {} sets ({} packed against the regime boundaries), {} were compared; {} disagree.",
+        r.samples, r.sample_near, r.compared, r.disagree
     );
     if r.compared > 0 {
         let _ = write!(
             s,
-            " Relative error: largest {}, median {}; each set's tolerance is the tool's own \
-             for this quantity ({}).",
+            " Relative error (on the quantity's own scale): largest {}, median {}; each set's \
+             tolerance is the tool's own for this quantity there ({} at the given set).",
             rel(r.max_rel_error),
             rel(r.median_rel_error),
             people(Some(r.given.tolerance), 1)
         );
+    }
+    if !r.skipped.is_empty() {
+        let reasons: Vec<String> = r
+            .skipped
+            .iter()
+            .map(|k| format!("{} ({})", k.reason, k.sets))
+            .collect();
+        let _ = write!(s, " Not compared: {}.", reasons.join("; "));
     }
     s
 }
 
 fn given(r: &Report) -> String {
     let g = &r.given;
-    format!(
-        "{}: formula {}, exact integration {}, relative error {}.",
+    let outcome = match (g.agrees, &g.skipped) {
+        (Some(true), _) => "agrees",
+        (Some(false), _) => "DISAGREES",
+        (None, _) => "not compared",
+    };
+    let mut s = format!(
+        "{}: formula {}, exact integration {}, relative error {}: {outcome}",
         regime_words(g.regime),
         value(r, g.formula, 10),
         value(r, g.numeric, 10),
         rel(g.rel_error)
-    )
+    );
+    if let Some(why) = &g.skipped {
+        let _ = write!(s, " ({why})");
+    }
+    s.push('.');
+    s
 }
 
 /// The report for the terminal.
@@ -94,26 +99,30 @@ pub fn text(r: &Report) -> String {
     let mut o = String::new();
     let _ = writeln!(
         o,
-        "stickslip check {}: {} = {}",
-        r.model,
+        "read as: {} = {}   (LaTeX: {})",
         r.quantity,
+        excerpt(&r.read_as.plain, 200),
+        excerpt(&r.read_as.latex, 200)
+    );
+    let _ = writeln!(
+        o,
+        "stickslip check {}: {}",
+        r.model,
         excerpt(&r.formula, 200)
     );
-    if r.expression != r.formula {
-        let _ = writeln!(o, "read as:  {}", excerpt(&r.expression, 200));
-    }
     let _ = writeln!(o, "given parameters, {}", given(r));
     let _ = writeln!(o, "sample (seed {}): {}", r.seed, summary(r));
     let _ = writeln!(o, "{}", verdict(r));
     let _ = writeln!(
         o,
-        "\n{:>9} {:>9} {:>10}  regime",
-        "compared", "disagree", "max error"
+        "\n{:>6} {:>9} {:>9} {:>10}  regime",
+        "sets", "compared", "disagree", "max error"
     );
     for row in &r.by_regime {
         let _ = writeln!(
             o,
-            "{:>9} {:>9} {:>10}  {}",
+            "{:>6} {:>9} {:>9} {:>10}  {}",
+            row.sets,
             row.compared,
             row.disagree,
             rel(row.max_rel_error),
@@ -126,23 +135,40 @@ pub fn text(r: &Report) -> String {
             "\nworst sets (formula, exact integration, relative error; parameters):"
         );
         for s in &r.worst {
-            let params = serde_json::to_string(&s.params).unwrap_or_default();
-            let _ = writeln!(
-                o,
-                "  {} vs {}, {}: {}",
-                value(r, s.formula, 8),
-                value(r, s.numeric, 8),
-                rel(s.rel_error),
-                params
-            );
+            let _ = writeln!(o, "  {}", sample_line(r, s));
+        }
+    }
+    if !r.nearest_counterexamples.is_empty() {
+        let _ = writeln!(o, "\ncounterexamples nearest each regime boundary:");
+        for s in &r.nearest_counterexamples {
+            let _ = writeln!(o, "  {}", sample_line(r, s));
         }
     }
     o
 }
 
+/// One set on one line: the two values, the error, the boundary it was drawn against, the
+/// parameters.
+fn sample_line(r: &Report, s: &Sample) -> String {
+    let params = serde_json::to_string(&s.params).unwrap_or_default();
+    let near = s
+        .near
+        .as_ref()
+        .map(|n| format!(" [{} × (1 {:+.1e})]", n.boundary, n.offset))
+        .unwrap_or_default();
+    format!(
+        "{} vs {}, {}{near}: {}",
+        value(r, s.formula, 8),
+        value(r, s.numeric, 8),
+        rel(s.rel_error),
+        params
+    )
+}
+
 #[derive(Serialize)]
 struct RowCtx {
     words: &'static str,
+    sets: usize,
     compared: usize,
     disagree: usize,
     max: String,
@@ -154,6 +180,7 @@ struct WorstCtx {
     numeric: String,
     rel: String,
     regime: &'static str,
+    near: String,
     params: Vec<String>,
 }
 
@@ -213,12 +240,7 @@ pub fn render(r: &Report) -> Result<Vec<OutFile>> {
         named.words.clone()
     };
     ctx.insert("quantity_words", &words);
-    let formula = if super::latex::is_latex(&r.formula) {
-        r.formula.clone()
-    } else {
-        format!(r"\mathtt{{{}}}", r.expression.replace('_', r"\_"))
-    };
-    ctx.insert("formula", &math(&formula));
+    ctx.insert("formula", &math(&r.read_as.latex));
     ctx.insert("verdict", verdict(r));
     ctx.insert("summary", &summary(r));
     ctx.insert("given", &given(r));
@@ -227,6 +249,7 @@ pub fn render(r: &Report) -> Result<Vec<OutFile>> {
         .iter()
         .map(|row| RowCtx {
             words: regime_words(row.regime),
+            sets: row.sets,
             compared: row.compared,
             disagree: row.disagree,
             max: rel(row.max_rel_error),
@@ -236,7 +259,11 @@ pub fn render(r: &Report) -> Result<Vec<OutFile>> {
     let worst: Vec<WorstCtx> = if r.agrees {
         Vec::new()
     } else {
-        r.worst.iter().map(|s| worst_ctx(r, s)).collect()
+        r.nearest_counterexamples
+            .iter()
+            .chain(&r.worst)
+            .map(|s| worst_ctx(r, s))
+            .collect()
     };
     ctx.insert(
         "param_heads",
@@ -262,6 +289,11 @@ fn worst_ctx(r: &Report, s: &Sample) -> WorstCtx {
         numeric: value(r, s.numeric, 6),
         rel: rel(s.rel_error),
         regime: regime_words(s.regime),
+        near: s
+            .near
+            .as_ref()
+            .map(|n| format!("{} × (1 {:+.1e})", n.boundary, n.offset))
+            .unwrap_or_default(),
         params: params(&s.params).into_iter().map(|p| p.1).collect(),
     }
 }

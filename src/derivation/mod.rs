@@ -75,10 +75,6 @@ pub struct Step {
     pub symbol: &'static str,
     /// The paper's equation number(s), as in the registry.
     pub equation: &'static str,
-    /// LaTeX: the closed form in symbols (the right-hand side: `symbol = formula`).
-    pub formula: String,
-    /// LaTeX: the same with numbers (SI) substituted.
-    pub substituted: String,
     /// SI result; `None` when the form does not apply for these params.
     pub value: Option<f64>,
     /// SI unit, "" when dimensionless.
@@ -112,13 +108,22 @@ impl Step {
             key,
             symbol,
             equation,
-            formula: expr.symbols(),
-            substituted: expr.numbers(),
             value: value.filter(|_| reason.is_none()),
             unit,
             reason,
             expr,
         }
+    }
+
+    /// LaTeX: the closed form in symbols (the right-hand side: `symbol = formula`). Rendered on
+    /// demand, so that a caller that needs only values (`stickslip check`) renders nothing.
+    pub fn formula(&self) -> String {
+        self.expr.symbols()
+    }
+
+    /// LaTeX: the same with numbers (SI) substituted.
+    pub fn substituted(&self) -> String {
+        self.expr.numbers()
     }
 
     /// The result in LaTeX, to 4 significant figures with its unit, e.g. `0.09035\,\mathrm{s}`;
@@ -134,7 +139,12 @@ impl Step {
     /// The whole worked line in LaTeX: `symbol = formula = substituted = result`, or without the
     /// result when the form does not apply.
     pub fn worked_tex(&self) -> String {
-        let mut line = format!("{} = {} = {}", self.symbol, self.formula, self.substituted);
+        let mut line = format!(
+            "{} = {} = {}",
+            self.symbol,
+            self.formula(),
+            self.substituted()
+        );
         if let Some(result) = self.result_tex() {
             line.push_str(" = ");
             line.push_str(&result);

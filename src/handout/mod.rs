@@ -260,10 +260,10 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
         }
         // "symbol = formula", "= substituted", "= result": a long line wraps between pieces.
         let mut pieces = match note {
-            Note::Numbers => vec![format!("{} = {}", step.symbol, step.substituted)],
+            Note::Numbers => vec![format!("{} = {}", step.symbol, step.substituted())],
             _ => vec![
-                format!("{} = {}", step.symbol, step.formula),
-                format!("= {}", step.substituted),
+                format!("{} = {}", step.symbol, step.formula()),
+                format!("= {}", step.substituted()),
             ],
         };
         pieces.extend(step.result_tex().map(|r| format!("= {r}")));

@@ -182,6 +182,31 @@ impl Model {
         with_model!(self, p => set(p, key, value))
     }
 
+    /// A one-line hint when parameter `key` = `value` (SI) looks typed in the unit people think
+    /// in rather than SI: a length or mass whose usual unit is mm or g given as 1 m or 1 kg or
+    /// more (`--z0 7` meant as 7 mm). `None` when nothing looks amiss.
+    pub fn unit_hint(&self, key: &str, value: f64) -> Option<String> {
+        fn hint<M: Physics>(_: &M, key: &str, value: f64) -> Option<String> {
+            let spec = M::PARAMS.iter().find(|s| s.key == key)?;
+            let (unit, factor) = spec.display;
+            (factor == 1e3 && matches!(unit, "mm" | "g") && value.abs() >= 1.0).then(|| {
+                format!(
+                    "hint: {} = {} {} is large for a lab set-up; --{} takes {}: for {} {unit} \
+                     give --{} {}",
+                    spec.symbol,
+                    crate::error::short(value),
+                    spec.unit,
+                    spec.flag(),
+                    spec.unit,
+                    crate::error::short(value),
+                    spec.flag(),
+                    crate::error::short(value / factor)
+                )
+            })
+        }
+        with_model!(self, p => hint(p, key, value))
+    }
+
     /// Sets option `key` to `value` (one of its values); false when there is no such option.
     pub fn set_choice(&mut self, key: &str, value: &str) -> bool {
         fn set<M: Physics>(p: &mut M, key: &str, value: &str) -> bool {

@@ -88,29 +88,25 @@ impl<P> ParamSpec<P> {
     pub fn check(&self, value: f64, mu_s: f64) -> Result<()> {
         let key = self.key;
         let (lo, hi) = MAGNITUDE;
-        let (ok, rule) = match self.rule {
-            Rule::Positive => (
-                (lo..=hi).contains(&value),
-                format!("{} <= {key} <= {}", num(lo), num(hi)),
-            ),
-            Rule::Finite => (
-                (-hi..=hi).contains(&value),
-                format!("{} <= {key} <= {}", num(-hi), num(hi)),
-            ),
-            Rule::StaticFriction => (
-                (MU_MIN..=MU_MAX).contains(&value),
-                format!("{} <= {key} <= {MU_MAX}", num(MU_MIN)),
-            ),
-            Rule::DynamicFriction => (
-                (MU_MIN..=mu_s).contains(&value),
-                format!("{} <= {key} <= mu_s (mu_s = {})", num(MU_MIN), num(mu_s)),
-            ),
+        let ok = match self.rule {
+            Rule::Positive => (lo..=hi).contains(&value),
+            Rule::Finite => (-hi..=hi).contains(&value),
+            Rule::StaticFriction => (MU_MIN..=MU_MAX).contains(&value),
+            Rule::DynamicFriction => (MU_MIN..=mu_s).contains(&value),
         };
         if ok {
-            Ok(())
-        } else {
-            Err(invalid(key, num(value), rule))
+            return Ok(());
         }
+        // The rule is written only for the message (validation runs on every sampled set).
+        let rule = match self.rule {
+            Rule::Positive => format!("{} <= {key} <= {}", num(lo), num(hi)),
+            Rule::Finite => format!("{} <= {key} <= {}", num(-hi), num(hi)),
+            Rule::StaticFriction => format!("{} <= {key} <= {MU_MAX}", num(MU_MIN)),
+            Rule::DynamicFriction => {
+                format!("{} <= {key} <= mu_s (mu_s = {})", num(MU_MIN), num(mu_s))
+            }
+        };
+        Err(invalid(key, num(value), rule))
     }
 }
 

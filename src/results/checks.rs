@@ -134,6 +134,11 @@ pub struct Check {
     /// Why the check is not observable, or why its tolerance is coarser than [`TOLERANCE`].
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
+    /// The floor of the error's denominator (the period for an event time, the forces per
+    /// unit mass for an acceleration; 0 for a plain relative error), so that another value of
+    /// the quantity (`stickslip check`) is compared on the same scale.
+    #[serde(skip)]
+    pub scale: f64,
 }
 
 impl Check {
@@ -178,6 +183,7 @@ impl Check {
             tolerance: TOLERANCE,
             pass: Some(rel_error.is_some_and(|e| e <= TOLERANCE)),
             note: None,
+            scale,
         }
     }
 
@@ -248,6 +254,7 @@ impl Check {
             tolerance: TOLERANCE,
             pass: Some(agree),
             note: None,
+            scale: 0.0,
         }
     }
 }

@@ -13,6 +13,29 @@ use crate::present::Present;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
 
+/// A quantity's value on the exact integration, with the floor of its error's denominator
+/// (the period for an event time) and the tolerance of the checks it comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Measured {
+    pub value: f64,
+    pub scale: f64,
+    pub tolerance: f64,
+}
+
+impl Measured {
+    /// The numeric side of a passing check.
+    pub fn of(check: &Check) -> Option<Self> {
+        match (check.pass, &check.numeric) {
+            (Some(true), crate::results::CheckValue::Number(value)) => Some(Self {
+                value: *value,
+                scale: check.scale,
+                tolerance: check.tolerance,
+            }),
+            _ => None,
+        }
+    }
+}
+
 /// The worksheet side of a model.
 pub trait Exercise: Present {
     /// The computed symbols the sheet defines by their formulas (the symbols of worked steps),
@@ -49,6 +72,35 @@ pub trait Exercise: Present {
         _step: AnyKey,
     ) -> Result<Option<Answer>> {
         Ok(None)
+    }
+    /// A set anywhere in the model's valid domain, for `check`'s sample: the full ranges of
+    /// every parameter and every regime, not a worksheet's tidy values. The default draws as a
+    /// worksheet does.
+    fn probe(rng: &mut Draws) -> Self
+    where
+        Self: Sized,
+    {
+        Self::draw(Self::regimes()[0], rng)
+    }
+    /// The regime boundaries `check` packs draws against, in words ("φ = 1/Θ"); none by default.
+    fn boundaries() -> &'static [&'static str] {
+        &[]
+    }
+    /// This set moved to boundary `i` of [`Exercise::boundaries`] times `1 + offset` (the
+    /// deciding parameter set so that the compared value is the boundary's times `1 + offset`);
+    /// `None` where the moved set would be invalid.
+    fn onto_boundary(&self, _i: usize, _offset: f64) -> Option<Self>
+    where
+        Self: Sized,
+    {
+        None
+    }
+    /// Where a quantity's own check is absent on this set (its closed form describes another
+    /// regime), its value on the exact integration from the checks that are there (the pulled
+    /// mass's v̄ in the late-stick band is checked as `v_avg_late`): (value, floor of the
+    /// error's denominator, tolerance), from passing checks only; `None` by default.
+    fn measured_elsewhere(&self, _quantity: &str, _checks: &[Check]) -> Option<Measured> {
+        None
     }
     /// The checks of the evaluation and the run of the linearized law (with its segments when
     /// `record_segments`), `None` where that law does not exist.

@@ -40,8 +40,8 @@ struct AnswerJson<'a> {
     /// Reading tolerance of the figure question (SI).
     tolerance: Option<f64>,
     equation: Option<&'static str>,
-    formula: Option<&'a str>,
-    substituted: Option<&'a str>,
+    formula: Option<String>,
+    substituted: Option<String>,
     /// The values the regime inequalities compare.
     comparisons: &'a [Comparison],
 }
@@ -86,8 +86,8 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
                         rel_error: a.rel_error,
                         tolerance: a.tolerance,
                         equation: a.step.as_ref().map(|s| s.equation),
-                        formula: a.step.as_ref().map(|s| s.formula.as_str()),
-                        substituted: a.step.as_ref().map(|s| s.substituted.as_str()),
+                        formula: a.step.as_ref().map(|s| s.formula()),
+                        substituted: a.step.as_ref().map(|s| s.substituted()),
                         comparisons: &a.comparisons,
                     })
                     .collect(),

@@ -56,7 +56,7 @@ fn definitions(case: &Model, words: &Words) -> Vec<Math> {
     with_model!(case, p => of(p))
         .iter()
         .filter_map(|symbol| steps.iter().find(|s| s.symbol == *symbol))
-        .map(|s| words.math(&format!("{} = {}", s.symbol, s.formula)))
+        .map(|s| words.math(&format!("{} = {}", s.symbol, s.formula())))
         .collect()
 }
 

@@ -5,14 +5,16 @@ use crate::draws::Draws;
 
 use super::formula as pm;
 use super::formula::Regime as PulledRegime;
+use super::params::PHI_RANGE;
 use super::quantity::{any, Key, Key as P};
 use super::{results, PulledMassParams};
 use crate::engine::Run;
 use crate::error::Result;
+use crate::models::param::{MU_MAX, MU_MIN};
 use crate::params::G_STANDARD;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
-use crate::worksheet::exercise::Exercise;
+use crate::worksheet::exercise::{Exercise, Measured};
 use crate::worksheet::question::{Kind, Question, Regime};
 use crate::worksheet::sample::round3;
 
@@ -128,6 +130,58 @@ impl Exercise for PulledMassParams {
         ]
     }
 
+    fn probe(rng: &mut Draws) -> Self {
+        probe_set(rng)
+    }
+
+    fn boundaries() -> &'static [&'static str] {
+        &BOUNDARIES
+    }
+
+    fn onto_boundary(&self, i: usize, offset: f64) -> Option<Self> {
+        let at = match i {
+            0 => pm::phi_stick_max(self.mu_s, self.mu_d),
+            1 => pm::phi_continuous(self.mu_s, self.mu_d),
+            _ => 2.0 * self.mu_s,
+        };
+        let phi = at * (1.0 + offset);
+        (PHI_RANGE.0..=PHI_RANGE.1).contains(&phi).then(|| Self {
+            force: phi * self.mass * self.g,
+            ..*self
+        })
+    }
+
+    fn measured_elsewhere(&self, quantity: &str, checks: &[Check]) -> Option<Measured> {
+        // Past (20) the same motion quantities are checked by the late-stick forms.
+        let check = |key: Key| checks.iter().find(|c| c.quantity == key.into());
+        let passed = |key: Key| check(key).and_then(Measured::of);
+        let late_stick = || {
+            // τ_ST,late is measured in periods from t = 0.
+            let tau = passed(Key::TauStickLate)?;
+            let period = self.period();
+            Some(Measured {
+                value: tau.value * period,
+                scale: period,
+                tolerance: tau.tolerance,
+            })
+        };
+        match quantity {
+            "v_avg" => passed(Key::VAvgLate),
+            "advance_per_period" => passed(Key::AdvancePerPeriodLate),
+            "power" => passed(Key::PowerLate),
+            "t_stick" => late_stick(),
+            "slip_duration" => {
+                let (stick, slip) = (late_stick()?, passed(Key::TSlip)?);
+                Some(Measured {
+                    value: stick.value - slip.value,
+                    tolerance: stick.tolerance.max(slip.tolerance),
+                    ..stick
+                })
+            }
+            _ => None,
+        }
+    }
+
     fn checks_and_linear_run(
         &self,
         periods: u32,
@@ -135,6 +189,51 @@ impl Exercise for PulledMassParams {
     ) -> Result<(Vec<Check>, Option<Run>)> {
         let (e, runs) = results::evaluate_with_runs(self, periods, record_segments)?;
         Ok((e.checks, Some(runs.linear)))
+    }
+}
+
+/// The regime boundaries of §1.5 on φ, in the order of [`Exercise::onto_boundary`].
+const BOUNDARIES: [&str; 3] = ["φ = 1/Θ", "φ = φ_c", "φ = 2μs"];
+
+/// A set anywhere in the valid domain, for `check`: μs mostly 0.05–1.5 and a quarter
+/// log-uniform over its whole range; μd/μs uniform, or close to 1, or exactly 1, or small; m
+/// and k log-uniform over twelve decades, g 0.1–100 m/s²; φ log-uniform from its lower limit
+/// in one of the four regimes of §1.5, chosen in turn at random.
+fn probe_set(rng: &mut Draws) -> PulledMassParams {
+    let log_between =
+        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
+    let mu_s = if rng.unit() < 0.75 {
+        rng.between(0.05, 1.5)
+    } else {
+        log_between(rng, MU_MIN * 10.0, MU_MAX)
+    };
+    let ratio = match rng.unit() {
+        u if u < 0.4 => rng.between(0.01, 1.0),
+        u if u < 0.7 => 1.0 - 10f64.powf(-rng.between(1.0, 9.0)),
+        u if u < 0.8 => 1.0,
+        _ => 10f64.powf(-rng.between(0.0, 3.0)),
+    };
+    let mu_d = (mu_s * ratio).clamp(MU_MIN, mu_s);
+    let mass = log_between(rng, 1e-6, 1e6);
+    let k = log_between(rng, 1e-6, 1e6);
+    let g = log_between(rng, 0.1, 100.0);
+    let (stick, cont) = (
+        pm::phi_stick_max(mu_s, mu_d),
+        pm::phi_continuous(mu_s, mu_d),
+    );
+    let phi = match rng.unit() {
+        u if u < 0.25 => log_between(rng, PHI_RANGE.0, stick),
+        u if u < 0.5 => rng.between(stick, cont),
+        u if u < 0.75 => rng.between(cont, 2.0 * mu_s),
+        _ => 2.0 * mu_s * rng.between(1.0, 3.0),
+    };
+    PulledMassParams {
+        mu_s,
+        mu_d,
+        mass,
+        k,
+        force: phi.max(PHI_RANGE.0) * mass * g,
+        g,
     }
 }
 

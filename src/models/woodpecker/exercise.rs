@@ -10,6 +10,7 @@ use super::{results, WoodpeckerParams};
 use crate::derivation::Step;
 use crate::engine::Run;
 use crate::error::Result;
+use crate::models::param::MU_MIN;
 use crate::params::G_STANDARD;
 use crate::results::quantity::AnyKey;
 use crate::results::Check;
@@ -175,6 +176,23 @@ impl Exercise for WoodpeckerParams {
         Ok(mu_d_sticking_at_half_period(self, value)?.and_then(|n| confirmed(question, step, n)))
     }
 
+    fn probe(rng: &mut Draws) -> Self {
+        probe_set(rng)
+    }
+
+    fn boundaries() -> &'static [&'static str] {
+        &["μd = μd,HALT(I)", "μd = μd,HALT(II)"]
+    }
+
+    fn onto_boundary(&self, i: usize, offset: f64) -> Option<Self> {
+        let c = super::formula::evaluate(&results::linear_inputs(self));
+        let halt = if i == 0 { c.mu_d_halt_1 } else { c.mu_d_halt_2 }?;
+        let mu_d = halt * (1.0 + offset);
+        (MU_MIN..=self.mu_s)
+            .contains(&mu_d)
+            .then(|| Self { mu_d, ..*self })
+    }
+
     fn checks_and_linear_run(
         &self,
         periods: u32,
@@ -182,6 +200,35 @@ impl Exercise for WoodpeckerParams {
     ) -> Result<(Vec<Check>, Option<Run>)> {
         let (e, runs) = results::evaluate_with_runs(self, periods, record_segments)?;
         Ok((e.checks, runs.linear))
+    }
+}
+
+/// A set well beyond a worksheet's, for `check`: μs 0.1–1.5, μd/μs uniform, close to 1,
+/// exactly 1 or small; k, the masses and the lengths over a factor of about ten either way of
+/// the toy's; z0 from a twentieth of d0 to past it.
+fn probe_set(rng: &mut Draws) -> WoodpeckerParams {
+    let log_between =
+        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
+    let mu_s = rng.between(0.1, 1.5);
+    let ratio = match rng.unit() {
+        u if u < 0.5 => rng.between(0.05, 1.0),
+        u if u < 0.75 => 1.0 - 10f64.powf(-rng.between(1.0, 9.0)),
+        u if u < 0.85 => 1.0,
+        _ => 10f64.powf(-rng.between(1.0, 2.0)),
+    };
+    let d0 = log_between(rng, 0.001, 0.05);
+    WoodpeckerParams {
+        mu_s,
+        mu_d: (mu_s * ratio).clamp(MU_MIN, mu_s),
+        k: log_between(rng, 1.0, 400.0),
+        m_sleeve: log_between(rng, 0.001, 0.05),
+        m_bird: log_between(rng, 0.002, 0.1),
+        l: log_between(rng, 0.005, 0.05),
+        h: log_between(rng, 0.002, 0.02),
+        z0: d0 * rng.between(0.05, 1.5),
+        d0,
+        g: rng.between(1.0, 25.0),
+        ..WoodpeckerParams::default()
     }
 }
 
