@@ -27,7 +27,7 @@ engine::ForceLaw and engine::Body serialized: a period tiled by pieces [start, e
 driving force D and the friction-bearing normal force N_f are affine in one basis function b,
 
     D = drive.c0 + drive.c1 b,   N_f = normal.c0 + normal.c1 b,
-    b = t_loc - t_ref ("linear")  or  cos(omega t_loc) ("cos"),   t_loc = t mod period,
+    b = t_loc - t_ref ("linear")  or  cos(omega t_loc) - shift ("cos"),   t_loc = t mod period,
 
 and evaluates D(t) and N_f(t) from them (periodic extension, piece lookup). Every phase is also
 restarted at the period starts and at the piece boundaries, the kinks of the force law, so no
@@ -37,7 +37,7 @@ Input (JSON, a file path or '-' for stdin): {"repeats": N, "long_run_s": 1.0,
 "tolerances": [...], "methods": [...], "problems": [{"id", "model", "law", "periods",
 "body": {"mass", "mu_s", "mu_d"},
 "force_law": {"period", "pieces": [{"start", "end", "basis": {"kind": "linear", "t_ref"} or
-{"kind": "cos", "omega"}, "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]},
+{"kind": "cos", "omega", "shift"}, "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]},
 "exact": {"events": [{"t", "kind"}], "x_end_m"}}]}. "model" and "law" are labels only.
 Output (JSON on stdout): versions, machine and one point per problem x method x tolerance with
 the best-of-N time, rhs evaluations, solve_ivp steps (all, and while stuck), margin evaluations,
@@ -76,8 +76,8 @@ class Piece:
             t_ref = basis["t_ref"]
             self.basis = lambda t: t - t_ref
         elif basis["kind"] == "cos":
-            omega = basis["omega"]
-            self.basis = lambda t: math.cos(omega * t)
+            omega, shift = basis["omega"], basis.get("shift", 0.0)
+            self.basis = lambda t: math.cos(omega * t) - shift
         else:
             raise ValueError("unknown basis kind %r" % basis["kind"])
         self.d0, self.d1 = piece["drive"]["c0"], piece["drive"]["c1"]

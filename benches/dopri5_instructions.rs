@@ -267,7 +267,7 @@ fn textbook(
 fn harmonic_piece(problem: &Problem) -> (Piece, f64) {
     let piece = problem.law.pieces[0];
     match piece.basis {
-        Basis::Cos { omega } => (piece, omega),
+        Basis::Cos { omega, .. } => (piece, omega),
         Basis::Linear { .. } => unreachable!("the harmonic law"),
     }
 }

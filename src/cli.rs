@@ -95,7 +95,9 @@ pub struct ExplorerArgs {
 #[derive(Debug, Args)]
 pub struct FitArgs {
     /// Tracked positions: a CSV file with a header row, a time column (s) and a position
-    /// column (m or mm); `,` or `;` separated, `#` comments and title lines allowed.
+    /// column (m, cm or mm); `,` or `;` separated, `#` comments and title lines allowed; rows
+    /// with a blank time or position cell are skipped and counted. Exit 3 when the fitted
+    /// model does not describe the data (files written, flagged).
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
     /// Time and position columns, each a header name or a 1-based number [default: the first

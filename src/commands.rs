@@ -37,6 +37,14 @@ pub fn run(cli: Cli) -> Result<()> {
     }
 }
 
+/// Hints for the user gathered while a command runs, printed by `main` when it succeeds.
+static HINTS: std::sync::Mutex<Vec<String>> = std::sync::Mutex::new(Vec::new());
+
+/// The hints gathered so far (one line each), emptied.
+pub fn take_hints() -> Vec<String> {
+    std::mem::take(&mut *HINTS.lock().unwrap_or_else(std::sync::PoisonError::into_inner))
+}
+
 /// The model's parameters and the periods to integrate: the defaults, overridden by the
 /// scenario file (if any), overridden by the flags given.
 pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
@@ -65,11 +73,14 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     };
     for &(key, value) in &args.numbers {
         model.set(key, value);
-        // A value that looks typed in mm or g runs as given, with a word on stderr.
-        if let Some(hint) = model.unit_hint(key, value) {
-            eprintln!("{hint}");
-        }
     }
+    // A value that looks typed in mm or g runs as given, with a word on stderr once the command
+    // has succeeded (a failing one prints its one-line error only).
+    let hints = args.numbers.iter().filter_map(|&(k, v)| model.unit_hint(k, v));
+    HINTS
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+        .extend(hints);
     for (key, value) in &args.choices {
         model.set_choice(key, value);
     }
@@ -124,7 +135,8 @@ fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()>
 }
 
 /// `stickslip fit`: read, fit, write the files, print; a fit that did not converge is still
-/// written and printed (flagged), then reported as an error (exit 1).
+/// written and printed (flagged), then reported as an error (exit 1); one that converged to a
+/// minimum that does not describe the data likewise, as a negative verdict (exit 3).
 fn fit(args: &FitArgs) -> Result<()> {
     let common = &args.model.args.common;
     reject_flag("fit", "--periods", common.periods.is_some())?;
@@ -152,6 +164,16 @@ fn fit(args: &FitArgs) -> Result<()> {
             reason: format!(
                 "{} (results in {} are flagged \"converged\": false)",
                 fit.termination,
+                shown(&args.out)
+            ),
+        }
+        .into());
+    }
+    if !fit.verdict.describes {
+        return Err(Error::Verdict {
+            reason: format!(
+                "{} (results in {}, flagged)",
+                fit.verdict.brief(),
                 shown(&args.out)
             ),
         }

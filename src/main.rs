@@ -53,7 +53,12 @@ fn main() -> ExitCode {
         }
     };
     match run(cli) {
-        Ok(()) => ExitCode::SUCCESS,
+        Ok(()) => {
+            for hint in stickslip::commands::take_hints() {
+                eprintln!("{}", excerpt(&hint, MESSAGE_CHARS));
+            }
+            ExitCode::SUCCESS
+        }
         Err(e) => {
             // The library's errors decide (Error::exit_code); the others are usage refused here.
             let code = e.downcast_ref::<Error>().map_or(2, Error::exit_code);

@@ -506,10 +506,11 @@ fn bad_files_are_refused_with_the_line_and_the_problem() {
         &[],
         "line 17: time not strictly increasing",
     );
+    // Rows with a blank cell are skipped, and counted when too few are left.
     refused(
-        &format!("t,y\n{}1,\n", rows(15)),
+        &format!("t,y\n{}1,\n,3\n", rows(8)),
         &[],
-        "line 17, column y: empty cell",
+        "line 11: only 8 data rows (lines 2-11) (2 skipped for a blank cell in a used column)",
     );
     refused(
         &format!("t,y\n{}", rows(15)),
@@ -556,8 +557,10 @@ fn a_missing_file_is_named() {
 
 #[test]
 fn fixed_parameters_that_cannot_describe_the_data_are_an_unconverged_fit_not_bad_input() {
-    // k = 1000 N/m makes the model's period ~7× shorter than the track's: the search runs out
-    // of the model's range (d0 → 0). That is a failed fit (exit 1), not a bad parameter.
+    // k = 1000 N/m makes the model's period ~7× shorter than the track's: from the given start
+    // the search runs out of the model's range (d0 → 0), from the spread around it it stops
+    // where the model does not move at all (JᵀJ singular). That is a failed fit (exit 1), not
+    // a bad parameter; what is written is flagged.
     let tmp = tempfile::tempdir().unwrap();
     let out = tmp.path().join("fit");
     let output = stickslip()
@@ -570,5 +573,264 @@ fn fixed_parameters_that_cannot_describe_the_data_are_an_unconverged_fit_not_bad
     let stderr = String::from_utf8(output.stderr).unwrap();
     assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
     assert!(stderr.contains("the fit did not converge"), "{stderr}");
-    assert!(!out.exists());
+    if out.exists() {
+        let json = read_json(&out.join("fit.json"));
+        assert_eq!(json["converged"], false, "{json}");
+        assert_eq!(json["verdict"]["describes"], false, "{json}");
+    }
+}
+
+/// Issue 25's wrong basin: data made with μd 0.30, z0 7.5 mm, d0 9.8 mm (the rest as the
+/// Figs. 26–27 scenario), fitted from the scenario's values (μd 0.332, z0 7.0 mm, d0 9.5 mm).
+fn wrong_basin_truth() -> WoodpeckerParams {
+    WoodpeckerParams {
+        mu_d: 0.30,
+        z0: 0.0075,
+        d0: 0.0098,
+        ..fig26()
+    }
+}
+
+/// A Tracker export of `track` in cm with no units row (title, `t,x,y`), the cells of `x` and
+/// `y` blank in the frames listed in `unmarked` (Tracker leaves a frame without a mark blank).
+fn tracker_cm(track: &stickslip::fit::synthetic::SyntheticTrack, unmarked: &[usize]) -> String {
+    let mut text = String::from("mass A\nt,x,y\n");
+    for (i, (t, y)) in track.t.iter().zip(&track.y).enumerate() {
+        if unmarked.contains(&i) {
+            text.push_str(&format!("{t:.6},,\n"));
+        } else {
+            text.push_str(&format!("{t:.6},1.23,{:.5}\n", y * 100.0));
+        }
+    }
+    text
+}
+
+/// Writes issue 25's example files into `$STICKSLIP_FIT_CASES` (for the before/after runs):
+/// `wrong-basin-N.csv` (N = 1..8, noise seeds), `tracker-cm.csv` (with blank cells),
+/// `tracker-cm-whole.csv`, and files whose declared unit is 10, 100 or 1000 times off.
+#[test]
+#[ignore = "writes files; run with STICKSLIP_FIT_CASES=dir"]
+fn write_issue_25_cases() {
+    let dir = PathBuf::from(std::env::var_os("STICKSLIP_FIT_CASES").expect("a folder"));
+    fs::create_dir_all(&dir).unwrap();
+    for seed in 1..=8 {
+        let track = synthetic(wrong_basin_truth(), seed).generate().unwrap();
+        write(
+            &dir,
+            &format!("wrong-basin-{seed}.csv"),
+            &track.csv(Unit::Mm, "issue 25"),
+        );
+    }
+    let track = Synthetic::example().generate().unwrap();
+    write(
+        &dir,
+        "tracker-cm.csv",
+        &tracker_cm(&track, &[8, 9, 200, 201, 202]),
+    );
+    write(&dir, "tracker-cm-whole.csv", &tracker_cm(&track, &[]));
+    for (name, unit, declared) in [
+        ("mm-as-m", Unit::Mm, "m"),
+        ("cm-as-mm", Unit::Cm, "mm"),
+        ("mm-as-cm", Unit::Mm, "cm"),
+    ] {
+        let text = track
+            .csv(unit, name)
+            .replace(&format!("s,{}", unit.symbol()), &format!("s,{declared}"));
+        write(&dir, &format!("{name}.csv"), &text);
+    }
+}
+
+/// The grid of truths of [`a_grid_of_known_parameters_is_recovered_or_declared_not_described`]:
+/// μd, z0 (mm), d0 (mm) around the Figs. 26–27 values (μd 0.332, z0 7.0, d0 9.5), the rest as
+/// the scenario. μd 0.26 is continuous slip, z0 8.0 beyond the 7.07 mm of Fig. 16, μd 0.44 a
+/// third above the start: outside the ±15 % spread of the starts.
+const GRID_MU_D: [f64; 5] = [0.26, 0.29, 0.32, 0.36, 0.44];
+const GRID_Z0_MM: [f64; 3] = [6.4, 7.2, 8.0];
+const GRID_D0_MM: [f64; 2] = [9.0, 10.0];
+/// A wrong minimum lies many standard errors from the truth (issue 25's: μd 0.322 for 0.30,
+/// 12 standard errors of the true minimum's); a recovered value lies within 2 standard errors
+/// 95 % of the time. Every value must be within 3, and [`MIN_WITHIN_TWO`] of them within 2.
+const MAX_Z: f64 = 3.0;
+const MIN_WITHIN_TWO: f64 = 0.9;
+
+/// (estimate − truth)/standard error of the three physical estimates.
+fn z_scores(f: &fit::Fit, exact: [f64; 3]) -> Vec<f64> {
+    f.estimates[..3]
+        .iter()
+        .zip(exact)
+        .map(|(e, x)| (e.value - x) / e.std_error.expect("standard error"))
+        .collect()
+}
+
+/// Synthetic tracks from a grid of known parameters (5 μd × 3 z0 × 2 d0, 500 frames at 240
+/// fps, σ = 0.2 mm, one noise seed each), every one fitted from the Figs. 26–27 scenario's
+/// values: each fit either recovers the truth (every value within [`MAX_Z`] standard errors,
+/// and 90 % of them within 2) with a verdict that the model describes the data, or has a
+/// negative verdict (exit 3) or fails to converge (exit 1). Never a wrong minimum reported as
+/// a description.
+///
+/// Not the joint 2σ region of the three: z0, d0 and μd correlate at 0.93–0.99, and along the
+/// thin direction of their ellipsoid the linearized covariance is too narrow (issue 25's seed 1
+/// recovers every value within 1.7 standard errors, yet its squared Mahalanobis distance is 34,
+/// where 8 is 2σ). The marginal errors are honest
+/// (`standard_errors_match_the_scatter_over_noise_seeds`).
+#[test]
+fn a_grid_of_known_parameters_is_recovered_or_declared_not_described() {
+    let start = fig26();
+    let mut seed = 2500;
+    let (mut recovered, mut declared, mut within_two) = (0, 0, 0);
+    for mu_d in GRID_MU_D {
+        for z0 in GRID_Z0_MM {
+            for d0 in GRID_D0_MM {
+                seed += 1;
+                let truth = WoodpeckerParams {
+                    mu_d,
+                    z0: z0 * 1e-3,
+                    d0: d0 * 1e-3,
+                    ..start
+                };
+                let track = synthetic(truth, seed).generate().unwrap();
+                let text = track.csv(Unit::Mm, "grid");
+                let data = parse(&text, Path::new("grid.csv"), &ReadOptions::default()).unwrap();
+                let f = fit::fit(&data, &start, &FitParam::DEFAULT).unwrap();
+                let case = format!(
+                    "mu_d {mu_d}, z0 {z0} mm, d0 {d0} mm (seed {seed}): {}; {}",
+                    f.termination,
+                    f.verdict.sentence()
+                );
+                if !(f.converged && f.verdict.describes) {
+                    declared += 1;
+                    eprintln!("declared: {case}");
+                    continue;
+                }
+                let z = z_scores(&f, [truth.mu_d, truth.z0, truth.d0]);
+                eprintln!("recovered? z = {z:.2?}: {case}");
+                assert!(
+                    z.iter().all(|z| z.abs() <= MAX_Z),
+                    "a wrong minimum described as a fit: z = {z:?}, {case}"
+                );
+                within_two += z.iter().filter(|z| z.abs() <= 2.0).count();
+                recovered += 1;
+            }
+        }
+    }
+    eprintln!("{recovered} recovered, {declared} declared not described or not converged");
+    let share = within_two as f64 / (3 * recovered) as f64;
+    assert!(
+        share >= MIN_WITHIN_TWO,
+        "{share} of the values within 2 standard errors"
+    );
+    // The grid lies mostly within reach of the starts: most truths must be recovered.
+    assert!(recovered >= 24, "{recovered} of 30 recovered");
+}
+
+/// Issue 25: data made with μd 0.30, z0 7.5 mm, d0 9.8 mm and fitted from the Figs. 26–27
+/// scenario ended, from the given start alone, in a wrong minimum on 7 of 8 noise seeds (RMS
+/// 14–17× σ, autocorrelation 0.99) reported as converged. From the spread of starts all 8
+/// recover the truth; a fit that did not would have to say so (exit 3).
+#[test]
+fn the_wrong_basin_of_issue_25_is_left_for_the_true_minimum() {
+    let start = fig26();
+    let truth = wrong_basin_truth();
+    for seed in 1..=8 {
+        let track = synthetic(truth, seed).generate().unwrap();
+        let text = track.csv(Unit::Mm, "issue 25");
+        let data = parse(&text, Path::new("track.csv"), &ReadOptions::default()).unwrap();
+        let f = fit::fit(&data, &start, &FitParam::DEFAULT).unwrap();
+        assert!(f.converged && f.verdict.describes, "seed {seed}: {f:?}");
+        let z = z_scores(&f, [truth.mu_d, truth.z0, truth.d0]);
+        assert!(z.iter().all(|z| z.abs() <= MAX_Z), "seed {seed}: z = {z:?}");
+        assert!((f.rms_residual / 2e-4 - 1.0).abs() < 0.1, "seed {seed}");
+    }
+}
+
+/// A Tracker export in cm with no units row is read in metres: the data fall 100× faster than
+/// the model. The fit says the model does not describe them as read and names `--units cm`,
+/// with which it does (exit 3, files written and flagged); with `--units cm` the fit is the
+/// mm file's. Frames without a mark (blank cells) are skipped and counted.
+#[test]
+fn tracker_positions_in_cm_read_as_metres_are_a_unit_slip_named_with_its_units() {
+    let tmp = tempfile::tempdir().unwrap();
+    let track = Synthetic::example().generate().unwrap();
+    let file = write(
+        tmp.path(),
+        "tracker.csv",
+        &tracker_cm(&track, &[8, 9, 200, 201, 202]),
+    );
+    let out = tmp.path().join("as-read");
+    let output = stickslip()
+        .arg("fit")
+        .arg(&file)
+        .args(["--scenario", FIG26, "--out"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    assert_eq!(output.status.code(), Some(3));
+    let stderr = String::from_utf8(output.stderr).unwrap();
+    assert_eq!(stderr.trim_end().lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("does not describe these data as read (positions 100× too large); with --units cm it does"),
+        "{stderr}"
+    );
+    let stdout = String::from_utf8(output.stdout).unwrap();
+    for want in [
+        "495 points (5 rows skipped for a blank cell in the time or position column, the first on line 11)",
+        "verdict:  THE MODEL DOES NOT DESCRIBE THESE DATA",
+    ] {
+        assert!(stdout.contains(want), "{want}: {stdout}");
+    }
+    // No advice on which parameter to fix for a fit that describes nothing.
+    assert!(!stdout.contains("Fix "), "{stdout}");
+    let json = read_json(&out.join("fit.json"));
+    assert_eq!(json["verdict"]["describes"], false);
+    assert_eq!(json["verdict"]["scale"]["units"], "cm");
+    assert_eq!(json["data"]["skipped_rows"], 5);
+    let args = ["--scenario", FIG26, "--units", "cm"].map(String::from);
+    let json = fit_json(&file, &tmp.path().join("cm"), &args);
+    assert_eq!(json["verdict"]["describes"], true, "{json}");
+    assert_eq!(json["verdict"]["scale"], Value::Null);
+    let rms = json["rms_residual"].as_f64().unwrap();
+    assert!((rms / 2e-4 - 1.0).abs() < 0.1, "rms {rms}");
+}
+
+/// Positions 10× and 1000× off the model (the declared unit wrong, or none) are named with the
+/// `--units` that fits, both ways. A 10× slip scales the noise too, and the data as read are
+/// then loosely described (RMS 1.4σ̂, autocorrelation 0.3–0.45): the unit that makes the
+/// residual noise is preferred.
+#[test]
+fn positions_ten_or_a_thousand_times_off_name_the_units_that_fit() {
+    let tmp = tempfile::tempdir().unwrap();
+    let track = Synthetic::example().generate().unwrap();
+    for (written, declared, want) in [
+        (
+            Unit::Mm,
+            "m",
+            "positions 1000× too large); with --units mm it does",
+        ),
+        (
+            Unit::Cm,
+            "mm",
+            "positions 10× too small); with --units cm it does",
+        ),
+        (
+            Unit::Mm,
+            "cm",
+            "positions 10× too large); with --units mm it does",
+        ),
+    ] {
+        let text = track
+            .csv(written, "slip")
+            .replace(&format!("s,{}", written.symbol()), &format!("s,{declared}"));
+        let file = write(tmp.path(), &format!("{declared}.csv"), &text);
+        let output = stickslip()
+            .arg("fit")
+            .arg(&file)
+            .args(["--scenario", FIG26, "--out"])
+            .arg(tmp.path().join(declared))
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8(output.stderr).unwrap();
+        assert_eq!(output.status.code(), Some(3), "{declared}: {stderr}");
+        assert!(stderr.contains(want), "{declared}: {stderr}");
+    }
 }

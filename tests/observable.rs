@@ -1,8 +1,9 @@
 //! The tool's own checks never say FAIL for a correct formula at an accepted input: what a run
 //! cannot show (too few periods, a regime decided by rounding) is "not observable" with the
-//! reason, and what double precision cannot measure to 1e-9 (a slip far smaller than the forces
-//! whose difference it is, a double root) gets the attainable tolerance, stated. Each case here
-//! said FAIL before (issue 11, item 7).
+//! reason, and what the inputs' conditioning does not let double precision measure to 1e-9 (a
+//! double root) gets the attainable tolerance, stated; a slip far smaller than the forces whose
+//! difference it is is measured at the standard tolerance (issue 26). Each case here said FAIL
+//! before (issue 11, item 7).
 
 use stickslip::models::pulled_mass::formula as cf;
 use stickslip::models::pulled_mass::results as pm;
@@ -52,17 +53,23 @@ fn one_period_leaves_the_steady_state_not_observable() {
     assert!(e.checks.iter().all(Check::passed));
 }
 
+/// The pulled mass's linear law is written about the vertex N = 0, where the slips of a tiny
+/// pull happen: v_M, v̄, x_T and P are measured to rounding of their own size and held to the
+/// standard tolerance (a tolerance of 4·eps·μs/φ once hid an error that grew as eps·μs/φ).
 #[test]
-fn tiny_pulls_widen_the_speed_tolerance_to_what_double_precision_allows() {
+fn tiny_pulls_are_held_to_the_standard_tolerance() {
     for force in [1e-8, 1e-9, 6e-10] {
         let e = pm::evaluate(&pulled(force), 8).unwrap();
         no_fail(&format!("F = {force}"), &e.checks);
+        for c in &e.checks {
+            assert!(c.tolerance == TOLERANCE, "F = {force}: {c:?}");
+        }
         let v_max = e
             .checks
             .iter()
             .find(|c| c.quantity.id() == "v_max")
             .unwrap();
-        assert!(v_max.passed() && v_max.tolerance > TOLERANCE, "{v_max:?}");
+        assert!(v_max.passed(), "{v_max:?}");
     }
     // At ordinary pulls the standard tolerance stands.
     let e = pm::evaluate(&pulled(0.18), 8).unwrap();
@@ -98,6 +105,8 @@ fn the_late_stick_at_phi_c_is_a_double_root_and_its_regime_is_rounding() {
     }
 }
 
+/// Up to ε = W_S/(k d0) = 1e-9 a stiff spring's short slips are measured; beyond, the set is
+/// refused naming the sleeve's mass and ε (k = 1e12: ε = 6.5e-12).
 #[test]
 fn a_stiff_woodpecker_spring_measures_a_slip_against_its_own_forces() {
     for k in [1e7, 1e9, 1e12] {
@@ -105,6 +114,14 @@ fn a_stiff_woodpecker_spring_measures_a_slip_against_its_own_forces() {
             k,
             ..WoodpeckerParams::default()
         };
-        no_fail(&format!("k = {k}"), &wp::evaluate(&p, 8).unwrap().checks);
+        if p.eps() >= stickslip::models::woodpecker::params::EPS_MIN {
+            no_fail(&format!("k = {k}"), &wp::evaluate(&p, 8).unwrap().checks);
+        } else {
+            let Err(err) = wp::evaluate(&p, 8) else {
+                panic!("k = {k} is refused");
+            };
+            let err = err.to_string();
+            assert!(err.contains("m_sleeve") && err.contains("eps"), "{err}");
+        }
     }
 }

@@ -103,20 +103,27 @@ pub enum ScriptError {
 
 /// The 40-digit integration (`mp_engine.py`) of `periods` periods of every (law, body), one JSON
 /// result per problem in order: `events` per period as [t, kind, …] with t a decimal string,
-/// `x_at_period_start` as decimal strings. Used here and by tests/reference.rs.
+/// `x_at_period_start` as decimal strings.
 pub fn integrate_40_digits(
     problems: &[(&ForceLaw, &Body)],
     periods: u32,
 ) -> Result<Vec<Value>, ScriptError> {
+    let input = problems
+        .iter()
+        .map(|(law, body)| json!({"law": law, "body": body, "periods": periods}))
+        .collect();
+    run_script(input)
+}
+
+/// The script on a list of cases as its docstring describes them (a serialized force law and
+/// body, or a model, a law and its parameters, from which the script builds the forces
+/// itself), one JSON result per case in order. Used here and by tests/reference.rs.
+pub fn run_script(cases: Vec<Value>) -> Result<Vec<Value>, ScriptError> {
     use ScriptError::{Failed, Unavailable};
     let script = ShippedScript::write("mp_engine.py", SCRIPT_TEXT)
         .map_err(|e| Unavailable(format!("{SCRIPT} cannot be written ({e})")))?;
-    let input = Value::Array(
-        problems
-            .iter()
-            .map(|(law, body)| json!({"law": law, "body": body, "periods": periods}))
-            .collect(),
-    );
+    let expected = cases.len();
+    let input = Value::Array(cases);
     let mut child = script
         .command()
         .stdin(Stdio::piped())
@@ -145,11 +152,10 @@ pub fn integrate_40_digits(
     }
     let list: Vec<Value> = serde_json::from_slice(&out.stdout)
         .map_err(|e| Failed(format!("the 40-digit integration wrote no JSON list ({e})")))?;
-    if list.len() != problems.len() {
+    if list.len() != expected {
         return Err(Failed(format!(
-            "the 40-digit integration returned {} results for {} problems",
+            "the 40-digit integration returned {} results for {expected} problems",
             list.len(),
-            problems.len()
         )));
     }
     Ok(list)

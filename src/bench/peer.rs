@@ -533,7 +533,8 @@ mod tests {
     }
 
     /// D and N_f at absolute time t from a serialized force law, read the way the script reads
-    /// it: t mod period, the piece whose end is past it, c0 + c1·b.
+    /// it: t mod period, the piece whose end is past it, c0 + c1·b (b = cos ωt − shift on a cos
+    /// basis).
     fn evaluate(law: &Value, t: f64) -> (f64, f64) {
         let local = t.rem_euclid(number(law, "period"));
         let pieces = law["pieces"].as_array().expect("pieces");
@@ -542,7 +543,7 @@ mod tests {
         let basis = &p["basis"];
         let b = match basis["kind"].as_str() {
             Some("linear") => local - number(basis, "t_ref"),
-            Some("cos") => (number(basis, "omega") * local).cos(),
+            Some("cos") => (number(basis, "omega") * local).cos() - number(basis, "shift"),
             other => panic!("basis kind {other:?}"),
         };
         let at = |a: &Value| number(a, "c0") + number(a, "c1") * b;

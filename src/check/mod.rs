@@ -254,11 +254,15 @@ fn sourced_symbols(case: &Model) -> Vec<(Symbol, Source)> {
         out.push((symbol, source));
     }
     // The parameters' keys (`mass`, `force`) as well, last.
-    out.extend(
-        given
-            .into_iter()
-            .map(|(s, key)| (Symbol { name: key.to_string(), ..s }, Source::Param(key))),
-    );
+    out.extend(given.into_iter().map(|(s, key)| {
+        (
+            Symbol {
+                name: key.to_string(),
+                ..s
+            },
+            Source::Param(key),
+        )
+    }));
     let mut seen = std::collections::HashSet::new();
     out.retain(|(s, _)| {
         s.name.starts_with(|c: char| c.is_ascii_alphabetic()) && seen.insert(s.name.clone())
@@ -477,12 +481,7 @@ fn sample(
             s.tolerance = tolerance;
             match value {
                 Some(f) => {
-                    let denominator = f.abs().max(numeric.abs()).max(scale);
-                    let e = if denominator == 0.0 {
-                        0.0
-                    } else {
-                        (f - numeric).abs() / denominator
-                    };
+                    let e = crate::results::checks::rel_diff_on_scale(f, numeric, scale);
                     s.rel_error = Some(e);
                     s.agrees = Some(e <= tolerance);
                 }

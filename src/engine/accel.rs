@@ -55,17 +55,18 @@ impl SignChanges {
         }
     }
 
-    /// The sign changes of h = c0 + c1 cos ωt (ω in rad/s), with `h` the rounded coefficients
-    /// and `exact` the same in two parts.
-    pub fn cos(omega: f64, h: Affine, exact: impl Fn() -> (Dd, Dd)) -> SignChanges {
-        // Where |b| ≥ 1 there is no zero, and h keeps the sign of h(b = 0) = c0.
-        let none = SignChanges::once(None, sign_of(h.c0));
+    /// The sign changes of h = c0 + c1 (cos ωt − shift) (ω in rad/s), with `h` the rounded
+    /// coefficients and `exact` the same in two parts.
+    pub fn cos(omega: f64, shift: f64, h: Affine, exact: impl Fn() -> (Dd, Dd)) -> SignChanges {
+        // Where the level of cos ωt is beyond ±1 there is no zero, and h keeps the sign it has
+        // at cos ωt = 0.
+        let none = SignChanges::once(None, sign_of(h.c0 - h.c1 * shift));
         if h.c1 == 0.0 {
             return none;
         }
         let (c0, c1) = exact();
         // The basis value where h = 0, in two parts (cos ωt is ill-conditioned near ±1).
-        let root_b = -c0 / c1;
+        let root_b = -c0 / c1 + Dd::from(shift);
         // dh/dt = c1·d(cos ωt)/dt: cos ωt falls through the first crossing θ/ω and rises
         // through the second (2π − θ)/ω.
         match cos_level_crossings_dd(root_b, omega, f64::NEG_INFINITY, f64::INFINITY) {
@@ -118,7 +119,7 @@ mod tests {
         let omega = 2.0;
         // h = 0.5 − cos 2t: negative until π/6, positive until 5π/6, negative after.
         let h = Affine::new(0.5, -1.0);
-        let changes = SignChanges::cos(omega, h, exact(h));
+        let changes = SignChanges::cos(omega, 0.0, h, exact(h));
         let [z1, z2] = changes.zeros();
         let third = std::f64::consts::FRAC_PI_3;
         assert!((z1 - third / omega).abs() < 1e-15 && (z2 - 5.0 * third / omega).abs() < 1e-15);
@@ -128,7 +129,7 @@ mod tests {
         );
         // |b| > 1: no zero, the sign of c0.
         let h = Affine::new(-2.0, 1.0);
-        let changes = SignChanges::cos(omega, h, exact(h));
+        let changes = SignChanges::cos(omega, 0.0, h, exact(h));
         assert_eq!(changes.zeros(), [f64::INFINITY; 2]);
         assert_eq!(changes.sign_after(1.0), -1);
     }

@@ -152,6 +152,32 @@ pub trait ArcMotion: Copy {
     fn v(&self, t: f64) -> f64 {
         self.at(t).v
     }
+
+    /// At a stick located at time t (a double): the time since the start w of the root of v,
+    /// refined in w where the arc can do so free of the rounding of t, with the motion there.
+    /// A slip far shorter than the time of day it happens at (φ = 1e-9 at T/2) is resolved by
+    /// t to a part in 1e5 only; x and ∫N_f|v| are flat at a stick, so that costs the square
+    /// of it, and w refined costs nothing. `None`: the arc has no refinement (t is kept).
+    #[inline(always)]
+    fn stick_in_w(&self, _t: f64) -> Option<(f64, Point)> {
+        None
+    }
+
+    /// The motion at a zero of the acceleration located at time t (a speed maximum), from the
+    /// time since the start at which the arc's own coefficients put it, where the arc can (v
+    /// is flat there: evaluated at the rounded t it costs the square of t's rounding over the
+    /// length of the slip). `None`: the arc has no such form.
+    #[inline(always)]
+    fn at_accel_zero(&self, _t: f64) -> Option<Point> {
+        None
+    }
+
+    /// ∫ N_f(t)·|v(t)| dt from the start of the arc to the time w after it (with w from
+    /// [`ArcMotion::stick_in_w`]); `None` where the arc has no refinement.
+    #[inline(always)]
+    fn integrate_normal_times_speed_w(&self, _n_c: f64, _n1: f64, _w1: f64) -> Option<f64> {
+        None
+    }
 }
 
 impl ArcMotion for PolyArc {
@@ -212,22 +238,7 @@ impl ArcMotion for PolyArc {
 
     #[inline(always)]
     fn at(&self, t: f64) -> Point {
-        let PolyArc {
-            x_c,
-            v_c,
-            a_c,
-            jerk,
-            ..
-        } = *self;
-        let w = self.w(t);
-        Point {
-            x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
-            v: v_c + w * (a_c + 0.5 * jerk * w),
-            a: a_c + jerk * w,
-            jerk,
-            db: w,
-            phase: None,
-        }
+        self.at_w(self.w(t))
     }
 
     #[inline(always)]
@@ -247,8 +258,69 @@ impl ArcMotion for PolyArc {
 
     #[inline]
     fn integrate_normal_times_speed(&self, n_c: f64, n1: f64, t1: f64) -> f64 {
+        self.normal_times_speed_to(n_c, n1, self.w(t1))
+    }
+
+    /// One Newton step on v(w) = v_c + a_c w + jerk w²/2 from w(t): t carries the rounding of
+    /// the time of day, v(w) and a(w) only that of their terms, so w comes out to a few ulps
+    /// of itself.
+    #[inline]
+    fn stick_in_w(&self, t: f64) -> Option<(f64, Point)> {
+        let w0 = self.w(t);
+        let here = self.at_w(w0);
+        let w = if here.a != 0.0 {
+            w0 - here.v / here.a
+        } else {
+            w0
+        };
+        // The step is a correction of the rounding of t: far larger, it is no refinement.
+        if !(w.is_finite() && (w - w0).abs() <= 8.0 * f64::EPSILON * t.abs() + 1e-6 * w0.abs()) {
+            return None;
+        }
+        Some((w, self.at_w(w)))
+    }
+
+    /// w = −a_c/jerk, where a = a_c + jerk·w vanishes, from the arc's own coefficients.
+    #[inline]
+    fn at_accel_zero(&self, t: f64) -> Option<Point> {
+        let PolyArc { a_c, jerk, .. } = *self;
+        let w = -a_c / jerk;
+        let near = (w - self.w(t)).abs() <= 8.0 * f64::EPSILON * t.abs() + 1e-6 * w.abs();
+        (jerk != 0.0 && w.is_finite() && near).then(|| self.at_w(w))
+    }
+
+    #[inline]
+    fn integrate_normal_times_speed_w(&self, n_c: f64, n1: f64, w1: f64) -> Option<f64> {
+        Some(self.normal_times_speed_to(n_c, n1, w1))
+    }
+}
+
+impl PolyArc {
+    /// The motion a time w after the start.
+    #[inline(always)]
+    fn at_w(&self, w: f64) -> Point {
+        let PolyArc {
+            x_c,
+            v_c,
+            a_c,
+            jerk,
+            ..
+        } = *self;
+        Point {
+            x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
+            v: v_c + w * (a_c + 0.5 * jerk * w),
+            a: a_c + jerk * w,
+            jerk,
+            db: w,
+            phase: None,
+        }
+    }
+
+    /// ∫ N_f|v| dt over [0, w1] after the start: the integrand is a cubic in w, which
+    /// Gauss–Legendre with two nodes integrates exactly.
+    #[inline]
+    fn normal_times_speed_to(&self, n_c: f64, n1: f64, w1: f64) -> f64 {
         let PolyArc { v_c, a_c, jerk, .. } = *self;
-        let w1 = self.w(t1);
         let half = 0.5 * w1;
         let node = half * GL2_NODE;
         let f = |w: f64| (n_c + n1 * w) * (v_c + w * (a_c + 0.5 * jerk * w));
@@ -294,7 +366,7 @@ impl ArcMotion for TrigArc {
     #[inline(always)]
     fn from_start(basis: Basis, a1: f64, start: Start, phase: Option<(f64, f64)>) -> Self {
         let omega = match basis {
-            Basis::Cos { omega } => omega,
+            Basis::Cos { omega, .. } => omega,
             Basis::Linear { .. } => unreachable!("a trigonometric arc on a linear basis"),
         };
         let (sin_c, cos_c) = phase.unwrap_or_else(|| super::arc::phase(omega, start.t));
@@ -822,7 +894,10 @@ mod tests {
                 0.4,
             ),
             Arc::new(
-                Basis::Cos { omega: 9.0 },
+                Basis::Cos {
+                    omega: 9.0,
+                    shift: 0.0,
+                },
                 Affine::new(0.5, -2.0),
                 0.3,
                 0.2,
@@ -876,7 +951,10 @@ mod tests {
     #[test]
     fn trigonometric_friction_integral_matches_fine_quadrature() {
         let arc = Arc::new(
-            Basis::Cos { omega: 3.0 },
+            Basis::Cos {
+                omega: 3.0,
+                shift: 0.0,
+            },
             Affine::new(0.2, -1.1),
             0.1,
             0.0,
@@ -906,7 +984,10 @@ mod tests {
     #[test]
     fn angle_addition_steps_agree_with_direct_evaluation() {
         let arc = Arc::new(
-            Basis::Cos { omega: 37.8 },
+            Basis::Cos {
+                omega: 37.8,
+                shift: 0.0,
+            },
             Affine::new(0.2, -1.1),
             0.07,
             0.01,
@@ -973,7 +1054,7 @@ mod tests {
             v: 0.0,
             a: 0.0,
         };
-        let arc = Arc::from_start(Basis::Cos { omega }, a1, start);
+        let arc = Arc::from_start(Basis::Cos { omega, shift: 0.0 }, a1, start);
         let (sin_c, cos_c) = theta_c.sin_cos();
         let p = |d: f64| {
             -sin_c * d * d / 2.0 - cos_c * d.powi(3) / 6.0

@@ -7,14 +7,16 @@ use serde::Serialize;
 use crate::error::{Error, Result};
 
 /// The basis function b(t) of a piece; t is the time within the period (s). Serialized as
-/// `{"kind": "linear", "t_ref": …}` or `{"kind": "cos", "omega": …}`.
+/// `{"kind": "linear", "t_ref": …}` or `{"kind": "cos", "omega": …, "shift": …}`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "snake_case")]
 pub enum Basis {
     /// b(t) = t − t_ref (s): the triangle-wave (linearized) laws.
     Linear { t_ref: f64 },
-    /// b(t) = cos ωt (ω in rad/s): the harmonic laws.
-    Cos { omega: f64 },
+    /// b(t) = cos ωt − shift (ω in rad/s): the harmonic laws. A force that vanishes where
+    /// cos ωt = C is written as c1·(cos ωt − C) with shift C, so that what is added to it (the
+    /// sleeve's weight) is a coefficient of its own, not the rounding of a sum with k z0.
+    Cos { omega: f64, shift: f64 },
 }
 
 impl Basis {
@@ -23,7 +25,16 @@ impl Basis {
     pub fn eval(&self, t: f64) -> f64 {
         match *self {
             Basis::Linear { t_ref } => t - t_ref,
-            Basis::Cos { omega } => fmath::cos(omega * t),
+            Basis::Cos { omega, shift } => fmath::cos(omega * t) - shift,
+        }
+    }
+
+    /// The shift of a cos basis (b = cos ωt − shift), 0 on a linear one.
+    #[inline]
+    pub fn shift(&self) -> f64 {
+        match *self {
+            Basis::Linear { .. } => 0.0,
+            Basis::Cos { shift, .. } => shift,
         }
     }
 }
@@ -81,7 +92,7 @@ impl Piece {
     pub fn basis_range(&self, before: f64) -> (f64, f64) {
         let (lo, hi, rate) = match self.basis {
             Basis::Linear { t_ref } => (self.start - t_ref, self.end - t_ref, 1.0),
-            Basis::Cos { omega } => {
+            Basis::Cos { omega, shift } => {
                 let (theta_start, theta_end) = (omega * self.start, omega * self.end);
                 let (b_start, b_end) = (fmath::cos(theta_start), fmath::cos(theta_end));
                 // cos θ = ±1 at θ = kπ inside: +1 for even k, −1 for odd k.
@@ -97,7 +108,7 @@ impl Piece {
                 };
                 let lo = if has(1.0) { -1.0 } else { b_start.min(b_end) };
                 let hi = if has(0.0) { 1.0 } else { b_start.max(b_end) };
-                (lo, hi, omega.abs())
+                (lo - shift, hi - shift, omega.abs())
             }
         };
         let widen = rate * before + 4.0 * f64::EPSILON * lo.abs().max(hi.abs()).max(1.0);
@@ -230,7 +241,11 @@ mod tests {
         let omega = 3.0;
         let pieces = [(0.2, 0.9), (0.9, 1.4), (0.0, 2.5), (1.2, 1.3)];
         for (start, end) in pieces {
-            for basis in [Basis::Cos { omega }, Basis::Linear { t_ref: 0.7 }] {
+            for basis in [
+                Basis::Cos { omega, shift: 0.0 },
+                Basis::Cos { omega, shift: -0.3 },
+                Basis::Linear { t_ref: 0.7 },
+            ] {
                 let piece = Piece {
                     start,
                     end,

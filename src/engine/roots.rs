@@ -68,9 +68,10 @@ pub enum UpCrossings {
     },
     /// b = cos ωt where g = c0 + c1 b is never positive.
     Never,
-    /// b = cos ωt.
+    /// b = cos ωt − shift.
     Cos {
         omega: f64,
+        shift: f64,
         g: Affine,
         /// The crossings of g = 0 before the end of the piece (less `snap`) at which g rises,
         /// in time order, located with their phase.
@@ -111,12 +112,16 @@ impl UpCrossings {
             },
             // g ≤ c0 + |c1| < 0 everywhere: never positive (the usual case for the direction
             // opposite to the drive), decided without trigonometry.
-            Basis::Cos { .. } if g.c0 + g.c1.abs() < 0.0 => UpCrossings::Never,
-            Basis::Cos { omega } => {
+            Basis::Cos { shift, .. } if g.c0 - g.c1 * shift + g.c1.abs() < 0.0 => {
+                UpCrossings::Never
+            }
+            Basis::Cos { omega, shift } => {
                 // The crossings θ/ω and (2π − θ)/ω of cos ωt = b, in two parts; g = c0 + c1 cos ωt
                 // rises where c1·d(cos ωt)/dt > 0. Their lower limit depends on the start of the
                 // search and is applied there (−∞ keeps every crossing a number).
-                let b = root_b();
+                // The root in the basis, and the level of cos ωt there (b + shift).
+                let root = root_b();
+                let b = root + Dd::from(shift);
                 // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
                 // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
                 let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
@@ -128,12 +133,13 @@ impl UpCrossings {
                         c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
                             .map(|(t, _)| Crossing {
                                 t,
-                                root_b: Some(b),
+                                root_b: Some(root),
                                 phase: Some((sin, b.value())),
                             })
                     });
                 UpCrossings::Cos {
                     omega,
+                    shift,
                     g,
                     crossings,
                 }
@@ -174,6 +180,7 @@ impl UpCrossings {
             UpCrossings::Never => None,
             UpCrossings::Cos {
                 omega,
+                shift,
                 g,
                 crossings,
             } => {
@@ -181,7 +188,7 @@ impl UpCrossings {
                 // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
                 // sin ωt only where g = 0.
                 let cos = phase.map_or_else(|| fmath::cos(omega * from), |(_, cos)| cos);
-                let g_from = g.at(cos);
+                let g_from = g.at(cos - shift);
                 let rising = || {
                     let sin = phase.map_or_else(|| fmath::sin(omega * from), |(sin, _)| sin);
                     let slope = -g.c1 * omega * sin;
@@ -412,7 +419,10 @@ mod tests {
 
     #[test]
     fn cos_up_crossing_skips_down_crossings_and_tangency() {
-        let basis = Basis::Cos { omega: 1.0 };
+        let basis = Basis::Cos {
+            omega: 1.0,
+            shift: 0.0,
+        };
         let tau = std::f64::consts::TAU;
         // g = −cos t: up-crossing at π/2.
         let c = crossing(basis, g(0.0, -1.0), 0.0, tau, 1e-15).unwrap();

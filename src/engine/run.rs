@@ -17,8 +17,12 @@ const KEEP_LAST: u32 = 10;
 /// Room for this many events per kept period is reserved at the start (two slip-stick cycles
 /// with their speed maxima, and two more), so that the list seldom grows during a run.
 const EVENTS_RESERVED_PER_PERIOD: usize = 8;
-/// A local minimum of s·v below this fraction of the speed before it is a tangential stick.
-const TOUCH_REL: f64 = 1e-13;
+/// A local minimum of s·v below this fraction of the speed before it is a tangential stick:
+/// the attainable accuracy of the speed at the located minimum (a sum of terms as large as the
+/// speed before it, each rounded, at a zero of a located from the arc's own coefficients), and
+/// no more. A minimum above it is a slip that goes on: 1e-13 once declared a stick 1.2e-14
+/// above φ_c, where the true minimum is 4.6e-14 of v_M.
+const TOUCH_REL: f64 = 16.0 * f64::EPSILON;
 /// More transitions than this inside one piece means the state machine cannot advance.
 const MAX_TRANSITIONS_PER_PIECE: u32 = 64;
 /// Force laws of up to this many pieces are prepared on the stack (the models' have 1 to 4).
@@ -435,7 +439,10 @@ fn walk_piece<'a, M: ArcMotion>(
                     .take()
                     .and_then(|(prev, a, normal)| carry_over(body, prev, piece, a, normal, s))
                     .unwrap_or_else(|| {
-                        let b = phase_t.map_or_else(|| piece.basis.eval(t), |(_, cos)| cos);
+                        let b = phase_t.map_or_else(
+                            || piece.basis.eval(t),
+                            |(_, cos)| cos - piece.basis.shift(),
+                        );
                         let normal = piece.normal.at(b);
                         (body.slip_acceleration(piece.drive.at(b), normal, s), normal)
                     });
@@ -561,7 +568,7 @@ impl PreparedPiece<'_> {
         // arc finds its own (see [`ArcMotion::sign_changes`]).
         let sign_changes = |s: f64| match piece.basis {
             Basis::Linear { .. } => SignChanges::UNKNOWN,
-            Basis::Cos { omega } => {
+            Basis::Cos { omega, shift } => {
                 // s·a = h/M with h = s·D − μd·N_f, formed exactly as the switching function is.
                 let h = Affine::combine(s, piece.drive, -body.mu_d, piece.normal);
                 let exact = || {
@@ -571,7 +578,7 @@ impl PreparedPiece<'_> {
                         coefficient(piece.drive.c1, piece.normal.c1),
                     )
                 };
-                SignChanges::cos(omega, h, exact)
+                SignChanges::cos(omega, shift, h, exact)
             }
         };
         let accel = [sign_changes(1.0), sign_changes(-1.0)];
@@ -579,7 +586,7 @@ impl PreparedPiece<'_> {
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
         let mut known = KnownAngles::new();
-        if let Basis::Cos { omega } = piece.basis {
+        if let Basis::Cos { omega, .. } = piece.basis {
             let roots = onsets.iter().flat_map(|onsets| match onsets {
                 Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
                 _ => [None, None],
@@ -602,7 +609,7 @@ impl PreparedPiece<'_> {
             piece,
             start_phase: match piece.basis {
                 Basis::Linear { .. } => None,
-                Basis::Cos { omega } => Some(phase(omega, Dd::from(piece.start))),
+                Basis::Cos { omega, .. } => Some(phase(omega, Dd::from(piece.start))),
             },
             onsets,
             slope: [slope(1.0), slope(-1.0)],
@@ -711,9 +718,10 @@ fn onset_acceleration(body: &Body, piece: &Piece, c: &Crossing, s: f64) -> (f64,
             (0.0, if from_drive { s * d / body.mu_s } else { n })
         }
         None => {
-            let b = c
-                .phase
-                .map_or_else(|| piece.basis.eval(c.t.hi), |(_, cos)| cos);
+            let b = c.phase.map_or_else(
+                || piece.basis.eval(c.t.hi),
+                |(_, cos)| cos - piece.basis.shift(),
+            );
             let normal = piece.normal.at(b);
             let g = s * piece.drive.at(b) - body.mu_s * normal;
             (g.max(0.0), normal)
@@ -791,6 +799,8 @@ fn slide<M: ArcMotion>(
     // s·v at p when known (at the start it is the arc's initial speed), to evaluate it once.
     let mut speed_p = Some(s * arc.v_start());
     let mut stick = None;
+    // A located stick refined as the time since the arc's start, with the motion there.
+    let mut refined = None;
     // The half angle of the last evaluation on a trigonometric arc, from which the root search
     // steps on without sin and cos.
     let mut seed = None;
@@ -811,7 +821,7 @@ fn slide<M: ArcMotion>(
         }
         let mut point_p = || arc.at_near(p, &mut seed, known);
         let at_p = if at_max {
-            let point = point_p();
+            let point = arc.at_accel_zero(p).unwrap_or_else(point_p);
             on_max(p, point);
             speed_p.unwrap_or(s * point.v)
         } else {
@@ -829,7 +839,9 @@ fn slide<M: ArcMotion>(
                 (s * at.v, s * at.a, s * at.jerk)
             };
             let hi = (at_q, s * point_q.a, s * point_q.jerk);
-            Some(monotone_zero(f, (p, at_p), (q, hi), M::TRIG))
+            let t = monotone_zero(f, (p, at_p), (q, hi), M::TRIG);
+            refined = arc.stick_in_w(t);
+            Some(t)
         } else if at_zero_of_a && at_q <= TOUCH_REL * at_p {
             Some(q)
         } else {
@@ -842,6 +854,18 @@ fn slide<M: ArcMotion>(
     }
     // v keeps its sign over the whole slide, so the friction work is one integral.
     let end = stick.unwrap_or(piece.end);
+    if let Some((w, mut point)) = refined {
+        // At rest: the refined root's own speed is rounding.
+        point.v = 0.0;
+        return Slide {
+            stick,
+            end: point,
+            normal_work: normal_start.map_or(0.0, |n_c| {
+                arc.integrate_normal_times_speed_w(n_c, piece.normal.c1, w)
+                    .unwrap_or_else(|| arc.integrate_normal_times_speed(n_c, piece.normal.c1, end))
+            }),
+        };
+    }
     Slide {
         stick,
         end: if iterate.is_some() {

@@ -12,9 +12,11 @@
 //! The separator is `,`, `;` or tab, whichever most lines hold (a tie goes to `;`, then tab, so
 //! that `0,5;1,2` reads as two decimal-comma numbers). Decimal commas are accepted when the
 //! separator is not `,`. Quoting follows RFC 4180 (the `csv` crate).
-//! Every problem is one line naming the line of the file: no header, a missing column, an
-//! empty or non-numeric cell, time not strictly increasing, fewer than [`MIN_ROWS`] or more
-//! than [`MAX_ROWS`] rows.
+//! A row with a blank cell in the time or the position column is skipped and counted: Tracker
+//! leaves a cell blank wherever a track has no mark in a frame.
+//! Every problem is one line naming the line of the file: no header, a missing column, a
+//! non-numeric cell, time not strictly increasing, fewer than [`MIN_ROWS`] or more than
+//! [`MAX_ROWS`] rows.
 
 use std::path::Path;
 
@@ -134,6 +136,10 @@ pub struct Tracked {
     pub t: Vec<f64>,
     #[serde(skip)]
     pub y: Vec<f64>,
+    /// Data rows skipped for a blank cell in the time or the position column (a frame where
+    /// the track has no mark), and the line of the first.
+    pub skipped_rows: usize,
+    pub first_skipped_line: Option<u64>,
 }
 
 impl Tracked {
@@ -250,22 +256,20 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
     let mut t = Vec::with_capacity(data.len());
     let mut y = Vec::with_capacity(data.len());
     let mut previous: Option<(f64, u64)> = None;
+    let (mut skipped_rows, mut first_skipped_line) = (0, None);
     for row in data {
+        let raw = |col: usize| row.cells.get(col).map_or("", String::as_str);
+        if raw(time_col).is_empty() || raw(position_col).is_empty() {
+            skipped_rows += 1;
+            first_skipped_line.get_or_insert(row.line);
+            continue;
+        }
         let cell = |col: usize| -> Result<f64> {
-            let raw = row.cells.get(col).map_or("", String::as_str);
-            let reason = if raw.is_empty() {
-                "empty cell".to_string()
-            } else {
-                match number(raw) {
-                    Some(x) => return Ok(x),
-                    None => format!("'{}' is not a number", excerpt(raw, CELL_CHARS)),
-                }
-            };
-            Err(Error::TrackedData {
+            number(raw(col)).ok_or_else(|| Error::TrackedData {
                 path: path.display().to_string(),
                 line: Some(row.line),
                 column: Some(names[col].to_string()),
-                reason,
+                reason: format!("'{}' is not a number", excerpt(raw(col), CELL_CHARS)),
             })
         };
         let time = cell(time_col)? * time_scale;
@@ -288,10 +292,15 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
     }
     if t.len() < MIN_ROWS {
         let (first, last) = (data[0].line, data[data.len() - 1].line);
+        let skipped = match skipped_rows {
+            0 => String::new(),
+            s => format!(" ({s} skipped for a blank cell in a used column)"),
+        };
         return Err(err(
             Some(last),
             format!(
-                "only {} data rows (lines {first}-{last}); a fit needs at least {MIN_ROWS}",
+                "only {} data rows (lines {first}-{last}){skipped}; a fit needs at least \
+                 {MIN_ROWS}",
                 t.len()
             ),
         ));
@@ -303,6 +312,8 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
         unit,
         t,
         y,
+        skipped_rows,
+        first_skipped_line,
     })
 }
 
@@ -559,12 +570,9 @@ mod tests {
                 "line 14: time not strictly increasing: 0.5 s after 11 s on line 13",
             ),
             (
-                format!("t,y\n{}20,\n", body(12)),
-                "line 14, column y: empty cell",
-            ),
-            (
-                format!("t,y\n{}20\n", body(12)),
-                "line 14, column y: empty cell",
+                format!("t,y\n{}20,\n,5\n21\n", body(7)),
+                "line 11: only 7 data rows (lines 2-11) (3 skipped for a blank cell in a used \
+                 column); a fit needs at least 10",
             ),
             (
                 format!("t;y (px)\n{}", rows(12, |i| format!("{i};{i}"))),
@@ -602,6 +610,30 @@ mod tests {
         };
         let msg = parse_text(&text, &beyond).unwrap_err().to_string();
         assert!(msg.contains("column 3 does not exist"), "{msg}");
+    }
+
+    /// Tracker leaves a cell blank in a frame where a track has no mark: such rows are skipped
+    /// and counted, wherever they are; a blank in a column not used does not matter.
+    #[test]
+    fn rows_with_a_blank_cell_in_a_used_column_are_skipped_and_counted() {
+        let text = format!(
+            "mass A\nt,x,y\n,,\n0.5,,\n{}1.5,,\n2.5,1,\n,1,3\n",
+            rows(12, |i| format!(
+                "{},,{}",
+                0.6 + i as f64 * 0.01,
+                0.5 - i as f64 * 1e-3
+            ))
+        );
+        let d = parse_text(&text, &ReadOptions::default()).unwrap();
+        assert_eq!(d.t.len(), 12);
+        assert_eq!((d.skipped_rows, d.first_skipped_line), (4, Some(4)));
+        assert_eq!((d.t[0], d.y[11]), (0.6, 0.489));
+        let whole = parse_text(
+            &format!("t,y\n{}", rows(12, |i| format!("{i},{i}"))),
+            &ReadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!((whole.skipped_rows, whole.first_skipped_line), (0, None));
     }
 
     #[test]

@@ -6,7 +6,9 @@
 //! data     (t_i, y_i), i = 1..n                                                 data.rs
 //! model    y(t_i) = y_off + s [y_S(τ_i) − y_S(τ_1)],  τ_i = K T + t_shift + t_i − t_1  model.rs
 //! free     a subset of μd, z0, d0, μs, k (valid wherever LM goes)               param.rs
-//! LM       Levenberg–Marquardt from the best phases of a scan; standard errors  solve.rs
+//! LM       Levenberg–Marquardt from the best phases of a scan at each of a spread of
+//!          centres around the given values; the best kept; standard errors         solve.rs
+//! verdict  is the residual the noise? if not, is the position unit slipped?       verdict.rs
 //! outputs  fit.json, fit.csv, fit.svg, the terminal table                       render.rs
 //! ```
 //!
@@ -22,6 +24,7 @@ pub mod param;
 mod render;
 mod solve;
 pub mod synthetic;
+pub mod verdict;
 
 use nalgebra::DMatrix;
 use serde::Serialize;
@@ -37,6 +40,7 @@ pub use model::{data_period, track, Axis, Track};
 pub use param::FitParam;
 pub use render::{chart, json, render, strong_correlations, text, Correlated};
 use solve::{solve, termination_text, Setup};
+pub use verdict::{ScaleSlip, Verdict};
 
 /// Samples of the model curve drawn in the figure.
 const CURVE_SAMPLES: usize = 4000;
@@ -82,10 +86,16 @@ pub struct Fit {
     pub converged: bool,
     pub termination: String,
     /// Of the winning start: Jacobians computed (LM iterations) and residual evaluations;
-    /// and how many starts were raced.
+    /// and how many starts were raced over all the centres.
     pub iterations: usize,
     pub evaluations: usize,
     pub starts: usize,
+    /// Centres LM started from (the given values and a spread around them), and how many of
+    /// them ended in the minimum kept: few means the residual has many minima here.
+    pub centres: usize,
+    pub centres_at_best: usize,
+    /// Whether the fitted model describes the data (the residual is the noise), and why not.
+    pub verdict: Verdict,
     /// Root-mean-square residual (m) and residual variance s² = RSS/(n − p) (m²).
     pub rms_residual: f64,
     pub residual_variance: f64,
@@ -118,8 +128,74 @@ pub const MAX_SPAN_PERIODS: f64 = 100_000.0;
 /// nuisance to `data`.
 ///
 /// Errors: invalid parameters, data that do not descend, or an engine failure. A fit that does
-/// not converge is returned with `converged: false`.
+/// not converge is returned with `converged: false`, one that does not describe the data with
+/// a negative [`Verdict`]. When the data fall a power of ten faster or slower than the model,
+/// the verdict (or the error of a failed search) names the slip, and the unit with which the
+/// model describes them (the fit is repeated in it to know).
 pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result<Fit> {
+    let result = fit_as_read(data, base, free);
+    let Some((mut slip, other)) = unit_slip(data, base, free) else {
+        return result;
+    };
+    let other = other.filter(|o| o.converged && o.verdict.describes);
+    slip.rms_in_units = other.as_ref().map(|o| o.rms_residual);
+    match result {
+        Ok(mut f) => {
+            if f.verdict.describes {
+                // The data as read may be described loosely (a 10× slip scales the noise
+                // too); they stand unless the other unit's residual is clearly the noise.
+                let Some(o) = other.filter(|o| o.verdict.less_systematic_than(&f.verdict, f.n))
+                else {
+                    return Ok(f);
+                };
+                f.verdict.describes = false;
+                f.verdict.reasons.push(format!(
+                    "as read the residuals are systematic (lag-1 autocorrelation {}), in {} \
+                     they are noise ({})",
+                    sig(Some(f.verdict.autocorrelation), 2),
+                    o.data.unit.symbol(),
+                    sig(Some(o.verdict.autocorrelation), 2)
+                ));
+            }
+            f.verdict.scale = Some(slip);
+            Ok(f)
+        }
+        // First, as the one-line message is cut to its length.
+        Err(Error::NotConverged { reason }) => Err(Error::NotConverged {
+            reason: format!("{}; {reason}", slip.brief()),
+        }),
+        Err(e) => Err(e),
+    }
+}
+
+/// A slip of the position unit when the data fall a power of ten faster or slower than the
+/// model at `base` ([`verdict::scale_slip`]), and the fit in the unit that undoes it.
+fn unit_slip(
+    data: &Tracked,
+    base: &WoodpeckerParams,
+    free: &[FitParam],
+) -> Option<(ScaleSlip, Option<Fit>)> {
+    let model = steady_state(base).ok()?.1?;
+    let ratio = verdict::descent_speed(&data.t, &data.y_metres()) / model;
+    let (factor, units) = verdict::scale_slip(ratio, data.unit)?;
+    let other = units.and_then(|unit| {
+        let again = Tracked {
+            unit,
+            ..data.clone()
+        };
+        fit_as_read(&again, base, free).ok()
+    });
+    let slip = ScaleSlip {
+        factor,
+        ratio,
+        units,
+        rms_in_units: None,
+    };
+    Some((slip, other))
+}
+
+/// [`fit`] with the positions in the unit `data` says.
+fn fit_as_read(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result<Fit> {
     base.validate()?;
     let mut free = free.to_vec();
     free.sort();
@@ -208,6 +284,9 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
         iterations: s.iterations,
         evaluations: s.evaluations,
         starts: s.starts,
+        centres: s.centres,
+        centres_at_best: s.at_best,
+        verdict: Verdict::judge(&data.t, &setup.y, r.as_slice()),
         rms_residual: (rss / n as f64).sqrt(),
         residual_variance: s.s2,
         residual_autocorrelation: r.rows(0, n - 1).dot(&r.rows(1, n - 1)) / rss,

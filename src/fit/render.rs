@@ -195,9 +195,18 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     let mut o = String::new();
     // The file name and the header names are the user's: escaped, bounded.
     let _ = writeln!(o, "stickslip fit {}", excerpt_path(&d.file));
+    let skipped = match (d.skipped_rows, d.first_skipped_line) {
+        (0, _) => String::new(),
+        (n, Some(line)) => format!(
+            " ({n} rows skipped for a blank cell in the time or position column, the first on \
+             line {line})"
+        ),
+        (n, None) => format!(" ({n} rows skipped for a blank cell)"),
+    };
     let _ = writeln!(
         o,
-        "data:     {} points, t = {} to {} s; time column {}, position column {} in {}; y axis {}",
+        "data:     {} points{skipped}, t = {} to {} s; time column {}, position column {} in {}; \
+         y axis {}",
         fit.n,
         sig(s.t.first().copied(), 4),
         sig(s.t.last().copied(), 4),
@@ -211,12 +220,16 @@ pub fn text(fit: &Fit, out: &Path) -> String {
     );
     let _ = writeln!(
         o,
-        "fit:      {}{}, {} iterations, {} evaluations; starts tried: {}",
+        "fit:      {}{}, {} iterations, {} evaluations; from {} centres (the given values \
+         and ±{} % around them, {} starts in phase), {} of them ending in this minimum",
         if fit.converged { "" } else { "NOT CONVERGED: " },
         fit.termination,
         fit.iterations,
         fit.evaluations,
-        fit.starts
+        fit.centres,
+        super::solve::SPREAD * 100.0,
+        fit.starts,
+        fit.centres_at_best
     );
     let _ = writeln!(
         o,
@@ -228,6 +241,28 @@ pub fn text(fit: &Fit, out: &Path) -> String {
         fit.p,
         sig(Some(fit.residual_autocorrelation), 2)
     );
+    let v = &fit.verdict;
+    if v.describes {
+        let _ = writeln!(
+            o,
+            "verdict:  the model describes these data: the residual is {} the noise the data \
+             show on their own ({} mm), and not systematic",
+            v.rms_over_noise
+                .map_or("within".to_string(), |q| format!("{}×", sig(Some(q), 2))),
+            sig(v.noise.map(|s| s * 1e3), 2)
+        );
+    } else {
+        let _ = writeln!(
+            o,
+            "verdict:  {}. The values below are the best minimum found, not a measurement of \
+             the toy, and their standard errors mean nothing.",
+            v.sentence().replacen(
+                "the model does not describe these data",
+                "THE MODEL DOES NOT DESCRIBE THESE DATA",
+                1
+            )
+        );
+    }
     let _ = writeln!(
         o,
         "\n{:<16} {:>12} {:>10} {:>8} {:>12}",
@@ -267,7 +302,13 @@ pub fn text(fit: &Fit, out: &Path) -> String {
         );
     }
     let _ = write!(o, "\n{}", correlation_table(fit));
-    for c in strong_correlations(fit) {
+    // Which parameter to fix is advice for a fit that describes the data.
+    let advice = if v.describes {
+        strong_correlations(fit)
+    } else {
+        Vec::new()
+    };
+    for c in advice {
         let _ = writeln!(
             o,
             "warning: {} and {} are correlated at r = {} (|r| ≥ {STRONG_CORRELATION}): the \

@@ -183,13 +183,13 @@ impl Model {
     }
 
     /// A one-line hint when parameter `key` = `value` (SI) looks typed in the unit people think
-    /// in rather than SI: a length or mass whose usual unit is mm or g given as 1 m or 1 kg or
-    /// more (`--z0 7` meant as 7 mm). `None` when nothing looks amiss.
+    /// in rather than SI: a length or mass whose usual unit is mm or g given between 1 and
+    /// 10 000 m or kg (`--z0 7` meant as 7 mm). `None` when nothing looks amiss.
     pub fn unit_hint(&self, key: &str, value: f64) -> Option<String> {
         fn hint<M: Physics>(_: &M, key: &str, value: f64) -> Option<String> {
             let spec = M::PARAMS.iter().find(|s| s.key == key)?;
             let (unit, factor) = spec.display;
-            (factor == 1e3 && matches!(unit, "mm" | "g") && value.abs() >= 1.0).then(|| {
+            (factor == 1e3 && matches!(unit, "mm" | "g") && (1.0..1e4).contains(&value)).then(|| {
                 format!(
                     "hint: {} = {} {} is large for a lab set-up; --{} takes {}: for {} {unit} \
                      give --{} {}",

@@ -32,11 +32,16 @@ pub fn unsettled(periods: u32, summary: &Summary) -> Option<String> {
 
 /// |a − b| / max(|a|, |b|) (0 when both vanish).
 pub fn rel_diff(a: f64, b: f64) -> f64 {
-    let scale = a.abs().max(b.abs());
-    if scale == 0.0 {
+    rel_diff_on_scale(a, b, 0.0)
+}
+
+/// |a − b| / max(|a|, |b|, scale): the error relative to at least `scale` (0 when all vanish).
+pub fn rel_diff_on_scale(a: f64, b: f64, scale: f64) -> f64 {
+    let denominator = a.abs().max(b.abs()).max(scale);
+    if denominator == 0.0 {
         0.0
     } else {
-        (a - b).abs() / scale
+        (a - b).abs() / denominator
     }
 }
 
@@ -163,14 +168,7 @@ impl Check {
         scale: f64,
     ) -> Self {
         let quantity = quantity.into();
-        let rel_error = numeric.map(|n| {
-            let scale = closed_form.abs().max(n.abs()).max(scale);
-            if scale == 0.0 {
-                0.0
-            } else {
-                (closed_form - n).abs() / scale
-            }
-        });
+        let rel_error = numeric.map(|n| rel_diff_on_scale(closed_form, n, scale));
         Self {
             quantity,
             equation: quantity.equation(),

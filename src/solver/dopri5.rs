@@ -493,7 +493,7 @@ impl<'a> Forces<'a> {
         let law = &problem.law;
         let periodic = match law.pieces.as_slice() {
             [only] => match only.basis {
-                Basis::Cos { omega } => {
+                Basis::Cos { omega, .. } => {
                     let turns = omega * law.period / std::f64::consts::TAU;
                     turns.round() >= 1.0
                         && (turns - turns.round()).abs() <= 8.0 * f64::EPSILON * turns
@@ -887,9 +887,9 @@ fn slip_advance(
     let step = match on_piece {
         // The basis matched once per step, not at each evaluation (the same operations).
         Some(OnPiece { hi, lo, piece }) => match piece.basis {
-            Basis::Cos { omega } => {
+            Basis::Cos { omega, shift } => {
                 let f = Slip(move |t| {
-                    let b = fmath::cos(omega * ((t - hi) - lo));
+                    let b = fmath::cos(omega * ((t - hi) - lo)) - shift;
                     body.slip_acceleration(piece.drive.at(b), piece.normal.at(b), s)
                 });
                 run.step(&f, *stop, opts.h_max, stats)?
@@ -1399,7 +1399,7 @@ mod tests {
         let piece = |start, end| Piece {
             start,
             end,
-            basis: Basis::Cos { omega },
+            basis: Basis::Cos { omega, shift: 0.0 },
             drive: Affine::new(0.5, -0.5),
             normal: Affine::new(0.9999 / 0.4, 0.0),
         };
@@ -1429,7 +1429,7 @@ mod tests {
             let piece = Piece {
                 start: 0.0,
                 end: period,
-                basis: Basis::Cos { omega },
+                basis: Basis::Cos { omega, shift: 0.0 },
                 drive: Affine::new(0.5, -0.5),
                 normal: Affine::new(1.0, 1.0),
             };

@@ -252,6 +252,7 @@ pub(crate) mod test_support {
                 end: 1.0,
                 basis: Basis::Cos {
                     omega: std::f64::consts::TAU,
+                    shift: 0.0,
                 },
                 drive: Affine::new(0.0, 1.0),
                 normal: Affine::new(0.5, 0.0),

@@ -1,15 +1,27 @@
 #!/usr/bin/env python3
-"""High-precision reference for the engine (src/engine): the same state machine (physics.md §0)
-integrated with mpmath at 40 significant digits.
+"""High-precision reference for the engine (src/engine): the state machine of physics.md §0
+integrated with mpmath at 40 significant digits or more.
 
-Reads a JSON list of cases on stdin, each {"law": ForceLaw, "body": Body, "periods": N} as the
-engine serializes them (the doubles are taken as exact numbers), and writes a JSON list with, per
-case: the transitions [t, kind, dir] of every period ("slip", "stick", "reversal"), the position
-and velocity at each period start, and the friction dissipation ∫ μd N_f |v| dt of each period.
-Numbers are written as decimal strings with 30 digits.
+Reads a JSON list of cases on stdin and writes a JSON list of results, one per case. A case is
+either
+
+* {"model": "pulled-mass" | "woodpecker", "law": "linear" | "harmonic", "params": {...},
+  "periods": N}: the forces are built here from the parameters alone (physics.md §1, §2, §3.1:
+  W, ω, T, the triangle waves, F_e, its zeros, the linear counterparts, λ), in exact arithmetic
+  on the doubles given, sharing nothing with the engine's serialized force law; the working
+  precision grows with the small parameter of short slips (φ = F/W, ε = W_S/(k ζ0)) so that
+  40 digits survive the cancellations of a slip 1/φ or 1/ε times shorter than the period; or
+* {"law": ForceLaw, "body": Body, "periods": N} as the engine serializes them (the doubles are
+  taken as exact numbers): the bench's check of the exact engine on its own force laws.
+
+Per case: the transitions [t, kind, dir] of every period ("slip", "stick", "reversal"), the
+speed maxima [t, v] of every period, the position and velocity at each period start, the
+advance of each period (formed at full precision) and the friction dissipation ∫ μd N_f |v| dt
+of each period. Numbers are written as decimal strings with
+30 digits.
 
 The motion on a piece is the closed form of physics.md §0 (a = A0 + A1 b(t), b = t − t_ref or
-cos ωt) evaluated at 40 digits, so the cancellations that the engine must avoid in double
+cos ωt) evaluated at high precision, so the cancellations that the engine must avoid in double
 precision cost nothing here; events are bracketed roots on intervals where v is monotone (split
 at the zeros of a), refined to 1e-36 of the period.
 
@@ -30,15 +42,30 @@ MAX_TRANSITIONS_PER_PIECE = 64
 
 
 class Piece:
-    def __init__(self, p):
-        self.start = mpf(p["start"])
-        self.end = mpf(p["end"])
+    """D = d0 + d1 b(t), N_f = n0 + n1 b(t) on [start, end); b = t − t_ref or cos ωt."""
+
+    def __init__(self, start, end, t_ref, omega, drive, normal):
+        self.start, self.end = start, end
+        self.linear = omega is None
+        self.t_ref, self.omega = t_ref, omega
+        self.d0, self.d1 = drive
+        self.n0, self.n1 = normal
+
+    @staticmethod
+    def serialized(p):
+        """A piece as the engine serializes it."""
         basis = p["basis"]
-        self.linear = basis["kind"] == "linear"
-        self.t_ref = mpf(basis["t_ref"]) if self.linear else None
-        self.omega = None if self.linear else mpf(basis["omega"])
-        self.d0, self.d1 = mpf(p["drive"]["c0"]), mpf(p["drive"]["c1"])
-        self.n0, self.n1 = mpf(p["normal"]["c0"]), mpf(p["normal"]["c1"])
+        linear = basis["kind"] == "linear"
+        piece = Piece(mpf(p["start"]), mpf(p["end"]),
+                      mpf(basis["t_ref"]) if linear else None,
+                      None if linear else mpf(basis["omega"]),
+                      (mpf(p["drive"]["c0"]), mpf(p["drive"]["c1"])),
+                      (mpf(p["normal"]["c0"]), mpf(p["normal"]["c1"])))
+        # b = cos ωt − shift: the same affine functions of cos ωt, c0 − c1·shift + c1 cos ωt.
+        shift = mpf(basis.get("shift", 0))
+        piece.d0 -= piece.d1 * shift
+        piece.n0 -= piece.n1 * shift
+        return piece
 
     def b(self, t):
         return t - self.t_ref if self.linear else mpmath.cos(self.omega * t)
@@ -170,19 +197,114 @@ def first_onset(body, piece, frm):
     return best
 
 
+def pulled_mass(law, p):
+    """Physics.md §1: M = 2m, W = m g, ω = √(k/m), D = F; N = W(1 + cos ωt) or the triangle
+    wave 2W|1 − 2t/T| (vertex 0 at T/2). Returns (period, pieces, body, φ)."""
+    mu_s, mu_d, m, k, F, g = (mpf(p[key]) for key in ("mu_s", "mu_d", "mass", "k", "force", "g"))
+    W = m * g
+    omega = mpmath.sqrt(k / m)
+    T = 2 * mpmath.pi / omega
+    if law == "harmonic":
+        pieces = [Piece(mpf(0), T, None, omega, (F, mpf(0)), (W, W))]
+    else:
+        half = T / 2
+        slope = 4 * W / T
+        pieces = [Piece(mpf(0), half, half, None, (F, mpf(0)), (mpf(0), -slope)),
+                  Piece(half, T, half, None, (F, mpf(0)), (mpf(0), slope))]
+    return T, pieces, {"mass": 2 * m, "mu_s": mu_s, "mu_d": mu_d}, F / W
+
+
+def woodpecker(law, p):
+    """Physics.md §2–3.1: M = m_S, D = W_S + F_e, N_f = 2λ|F_e|, F_e = k(z0 + d0 cos ωt) or
+    k(δ0 + ζ(t)) with the triangle ζ of amplitude ζ0 and the counterpart's (ζ0, δ0); pieces cut
+    at the zeros of F_e. Returns (period, pieces, body, ε = W_S/(k ζ0))."""
+    num = lambda key: mpf(p[key])
+    mu_s, mu_d, k, m_s, m_w = num("mu_s"), num("mu_d"), num("k"), num("m_sleeve"), num("m_bird")
+    z0, d0, g = num("z0"), num("d0"), num("g")
+    lam = num("lever") if p.get("lever") is not None else num("l") / num("h")
+    omega = {"bird": mpmath.sqrt(k / m_w),
+             "reduced": mpmath.sqrt(k * (m_s + m_w) / (m_s * m_w)),
+             "total": mpmath.sqrt(k / (m_s + m_w))}[p["omega_mode"]]
+    T = 2 * mpmath.pi / omega
+    w_s = m_s * g
+    pieces = []
+
+    def add(start, end, t_ref, om, f0, f1):
+        """F_e = f0 + f1 b on [start, end), its sign read at the middle."""
+        mid = (start + end) / 2
+        b = mid - t_ref if om is None else mpmath.cos(om * mid)
+        sign = 1 if f0 + f1 * b > 0 else -1
+        pieces.append(Piece(start, end, t_ref, om, (w_s + f0, f1),
+                            (2 * lam * sign * f0, 2 * lam * sign * f1)))
+
+    if law == "harmonic":
+        zeta0 = d0
+        cuts = [mpf(0)]
+        if abs(z0) < d0:
+            t1 = mpmath.acos(-z0 / d0) / omega
+            cuts += [t1, T - t1]
+        cuts.append(T)
+        for a, b in zip(cuts, cuts[1:]):
+            add(a, b, None, omega, k * z0, k * d0)
+    else:
+        counterpart = p["counterpart"]
+        if counterpart == "extremes":
+            zeta0, delta0 = d0, z0
+        elif counterpart == "zeros":
+            zeta0, delta0 = d0, d0 * 2 / mpmath.pi * mpmath.asin(z0 / d0)
+        else:
+            zeta0 = mpmath.pi / 2 * mpmath.sqrt(d0 * d0 - z0 * z0)
+            delta0 = zeta0 * 2 / mpmath.pi * mpmath.asin(z0 / d0)
+        tau = T / 4
+        rate = k * zeta0 / tau
+        # ζ = ζ0(1 − t/τ) on [0, 2τ], ζ0(t/τ − 3) on [2τ, 4τ]; F_e = k(δ0 + ζ), written about the
+        # start of each half and cut at its zero.
+        for start, end, f_start, r in ((mpf(0), 2 * tau, k * (delta0 + zeta0), -rate),
+                                       (2 * tau, T, k * (delta0 - zeta0), rate)):
+            zero = start - f_start / r
+            cuts = [start] + ([zero] if start < zero < end else []) + [end]
+            for a, b in zip(cuts, cuts[1:]):
+                add(a, b, start, None, f_start, r)
+    body = {"mass": m_s, "mu_s": mu_s, "mu_d": mu_d}
+    return T, pieces, body, w_s / (k * zeta0)
+
+
 def integrate(case):
-    law, body, periods = case["law"], case["body"], case["periods"]
-    body = {k: mpf(v) for k, v in body.items()}
-    period = mpf(law["period"])
-    pieces = [Piece(p) for p in law["pieces"]]
+    periods = case["periods"]
+    if "model" in case:
+        build = pulled_mass if case["model"] == "pulled-mass" else woodpecker
+        # The small parameter at the working precision of the result, then the precision that
+        # keeps 40 digits through the cancellations of slips that short (three factors of it
+        # cancel at most, in the cubic of a position).
+        mp.dps = 40
+        small = build(case["law"], case["params"])[3]
+        lost = max(0, int(mpmath.ceil(-mpmath.log10(small)))) if small > 0 else 0
+        mp.dps = 40 + 3 * lost
+        period, pieces, body, _ = build(case["law"], case["params"])
+    else:
+        mp.dps = 40
+        law, body = case["law"], case["body"]
+        body = {k: mpf(v) for k, v in body.items()}
+        period = mpf(law["period"])
+        pieces = [Piece.serialized(p) for p in law["pieces"]]
+    result = run(period, pieces, body, periods)
+    mp.dps = 40
+    return result
+
+
+def run(period, pieces, body, periods):
     x, v, dirn = mpf(0), mpf(0), 0
-    xs, vs, diss, events = [], [], [], []
+    xs, vs, diss, events, maxima = [], [], [], [], []
     tiny = period * mpf(10) ** -30
+    # The sign of s·a on the last slipping stretch: a speed maximum where it turns from + to −
+    # (inside a piece at a zero of a, or at a piece boundary).
+    accel_sign = 0
     for n in range(periods):
         xs.append(x)
         vs.append(v)
         work = mpf(0)
         ev = []
+        mx = []
         for piece in pieces:
             t = piece.start
             transitions = 0
@@ -201,6 +323,7 @@ def integrate(case):
                             ev.append((t, "reversal", dirn))
                     else:
                         ev.append((t, "slip", dirn))
+                    accel_sign = 0
                     continue
                 s = dirn
                 a0 = (piece.d0 - s * body["mu_d"] * piece.n0) / body["mass"]
@@ -211,7 +334,13 @@ def integrate(case):
                 p = t
                 stick = None
                 for q in bounds:
-                    if s * arc.a((p + q) / 2) < 0:
+                    sa = s * arc.a((p + q) / 2)
+                    sign = 1 if sa > 0 else (-1 if sa < 0 else 0)
+                    if accel_sign > 0 and sign < 0:
+                        mx.append((p, arc.v(p)))
+                    if sign != 0:
+                        accel_sign = sign
+                    if sign < 0:
                         sp, sq = s * arc.v(p), s * arc.v(q)
                         if sp <= 0:
                             stick = p
@@ -233,12 +362,16 @@ def integrate(case):
                 t = stick
         diss.append(body["mu_d"] * work)
         events.append([[mpmath.nstr(n * period + e[0], 30), e[1], e[2]] for e in ev])
+        maxima.append([[mpmath.nstr(n * period + e[0], 30), mpmath.nstr(e[1], 30)] for e in mx])
     xs.append(x)
     vs.append(v)
     fmt = lambda z: mpmath.nstr(z, 30)
     return {
+        "period": fmt(period),
         "events": events,
+        "speed_maxima": maxima,
         "x_at_period_start": [fmt(z) for z in xs],
+        "advance": [fmt(b - a) for a, b in zip(xs, xs[1:])],
         "v_at_period_start": [fmt(z) for z in vs],
         "dissipation": [fmt(z) for z in diss],
     }

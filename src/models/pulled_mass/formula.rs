@@ -139,12 +139,15 @@ pub fn power(force: f64, v_avg: f64) -> f64 {
     force * v_avg
 }
 
-/// Late-stick time (fraction of T, in the next period), defined for 1/Θ < φ ≤ φ_c:
+/// Late-stick time (fraction of T, in the next period), defined for 1/Θ < φ ≤ φ_c (`None`
+/// elsewhere, serialized as null):
 /// ```text
 /// τ_ST,late = 1 + τ'_M − √(2 τ'_M² − v_M/(gT μd))          [D] §1.4
 /// ```
 pub fn tau_stick_late(phi: f64, mu_s: f64, mu_d: f64) -> Option<f64> {
-    if phi <= phi_stick_max(mu_s, mu_d) {
+    // Only where it describes the motion: beyond φ_c the root of the same expression (it comes
+    // back for φ > 2μd, where τ'_M < 0) is no stick of a mass that never sticks again.
+    if regime(phi, mu_s, mu_d) != Regime::SlipStickLate {
         return None;
     }
     let tp = tau_accel_zero_falling(phi, mu_d);

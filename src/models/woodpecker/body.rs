@@ -28,8 +28,11 @@ pub fn linear_amplitudes(p: &WoodpeckerParams) -> Option<(f64, f64)> {
     counterpart(p.z0, p.d0, p.counterpart)
 }
 
-/// The force law of the sleeve for the chosen law. The linear law needs a defined counterpart.
+/// The force law of the sleeve for the chosen law, refused where the slips are too short for
+/// double precision ([`WoodpeckerParams::check_resolution`]). The linear law needs a defined
+/// counterpart.
 pub fn force_law(p: &WoodpeckerParams, law: LawKind) -> Result<ForceLaw> {
+    p.check_resolution()?;
     match law {
         LawKind::Harmonic => harmonic(p),
         LawKind::Linear => {
@@ -62,14 +65,28 @@ fn piece(p: &WoodpeckerParams, start: f64, end: f64, basis: Basis, spring: Affin
 
 fn harmonic(p: &WoodpeckerParams) -> Result<ForceLaw> {
     let (omega, period) = (p.omega(), p.period());
-    let basis = Basis::Cos { omega };
-    let spring = Affine::new(p.k * p.z0, p.k * p.d0);
     let mut cuts = vec![0.0];
-    if p.z0.abs() < p.d0 {
-        // F_e = 0 where cos ωt = −z0/d0.
-        let t1 = fmath::acos(-p.z0 / p.d0) / omega;
+    let (basis, spring) = if p.z0.abs() < p.d0 {
+        // F_e = 0 where cos ωt = C = −z0/d0: written about that level, F_e = k d0 (cos ωt − C),
+        // so that D = W_S + F_e keeps W_S as its own coefficient. As W_S + k z0 + k d0 cos ωt,
+        // W_S carried the rounding of k z0 and the zero of F_e that of both terms (eps·k d0),
+        // an error of eps/ε in slips of relative length ε = W_S/(k d0).
+        let level = -p.z0 / p.d0;
+        let t1 = fmath::acos(level) / omega;
         cuts.extend([t1, period - t1]);
-    }
+        (
+            Basis::Cos {
+                omega,
+                shift: level,
+            },
+            Affine::new(0.0, p.k * p.d0),
+        )
+    } else {
+        (
+            Basis::Cos { omega, shift: 0.0 },
+            Affine::new(p.k * p.z0, p.k * p.d0),
+        )
+    };
     cuts.push(period);
     let pieces = cuts
         .windows(2)

@@ -521,7 +521,12 @@ pub fn phase_closed_form(p: &LinearWoodpecker, gr: &Groups, t0: Option<f64>) -> 
             .zip(s)
             .and_then(|((t0, d), s)| finite(t_stick(t0, d, s))),
         mu_d_min: gr.eta.and_then(|h| mu_d_min(p.lambda, us, h, gr.sigma)),
-        mu_d_halt: gr.eta.and_then(|h| mu_d_halt(p.lambda, us, h, gr.sigma)),
+        // The halt happens in lobe B, which exists only where its height is positive (for
+        // phase I: δ0 < ζ0); elsewhere the boundary is null, not a number of no meaning.
+        mu_d_halt: gr
+            .eta
+            .filter(|&h| h > 0.0)
+            .and_then(|h| mu_d_halt(p.lambda, us, h, gr.sigma)),
         gamma,
         distance: dist,
         v_avg_slip: both(dist, delta)

@@ -11,7 +11,7 @@
 use crate::claims::{or_none, run_wood, Claim, Numbers, Verdict};
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
-use crate::models::woodpecker::lobe::{HaltKind, Phase, PhaseLobes};
+use crate::models::woodpecker::lobe::{HaltKind, OrbitRegime, Phase, PhaseLobes};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
@@ -52,15 +52,23 @@ fn ms(t: f64) -> String {
 /// Claim 5 on the given set, or on the Fig. 15 set when the closed forms do not apply to it.
 pub(crate) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
     let given = cf::evaluate(&linear_inputs(w));
-    let (set, c, name) = match (given.mu_d_halt_1, given.mu_d_min_1) {
-        (Some(_), Some(_)) => (*w, given, "Given set"),
+    // The claim is about a slip from rest in phase I that may halt in the negative lobe: it
+    // does not apply to a set outside the closed forms' domain, one that never slips, or one
+    // that slips at once.
+    let applies = !matches!(
+        given.regime,
+        OrbitRegime::OutsideClosedFormDomain | OrbitRegime::NoSlip
+    ) && !given.immediate_slip;
+    let (set, c, name) = match (applies, given.mu_d_halt_1, given.mu_d_min_1) {
+        (true, Some(_), Some(_)) => (*w, given, "Given set"),
         _ => {
             let fig15 = WoodpeckerParams::default();
             let c = cf::evaluate(&linear_inputs(&fig15));
             (
                 fig15,
                 c,
-                "Fig. 15 set (the closed forms do not apply to the given set)",
+                "Fig. 15 set (the claim does not apply to the given set: no slip from rest in \
+                 phase I within the closed forms' domain)",
             )
         }
     };

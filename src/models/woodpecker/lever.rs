@@ -133,13 +133,17 @@ impl Evidence {
     /// Confirmed if the printed law sticks; qualified if only λ = l/h gives stick-slip (a
     /// periodic motion that advances and sticks at least once per period); refuted otherwise.
     fn verdict(&self) -> Verdict {
-        let s = &self.lever.steady;
-        let lever_sticks = s.sticks_per_period > 0 && s.v_avg.is_some_and(|v| v > 0.0);
-        match (self.printed_sticks > 0, lever_sticks) {
+        match (self.printed_sticks > 0, self.lever_sticks()) {
             (true, _) => Verdict::Confirmed,
             (false, true) => Verdict::Qualified,
             (false, false) => Verdict::Refuted,
         }
+    }
+
+    /// λ = l/h gives stick-slip: a periodic motion that advances and sticks every period.
+    fn lever_sticks(&self) -> bool {
+        let s = &self.lever.steady;
+        s.sticks_per_period > 0 && s.v_avg.is_some_and(|v| v > 0.0)
     }
 
     fn numbers(&self) -> Vec<ClaimNumber> {
@@ -202,7 +206,29 @@ impl Evidence {
 /// Claim 8: λ = 1 never sticks; λ = l/h reproduces Figs. 15, 16 and 26.
 pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
     let e = Evidence::of(w)?;
-    Ok(Claim {
+    // The claim compares the two lever ratios at friction where one of them can stick: where
+    // neither does, it does not apply to the set, and the paper's Fig. 15 set is shown.
+    if e.printed_sticks == 0 && !e.lever_sticks() {
+        let fig15 = WoodpeckerParams::default();
+        let shown = Evidence::of(&fig15)?;
+        return Ok(Claim {
+            verdict: shown.verdict(),
+            finding: format!(
+                "The claim does not apply to the given set: neither λ = 1 nor λ = l/h sticks \
+                 there. Fig. 15 set: {}",
+                shown
+                    .finding(fig15.z0)
+                    .replace("of the given set", "of that set")
+            ),
+            numbers: shown.numbers(),
+            ..claim_of(w, &e)
+        });
+    }
+    Ok(claim_of(w, &e))
+}
+
+fn claim_of(w: &WoodpeckerParams, e: &Evidence) -> Claim {
+    Claim {
         id: 8,
         model: <WoodpeckerParams as Physics>::ID,
         title: "The sleeve sticks only with the lever ratio λ = l/h in the contact force"
@@ -212,5 +238,5 @@ pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
         finding: e.finding(w.z0),
         numbers: e.numbers(),
         sample: None,
-    })
+    }
 }

@@ -5,7 +5,8 @@ use serde::{Deserialize, Serialize};
 
 use crate::error::Result;
 use crate::models::param::{
-    dynamic_friction, gravity, static_friction, validate_all, ChoiceSpec, ParamSpec, Rule,
+    dynamic_friction, gravity, invalid, num, static_friction, validate_all, ChoiceSpec, ParamSpec,
+    Rule,
 };
 use crate::models::woodpecker::formula::Counterpart;
 use crate::params::G_STANDARD;
@@ -268,10 +269,45 @@ pub const CHOICES: &[ChoiceSpec<WoodpeckerParams>] = &[
     },
 ];
 
+/// The least ε = W_S/(k d0) accepted. The slips happen where the spring force F_e crosses zero
+/// and last about ε of the period: below this the sleeve's weight, which drives them, is a
+/// difference of spring forces more than 1/ε times larger, and double precision cannot
+/// resolve the slip to the checks' tolerance (at ε ≈ 1e-13 not even its regime). The pulled
+/// mass refuses φ < 1e-9 for the same reason.
+pub const EPS_MIN: f64 = 1e-9;
+
 impl WoodpeckerParams {
     /// Checks every parameter against its valid range.
     pub fn validate(&self) -> Result<()> {
         validate_all(PARAMS, self, self.mu_s)
+    }
+
+    /// Checks ε = W_S/(k d0) against [`EPS_MIN`] (named by the sleeve mass, which sets W_S):
+    /// a combination of valid parameters whose slips double precision cannot resolve. Asked by
+    /// the force laws ([`super::force_law`]), so that every evaluation, figure and fit refuses
+    /// it; not by [`WoodpeckerParams::validate`], whose ranges hold parameter by parameter (a
+    /// fit maps its whole internal space into them).
+    pub fn check_resolution(&self) -> Result<()> {
+        let eps = self.eps();
+        if eps >= EPS_MIN {
+            return Ok(());
+        }
+        Err(invalid(
+            "m_sleeve",
+            num(self.m_sleeve),
+            format!(
+                "eps = W_S/(k d0) = m_sleeve g/(k d0) >= {} (here eps = {}): slips shorter than \
+                 that are beyond double precision",
+                num(EPS_MIN),
+                num(eps)
+            ),
+        ))
+    }
+
+    /// ε = W_S/(k d0): the sleeve's weight against the spring force's amplitude, about the
+    /// length of a slip in periods.
+    pub fn eps(&self) -> f64 {
+        self.sleeve_weight() / (self.k * self.d0)
     }
 
     /// Lever ratio λ: the given one, else l/h.
