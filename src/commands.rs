@@ -103,6 +103,7 @@ fn eval(args: &ModelArgs) -> Result<()> {
         let evaluation = match &args.common.csv {
             None => p.evaluate(periods)?,
             Some(dir) => {
+                report::lock::claim_if_exists(dir)?;
                 let (evaluation, files) = p.evaluate_with_csv(periods)?;
                 let files = dialect(&args.common).apply(files);
                 // Written before anything is printed: a bad target leaves no output at all.
@@ -154,9 +155,11 @@ fn fit(args: &FitArgs) -> Result<()> {
         columns: args.columns.clone(),
         unit: args.units,
     };
+    report::lock::claim_if_exists(&args.out)?;
     let data = crate::fit::data::read(&args.file, &opts)?;
     let fit = crate::fit::fit(&data, &base, &args.free)?;
     let files = dialect(common).apply(crate::fit::render(&fit)?);
+    refuse_overwriting_inputs(&args.out, &files, &[("FILE", &args.file)])?;
     report::write_all(&args.out, &files)?;
     print_stdout(&if common.json {
         crate::fit::json(&fit)?
@@ -195,6 +198,7 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         regime: args.regime.clone(),
         questions: args.questions.clone(),
     };
+    report::lock::claim_if_exists(&args.out)?;
     // The browser is found before any work: without it, nothing is drawn or written.
     let browser = args.pdf.then(crate::handout::pdf::locate).transpose()?;
     let progress = crate::output::progress::progress_bar(args.students, "students");
@@ -223,6 +227,7 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
 
 /// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
 fn bench(args: &BenchArgs) -> Result<()> {
+    report::lock::claim_if_exists(&args.out)?;
     let started = std::time::Instant::now();
     let config = crate::bench::Config {
         quick: args.quick,
@@ -246,6 +251,7 @@ fn bench(args: &BenchArgs) -> Result<()> {
 
 /// `stickslip report`: the built-in scenes or the given scenario files.
 fn report(args: &ReportArgs) -> Result<()> {
+    report::lock::claim_if_exists(&args.out)?;
     let (scenes, files) = if args.scenarios.is_empty() {
         let scenes = report::builtin_scenes()?;
         let (mut files, links) = report::classroom::material(&scenes, &args.format)?;
@@ -256,6 +262,12 @@ fn report(args: &ReportArgs) -> Result<()> {
         let files = report::render(&scenes, &args.format)?;
         (scenes, files)
     };
+    let inputs: Vec<(&str, &std::path::Path)> = args
+        .scenarios
+        .iter()
+        .map(|p| ("SCENARIOS", p.as_path()))
+        .collect();
+    refuse_overwriting_inputs(&args.out, &files, &inputs)?;
     let written = report::write_all(&args.out, &files)?;
     print_stdout(&format!(
         "wrote {} files for {} scenes to {}\n",
@@ -267,6 +279,7 @@ fn report(args: &ReportArgs) -> Result<()> {
 
 /// `stickslip explorer`: the page, with the built-in scenes as presets.
 fn explorer(args: &ExplorerArgs) -> Result<()> {
+    report::lock::claim_if_exists(&args.out)?;
     let page = report::explorer::render(
         &report::builtin_scenes()?,
         report::explorer::Placement::Alone,
@@ -286,6 +299,7 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     let Some(id) = args.scene.as_deref().filter(|_| !args.list) else {
         return print_stdout(&handout::list()?);
     };
+    report::lock::claim_if_exists(&args.out)?;
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
     let scene = handout::find_scene(id)?;
     let words = crate::lang::phrases::Translator::new(args.lang)?;
@@ -295,10 +309,11 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     if !missing.is_empty() {
         // A scenario file's own words, or a claim worded for parameters the catalogue has not met.
         eprintln!(
-            "note: {} phrase(s) have no {} translation and stay in English, e.g. {:?}",
+            "note: {} phrase(s) have no {} translation and stay in English, e.g. \"{}\"",
             missing.len(),
             args.lang.code(),
-            missing[0]
+            // A scenario's title can be any length: one bounded line on the terminal.
+            crate::error::excerpt(&missing[0], 80)
         );
     }
     print_stdout(&format!(
@@ -325,9 +340,13 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
         periods,
     };
     crate::sweep::validate(&base, &spec)?;
+    report::lock::claim_if_exists(&grid.out)?;
     let progress = crate::output::progress::progress_bar(spec.steps, "sweep");
     let result = crate::sweep::run(&base, &spec, &progress)?;
     let files = dialect(common).apply(crate::sweep::render(&result)?);
+    if let Some(path) = &common.scenario {
+        refuse_overwriting_inputs(&grid.out, &files, &[("--scenario", path)])?;
+    }
     report::write_all(&grid.out, &files)?;
     print_stdout(&crate::sweep::summary_line(&result, &grid.out))
 }
@@ -342,7 +361,11 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
     let (case, _) = model_params(&model.args)?;
     let args = &model.extra;
     if args.symbols {
+        reject_flag("check --symbols", "--json", common.json)?;
         return print_stdout(&crate::check::symbols_text(&case));
+    }
+    if let Some(out) = &args.out {
+        report::lock::claim_if_exists(out)?;
     }
     let entries = match (&args.formulas, &args.formula) {
         (Some(file), _) => crate::check::read_formulas(file)?,
@@ -353,6 +376,21 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
         }],
         _ => anyhow::bail!("give a FORMULA (and --quantity NAME), or --formulas FILE"),
     };
+    // Every table draws --samples sets: the product is the work, bounded like one formula's.
+    let work = entries.len().saturating_mul(args.samples);
+    if entries.len() > 1 && work > crate::check::MAX_SAMPLES {
+        return Err(invalid(
+            "samples",
+            args.samples,
+            format!(
+                "[[check]] tables of --formulas x --samples <= {} (here {} x {})",
+                crate::check::MAX_SAMPLES,
+                entries.len(),
+                args.samples
+            ),
+        )
+        .into());
+    }
     let reports = entries
         .into_iter()
         .map(|e| {
@@ -399,6 +437,44 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
         Some(verdict) => Err(verdict.into()),
         None => Ok(()),
     }
+}
+
+/// An output that would replace one of the command's own input files is refused (exit 2)
+/// before anything is written: `stickslip fit fit/fit.csv` must not overwrite its data.
+fn refuse_overwriting_inputs(
+    out: &std::path::Path,
+    files: &[report::OutFile],
+    inputs: &[(&str, &std::path::Path)],
+) -> Result<()> {
+    for (flag, input) in inputs {
+        let Ok(input_meta) = std::fs::metadata(input) else {
+            continue;
+        };
+        for f in files {
+            let target = out.join(&f.path);
+            if std::fs::metadata(&target).is_ok_and(|m| same_file(&m, &input_meta)) {
+                return Err(Error::Output {
+                    path: target.display().to_string(),
+                    reason: format!(
+                        "is the input file {flag} of this command: choose another --out"
+                    ),
+                }
+                .into());
+            }
+        }
+    }
+    Ok(())
+}
+
+#[cfg(unix)]
+fn same_file(a: &std::fs::Metadata, b: &std::fs::Metadata) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    a.dev() == b.dev() && a.ino() == b.ino()
+}
+
+#[cfg(not(unix))]
+fn same_file(_a: &std::fs::Metadata, _b: &std::fs::Metadata) -> bool {
+    false
 }
 
 /// The CSV dialect asked for.

@@ -19,8 +19,27 @@ use stickslip::error::{excerpt, Error};
 const MESSAGE_CHARS: usize = 300;
 
 fn main() -> ExitCode {
+    ignore_file_size_signal();
     let cli = match Cli::try_parse() {
         Ok(cli) => cli,
+        Err(e) if e.kind() == clap::error::ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            // `stickslip`, `stickslip eval`: clap prints the help, with no "error:" line.
+            let usage = e.render().to_string();
+            let usage = usage
+                .lines()
+                .find_map(|l| l.trim().strip_prefix("Usage:"))
+                .unwrap_or(" stickslip <COMMAND>")
+                .trim()
+                .to_string();
+            eprintln!(
+                "{}",
+                excerpt(
+                    &format!("error: a subcommand is required: {usage} (see --help)"),
+                    MESSAGE_CHARS
+                )
+            );
+            return ExitCode::from(2);
+        }
         Err(e) if e.use_stderr() => {
             eprintln!(
                 "{}",
@@ -49,6 +68,16 @@ fn main() -> ExitCode {
             eprintln!("{}", excerpt(&format!("{label}: {e:#}"), MESSAGE_CHARS));
             ExitCode::from(code)
         }
+    }
+}
+
+/// A write beyond the file-size limit (`ulimit -f`) fails with EFBIG, reported as "cannot
+/// write", instead of killing the process with SIGXFSZ mid-output.
+fn ignore_file_size_signal() {
+    #[cfg(unix)]
+    // SAFETY: setting the disposition of one signal to SIG_IGN before any thread starts.
+    unsafe {
+        libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
     }
 }
 

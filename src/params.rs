@@ -38,10 +38,13 @@ pub fn one_line(text: &str) -> String {
         .join(" ")
 }
 
-/// `text` without control characters other than line breaks and tabs.
+/// `text` without control characters other than line breaks and tabs, and without the
+/// bidirectional overrides and isolates (U+202A–U+202E, U+2066–U+2069), which reorder what a
+/// page or a terminal shows (a title that reads differently from its bytes).
 fn without_controls(text: &str) -> String {
     text.chars()
         .filter(|c| !c.is_control() || matches!(c, '\n' | '\t'))
+        .filter(|c| !matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}'))
         .collect()
 }
 
@@ -61,12 +64,44 @@ pub struct Scenario {
     pub params: toml::Table,
 }
 
+/// Largest input file read (a scenario, a `--formulas` file, tracked data): 16 MiB, some
+/// thousand times the largest real one; `/dev/zero` or a FIFO that never ends is refused after
+/// reading this much.
+pub const MAX_INPUT_BYTES: u64 = 16 << 20;
+
+/// The bytes of an input file, at most [`MAX_INPUT_BYTES`]; the error is a reason for a message
+/// naming the file and `flag`.
+pub fn read_input(path: &Path, flag: &str) -> std::result::Result<Vec<u8>, String> {
+    use std::io::Read;
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    if file.metadata().is_ok_and(|m| m.is_dir()) {
+        return Err("is a folder, not a file".to_string());
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_INPUT_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string())?;
+    if bytes.len() as u64 > MAX_INPUT_BYTES {
+        return Err(format!(
+            "larger than {} MiB, the limit of a {flag} file",
+            MAX_INPUT_BYTES >> 20
+        ));
+    }
+    Ok(bytes)
+}
+
+/// [`read_input`] as UTF-8 text.
+pub fn read_input_text(path: &Path, flag: &str) -> std::result::Result<String, String> {
+    String::from_utf8(read_input(path, flag)?)
+        .map_err(|_| "stream did not contain valid UTF-8".to_string())
+}
+
 impl Scenario {
-    /// Reads and parses a scenario file.
+    /// Reads and parses a scenario file (at most [`MAX_INPUT_BYTES`]).
     pub fn load(path: &Path) -> Result<Self> {
-        let text = std::fs::read_to_string(path).map_err(|e| Error::Scenario {
+        let text = read_input_text(path, "--scenario").map_err(|reason| Error::Scenario {
             path: path.display().to_string(),
-            reason: e.to_string(),
+            reason,
         })?;
         Self::parse(&text, path)
     }

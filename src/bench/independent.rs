@@ -9,17 +9,19 @@
 //! Absent Python or mpmath is a plain statement on the page, never an error.
 
 use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Stdio;
 
 use serde::Serialize;
 use serde_json::{json, Value};
 
-use super::peer::script_path;
+use super::peer::ShippedScript;
 use super::problems::{BenchProblem, Reference, PERIODS};
 use crate::engine::{Body, ForceLaw};
 
-/// The script, relative to the working directory or to the crate.
+/// The script's name in the repository (it is compiled into the binary: [`SCRIPT_TEXT`]).
 pub const SCRIPT: &str = "tests/reference/mp_engine.py";
+/// The script itself, shipped inside the binary.
+const SCRIPT_TEXT: &str = include_str!("../../tests/reference/mp_engine.py");
 /// Exit code of the script when mpmath is missing.
 const NO_MPMATH: i32 = 3;
 
@@ -118,12 +120,12 @@ pub fn integrate_40_digits(
 /// itself), one JSON result per case in order. Used here and by tests/reference.rs.
 pub fn run_script(cases: Vec<Value>) -> Result<Vec<Value>, ScriptError> {
     use ScriptError::{Failed, Unavailable};
-    let script =
-        script_path(SCRIPT).ok_or_else(|| Unavailable(format!("{SCRIPT} was not found")))?;
+    let script = ShippedScript::write("mp_engine.py", SCRIPT_TEXT)
+        .map_err(|e| Unavailable(format!("{SCRIPT} cannot be written ({e})")))?;
     let expected = cases.len();
     let input = Value::Array(cases);
-    let mut child = Command::new("python3")
-        .arg(script)
+    let mut child = script
+        .command()
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

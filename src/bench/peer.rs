@@ -25,7 +25,7 @@
 //! ```
 
 use std::io::Write;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};
 
 use serde::{Deserialize, Serialize};
@@ -36,8 +36,10 @@ use super::machine::Machine;
 use super::problems::{BenchProblem, Reference, PERIODS};
 use super::sweep::{SweepPoint, LONG_RUN};
 
-/// The script, relative to the working directory or to the crate.
+/// The script's name in the repository (it is compiled into the binary: [`SCRIPT_TEXT`]).
 pub const SCRIPT: &str = "bench/scipy_peer.py";
+/// The script itself, shipped inside the binary.
+const SCRIPT_TEXT: &str = include_str!("../../bench/scipy_peer.py");
 /// SciPy's methods, in the order of the tables.
 pub const SCIPY_METHODS: [&str; 3] = ["RK45", "DOP853", "Radau"];
 /// Error levels of the ratio table.
@@ -175,21 +177,51 @@ impl PeerReport {
     }
 }
 
-/// A script of the repository (`rel`): under the working directory, else under the crate's
-/// source folder.
-pub(super) fn script_path(rel: &str) -> Option<PathBuf> {
-    [
-        PathBuf::from(rel),
-        PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(rel),
-    ]
-    .into_iter()
-    .find(|p| p.is_file())
+/// A Python script shipped with the binary (compiled in with `include_str!`), written to a
+/// private temporary folder (mode 0700) for the time of one run, and run from there: nothing of
+/// the working folder or of the machine that built the binary is run, and no module is
+/// imported from the working folder (the folder of the script and of the process is the
+/// private one).
+pub(super) struct ShippedScript {
+    dir: tempfile::TempDir,
+    path: PathBuf,
+}
+
+impl ShippedScript {
+    /// Writes `text` as `name` into a new private folder.
+    pub(super) fn write(name: &str, text: &str) -> std::io::Result<Self> {
+        let dir = tempfile::Builder::new()
+            .prefix("stickslip-python-")
+            .tempdir()?;
+        let path = dir.path().join(name);
+        std::fs::write(&path, text)?;
+        Ok(ShippedScript { dir, path })
+    }
+
+    /// `python3 <script>`, started in the private folder.
+    pub(super) fn command(&self) -> Command {
+        let mut c = python3_in(self.dir.path());
+        c.arg(&self.path);
+        c
+    }
+}
+
+/// `python3` started in `dir`: with `-c`, Python imports from the process's folder first, so
+/// that folder must be a private one, not the user's working folder.
+fn python3_in(dir: &Path) -> Command {
+    let mut c = Command::new("python3");
+    c.current_dir(dir);
+    c
 }
 
 /// Records Python, NumPy and SciPy versions in `machine`; Ok(()) when SciPy imports, else the
 /// reason it cannot run.
 pub fn probe(machine: &mut Machine) -> Result<(), String> {
-    let out = Command::new("python3")
+    let private = tempfile::Builder::new()
+        .prefix("stickslip-python-")
+        .tempdir()
+        .map_err(|e| format!("no temporary folder ({e})"))?;
+    let out = python3_in(private.path())
         .args(["-c", "import sys; print(sys.version.split()[0])"])
         .output()
         .map_err(|e| format!("python3 was not found ({e})"))?;
@@ -197,7 +229,7 @@ pub fn probe(machine: &mut Machine) -> Result<(), String> {
         return Err("python3 does not run".to_string());
     }
     machine.python = Some(String::from_utf8_lossy(&out.stdout).trim().to_string());
-    let out = Command::new("python3")
+    let out = python3_in(private.path())
         .args([
             "-c",
             "import numpy, scipy; print(numpy.__version__, scipy.__version__)",
@@ -269,12 +301,15 @@ pub fn run(
             format!("SciPy comparison not available: {reason}."),
         );
     }
-    let Some(script) = script_path(SCRIPT) else {
-        return PeerReport::without(
-            true,
-            "absent",
-            format!("SciPy comparison not available: {SCRIPT} not found."),
-        );
+    let script = match ShippedScript::write("scipy_peer.py", SCRIPT_TEXT) {
+        Ok(script) => script,
+        Err(e) => {
+            return PeerReport::without(
+                true,
+                "absent",
+                format!("SciPy comparison not available: {SCRIPT} cannot be written ({e})."),
+            )
+        }
     };
     match execute(
         &script,
@@ -309,15 +344,15 @@ pub fn run(
     }
 }
 
-fn execute(script: &PathBuf, input: &str) -> Result<ScriptOutput, String> {
-    let mut child = Command::new("python3")
-        .arg(script)
+fn execute(script: &ShippedScript, input: &str) -> Result<ScriptOutput, String> {
+    let mut child = script
+        .command()
         .arg("-")
         .stdin(Stdio::piped())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| format!("cannot start python3 {}: {e}", script.display()))?;
+        .map_err(|e| format!("cannot start python3 {SCRIPT}: {e}"))?;
     if let Some(mut stdin) = child.stdin.take() {
         stdin
             .write_all(input.as_bytes())
@@ -329,8 +364,7 @@ fn execute(script: &PathBuf, input: &str) -> Result<ScriptOutput, String> {
     if !out.status.success() {
         let err = String::from_utf8_lossy(&out.stderr);
         return Err(format!(
-            "{} exited with {}: {}",
-            script.display(),
+            "{SCRIPT} exited with {}: {}",
             out.status,
             err.lines().last().unwrap_or("")
         ));
@@ -469,12 +503,12 @@ mod tests {
     }
 
     /// The script, or None (said on stderr) without python3 and SciPy.
-    fn script_if_scipy() -> Option<PathBuf> {
+    fn script_if_scipy() -> Option<ShippedScript> {
         if let Err(reason) = probe(&mut Machine::detect()) {
             eprintln!("skipped: {reason}");
             return None;
         }
-        Some(script_path(SCRIPT).expect("bench/scipy_peer.py"))
+        Some(ShippedScript::write("scipy_peer.py", SCRIPT_TEXT).expect("a temporary folder"))
     }
 
     /// Times over several periods: every piece start and middle, and irregular ones.
@@ -635,7 +669,7 @@ json.dump(out, sys.stdout)
 ";
         let mut child = Command::new("python3")
             .args(["-c", PROGRAM])
-            .arg(&script)
+            .arg(&script.path)
             .stdin(Stdio::piped())
             .stdout(Stdio::piped())
             .spawn()

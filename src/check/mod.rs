@@ -520,7 +520,7 @@ pub fn read_formulas(path: &std::path::Path) -> Result<Vec<Entry>> {
         path: path.display().to_string(),
         reason,
     };
-    let text = std::fs::read_to_string(path).map_err(|e| scenario_error(e.to_string()))?;
+    let text = crate::params::read_input_text(path, "--formulas").map_err(scenario_error)?;
     let file: File = toml::from_str(&text).map_err(|e| scenario_error(e.message().to_string()))?;
     if file.check.is_empty() {
         return Err(scenario_error("no [[check]] table".to_string()));

@@ -399,6 +399,7 @@ fn walk_piece<'a, M: ArcMotion>(
     // (sin ωt, cos ωt) at t on a cos basis where known: at the piece's start, at a stick.
     let mut phase_t = if M::TRIG { prepared.start_phase } else { None };
     let mut transitions = 0;
+    let mut retries = 0u32;
     loop {
         transitions += 1;
         if transitions > MAX_TRANSITIONS_PER_PIECE {
@@ -482,7 +483,12 @@ fn walk_piece<'a, M: ArcMotion>(
             Some(t_stick) if t_stick == t && state.v == 0.0 => {
                 rec.retract_slip(f64::from(n) * period + t);
                 state.dir = 0;
-                t = (t + snap).min(piece.end);
+                // Where the drive touches the threshold tangentially with μd = μs (φ = 2μs on
+                // the harmonic law) a has a double zero at the onset and its sign is lost to
+                // rounding for some √ε/ω: the step doubles at each retry (at most twice the
+                // last step is skipped, a motion of order ε^(3/2) g/ω²).
+                t = (t + snap * f64::from(1u32 << retries.min(30))).min(piece.end);
+                retries += 1;
                 phase_t = None;
                 if t >= piece.end {
                     break;

@@ -152,7 +152,8 @@ impl Tracked {
 
 /// Reads and checks a tracked-positions file.
 pub fn read(path: &Path, opts: &ReadOptions) -> Result<Tracked> {
-    let bytes = std::fs::read(path).map_err(|e| data_error(path, None, e.to_string()))?;
+    let bytes =
+        crate::params::read_input(path, "tracked-data").map_err(|e| data_error(path, None, e))?;
     // Lossy: a Latin-1 "°" or "µ" in a header must not stop a file whose numbers are fine.
     parse(&String::from_utf8_lossy(&bytes), path, opts)
 }
@@ -196,6 +197,24 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
         .iter()
         .find(|r| is_units_row(&r.cells));
     let names: Vec<&str> = header.cells.iter().map(String::as_str).collect();
+    // Two columns of one name: a name on the command line could not tell which is meant.
+    for (j, name) in names.iter().enumerate() {
+        let key = name.trim().to_lowercase();
+        if let Some(i) = names[..j]
+            .iter()
+            .position(|n| !key.is_empty() && n.trim().to_lowercase() == key)
+        {
+            return Err(err(
+                Some(header.line),
+                format!(
+                    "columns {} and {} are both named {}: rename one",
+                    i + 1,
+                    j + 1,
+                    crate::error::excerpt(name.trim(), 40)
+                ),
+            ));
+        }
+    }
 
     let (time_col, position_col) = choose_columns(&names, opts.columns.as_ref())
         .map_err(|reason| err(Some(header.line), reason))?;

@@ -82,6 +82,56 @@ pub const HEADLESS_FLAGS: &[&str] = &[
     "--no-pdf-header-footer",
 ];
 
+/// Prefix of the private temporary folder of one print (page, profile, PDF, log).
+const WORK_PREFIX: &str = "stickslip-pdf-";
+/// An unlocked work folder untouched for this long is a killed print's.
+const STALE_AFTER: Duration = Duration::from_secs(120);
+
+/// Removes the work folders of earlier prints that were killed: folders of this user named
+/// `stickslip-pdf-*` in `tmp`, untouched for [`STALE_AFTER`], whose lock no running print
+/// holds.
+fn remove_stale_work_folders(tmp: &Path) {
+    let Ok(entries) = fs::read_dir(tmp) else {
+        return;
+    };
+    for e in entries.flatten() {
+        if !e.file_name().to_string_lossy().starts_with(WORK_PREFIX) {
+            continue;
+        }
+        let path = e.path();
+        let Ok(meta) = fs::symlink_metadata(&path) else {
+            continue;
+        };
+        // A folder made a moment ago may be a running print's that has not locked it yet.
+        let settled = meta
+            .modified()
+            .ok()
+            .and_then(|m| m.elapsed().ok())
+            .is_some_and(|age| age > STALE_AFTER);
+        if !meta.is_dir() || !owned_by_me(&meta) || !settled {
+            continue;
+        }
+        let Ok(dir) = fs::File::open(&path) else {
+            continue;
+        };
+        if !crate::report::lock::is_busy(&dir) {
+            let _ = fs::remove_dir_all(&path);
+        }
+    }
+}
+
+#[cfg(unix)]
+fn owned_by_me(meta: &fs::Metadata) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    // SAFETY: getuid has no preconditions.
+    meta.uid() == unsafe { libc::getuid() }
+}
+
+#[cfg(not(unix))]
+fn owned_by_me(_meta: &fs::Metadata) -> bool {
+    false
+}
+
 /// Prints `html` (a self-contained page, saved as `name` in a temporary folder) with `browser`
 /// and returns the PDF's bytes.
 pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
@@ -90,10 +140,16 @@ pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
         browser: browser.display().to_string(),
         reason,
     };
+    remove_stale_work_folders(&std::env::temp_dir());
     let work = tempfile::Builder::new()
-        .prefix("stickslip-pdf-")
+        .prefix(WORK_PREFIX)
         .tempdir()
         .map_err(|e| fail(format!("temporary folder: {e}")))?;
+    // Locked while in use: a run killed mid-print leaves the folder (and Chromium's profile,
+    // some MB) unlocked, and the next `--pdf` removes it.
+    let work_lock =
+        fs::File::open(work.path()).map_err(|e| fail(format!("temporary folder: {e}")))?;
+    crate::report::lock::hold(&work_lock);
     let page = work.path().join(name);
     let pdf = work.path().join("out.pdf");
     let log = work.path().join("chromium.log");

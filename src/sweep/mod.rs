@@ -28,6 +28,9 @@ pub use render::{render, summary_line};
 /// Fewest and most grid points.
 pub const MIN_STEPS: u32 = 2;
 pub const MAX_STEPS: u32 = 100_000;
+/// Largest --steps × --periods: the periods one sweep integrates (10^7: ten times the longest
+/// `eval`; at the slowest, about a minute of CPU).
+pub const MAX_PERIODS_INTEGRATED: u64 = 10_000_000;
 
 /// A numeric parameter that can be swept: its name, CSV unit suffix, axis label and the factor
 /// from SI to the axis unit (from the model's parameter descriptor).
@@ -148,15 +151,49 @@ pub fn validate(base: &Model, spec: &GridSpec) -> Result<Param> {
         ));
     }
     crate::params::validate_periods(spec.periods)?;
+    for (name, value) in [("from", spec.from), ("to", spec.to)] {
+        // The figure's axis is in the display unit: its value must stay a double too.
+        if !(value * param.axis_scale).is_finite() {
+            return Err(invalid(
+                name,
+                num(value),
+                format!(
+                    "|{name}| <= {} ({} on the figure's axis in {})",
+                    num(f64::MAX / param.axis_scale),
+                    param.name,
+                    param.axis_label
+                ),
+            ));
+        }
+    }
+    let work = u64::from(spec.steps) * u64::from(spec.periods);
+    if work > MAX_PERIODS_INTEGRATED {
+        return Err(invalid(
+            "steps",
+            spec.steps,
+            format!(
+                "--steps x --periods <= {MAX_PERIODS_INTEGRATED} (periods integrated by one sweep; \
+                 here {} x {} = {work})",
+                spec.steps, spec.periods
+            ),
+        ));
+    }
     Ok(param.clone())
 }
 
-/// The i-th of `n` uniform grid values from `from` to `to`, both ends exact.
+/// The i-th of `n` uniform grid values from `from` to `to`, both ends exact. Near the top of
+/// the double range `to - from` (or its product with `i`) overflows: then the weighted mean,
+/// which stays between the ends.
 pub fn grid_value(from: f64, to: f64, i: u32, n: u32) -> f64 {
     if i + 1 == n {
         return to;
     }
-    from + (to - from) * f64::from(i) / f64::from(n - 1)
+    let value = from + (to - from) * f64::from(i) / f64::from(n - 1);
+    if value.is_finite() {
+        return value;
+    }
+    let t = f64::from(i) / f64::from(n - 1);
+    from * (1.0 - t) + to * t
 }
 
 /// Runs the sweep in parallel over the grid, ticking `progress` once per point.
