@@ -183,8 +183,9 @@ pub fn solve(setup: &Setup, data_period: f64) -> Result<Solution> {
         .eval(&params, shift, y_off)
         .map_err(|e| Error::NotConverged {
             reason: format!(
-                "the search left the model's range ({e}); check the fixed parameters and the \
-                 units of the file"
+                "the search left the model's range ({}); check the fixed parameters and the \
+                 units of the file",
+                crate::error::excerpt(&e.to_string(), 100)
             ),
         })?;
     let n = setup.y.len();

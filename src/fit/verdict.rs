@@ -156,20 +156,8 @@ impl Verdict {
     /// A negative verdict in at most ~120 characters, for the one-line error: the unit that
     /// fits first, as it is what to do.
     pub fn brief(&self) -> String {
-        if let Some(ScaleSlip {
-            factor,
-            units: Some(u),
-            rms_in_units: Some(rms),
-            ..
-        }) = &self.scale
-        {
-            return format!(
-                "the model does not describe these data as read (positions {}); with --units {} \
-                 it does (RMS {} mm)",
-                ten_times(*factor),
-                u.symbol(),
-                sig(Some(rms * 1e3), 2)
-            );
+        if let Some(line) = self.scale.as_ref().and_then(ScaleSlip::fits_in_units) {
+            return line;
         }
         let mut s = format!(
             "the model does not describe these data: RMS {} mm",
@@ -202,6 +190,19 @@ fn ten_times(factor: f64) -> String {
 }
 
 impl ScaleSlip {
+    /// "the model does not describe these data as read (positions 1000× too large); with
+    /// --units mm it does (RMS 0.20 mm)", when the unit that undoes the slip fits.
+    pub fn fits_in_units(&self) -> Option<String> {
+        let (u, rms) = (self.units?, self.rms_in_units?);
+        Some(format!(
+            "the model does not describe these data as read (positions {}); with --units {} it \
+             does (RMS {} mm)",
+            ten_times(self.factor),
+            u.symbol(),
+            sig(Some(rms * 1e3), 2)
+        ))
+    }
+
     /// The slip in a few words, for the front of a one-line error.
     pub fn brief(&self) -> String {
         match (self.units, self.rms_in_units) {
