@@ -363,8 +363,7 @@ impl<'a> Lexer<'a> {
     /// A run of letters with the subscripts, primes and superscripts that belong to a name.
     fn word(&mut self) -> std::result::Result<Vec<(String, bool)>, String> {
         let mut units: Vec<(String, bool)> = Vec::new();
-        loop {
-            let Some(c) = self.peek() else { break };
+        while let Some(c) = self.peek() {
             if c.is_ascii_alphabetic() {
                 self.at += 1;
                 // A combining macron makes v̄ the symbol \bar v.

@@ -145,7 +145,7 @@ impl Exercise for PulledMassParams {
             _ => 2.0 * self.mu_s,
         };
         let phi = at * (1.0 + offset);
-        (PHI_RANGE.0..=PHI_RANGE.1).contains(&phi).then(|| Self {
+        (PHI_RANGE.0..=PHI_RANGE.1).contains(&phi).then_some(Self {
             force: phi * self.mass * self.g,
             ..*self
         })

@@ -190,7 +190,7 @@ impl Exercise for WoodpeckerParams {
         let mu_d = halt * (1.0 + offset);
         (MU_MIN..=self.mu_s)
             .contains(&mu_d)
-            .then(|| Self { mu_d, ..*self })
+            .then_some(Self { mu_d, ..*self })
     }
 
     fn checks_and_linear_run(
