@@ -28,5 +28,9 @@ pub fn man_page() -> std::io::Result<String> {
     clap_mangen::Man::new(Cli::command()).render(&mut out)?;
     let page = String::from_utf8_lossy(&out);
     let (title, rest): (Vec<&str>, Vec<&str>) = page.lines().partition(|l| l.starts_with(".TH "));
-    Ok(title.into_iter().chain(rest).map(|l| format!("{l}\n")).collect())
+    Ok(title
+        .into_iter()
+        .chain(rest)
+        .map(|l| format!("{l}\n"))
+        .collect())
 }

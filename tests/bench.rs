@@ -216,8 +216,12 @@ fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
 fn without_the_peers_feature_the_diffsol_peer_is_said_to_be_not_built_in() {
     let run = quick();
     let peer = "diffsol_tsit45";
-    assert!(!array(&run.json, "methods").iter().any(|m| m["name"] == peer));
-    assert!(!array(&run.json, "sweep").iter().any(|p| p["method"] == peer));
+    assert!(!array(&run.json, "methods")
+        .iter()
+        .any(|m| m["name"] == peer));
+    assert!(!array(&run.json, "sweep")
+        .iter()
+        .any(|p| p["method"] == peer));
     let missing = array(&run.json, "not_built_in");
     assert_eq!(missing.len(), 1, "{missing:?}");
     assert_eq!(missing[0]["name"], peer);
@@ -228,10 +232,17 @@ fn without_the_peers_feature_the_diffsol_peer_is_said_to_be_not_built_in() {
     );
     for page in ["index.html", "bench.md"] {
         let text = std::fs::read_to_string(run.out.join(page)).expect(page);
-        assert_eq!(text.matches(message).count(), 2, "{page}: note and table row");
+        assert_eq!(
+            text.matches(message).count(),
+            2,
+            "{page}: note and table row"
+        );
     }
     let summary = array(&run.json["failures"], "table");
-    assert!(!summary.iter().any(|r| r["method"] == peer), "no measured row");
+    assert!(
+        !summary.iter().any(|r| r["method"] == peer),
+        "no measured row"
+    );
     assert!(run.stderr.contains(message), "{}", run.stderr);
 }
 

@@ -27,7 +27,12 @@ fn stickslip() -> Command {
 }
 
 fn stdout_of(args: &[&str]) -> String {
-    let out = stickslip().args(args).assert().success().get_output().clone();
+    let out = stickslip()
+        .args(args)
+        .assert()
+        .success()
+        .get_output()
+        .clone();
     assert!(out.stderr.is_empty(), "{args:?}: nothing on stderr");
     String::from_utf8(out.stdout).expect("UTF-8")
 }
@@ -63,12 +68,24 @@ fn an_unknown_shell_is_bad_input_with_the_choices_on_one_line() {
 #[test]
 fn the_man_page_is_roff_that_opens_with_th_and_lists_the_subcommands() {
     let page = stdout_of(&["man"]);
-    assert!(page.starts_with(".TH stickslip 1 "), "{}", &page[..80.min(page.len())]);
-    for section in [".SH NAME", ".SH SYNOPSIS", ".SH DESCRIPTION", ".SH SUBCOMMANDS"] {
+    assert!(
+        page.starts_with(".TH stickslip 1 "),
+        "{}",
+        &page[..80.min(page.len())]
+    );
+    for section in [
+        ".SH NAME",
+        ".SH SYNOPSIS",
+        ".SH DESCRIPTION",
+        ".SH SUBCOMMANDS",
+    ] {
         assert!(page.contains(section), "{section}");
     }
     for sub in SUBCOMMANDS {
-        assert!(page.contains(&format!("stickslip\\-{sub}(1)")), "{sub} not listed");
+        assert!(
+            page.contains(&format!("stickslip\\-{sub}(1)")),
+            "{sub} not listed"
+        );
     }
     // The apostrophe string is defined before the text uses it.
     let defined = page.find(".ds Aq").expect("Aq defined");

@@ -183,7 +183,11 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         version: r.machine.crate_version.clone(),
         elapsed: format!("{:.1} s", r.elapsed_s),
         quick: r.quick,
-        not_built_in: r.not_built_in.iter().map(|m| m.message.to_string()).collect(),
+        not_built_in: r
+            .not_built_in
+            .iter()
+            .map(|m| m.message.to_string())
+            .collect(),
         protocol: protocol(r),
         machine,
         problems,

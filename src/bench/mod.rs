@@ -157,7 +157,7 @@ pub fn not_built_in() -> Vec<NotBuiltIn> {
     if !cfg!(feature = "peers") {
         out.push(NotBuiltIn {
             name: crate::solver::DIFFSOL_PEER,
-            message: "the diffsol peer (diffsol_tsit45) is not built in: build with \
+            message: "The diffsol peer (diffsol_tsit45) is not built in: build with \
                       --features peers to measure it",
         });
     }
