@@ -254,15 +254,11 @@ fn sourced_symbols(case: &Model) -> Vec<(Symbol, Source)> {
         out.push((symbol, source));
     }
     // The parameters' keys (`mass`, `force`) as well, last.
-    out.extend(given.into_iter().map(|(s, key)| {
-        (
-            Symbol {
-                name: key.to_string(),
-                ..s
-            },
-            Source::Param(key),
-        )
-    }));
+    out.extend(
+        given
+            .into_iter()
+            .map(|(s, key)| (Symbol { name: key.to_string(), ..s }, Source::Param(key))),
+    );
     let mut seen = std::collections::HashSet::new();
     out.retain(|(s, _)| {
         s.name.starts_with(|c: char| c.is_ascii_alphabetic()) && seen.insert(s.name.clone())

@@ -287,10 +287,7 @@ fn fig15_phases_read_with_the_papers_symbols() {
         step(wp_param::LAMBDA.into()).substituted(),
         r"\frac{0.016}{0.007}"
     );
-    assert_eq!(
-        step(wp_param::T.into()).substituted(),
-        r"\frac{2 \pi}{37.80}"
-    );
+    assert_eq!(step(wp_param::T.into()).substituted(), r"\frac{2 \pi}{37.80}");
 }
 
 #[test]
