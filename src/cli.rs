@@ -80,13 +80,23 @@ pub enum Command {
     /// both models, the exact motion of both force laws, every closed form checked live, the
     /// regime map and the apparatus animated; it works offline, from file://.
     Explorer(ExplorerArgs),
+    /// Print the completion script of a shell to stdout, e.g. `stickslip completions bash >
+    /// ~/.local/share/bash-completion/completions/stickslip`.
+    Completions {
+        /// The shell.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page (roff) to stdout, e.g. `stickslip man > stickslip.1 && man
+    /// ./stickslip.1`.
+    Man,
 }
 
 /// Options of `stickslip explorer`.
 #[derive(Debug, Args)]
 pub struct ExplorerArgs {
     /// Output folder.
-    #[arg(long, default_value = "reports")]
+    #[arg(long, short = 'o', default_value = "reports")]
     pub out: PathBuf,
 }
 
@@ -111,7 +121,7 @@ pub struct FitArgs {
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = FitParam::DEFAULT)]
     pub free: Vec<FitParam>,
     /// Output folder (fit.json, fit.csv, fit.svg).
-    #[arg(long, default_value = "fit")]
+    #[arg(long, short = 'o', default_value = "fit")]
     pub out: PathBuf,
     #[command(flatten)]
     pub model: ModelFlags<WoodpeckerParams>,
@@ -138,7 +148,7 @@ pub struct WorksheetArgs {
     #[arg(long, value_delimiter = ',', value_name = "KEYS")]
     pub questions: Option<Vec<String>>,
     /// Output folder.
-    #[arg(long, default_value = "worksheets")]
+    #[arg(long, short = 'o', default_value = "worksheets")]
     pub out: PathBuf,
     /// Formats, comma-separated (answer-key.json is always written): html, md, moodle (Moodle
     /// XML question bank), gift (Moodle GIFT).
@@ -196,7 +206,7 @@ pub struct SweepArgs {
           value_parser = clap::value_parser!(u32).range(2..=100_000))]
     pub steps: u32,
     /// Output folder (sweep.csv, sweep.svg).
-    #[arg(long, default_value = "sweep")]
+    #[arg(long, short = 'o', default_value = "sweep")]
     pub out: PathBuf,
 }
 
@@ -238,7 +248,7 @@ pub struct CheckArgs {
     #[arg(long, conflicts_with_all = ["formula", "formulas"])]
     pub symbols: bool,
     /// Also write the report as a page (check.html, check.md) and check.json to this folder.
-    #[arg(long, value_name = "DIR")]
+    #[arg(long, short = 'o', value_name = "DIR")]
     pub out: Option<PathBuf>,
 }
 
@@ -246,7 +256,7 @@ pub struct CheckArgs {
 #[derive(Debug, Args)]
 pub struct BenchArgs {
     /// Output folder (index.html, bench.md, figures/, results.json, results.csv).
-    #[arg(long, default_value = "reports/bench")]
+    #[arg(long, short = 'o', default_value = "reports/bench")]
     pub out: PathBuf,
     /// Reduced sweep: three settings per method, one timed run (for tests).
     #[arg(long)]
@@ -267,7 +277,7 @@ pub struct ReportArgs {
     #[arg(value_name = "SCENARIO")]
     pub scenarios: Vec<PathBuf>,
     /// Output folder.
-    #[arg(long, default_value = "reports")]
+    #[arg(long, short = 'o', default_value = "reports")]
     pub out: PathBuf,
     /// Formats, comma-separated.
     #[arg(long, value_enum, value_delimiter = ',', default_values_t = [Format::Html, Format::Md])]
@@ -284,7 +294,7 @@ pub struct HandoutArgs {
     #[arg(long, conflicts_with_all = ["scene", "pdf"])]
     pub list: bool,
     /// Output folder.
-    #[arg(long, default_value = "handouts")]
+    #[arg(long, short = 'o', default_value = "handouts")]
     pub out: PathBuf,
     /// Also print the HTML to <SCENE>.pdf with headless Chromium ($STICKSLIP_CHROMIUM, else
     /// chromium, chromium-browser or google-chrome on PATH).

@@ -34,6 +34,8 @@ pub fn run(cli: Cli) -> Result<()> {
         Command::Fit(args) => fit(&args),
         Command::Worksheet(args) => worksheet(&args),
         Command::Explorer(args) => explorer(&args),
+        Command::Completions { shell } => print_stdout(&crate::shell::completions(shell)),
+        Command::Man => print_stdout(&crate::shell::man_page().context("rendering the man page")?),
     }
 }
 

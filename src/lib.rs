@@ -18,7 +18,8 @@
 //! The `cli` feature (default) adds the presentation layer: command line, reports, figures,
 //! handouts, worksheets, sweeps, fits and benchmarks. Without it the core (params, models,
 //! engine, results, claims, solvers, explore) builds on its own, for wasm32 too; there
-//! [`wasm`] exports the explorer page's entry points (`stickslip explorer`).
+//! [`wasm`] exports the explorer page's entry points (`stickslip explorer`). The `peers` feature
+//! (off by default) adds the benchmark's compiled peer from diffsol.
 
 #[cfg(feature = "cli")]
 pub mod bench;
@@ -52,6 +53,8 @@ pub mod present;
 #[cfg(feature = "cli")]
 pub mod report;
 pub mod results;
+#[cfg(feature = "cli")]
+pub mod shell;
 pub mod solver;
 #[cfg(feature = "cli")]
 pub mod sweep;

@@ -1,7 +1,8 @@
 //! `stickslip bench --quick` as a user runs it: the command exits 0 and writes a report whose
 //! JSON parses with the documented keys and whose CSV has its header; the failures table names
 //! every method of the registry; the diffsol peer is swept and the headline names a compiled
-//! peer; euler_sign's spurious reversals grow as the step shrinks; a
+//! peer (with the cargo feature `peers`; without it the pages and the failures table say it
+//! is not built in); euler_sign's spurious reversals grow as the step shrinks; a
 //! sweep point survives a JSON round trip. The quick run is made once and shared; no test reads
 //! a timing.
 
@@ -53,6 +54,7 @@ struct QuickRun {
     _dir: tempfile::TempDir,
     out: PathBuf,
     json: Value,
+    stderr: String,
 }
 
 /// Runs `stickslip bench --quick` once for all tests.
@@ -61,18 +63,20 @@ fn quick() -> &'static QuickRun {
     RUN.get_or_init(|| {
         let dir = tempfile::tempdir().expect("temporary folder");
         let out = dir.path().join("bench");
-        Command::cargo_bin("stickslip")
+        let done = Command::cargo_bin("stickslip")
             .expect("binary")
             .args(["bench", "--quick", "--out"])
             .arg(&out)
             .assert()
             .success();
+        let stderr = String::from_utf8_lossy(&done.get_output().stderr).into_owned();
         let text = std::fs::read_to_string(out.join("results.json")).expect("results.json");
         let json = serde_json::from_str(&text).expect("results.json parses");
         QuickRun {
             _dir: dir,
             out,
             json,
+            stderr,
         }
     })
 }
@@ -154,6 +158,7 @@ fn failures_table_names_every_registered_method_and_the_endpoint_variant() {
 /// The compiled peer from a Rust ODE library (diffsol's Tsit45 on the tool's event loop) is
 /// swept like the other adaptive methods, and the headline compares the exact engine with the
 /// fastest compiled peer, named, never with SciPy.
+#[cfg(feature = "peers")]
 #[test]
 fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
     let run = quick();
@@ -202,6 +207,52 @@ fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
         }
     }
     assert!(section.contains("diffsol_tsit45 (the Rust library diffsol"));
+}
+
+/// Without the cargo feature `peers` the diffsol peer is not swept, and the run says so: in
+/// results.json, on both pages, in the failures table and on stderr, never a silently missing row.
+#[cfg(not(feature = "peers"))]
+#[test]
+fn without_the_peers_feature_the_diffsol_peer_is_said_to_be_not_built_in() {
+    let run = quick();
+    let peer = "diffsol_tsit45";
+    assert!(!array(&run.json, "methods")
+        .iter()
+        .any(|m| m["name"] == peer));
+    assert!(!array(&run.json, "sweep")
+        .iter()
+        .any(|p| p["method"] == peer));
+    let missing = array(&run.json, "not_built_in");
+    assert_eq!(missing.len(), 1, "{missing:?}");
+    assert_eq!(missing[0]["name"], peer);
+    let message = missing[0]["message"].as_str().expect("message");
+    assert!(
+        message.contains("not built in") && message.contains("--features peers"),
+        "{message}"
+    );
+    for page in ["index.html", "bench.md"] {
+        let text = std::fs::read_to_string(run.out.join(page)).expect(page);
+        assert_eq!(
+            text.matches(message).count(),
+            2,
+            "{page}: note and table row"
+        );
+    }
+    let summary = array(&run.json["failures"], "table");
+    assert!(
+        !summary.iter().any(|r| r["method"] == peer),
+        "no measured row"
+    );
+    assert!(run.stderr.contains(message), "{}", run.stderr);
+}
+
+/// With the cargo feature `peers` nothing is said to be missing.
+#[cfg(feature = "peers")]
+#[test]
+fn with_the_peers_feature_nothing_is_said_to_be_not_built_in() {
+    let run = quick();
+    assert!(array(&run.json, "not_built_in").is_empty());
+    assert!(!run.stderr.contains("not built in"), "{}", run.stderr);
 }
 
 #[test]

@@ -343,7 +343,11 @@ proptest! {
         match parse(&text, path, &opts) {
             Ok(data) => match fit(&data, &WoodpeckerParams::default(), &FitParam::DEFAULT) {
                 Ok(f) => prop_assert!(f.estimates.iter().all(|e| e.value.is_finite())),
-                Err(Error::NotConverged { reason }) => assert_message(&text, &reason),
+                // A search that did not converge, or a negative verdict on data that fit
+                // only in another unit: reported in one line.
+                Err(Error::NotConverged { reason } | Error::Verdict { reason }) => {
+                    assert_message(&text, &reason)
+                }
                 Err(e) => assert_refused(&text, &e),
             },
             Err(e) => assert_refused(&text, &e),

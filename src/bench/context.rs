@@ -41,6 +41,8 @@ pub struct Ctx {
     version: String,
     elapsed: String,
     quick: bool,
+    /// One line per method this build leaves out (the diffsol peer without `peers`).
+    not_built_in: Vec<String>,
     protocol: Vec<String>,
     machine: Vec<Kv>,
     problems: Table,
@@ -181,6 +183,11 @@ pub fn context(r: &BenchResults) -> Result<Ctx> {
         version: r.machine.crate_version.clone(),
         elapsed: format!("{:.1} s", r.elapsed_s),
         quick: r.quick,
+        not_built_in: r
+            .not_built_in
+            .iter()
+            .map(|m| m.message.to_string())
+            .collect(),
         protocol: protocol(r),
         machine,
         problems,

@@ -26,7 +26,7 @@ pub struct Machine {
     pub os: String,
     pub arch: String,
     /// The version of diffsol (the compiled peer's library) this binary was built with, from
-    /// Cargo.lock.
+    /// Cargo.lock, or "not built in" without the cargo feature `peers`.
     pub diffsol: String,
     /// Python, NumPy and SciPy versions if a probe found them.
     pub python: Option<String>,
@@ -56,7 +56,11 @@ impl Machine {
             cpu: cpu_model().unwrap_or_else(|| "unknown".to_string()),
             os: std::env::consts::OS.to_string(),
             arch: std::env::consts::ARCH.to_string(),
-            diffsol: locked_version("diffsol").unwrap_or_else(|| "unknown".to_string()),
+            diffsol: if cfg!(feature = "peers") {
+                locked_version("diffsol").unwrap_or_else(|| "unknown".to_string())
+            } else {
+                "not built in (cargo feature peers)".to_string()
+            },
             python: None,
             numpy: None,
             scipy: None,

@@ -18,6 +18,7 @@ use std::time::Instant;
 use serde::Serialize;
 
 use crate::error::Result;
+#[cfg(feature = "peers")]
 use crate::solver::diffsol_peer::DiffsolTsit45;
 use crate::solver::dopri5::Dopri5EndpointsOnly;
 use crate::solver::{methods, Method};
@@ -81,6 +82,14 @@ pub struct MethodInfo {
     pub in_registry: bool,
 }
 
+/// A method of the benchmark that this build leaves out, and how to build it in.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NotBuiltIn {
+    pub name: &'static str,
+    /// One line for people: what is missing and the build that has it.
+    pub message: &'static str,
+}
+
 /// A problem of the sweep with its exact reference.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ProblemInfo {
@@ -112,6 +121,8 @@ pub struct BenchResults {
     pub machine: Machine,
     pub grid: Grid,
     pub methods: Vec<MethodInfo>,
+    /// Methods of the benchmark left out of this build (cargo features), said on the page.
+    pub not_built_in: Vec<NotBuiltIn>,
     pub problems: Vec<ProblemInfo>,
     /// The exact references against a 40-digit integration by a second program.
     pub reference_check: ReferenceCheck,
@@ -127,13 +138,29 @@ pub struct BenchResults {
 
 /// The methods of the benchmark: the registry, plus the endpoint-only dopri5 variant when the
 /// registry does not list it, plus the compiled peer from a Rust ODE library (diffsol's Tsit45
-/// on the same event loop; the registry is the core's, which does not depend on diffsol).
+/// on the same event loop, with the cargo feature `peers`; the registry is the core's, which
+/// does not depend on diffsol).
 pub fn bench_methods() -> Vec<(Box<dyn Method>, bool)> {
     let mut out: Vec<(Box<dyn Method>, bool)> = methods().into_iter().map(|m| (m, true)).collect();
     if !out.iter().any(|(m, _)| m.name() == ENDPOINTS) {
         out.push((Box::new(Dopri5EndpointsOnly), false));
     }
+    #[cfg(feature = "peers")]
     out.push((Box::new(DiffsolTsit45), false));
+    out
+}
+
+/// The methods of the benchmark that this build leaves out: the diffsol peer without the
+/// cargo feature `peers`.
+pub fn not_built_in() -> Vec<NotBuiltIn> {
+    let mut out = Vec::new();
+    if !cfg!(feature = "peers") {
+        out.push(NotBuiltIn {
+            name: crate::solver::DIFFSOL_PEER,
+            message: "The diffsol peer (diffsol_tsit45) is not built in: build with \
+                      --features peers to measure it",
+        });
+    }
     out
 }
 
@@ -152,6 +179,10 @@ pub fn run(config: &Config) -> Result<BenchResults> {
     };
     let mut machine = Machine::detect();
     let registry = bench_methods();
+    let not_built_in = not_built_in();
+    for m in &not_built_in {
+        eprintln!("bench: {}", m.message);
+    }
     let all: Vec<&dyn Method> = registry.iter().map(|(m, _)| m.as_ref()).collect();
     let problems = problems::sweep_problems()?;
     let references = problems
@@ -233,6 +264,7 @@ pub fn run(config: &Config) -> Result<BenchResults> {
                 in_registry: *in_registry,
             })
             .collect(),
+        not_built_in,
         problems: pairs
             .iter()
             .map(|(bp, r)| ProblemInfo {

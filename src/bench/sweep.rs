@@ -60,7 +60,7 @@ pub fn method_kind(name: &str) -> MethodKind {
 pub fn is_compiled_peer(name: &str) -> bool {
     name == "dopri5"
         || name == super::failure_table::ENDPOINTS
-        || name == crate::solver::diffsol_peer::NAME
+        || name == crate::solver::DIFFSOL_PEER
 }
 
 /// The accuracy settings of a sweep.

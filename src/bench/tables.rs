@@ -180,7 +180,7 @@ pub fn failure_tables(r: &BenchResults) -> (Table, Table) {
             methods.push(&f.method);
         }
     }
-    let summary = methods
+    let mut summary: Vec<Row> = methods
         .iter()
         .map(|m| {
             let mine: Vec<_> = rows.iter().filter(|f| f.method == *m).collect();
@@ -215,6 +215,17 @@ pub fn failure_tables(r: &BenchResults) -> (Table, Table) {
             row(vec![m.to_string(), kind, text], class)
         })
         .collect();
+    // A method this build leaves out keeps its row, saying so.
+    summary.extend(r.not_built_in.iter().map(|m| {
+        row(
+            vec![
+                m.name.to_string(),
+                "compiled peer".to_string(),
+                m.message.to_string(),
+            ],
+            "na",
+        )
+    }));
     let detail = rows
         .iter()
         .map(|f| {

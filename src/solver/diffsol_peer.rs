@@ -36,7 +36,7 @@ use super::{Method, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
 
 /// The method's name in the benchmark.
-pub const NAME: &str = "diffsol_tsit45";
+pub const NAME: &str = super::DIFFSOL_PEER;
 
 /// The matrix type of the diffsol problem: nalgebra, serial (the state has two components).
 type M = NalgebraMat<f64>;

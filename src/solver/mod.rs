@@ -11,8 +11,9 @@
 //! euler_sign  explicit Euler with sign(v) friction (the spreadsheet method)
 //! ```
 //!
-//! With the `cli` feature, [`diffsol_peer`] adds diffsol's Tsit45 on dopri5's event loop: the
+//! With the `peers` feature, `diffsol_peer` adds diffsol's Tsit45 on dopri5's event loop: the
 //! benchmark's peer from a Rust ODE library (not in [`methods`], which lists the core methods).
+//! Its name, [`DIFFSOL_PEER`], is known without it, so a build without the peer can say so.
 //!
 //! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
 //! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`.
@@ -22,7 +23,7 @@ use serde::Serialize;
 use crate::engine::{Body, ForceLaw};
 use crate::error::Result;
 
-#[cfg(feature = "cli")]
+#[cfg(feature = "peers")]
 pub mod diffsol_peer;
 pub mod dopri5;
 pub mod euler_sign;
@@ -30,6 +31,10 @@ pub mod exact;
 pub mod moreau;
 pub mod rk4;
 pub mod tanh;
+
+/// The name of the compiled peer from a Rust ODE library (diffsol's Tsit45), built in with the
+/// cargo feature `peers`.
+pub const DIFFSOL_PEER: &str = "diffsol_tsit45";
 
 /// Default regularization width ε of the tanh methods (m/s).
 pub const TANH_EPSILON: f64 = 1e-4;

@@ -1,0 +1,153 @@
+//! The conventions of a Rust command line, as a user meets them: `stickslip completions
+//! <SHELL>` prints a script for each of the five shells that names the subcommands,
+//! `stickslip man` prints a roff page that opens with `.TH` and lists the subcommands, an
+//! unknown shell is bad input (exit 2), and `-o` is the short form of every `--out`.
+
+use assert_cmd::Command;
+use clap::CommandFactory;
+
+use stickslip::cli::Cli;
+
+/// Subcommands every script and the page must name.
+const SUBCOMMANDS: [&str; 8] = [
+    "eval",
+    "report",
+    "bench",
+    "sweep",
+    "check",
+    "worksheet",
+    "completions",
+    "man",
+];
+
+fn stickslip() -> Command {
+    let mut cmd = Command::cargo_bin("stickslip").expect("binary");
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+fn stdout_of(args: &[&str]) -> String {
+    let out = stickslip()
+        .args(args)
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    assert!(out.stderr.is_empty(), "{args:?}: nothing on stderr");
+    String::from_utf8(out.stdout).expect("UTF-8")
+}
+
+#[test]
+fn completions_of_every_shell_name_the_subcommands() {
+    for shell in ["bash", "zsh", "fish", "powershell", "elvish"] {
+        let script = stdout_of(&["completions", shell]);
+        assert!(!script.trim().is_empty(), "{shell}: empty script");
+        for sub in SUBCOMMANDS {
+            assert!(script.contains(sub), "{shell}: {sub} not completed");
+        }
+        // The model subcommands come from the registry, and the flags with them.
+        assert!(script.contains("woodpecker"), "{shell}");
+        assert!(script.contains("--out"), "{shell}");
+    }
+}
+
+#[test]
+fn an_unknown_shell_is_bad_input_with_the_choices_on_one_line() {
+    let out = stickslip()
+        .args(["completions", "tcsh"])
+        .assert()
+        .code(2)
+        .get_output()
+        .clone();
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("bash") && err.contains("powershell"), "{err}");
+}
+
+#[test]
+fn the_man_page_is_roff_that_opens_with_th_and_lists_the_subcommands() {
+    let page = stdout_of(&["man"]);
+    assert!(
+        page.starts_with(".TH stickslip 1 "),
+        "{}",
+        &page[..80.min(page.len())]
+    );
+    for section in [
+        ".SH NAME",
+        ".SH SYNOPSIS",
+        ".SH DESCRIPTION",
+        ".SH SUBCOMMANDS",
+    ] {
+        assert!(page.contains(section), "{section}");
+    }
+    for sub in SUBCOMMANDS {
+        assert!(
+            page.contains(&format!("stickslip\\-{sub}(1)")),
+            "{sub} not listed"
+        );
+    }
+    // The apostrophe string is defined before the text uses it.
+    let defined = page.find(".ds Aq").expect("Aq defined");
+    let used = page.find("\\*(Aq").expect("Aq used");
+    assert!(defined < used);
+}
+
+/// Every `--out` of every subcommand (the model subcommands included) has `-o`.
+#[test]
+fn every_out_flag_has_the_short_form_o() {
+    fn visit(cmd: &clap::Command, path: &str, found: &mut Vec<String>) {
+        for arg in cmd.get_arguments() {
+            if arg.get_long() == Some("out") {
+                assert_eq!(arg.get_short(), Some('o'), "{path} --out");
+                found.push(path.to_string());
+            }
+        }
+        for sub in cmd.get_subcommands() {
+            visit(sub, &format!("{path} {}", sub.get_name()), found);
+        }
+    }
+    let mut found = Vec::new();
+    visit(&Cli::command(), "stickslip", &mut found);
+    for command in [
+        "report",
+        "bench",
+        "handout",
+        "sweep woodpecker",
+        "check pulled-mass",
+        "fit",
+        "worksheet",
+        "explorer",
+    ] {
+        assert!(
+            found.contains(&format!("stickslip {command}")),
+            "{command}: no --out ({found:?})"
+        );
+    }
+}
+
+#[test]
+fn o_writes_where_out_would() {
+    let dir = tempfile::tempdir().expect("temporary folder");
+    let out = dir.path().join("grid");
+    stickslip()
+        .args([
+            "sweep",
+            "pulled-mass",
+            "--param",
+            "mu_d",
+            "--from",
+            "0.2",
+            "--to",
+            "0.3",
+            "--steps",
+            "2",
+            "-o",
+        ])
+        .arg(&out)
+        .assert()
+        .success();
+    for file in ["sweep.csv", "sweep.svg"] {
+        assert!(out.join(file).is_file(), "{file} not written to -o");
+    }
+}
