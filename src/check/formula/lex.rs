@@ -216,9 +216,11 @@ impl<'a> Lexer<'a> {
                 digits.push(d);
                 self.at += 1;
             }
-            let exponent: f64 = digits
-                .parse()
-                .map_err(|_| format!("the superscript `{digits}` is not a number"))?;
+            let exponent = digits
+                .parse::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .ok_or_else(|| format!("the superscript `{digits}` is not a number"))?;
             out.push(Tok::Op('^'));
             out.push(Tok::Num(exponent));
             return Ok(());
@@ -356,8 +358,11 @@ impl<'a> Lexer<'a> {
         if self.peek() == Some('.') {
             return Err(format!("`{text}.` is not a number"));
         }
-        text.parse()
-            .map_err(|_| format!("`{text}` is not a number"))
+        match text.parse::<f64>() {
+            Ok(x) if x.is_finite() => Ok(x),
+            Ok(_) => Err(format!("`{text}` is beyond double precision")),
+            Err(_) => Err(format!("`{text}` is not a number")),
+        }
     }
 
     /// A run of letters with the subscripts, primes and superscripts that belong to a name.
