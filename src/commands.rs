@@ -271,10 +271,11 @@ fn report(args: &ReportArgs) -> Result<()> {
         .collect();
     refuse_overwriting_inputs(&args.out, &files, &inputs)?;
     let written = report::write_all(&args.out, &files)?;
+    let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
     print_stdout(&format!(
-        "wrote {} files for {} scenes to {}\n",
-        written.len(),
-        scenes.len(),
+        "wrote {} for {} to {}\n",
+        plural(written.len(), "file"),
+        plural(scenes.len(), "scene"),
         shown(&args.out)
     ))
 }
