@@ -34,11 +34,24 @@ fn value(r: &Report, v: Option<f64>, digits: usize) -> String {
     }
 }
 
-fn verdict(r: &Report) -> &'static str {
+/// The verdict, and for an agreement its scope: the regimes where no set was compared are
+/// named, as the agreement says nothing of them.
+fn verdict(r: &Report) -> String {
     match r.verdict {
-        Verdict::Agrees => "AGREES",
-        Verdict::Disagrees => "DISAGREES",
-        Verdict::NotCompared => "NOT COMPARED",
+        Verdict::Agrees if !r.unmeasured_regimes.is_empty() => {
+            let words: Vec<&str> = r
+                .unmeasured_regimes
+                .iter()
+                .map(|id| regime_words(id))
+                .collect();
+            format!(
+                "AGREES where compared (not compared in: {})",
+                words.join("; ")
+            )
+        }
+        Verdict::Agrees => "AGREES".to_string(),
+        Verdict::Disagrees => "DISAGREES".to_string(),
+        Verdict::NotCompared => "NOT COMPARED".to_string(),
     }
 }
 
@@ -241,7 +254,7 @@ pub fn render(r: &Report) -> Result<Vec<OutFile>> {
     };
     ctx.insert("quantity_words", &words);
     ctx.insert("formula", &math(&r.read_as.latex));
-    ctx.insert("verdict", verdict(r));
+    ctx.insert("verdict", &verdict(r));
     ctx.insert("summary", &summary(r));
     ctx.insert("given", &given(r));
     let rows: Vec<RowCtx> = r
