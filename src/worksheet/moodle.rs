@@ -88,6 +88,13 @@ fn moodle_number(x: f64) -> String {
     crate::error::short(x)
 }
 
+/// An answer or tolerance as GIFT and Moodle XML read it: the shortest decimal that reads
+/// back the same, never in e-notation (which GIFT editors and previewers reject: `gift-pegjs`
+/// parses `5.397e-3` as an error).
+fn answer_number(x: f64) -> String {
+    format!("{x}")
+}
+
 fn params_html(case: &Model, words: &Words) -> String {
     let rows: String = parameters(case)
         .into_iter()
@@ -164,12 +171,12 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
                 .collect::<Result<_>>()?;
         }
         (Value::Number(x), kind) => {
-            v.answer = moodle_number(*x);
+            v.answer = answer_number(*x);
             let tol = match kind {
                 Kind::ReadFigure(_) => a.tolerance.unwrap_or_else(|| tolerance(*x)),
                 _ => tolerance(*x),
             };
-            v.tolerance = moodle_number(tol);
+            v.tolerance = answer_number(tol);
             if let Kind::ReadFigure(_) = kind {
                 let svg = super::figure::force_figure(&s.case, words.lang)?;
                 let data = base64::engine::general_purpose::STANDARD.encode(svg);
@@ -297,6 +304,14 @@ pub(crate) fn gift_text(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn answers_and_tolerances_are_plain_decimals() {
+        assert_eq!(answer_number(1e-5), "0.00001");
+        assert_eq!(answer_number(5.397e-3), "0.005397");
+        assert_eq!(answer_number(2500.0), "2500");
+        assert_eq!(answer_number(-0.25), "-0.25");
+    }
 
     #[test]
     fn tolerance_is_one_unit_in_the_third_figure() {
