@@ -787,3 +787,68 @@ fn the_committed_moodle_example_is_what_the_command_writes() {
         );
     }
 }
+
+/// The GIFT banks of a class of 28 parse with `gift-pegjs`, the parser of GIFT editors and
+/// previewers (it rejects numbers in e-notation, which Moodle itself reads), every numerical
+/// question with its answer and tolerance. Needs Node with gift-pegjs in `STICKSLIP_NODE_MODULES`
+/// (default `target/axe/node_modules`, where `.ci/run` installs it).
+#[test]
+fn the_gift_banks_parse_with_gift_pegjs() {
+    let modules = std::env::var("STICKSLIP_NODE_MODULES").map_or_else(
+        |_| Path::new(env!("CARGO_MANIFEST_DIR")).join("target/axe/node_modules"),
+        std::path::PathBuf::from,
+    );
+    let node_runs = std::process::Command::new("node")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !node_runs || !modules.join("gift-pegjs").exists() {
+        assert!(
+            std::env::var("CI").is_err(),
+            "CI must install node and gift-pegjs in {}",
+            modules.display()
+        );
+        eprintln!("skipped: node or gift-pegjs not installed");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let script = dir.path().join("parse.js");
+    fs::write(
+        &script,
+        "const fs = require('fs');\n\
+         const g = require(process.argv[2]);\n\
+         const parse = g.parse || (g.default && g.default.parse);\n\
+         const qs = parse(fs.readFileSync(process.argv[3], 'utf8'));\n\
+         const numerical = qs.filter(q => q.type === 'Numerical');\n\
+         console.log(qs.length + ' ' + numerical.length);\n",
+    )
+    .unwrap();
+    for model in ["pulled-mass", "woodpecker"] {
+        let out = dir.path().join(model);
+        worksheet(
+            &out,
+            &["--model", model, "--students", "28", "--format", "gift"],
+        );
+        let gift = out.join("worksheets.gift.txt");
+        let run = std::process::Command::new("node")
+            .arg(&script)
+            .arg(modules.join("gift-pegjs"))
+            .arg(&gift)
+            .output()
+            .unwrap();
+        let stdout = String::from_utf8_lossy(&run.stdout);
+        assert!(
+            run.status.success(),
+            "{model}: {}",
+            String::from_utf8_lossy(&run.stderr)
+        );
+        let counts: Vec<usize> = stdout
+            .split_whitespace()
+            .map(|n| n.parse().unwrap())
+            .collect();
+        assert!(
+            counts[0] >= 28 * 5 && counts[1] >= 28 * 4,
+            "{model}: {stdout}"
+        );
+    }
+}
