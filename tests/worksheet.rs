@@ -852,3 +852,47 @@ fn the_gift_banks_parse_with_gift_pegjs() {
         );
     }
 }
+
+/// Each Moodle question stands alone: its text defines the derived symbols the question and
+/// its rules use (W, ω, T …), and its feedback shows no raw 17-digit floats.
+#[test]
+fn every_moodle_question_defines_its_symbols_and_rounds_its_feedback() {
+    let dir = tempfile::tempdir().unwrap();
+    for (model, definitions) in [
+        ("pulled-mass", [r"\(W \= m g\)", r"\(T \= "]),
+        ("woodpecker", [r"\(W_S \= m_S g\)", r"\(T \= "]),
+    ] {
+        let out = dir.path().join(model);
+        worksheet(
+            &out,
+            &["--model", model, "--students", "3", "--format", "gift"],
+        );
+        let gift = fs::read_to_string(out.join("worksheets.gift.txt")).unwrap();
+        let questions: Vec<&str> = gift.split("\n::").skip(1).collect();
+        assert!(questions.len() >= 15, "{model}: {}", questions.len());
+        for q in questions {
+            for d in definitions {
+                assert!(q.contains(d), "{model}: {d} missing in {q}");
+            }
+            // Outside the numerical answer `{#answer:tolerance`, no number carries more
+            // than ten significant figures.
+            let text: String = q
+                .split("{#")
+                .enumerate()
+                .map(|(i, part)| {
+                    if i == 0 {
+                        part
+                    } else {
+                        part.split_once(' ').map_or("", |p| p.1)
+                    }
+                })
+                .collect();
+            let longest = text
+                .split(|c: char| !c.is_ascii_digit())
+                .map(str::len)
+                .max()
+                .unwrap_or(0);
+            assert!(longest <= 12, "{model}: a {longest}-digit number in {text}");
+        }
+    }
+}

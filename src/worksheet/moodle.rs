@@ -130,10 +130,17 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
         ),
         _ => String::new(),
     };
+    // Every symbol the question and its rules use, defined in the question itself: a student
+    // in Moodle sees no sheet.
+    let defined: Vec<String> = super::render::definitions_tex(&s.case)
+        .iter()
+        .map(|tex| format!("\\({}\\)", tera::escape_html(&words.lang.tex(tex))))
+        .collect();
     let html = format!(
-        "<p>{}</p>{}<p>{}{}</p>{image}",
+        "<p>{}</p>{}<p>{}</p><p>{}{}</p>{image}",
         tera::escape_html(&intro),
         params_html(&s.case, words),
+        defined.join("; "),
         tera::escape_html(&words.prompt(q)?),
         tera::escape_html(&figures),
     );
@@ -212,10 +219,14 @@ fn feedback(a: &Answer, words: &Words) -> Result<String> {
             let compared = a
                 .comparisons
                 .iter()
-                .map(|c| format!("{} = {}", c.symbol, moodle_number(c.value)))
+                .map(|c| {
+                    let value =
+                        crate::output::format::sig(Some(c.value), ANSWER_FIGURES as usize + 1);
+                    format!("{} = {value}", c.symbol)
+                })
                 .collect::<Vec<_>>()
                 .join(r",\quad ");
-            format!("\\({}\\)", tera::escape_html(&compared))
+            format!("\\({}\\)", tera::escape_html(&words.lang.tex(&compared)))
         }
     };
     Ok(format!(

@@ -46,9 +46,9 @@ const WORKSHEET_CSS: &str = include_str!("../../templates/worksheet.css");
 const ANSWER_DIGITS: usize = 4;
 const NUMERIC_DIGITS: usize = 10;
 
-/// The definitions of the model's [`Exercise::DEFINED`] symbols, `symbol = formula`, from the
-/// worked steps of `case` (the formulas are the same for every student).
-fn definitions(case: &Model, words: &Words) -> Vec<Math> {
+/// The definitions of the model's [`Exercise::DEFINED`] symbols, `symbol = formula` in LaTeX,
+/// from the worked steps of `case` (the formulas are the same for every student).
+pub(crate) fn definitions_tex(case: &Model) -> Vec<String> {
     fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
         M::DEFINED
     }
@@ -56,7 +56,14 @@ fn definitions(case: &Model, words: &Words) -> Vec<Math> {
     with_model!(case, p => of(p))
         .iter()
         .filter_map(|symbol| steps.iter().find(|s| s.symbol == *symbol))
-        .map(|s| words.math(&format!("{} = {}", s.symbol, s.formula())))
+        .map(|s| format!("{} = {}", s.symbol, s.formula()))
+        .collect()
+}
+
+fn definitions(case: &Model, words: &Words) -> Vec<Math> {
+    definitions_tex(case)
+        .iter()
+        .map(|tex| words.math(tex))
         .collect()
 }
 
