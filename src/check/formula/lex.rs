@@ -459,33 +459,31 @@ impl<'a> Lexer<'a> {
         None
     }
 
+    /// The text of a braced group `{…}` (braces nested inside kept), the `{` next.
+    fn braced(&mut self) -> std::result::Result<String, String> {
+        self.at += 1;
+        let start = self.at;
+        let mut depth = 1;
+        while let Some(c) = self.peek() {
+            match c {
+                '{' => depth += 1,
+                '}' if depth == 1 => {
+                    let inner: String = self.chars[start..self.at].iter().collect();
+                    self.at += 1;
+                    return Ok(inner);
+                }
+                '}' => depth -= 1,
+                _ => {}
+            }
+            self.at += 1;
+        }
+        Err("a `{` is not closed".to_string())
+    }
+
     /// A subscript after `_`: `{d,HALT}`, `\mathrm{HALT}`, `s`, `SL` (plain), `\text{…}`.
     fn subscript(&mut self) -> std::result::Result<String, String> {
         let raw: String = match self.peek() {
-            Some('{') => {
-                self.at += 1;
-                let start = self.at;
-                let mut depth = 1;
-                while let Some(c) = self.peek() {
-                    match c {
-                        '{' => depth += 1,
-                        '}' => {
-                            depth -= 1;
-                            if depth == 0 {
-                                break;
-                            }
-                        }
-                        _ => {}
-                    }
-                    self.at += 1;
-                }
-                if self.peek().is_none() {
-                    return Err("a `{` is not closed".to_string());
-                }
-                let inner: String = self.chars[start..self.at].iter().collect();
-                self.at += 1;
-                inner
-            }
+            Some('{') => self.braced()?,
             Some('\\') => {
                 self.at += 1;
                 let name = self.command_name();
@@ -653,17 +651,7 @@ impl<'a> Lexer<'a> {
                     self.at += 1;
                 }
                 let inner = if self.peek() == Some('{') {
-                    self.at += 1;
-                    let start = self.at;
-                    while self.peek().is_some_and(|c| c != '}') {
-                        self.at += 1;
-                    }
-                    if self.peek().is_none() {
-                        return Err("a `{` is not closed".to_string());
-                    }
-                    let inner: String = self.chars[start..self.at].iter().collect();
-                    self.at += 1;
-                    inner
+                    self.braced()?
                 } else {
                     let c = self.peek().ok_or("`\\bar` needs a symbol")?;
                     self.at += 1;
