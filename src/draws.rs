@@ -47,6 +47,11 @@ impl Draws {
         let u2 = self.unit();
         (-2.0 * (1.0 - u1).ln()).sqrt() * (std::f64::consts::TAU * u2).cos()
     }
+
+    /// Log-uniform in [lo, hi) (0 < lo < hi): every decade as likely.
+    pub fn log_between(&mut self, lo: f64, hi: f64) -> f64 {
+        (lo.ln() + self.unit() * (hi.ln() - lo.ln())).exp()
+    }
 }
 
 #[cfg(test)]

@@ -576,10 +576,10 @@ fn draw_sample(
     // Attempt j is packed against a boundary when j mod 5 < 5·BOUNDARY_SHARE, in turn boundary
     // by boundary and side by side; attempts that miss `regime` or leave the domain are redrawn.
     let packed_of_five = (5.0 * BOUNDARY_SHARE).round() as usize;
-    let mut attempts = 0usize;
-    while out.len() < samples && attempts < 50 * samples + 100 {
-        let j = attempts;
-        attempts += 1;
+    for j in 0..50 * samples + 100 {
+        if out.len() == samples {
+            break;
+        }
         let base = probe(model, &mut rng);
         let drawn = if !names.is_empty() && j % 5 < packed_of_five {
             let turn = j / 5 * packed_of_five + j % 5;
@@ -631,7 +631,8 @@ pub fn run(req: &Request) -> Result<Report> {
     let known = symbols(&req.case);
     let formula = Formula::read(&req.formula, &known)?;
     let drawn = draw_sample(req.case, req.samples, req.seed, req.regime.as_deref());
-    // The names of the measurable quantities, from the given set and a pilot of the sample.
+    // The names of the measurable quantities, from the given set and a pilot drawn over every
+    // regime (whatever `--regime` keeps).
     let mut names = measurable(&req.case)?;
     for (case, _) in draw_sample(req.case, PILOT, req.seed, None) {
         if let Ok(here) = measurable(&case) {

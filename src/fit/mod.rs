@@ -162,17 +162,16 @@ pub fn fit(data: &Tracked, base: &WoodpeckerParams, free: &[FitParam]) -> Result
         }
         // The search as read failed, and the unit that undoes the slip fits: a verdict on
         // the data as read (exit 3), naming the unit; nothing as read to write.
-        Err(Error::NotConverged { .. } | Error::InvalidParam { .. })
-            if slip.fits_in_units().is_some() =>
-        {
-            Err(Error::Verdict {
-                reason: slip.fits_in_units().unwrap_or_default(),
-            })
+        Err(e @ (Error::NotConverged { .. } | Error::InvalidParam { .. })) => {
+            match (slip.fits_in_units(), e) {
+                (Some(reason), _) => Err(Error::Verdict { reason }),
+                // First, as the one-line message is cut to its length.
+                (None, Error::NotConverged { reason }) => Err(Error::NotConverged {
+                    reason: format!("{}; {reason}", slip.brief()),
+                }),
+                (None, e) => Err(e),
+            }
         }
-        // First, as the one-line message is cut to its length.
-        Err(Error::NotConverged { reason }) => Err(Error::NotConverged {
-            reason: format!("{}; {reason}", slip.brief()),
-        }),
         Err(e) => Err(e),
     }
 }

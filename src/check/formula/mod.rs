@@ -108,17 +108,18 @@ impl Func {
 
     fn tex(self) -> &'static str {
         match self {
+            Func::Sqrt => r"\sqrt",
+            // Its bars pair round the argument: the opening one.
+            Func::Abs => r"\left|",
+            Func::Ln => r"\ln",
             Func::Log10 => r"\log_{10}",
             Func::Exp => r"\exp",
-            f => match f.plain() {
-                "ln" => r"\ln",
-                "sin" => r"\sin",
-                "cos" => r"\cos",
-                "tan" => r"\tan",
-                "arcsin" => r"\arcsin",
-                "arccos" => r"\arccos",
-                _ => r"\arctan",
-            },
+            Func::Sin => r"\sin",
+            Func::Cos => r"\cos",
+            Func::Tan => r"\tan",
+            Func::Asin => r"\arcsin",
+            Func::Acos => r"\arccos",
+            Func::Atan => r"\arctan",
         }
     }
 }
@@ -343,8 +344,8 @@ impl Formula {
             Node::Call(f, a) => {
                 let inner = self.render(a, style, known);
                 match (f, latex) {
-                    (Func::Sqrt, true) => format!(r"\sqrt{{{inner}}}"),
-                    (Func::Abs, true) => format!(r"\left|{inner}\right|"),
+                    (Func::Sqrt, true) => format!("{}{{{inner}}}", f.tex()),
+                    (Func::Abs, true) => format!(r"{}{inner}\right|", f.tex()),
                     (f, true) => format!(r"{}\left({inner}\right)", f.tex()),
                     (f, false) => format!("{}({inner})", f.plain()),
                 }

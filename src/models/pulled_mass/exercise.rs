@@ -200,12 +200,10 @@ const BOUNDARIES: [&str; 3] = ["φ = 1/Θ", "φ = φ_c", "φ = 2μs"];
 /// and k log-uniform over twelve decades, g 0.1–100 m/s²; φ log-uniform from its lower limit
 /// in one of the four regimes of §1.5, chosen in turn at random.
 fn probe_set(rng: &mut Draws) -> PulledMassParams {
-    let log_between =
-        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
     let mu_s = if rng.unit() < 0.75 {
         rng.between(0.05, 1.5)
     } else {
-        log_between(rng, MU_MIN * 10.0, MU_MAX)
+        rng.log_between(MU_MIN * 10.0, MU_MAX)
     };
     let ratio = match rng.unit() {
         u if u < 0.4 => rng.between(0.01, 1.0),
@@ -214,15 +212,15 @@ fn probe_set(rng: &mut Draws) -> PulledMassParams {
         _ => 10f64.powf(-rng.between(0.0, 3.0)),
     };
     let mu_d = (mu_s * ratio).clamp(MU_MIN, mu_s);
-    let mass = log_between(rng, 1e-6, 1e6);
-    let k = log_between(rng, 1e-6, 1e6);
-    let g = log_between(rng, 0.1, 100.0);
+    let mass = rng.log_between(1e-6, 1e6);
+    let k = rng.log_between(1e-6, 1e6);
+    let g = rng.log_between(0.1, 100.0);
     let (stick, cont) = (
         pm::phi_stick_max(mu_s, mu_d),
         pm::phi_continuous(mu_s, mu_d),
     );
     let phi = match rng.unit() {
-        u if u < 0.25 => log_between(rng, PHI_RANGE.0, stick),
+        u if u < 0.25 => rng.log_between(PHI_RANGE.0, stick),
         u if u < 0.5 => rng.between(stick, cont),
         u if u < 0.75 => rng.between(cont, 2.0 * mu_s),
         _ => 2.0 * mu_s * rng.between(1.0, 3.0),

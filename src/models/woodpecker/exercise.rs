@@ -207,8 +207,6 @@ impl Exercise for WoodpeckerParams {
 /// exactly 1 or small; k, the masses and the lengths over a factor of about ten either way of
 /// the toy's; z0 from a twentieth of d0 to past it.
 fn probe_set(rng: &mut Draws) -> WoodpeckerParams {
-    let log_between =
-        |rng: &mut Draws, lo: f64, hi: f64| (lo.ln() + rng.unit() * (hi.ln() - lo.ln())).exp();
     let mu_s = rng.between(0.1, 1.5);
     let ratio = match rng.unit() {
         u if u < 0.5 => rng.between(0.05, 1.0),
@@ -216,15 +214,15 @@ fn probe_set(rng: &mut Draws) -> WoodpeckerParams {
         u if u < 0.85 => 1.0,
         _ => 10f64.powf(-rng.between(1.0, 2.0)),
     };
-    let d0 = log_between(rng, 0.001, 0.05);
+    let d0 = rng.log_between(0.001, 0.05);
     WoodpeckerParams {
         mu_s,
         mu_d: (mu_s * ratio).clamp(MU_MIN, mu_s),
-        k: log_between(rng, 1.0, 400.0),
-        m_sleeve: log_between(rng, 0.001, 0.05),
-        m_bird: log_between(rng, 0.002, 0.1),
-        l: log_between(rng, 0.005, 0.05),
-        h: log_between(rng, 0.002, 0.02),
+        k: rng.log_between(1.0, 400.0),
+        m_sleeve: rng.log_between(0.001, 0.05),
+        m_bird: rng.log_between(0.002, 0.1),
+        l: rng.log_between(0.005, 0.05),
+        h: rng.log_between(0.002, 0.02),
         z0: d0 * rng.between(0.05, 1.5),
         d0,
         g: rng.between(1.0, 25.0),
