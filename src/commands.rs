@@ -130,12 +130,11 @@ fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()>
     reject_flag("claims", "--csv", common.csv.is_some())?;
     reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
     let (params, _) = model_params(&model.args)?;
-    let (pulled, wood) = crate::claims::params_for(&params);
     let sample = crate::claims::Sample {
         seed,
         size: samples,
     };
-    let claims = crate::claims::evaluate(&pulled, &wood, &sample)?;
+    let claims = crate::claims::evaluate_for(&params, &sample)?;
     print_stdout(&if common.json {
         serde_json::to_string_pretty(&claims)? + "\n"
     } else {

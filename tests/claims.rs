@@ -2,11 +2,14 @@
 //! woodpecker): the expected verdicts and numbers, determinism of the seeded sample, and the
 //! harmonic regimes of Figs. 15 and 16 around the z0 threshold.
 
-use stickslip::claims::{evaluate, halt_threshold_z0, Claim, Claims, Sample, Verdict};
+use stickslip::claims::{
+    evaluate, evaluate_for, halt_threshold_z0, Claim, Claims, Sample, Verdict,
+};
 use stickslip::engine::IntegrationRegime;
 use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::woodpecker::results as woodpecker;
 use stickslip::models::woodpecker::WoodpeckerParams;
+use stickslip::models::Model;
 
 /// The z0 (m) at which the Fig. 15 set loses its intermediate halt (physics.md §6, claim 8).
 const FIG16_THRESHOLD: f64 = 7.0746e-3;
@@ -215,4 +218,61 @@ fn an_empty_sample_is_refused() {
     )
     .unwrap_err();
     assert!(err.to_string().contains("sample size"), "{err}");
+}
+
+/// `claims woodpecker --mu-s 0.2 --mu-d 0.1` (issue 26): the given set is outside the domain of
+/// claims 5 to 8, which say so with a reason; the pulled-mass claims keep the paper's set.
+#[test]
+fn claims_outside_their_domain_do_not_apply_and_say_why() {
+    let w = WoodpeckerParams {
+        mu_s: 0.2,
+        mu_d: 0.1,
+        ..WoodpeckerParams::default()
+    };
+    let sample = Sample { seed: 1, size: 200 };
+    let claims = evaluate_for(&Model::Woodpecker(w), &sample).expect("valid");
+    for id in [5, 6, 7, 8] {
+        let c = claim(&claims, id);
+        assert_eq!(c.verdict, Verdict::DoesNotApply, "claim {id}");
+        let why = c.does_not_apply.as_deref().unwrap_or_default();
+        assert!(why.starts_with("the claim "), "claim {id}: {why}");
+    }
+    assert!(claim(&claims, 5)
+        .does_not_apply
+        .as_deref()
+        .is_some_and(|w| w.contains("u_s^(-)")));
+    for id in [1, 2, 3, 4] {
+        let c = claim(&claims, id);
+        assert_ne!(c.verdict, Verdict::DoesNotApply, "claim {id}");
+        assert_eq!(c.does_not_apply, None);
+    }
+    // The same sets taken as the paper's: no claim is judged outside its domain.
+    let paper = evaluate(&PulledMassParams::default(), &w, &sample).expect("valid");
+    assert!(paper
+        .claims
+        .iter()
+        .all(|c| c.verdict != Verdict::DoesNotApply));
+    let json = serde_json::to_string(&claims).expect("serializes");
+    assert!(json.contains("\"verdict\":\"does_not_apply\",\"does_not_apply\":\"the claim "));
+}
+
+/// A pulled-mass set in continuous slip is outside the domain of (28) and of claims 3 and 7.
+#[test]
+fn a_continuous_slip_pull_is_outside_the_domain_of_claim_2() {
+    let claims = evaluate_for(
+        &Model::PulledMass(PulledMassParams {
+            force: 0.35,
+            ..PulledMassParams::default()
+        }),
+        &Sample { seed: 1, size: 200 },
+    )
+    .expect("valid");
+    let c2 = claim(&claims, 2);
+    assert_eq!(c2.verdict, Verdict::DoesNotApply);
+    assert!(c2
+        .does_not_apply
+        .as_deref()
+        .is_some_and(|w| w.contains("continuous slip")));
+    assert_eq!(claim(&claims, 3).verdict, Verdict::DoesNotApply);
+    assert_eq!(claim(&claims, 8).verdict, Verdict::Qualified);
 }

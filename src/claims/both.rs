@@ -11,10 +11,14 @@ use super::{
     counterpart_name, mm_s, rel_diff, run_wood, Claim, Integrated, Numbers, Verdict, BOTH_MODELS,
 };
 use crate::error::Result;
+use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::{woodpecker, LawKind};
+use crate::models::{woodpecker, LawKind, Physics};
+
+const PULLED_ID: &str = <PulledMassParams as Physics>::ID;
+const WOOD_ID: &str = <WoodpeckerParams as Physics>::ID;
 use crate::output::format::people;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
@@ -142,7 +146,10 @@ pub(crate) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
         finding,
         numbers: n.take(),
         sample: None,
-    })
+        does_not_apply: None,
+        outside: Vec::new(),
+    }
+    .outside(PULLED_ID, pulled.outside.clone()))
 }
 
 /// The sleeve mass pair (m, 2m) or (m/2, m) around `w` whose sets are both in the paper's
@@ -175,6 +182,11 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
     let pair = doubled_pair(w).map(|p| (p, "")).or_else(|| {
         doubled_pair(&WoodpeckerParams::default())
             .map(|p| (p, " on the Fig. 15 set (the given set has no such pair)"))
+    });
+    let no_pair = doubled_pair(w).is_none().then(|| {
+        "the claim compares W_S v̄ of two sleeve masses m_S and 2 m_S in the paper's standard \
+         regime; no such pair exists around the given m_S"
+            .to_string()
     });
     let (mut cube_ok, mut cube_text) = (false, "no m_S pair in the standard regime".to_string());
     if let Some(((a, b), which)) = pair {
@@ -250,5 +262,9 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
         finding,
         numbers: n.take(),
         sample: None,
-    })
+        does_not_apply: None,
+        outside: Vec::new(),
+    }
+    .outside(PULLED_ID, pulled.outside.clone())
+    .outside(WOOD_ID, no_pair))
 }

@@ -11,8 +11,10 @@
 //!
 //! A verdict judges the paper's statement (`paper_says`) as written: `confirmed` (it holds on the
 //! evidence), `refuted` (a computed counterexample contradicts it), `qualified` (it holds only in
-//! part, or only after a correction the finding names). Nothing is quoted from the specification:
-//! every verdict follows from numbers computed here.
+//! part, or only after a correction the finding names), `does_not_apply` (the set the user gave
+//! lies outside the claim's domain: the claim says nothing about it; `does_not_apply` gives the
+//! reason in words and the finding shows the evidence on the paper's set). Nothing is quoted from
+//! the specification: every verdict follows from numbers computed here.
 //!
 //! ```text
 //! claims 1, 2  pulled_mass.rs     claims 3, 7  both.rs      claims 4, 6  woodpecker.rs
@@ -33,7 +35,7 @@ use crate::models::param::invalid;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::Counterpart;
 use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::{LawKind, Model};
+use crate::models::{LawKind, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
 pub(crate) use crate::results::rel_diff;
 
@@ -68,6 +70,51 @@ pub enum Verdict {
     Confirmed,
     Refuted,
     Qualified,
+    /// The given set is outside the claim's domain (the reason is in [`Claim::does_not_apply`]).
+    DoesNotApply,
+}
+
+impl Verdict {
+    /// The verdict in words, lowercase ("does not apply" with spaces).
+    pub fn words(self) -> &'static str {
+        match self {
+            Self::Confirmed => "confirmed",
+            Self::Refuted => "refuted",
+            Self::Qualified => "qualified",
+            Self::DoesNotApply => "does not apply",
+        }
+    }
+}
+
+/// Whose parameter set the claims judge: a claim whose domain excludes the set of the model the
+/// user gave does not apply; a model the user did not give keeps the paper's set, and a claim
+/// about it is shown on a set of the paper inside its domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Given {
+    /// Neither set was given: both are the paper's.
+    Paper,
+    /// The pulled-mass set was given.
+    PulledMass,
+    /// The woodpecker set was given.
+    Woodpecker,
+}
+
+impl Given {
+    /// The model whose parameters `model` carries.
+    pub fn of(model: &Model) -> Self {
+        match model {
+            Model::PulledMass(_) => Self::PulledMass,
+            Model::Woodpecker(_) => Self::Woodpecker,
+        }
+    }
+
+    fn gave(self, model_id: &str) -> bool {
+        match self {
+            Self::Paper => false,
+            Self::PulledMass => model_id == <PulledMassParams as Physics>::ID,
+            Self::Woodpecker => model_id == <WoodpeckerParams as Physics>::ID,
+        }
+    }
 }
 
 /// The `model` of a claim about both models; a claim about one model names its id.
@@ -105,10 +152,25 @@ pub struct Claim {
     /// The paper's statement, short.
     pub paper_says: String,
     pub verdict: Verdict,
+    /// Why the claim does not apply to the given set (verdict `does_not_apply`), else `None`.
+    pub does_not_apply: Option<String>,
     /// One or two sentences with the numbers.
     pub finding: String,
     pub numbers: Vec<ClaimNumber>,
     pub sample: Option<SampleResult>,
+    /// Set by a claim whose domain excludes the set it was given for one model: (that model's
+    /// id, the reason in words). [`evaluate_given`] turns it into the verdict when the user
+    /// gave that model's set.
+    #[serde(skip)]
+    pub(crate) outside: Vec<(&'static str, String)>,
+}
+
+impl Claim {
+    /// Marks the set of model `model_id` as outside the claim's domain, for `reason`.
+    pub(crate) fn outside(mut self, model_id: &'static str, reason: Option<String>) -> Self {
+        self.outside.extend(reason.map(|r| (model_id, r)));
+        self
+    }
 }
 
 /// All eight claims, in the order of physics.md §6.
@@ -117,7 +179,6 @@ pub struct Claims {
     pub claims: Vec<Claim>,
 }
 
-/// Checks the parameters and the sample, then evaluates the eight claims.
 /// The parameter pair the claims are computed on when one model's set is given: that set for
 /// its model, the paper's default set for the other.
 pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {
@@ -132,9 +193,29 @@ pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {
     pair
 }
 
+/// The eight claims on `model`'s set (the other model keeps the paper's set): a claim whose
+/// domain excludes the given set does not apply.
+pub fn evaluate_for(model: &Model, sample: &Sample) -> Result<Claims> {
+    let (pulled, wood) = params_for(model);
+    evaluate_given(&pulled, &wood, Given::of(model), sample)
+}
+
+/// The eight claims on sets that are the paper's or stand in for them: no claim is judged
+/// outside its domain; a set outside it is replaced by the paper's set (the finding says so).
 pub fn evaluate(
     pulled: &PulledMassParams,
     wood: &WoodpeckerParams,
+    sample: &Sample,
+) -> Result<Claims> {
+    evaluate_given(pulled, wood, Given::Paper, sample)
+}
+
+/// Checks the parameters and the sample, then evaluates the eight claims; a claim whose domain
+/// excludes the set of the model in `given` gets the verdict `does_not_apply` with its reason.
+pub fn evaluate_given(
+    pulled: &PulledMassParams,
+    wood: &WoodpeckerParams,
+    given: Given,
     sample: &Sample,
 ) -> Result<Claims> {
     pulled.validate()?;
@@ -157,6 +238,16 @@ pub fn evaluate(
         both::claim_7(&pulled_periodic, wood)?,
         lever::claim_8(wood)?,
     ];
+    let claims = claims
+        .into_iter()
+        .map(|mut c| {
+            if let Some((_, reason)) = c.outside.iter().find(|(m, _)| given.gave(m)) {
+                c.verdict = Verdict::DoesNotApply;
+                c.does_not_apply = Some(reason.clone());
+            }
+            c
+        })
+        .collect();
     Ok(Claims { claims })
 }
 

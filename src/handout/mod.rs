@@ -116,8 +116,8 @@ pub fn list() -> Result<String> {
 /// The handout of `scene` in the language of `words`: context, figures and claims. Phrases
 /// without a translation stay in English and are listed by `words` ([`Translator::missing`]).
 pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
-    let (pulled, wood) = claim_params(scene);
-    let claims = claims::evaluate(&pulled, &wood, &Sample::default())?;
+    let (pulled, wood, given) = claim_params(scene);
+    let claims = claims::evaluate_given(&pulled, &wood, given, &Sample::default())?;
     let with_figures = Scene {
         figures: layout::kinds(scene),
         ..scene.clone()

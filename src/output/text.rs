@@ -196,6 +196,9 @@ pub fn claims(claims: &crate::claims::Claims) -> String {
             ctx.verdict.to_uppercase()
         );
         let _ = writeln!(out, "  the paper: {}", c.paper_says);
+        if let Some(why) = &c.does_not_apply {
+            let _ = writeln!(out, "  why:       {why}");
+        }
         let _ = writeln!(out, "  finding:   {}", c.finding);
         for n in &ctx.numbers {
             let _ = writeln!(out, "    {n}");

@@ -101,6 +101,8 @@ pub struct ClaimCtx {
     /// The verdict's id (`confirmed`, `refuted`, …) for the page's style, whatever the
     /// language of `verdict`.
     pub verdict_class: String,
+    /// Why the claim does not apply to the given set ("" when it does).
+    pub does_not_apply: String,
     pub finding: String,
     pub numbers: Vec<String>,
 }
@@ -165,7 +167,7 @@ pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
 
 /// A claim of the paper for the page.
 pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
-    let verdict = serde_json::to_value(c.verdict)
+    let verdict_class = serde_json::to_value(c.verdict)
         .ok()
         .and_then(|v| v.as_str().map(str::to_string))
         .unwrap_or_default();
@@ -197,8 +199,9 @@ pub fn claim(c: &crate::claims::Claim) -> ClaimCtx {
         id: c.id,
         title: c.title.clone(),
         paper_says: c.paper_says.clone(),
-        verdict_class: verdict.clone(),
-        verdict,
+        verdict_class,
+        verdict: c.verdict.words().to_string(),
+        does_not_apply: c.does_not_apply.clone().unwrap_or_default(),
         finding: c.finding.clone(),
         numbers,
     }

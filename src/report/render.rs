@@ -10,7 +10,7 @@ use super::figures::style::{with_text, Geometry};
 use super::figures::{chart, map};
 use super::scene::{Drawing, Figure, Part, Scene};
 use super::writer::OutFile;
-use crate::claims::{self, Claims, Sample};
+use crate::claims::{self, Claims, Given, Sample};
 use crate::error::{Error, Result};
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::WoodpeckerParams;
@@ -179,9 +179,10 @@ pub(crate) fn first_sentence(text: &str) -> &str {
 }
 
 /// The parameter pair the claims of a scene are computed on: the scene's own set for its
-/// model, the paper's default set for the other.
-pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams) {
-    crate::claims::params_for(&scene.setup)
+/// model (the one given), the paper's default set for the other.
+pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams, Given) {
+    let (p, w) = crate::claims::params_for(&scene.setup);
+    (p, w, Given::of(&scene.setup))
 }
 
 /// The full context of a scene: tables, `figures` and its claims.
@@ -323,7 +324,7 @@ pub fn render_with(
 ) -> Result<Vec<OutFile>> {
     let tera = templates(&[])?;
     // Claims are computed once per distinct parameter pair.
-    let mut pairs: Vec<(PulledMassParams, WoodpeckerParams)> = Vec::new();
+    let mut pairs: Vec<(PulledMassParams, WoodpeckerParams, Given)> = Vec::new();
     for s in scenes {
         let pair = claim_params(s);
         if !pairs.contains(&pair) {
@@ -332,7 +333,7 @@ pub fn render_with(
     }
     let all_claims: Vec<Claims> = pairs
         .par_iter()
-        .map(|(p, w)| claims::evaluate(p, w, &Sample::default()))
+        .map(|(p, w, given)| claims::evaluate_given(p, w, *given, &Sample::default()))
         .collect::<Result<_>>()?;
     let contexts: Vec<SceneCtx> = scenes
         .par_iter()

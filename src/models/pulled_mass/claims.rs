@@ -37,6 +37,8 @@ pub(crate) struct PeriodicSet {
     pub p: PulledMassParams,
     /// "the given set" or "set B (…)".
     pub name: String,
+    /// Why the given set was replaced by set B (`None` when it is the given set).
+    pub outside: Option<String>,
     pub linear: Integrated,
     pub harmonic: Integrated,
 }
@@ -46,6 +48,7 @@ impl PeriodicSet {
         Ok(Self {
             p: *p,
             name,
+            outside: None,
             linear: run_pulled(p, LawKind::Linear)?,
             harmonic: run_pulled(p, LawKind::Harmonic)?,
         })
@@ -63,12 +66,19 @@ pub(crate) fn periodic_set(p: &PulledMassParams) -> Result<PeriodicSet> {
     if given.moves_periodically() {
         return Ok(given);
     }
-    PeriodicSet::of(
+    let mut b = PeriodicSet::of(
         &set_b(),
         "set B (μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m), as the given set does not \
          reach a periodic, advancing motion in both laws"
             .to_string(),
-    )
+    )?;
+    b.outside = Some(format!(
+        "the claim compares periodic, advancing motions; the given set has none in both laws \
+         (linearized: {}; harmonic: {})",
+        given.linear.steady.regime().words(),
+        given.harmonic.steady.regime().words()
+    ));
+    Ok(b)
 }
 
 /// Claim 1: (20) is the same-period condition; with μs = μd the least friction for a stick is φ.
@@ -143,6 +153,8 @@ pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         finding,
         numbers: n.take(),
         sample: Some(result),
+        does_not_apply: None,
+        outside: Vec::new(),
     })
 }
 
@@ -184,7 +196,8 @@ fn gamma_with(c: f64, mu_s: f64, mu_d: f64) -> f64 {
 
 /// Claim 2: coefficient 1 (not 2) in front of D^{3/2} in (28).
 pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
-    let given_sticks = cf::regime(p.phi(), p.mu_s, p.mu_d) == cf::Regime::SlipStick;
+    let given_regime = cf::regime(p.phi(), p.mu_s, p.mu_d);
+    let given_sticks = given_regime == cf::Regime::SlipStick;
     let (q, name) = if given_sticks {
         (*p, "the given set")
     } else {
@@ -234,5 +247,17 @@ pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
         finding,
         numbers: n.take(),
         sample: None,
-    })
+        does_not_apply: None,
+        outside: Vec::new(),
+    }
+    .outside(
+        <PulledMassParams as Physics>::ID,
+        (!given_sticks).then(|| {
+            format!(
+                "(27) and (28) describe one slip and one stick within each period; the given set \
+                 has {} (linearized law)",
+                given_regime.words()
+            )
+        }),
+    ))
 }

@@ -74,6 +74,8 @@ pub(crate) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
         finding,
         numbers: n.take(),
         sample: Some(result),
+        does_not_apply: None,
+        outside: Vec::new(),
     }
 }
 
@@ -104,6 +106,13 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
     let mut set = *w;
     let mut name = "the given set";
     let mut z0s = standard_z0s(&set);
+    let outside = (z0s.len() < 2).then(|| {
+        format!(
+            "the claim compares z0 values in the paper's standard regime; the given set has {} \
+             such z0 near its own",
+            if z0s.is_empty() { "no" } else { "only one" }
+        )
+    });
     if z0s.len() < 2 {
         set = WoodpeckerParams::default();
         name = "the Fig. 15 set (the given set has fewer than two z0 in the standard regime)";
@@ -175,5 +184,8 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
         finding,
         numbers: n.take(),
         sample: None,
-    })
+        does_not_apply: None,
+        outside: Vec::new(),
+    }
+    .outside(<WoodpeckerParams as Physics>::ID, outside))
 }

@@ -12,7 +12,7 @@ use crate::claims::{or_none, run_wood, Claim, Numbers, Verdict};
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
 use crate::models::woodpecker::lobe::{HaltKind, OrbitRegime, Phase, PhaseLobes};
-use crate::models::woodpecker::results::linear_inputs;
+use crate::models::woodpecker::results::{domain_note, linear_inputs};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
 use crate::models::Physics;
@@ -55,20 +55,35 @@ pub(crate) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
     // The claim is about a slip from rest in phase I that may halt in the negative lobe: it
     // does not apply to a set outside the closed forms' domain, one that never slips, or one
     // that slips at once.
-    let applies = !matches!(
-        given.regime,
-        OrbitRegime::OutsideClosedFormDomain | OrbitRegime::NoSlip
-    ) && !given.immediate_slip;
-    let (set, c, name) = match (applies, given.mu_d_halt_1, given.mu_d_min_1) {
-        (true, Some(_), Some(_)) => (*w, given, "Given set"),
+    let outside: Option<String> = match given.regime {
+        OrbitRegime::OutsideClosedFormDomain => domain_note(w, &given)
+            .map(|note| format!("the claim is about the closed forms' phase-I slip, and {note}")),
+        OrbitRegime::NoSlip => Some(
+            "the claim is about a slip from rest in phase I, and the given sleeve never slips"
+                .to_string(),
+        ),
+        _ if given.immediate_slip => Some(
+            "the claim is about a slip from rest in phase I, and the given sleeve slips at once \
+             (it never rests)"
+                .to_string(),
+        ),
+        _ if given.mu_d_halt_1.is_none() || given.mu_d_min_1.is_none() => Some(
+            "the claim compares μd,HALT^(I) with μd,MIN^(I), and the given set has no phase-I \
+             lobe in which a halt could happen"
+                .to_string(),
+        ),
+        _ => None,
+    };
+    let (set, c, name) = match &outside {
+        None => (*w, given, "Given set"),
         _ => {
             let fig15 = WoodpeckerParams::default();
             let c = cf::evaluate(&linear_inputs(&fig15));
             (
                 fig15,
                 c,
-                "Fig. 15 set (the claim does not apply to the given set: no slip from rest in \
-                 phase I within the closed forms' domain)",
+                "Fig. 15 set (shown instead of the given set, to which the claim does not \
+                 apply)",
             )
         }
     };
@@ -106,7 +121,10 @@ pub(crate) fn claim_5(w: &WoodpeckerParams) -> Result<Claim> {
         finding,
         numbers: n.take(),
         sample: None,
-    })
+        does_not_apply: None,
+        outside: Vec::new(),
+    }
+    .outside(<WoodpeckerParams as Physics>::ID, outside))
 }
 
 /// Integrates the linear law with μd = `mu` (below μd,MIN^(I)) and reports the first stop.

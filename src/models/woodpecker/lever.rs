@@ -222,7 +222,15 @@ pub(crate) fn claim_8(w: &WoodpeckerParams) -> Result<Claim> {
             ),
             numbers: shown.numbers(),
             ..claim_of(w, &e)
-        });
+        }
+        .outside(
+            <WoodpeckerParams as Physics>::ID,
+            Some(
+                "the claim compares the lever ratios λ = 1 and λ = l/h where one of them sticks; \
+                 on the given set neither does"
+                    .to_string(),
+            ),
+        ));
     }
     Ok(claim_of(w, &e))
 }
@@ -238,5 +246,7 @@ fn claim_of(w: &WoodpeckerParams, e: &Evidence) -> Claim {
         finding: e.finding(w.z0),
         numbers: e.numbers(),
         sample: None,
+        does_not_apply: None,
+        outside: Vec::new(),
     }
 }
