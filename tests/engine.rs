@@ -302,3 +302,28 @@ fn bad_force_laws_are_refused() {
     )
     .is_err());
 }
+
+/// A woodpecker whose spring lifts the sleeve (μs 0.148, μd 0.135, z0 −2.43 mm, d0 14.6 mm,
+/// k 188 N/m) slides down and up, reversing twice a period and never sticking (issue 26): that
+/// is its label, whether or not the orbit has settled within the periods integrated (it was
+/// `not_periodic` after 8 periods and `double_slip_stick` after 40).
+#[test]
+fn a_sleeve_that_reverses_without_sticking_is_a_reversing_continuous_slip() {
+    use stickslip::models::woodpecker::{results, WoodpeckerParams};
+    let p = WoodpeckerParams {
+        mu_s: 0.1476924386869943,
+        mu_d: 0.13517198903911534,
+        z0: -0.002434454589115478,
+        d0: 0.014583696511394947,
+        k: 187.52398366831966,
+        ..WoodpeckerParams::default()
+    };
+    for periods in [8, 40] {
+        let e = results::evaluate(&p, periods).expect("valid set");
+        for s in e.linear.iter().chain([&e.harmonic]) {
+            assert_eq!(s.regime, IntegrationRegime::ContinuousSlipReversing, "{periods}");
+            assert_eq!((s.slips_per_period, s.sticks_per_period), (2, 0));
+            assert_eq!(s.v_avg.is_some(), periods == 40, "settled only after 40");
+        }
+    }
+}

@@ -33,18 +33,22 @@ pub enum IntegrationRegime {
     DoubleSlipStick,
     DoubleSlipNoHalt,
     ContinuousSlip,
+    /// Slips without ever sticking, its direction reversing where v passes through 0 with the
+    /// drive above the static capacity (the woodpecker when the spring can lift the sleeve).
+    ContinuousSlipReversing,
     Multiperiod,
     NotPeriodic,
 }
 
 impl IntegrationRegime {
     /// Every regime.
-    pub const ALL: [Self; 7] = [
+    pub const ALL: [Self; 8] = [
         Self::NoSlip,
         Self::SingleSlipStick,
         Self::DoubleSlipStick,
         Self::DoubleSlipNoHalt,
         Self::ContinuousSlip,
+        Self::ContinuousSlipReversing,
         Self::Multiperiod,
         Self::NotPeriodic,
     ];
@@ -57,6 +61,7 @@ impl IntegrationRegime {
             Self::DoubleSlipStick => "double_slip_stick",
             Self::DoubleSlipNoHalt => "double_slip_no_halt",
             Self::ContinuousSlip => "continuous_slip",
+            Self::ContinuousSlipReversing => "continuous_slip_reversing",
             Self::Multiperiod => "multiperiod",
             Self::NotPeriodic => "not_periodic",
         }
@@ -72,6 +77,9 @@ impl IntegrationRegime {
                 "one slip per period that slows down without stopping in between"
             }
             Self::ContinuousSlip => "continuous slip, never sticking",
+            Self::ContinuousSlipReversing => {
+                "continuous slip with direction reversals, never sticking"
+            }
             Self::Multiperiod => "a motion repeating only after several periods",
             Self::NotPeriodic => "no periodic motion within the periods integrated",
         }
@@ -106,6 +114,16 @@ pub struct Steady {
 impl Steady {
     /// The regime of §7 for this orbit.
     pub fn regime(&self) -> IntegrationRegime {
+        // Reversals only, no stick, in the last period: the body slipped throughout it, whether
+        // or not the orbit has settled within the periods integrated.
+        let reversing = !self.events.is_empty()
+            && self
+                .events
+                .iter()
+                .all(|e| matches!(e.kind, EventKind::Reversal { .. }));
+        if reversing && matches!(self.kind, OrbitKind::NotPeriodic | OrbitKind::Periodic { .. }) {
+            return IntegrationRegime::ContinuousSlipReversing;
+        }
         match self.kind {
             OrbitKind::NoSlip => IntegrationRegime::NoSlip,
             OrbitKind::ContinuousSlip => IntegrationRegime::ContinuousSlip,

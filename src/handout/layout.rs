@@ -215,7 +215,8 @@ mod tests {
             paper_says: "The paper says so.".to_string(),
             verdict: "refuted".to_string(),
             verdict_class: "refuted".to_string(),
-            finding: "x".repeat(finding_chars),
+            verdict_class: "refuted".to_string(),
+            does_not_apply: String::new(),
             numbers: Vec::new(),
         }
     }

@@ -44,7 +44,7 @@ impl Category {
 
 /// The categories of both maps, in legend order: legend label and fill. The same regime has the
 /// same fill on both maps (and continuous motion the same fill, whichever regime names it).
-pub const REGIMES: [(Category, &str, usize); 9] = [
+pub const REGIMES: [(Category, &str, usize); 10] = [
     (
         Category::Integrated(IntegrationRegime::DoubleSlipStick),
         "2 slips, 2 sticks",
@@ -68,6 +68,11 @@ pub const REGIMES: [(Category, &str, usize); 9] = [
     (
         Category::Integrated(IntegrationRegime::ContinuousSlip),
         "continuous slip",
+        3,
+    ),
+    (
+        Category::Integrated(IntegrationRegime::ContinuousSlipReversing),
+        "continuous slip, reversing",
         3,
     ),
     (
