@@ -215,8 +215,8 @@ mod tests {
             paper_says: "The paper says so.".to_string(),
             verdict: "refuted".to_string(),
             verdict_class: "refuted".to_string(),
-            verdict_class: "refuted".to_string(),
             does_not_apply: String::new(),
+            finding: "x".repeat(finding_chars),
             numbers: Vec::new(),
         }
     }
