@@ -321,7 +321,11 @@ fn a_sleeve_that_reverses_without_sticking_is_a_reversing_continuous_slip() {
     for periods in [8, 40] {
         let e = results::evaluate(&p, periods).expect("valid set");
         for s in e.linear.iter().chain([&e.harmonic]) {
-            assert_eq!(s.regime, IntegrationRegime::ContinuousSlipReversing, "{periods}");
+            assert_eq!(
+                s.regime,
+                IntegrationRegime::ContinuousSlipReversing,
+                "{periods}"
+            );
             assert_eq!((s.slips_per_period, s.sticks_per_period), (2, 0));
             assert_eq!(s.v_avg.is_some(), periods == 40, "settled only after 40");
         }

@@ -121,7 +121,12 @@ impl Steady {
                 .events
                 .iter()
                 .all(|e| matches!(e.kind, EventKind::Reversal { .. }));
-        if reversing && matches!(self.kind, OrbitKind::NotPeriodic | OrbitKind::Periodic { .. }) {
+        if reversing
+            && matches!(
+                self.kind,
+                OrbitKind::NotPeriodic | OrbitKind::Periodic { .. }
+            )
+        {
             return IntegrationRegime::ContinuousSlipReversing;
         }
         match self.kind {
