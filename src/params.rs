@@ -113,12 +113,74 @@ impl Scenario {
         let mut scenario: Self = toml::from_str(text).map_err(|e| toml_error(&e, text, path))?;
         scenario.title = one_line(&scenario.title);
         scenario.description = without_controls(&scenario.description);
+        // The `params` object of `eval --json` pasted as [params]: its `periods`.
+        if let Some(value) = scenario.params.remove("periods") {
+            let periods = value
+                .as_integer()
+                .and_then(|n| u32::try_from(n).ok())
+                .ok_or_else(|| scenario_error(path, "[params]: periods must be a whole number"))?;
+            if scenario.periods.is_some_and(|p| p != periods) {
+                return Err(scenario_error(
+                    path,
+                    "periods is given twice with different values (top level and [params])",
+                ));
+            }
+            scenario.periods = Some(periods);
+        }
         Ok(scenario)
     }
 
-    /// The model with the file's parameters (defaults for keys not given).
+    /// The model with the file's parameters (defaults for keys not given). The `params` object
+    /// of `eval --json` is read as well: `omega_mode` is the TOML key `omega`, and the derived
+    /// quantities (W or W_S, T, the value of ω, φ, λ, ζ0, δ0) must be those of the inputs.
     pub fn model_params(&self, path: &Path) -> Result<Model> {
-        self.model.with_scenario_params(&self.params, path)
+        let mut table = self.params.clone();
+        let mut derived = toml::Table::new();
+        if let Some(mode) = table.remove("omega_mode") {
+            if let Some(value) = table.remove("omega") {
+                if !value.is_float() && !value.is_integer() {
+                    return Err(scenario_error(
+                        path,
+                        "[params]: omega and omega_mode both name the definition of ω; give one",
+                    ));
+                }
+                derived.insert("omega".to_string(), value);
+            }
+            table.insert("omega".to_string(), mode);
+        }
+        let derived_keys = self.model.derived_keys();
+        // A number under a derived key (`omega = "bird"` is the input).
+        for key in &derived_keys {
+            let numeric = table
+                .get(key.as_str())
+                .is_some_and(|v| v.is_float() || v.is_integer());
+            if let Some(value) = numeric.then(|| table.remove(key.as_str())).flatten() {
+                derived.insert(key.clone(), value);
+            }
+        }
+        let model = self.model.with_scenario_params(&table, path)?;
+        let computed = model.derived_params();
+        for (key, given) in &derived {
+            let given = given
+                .as_float()
+                .or_else(|| given.as_integer().map(|n| n as f64));
+            let expected = computed.get(key).and_then(serde_json::Value::as_f64);
+            let agrees = match (given, expected) {
+                (Some(a), Some(b)) => (a - b).abs() <= 1e-12 * a.abs().max(b.abs()),
+                _ => false,
+            };
+            if !agrees {
+                return Err(scenario_error(
+                    path,
+                    &format!(
+                        "[params]: {key} is derived from the other parameters ({}); remove it or \
+                         change the parameters it is derived from",
+                        expected.map_or("undefined here".to_string(), |b| format!("here {b}"))
+                    ),
+                ));
+            }
+        }
+        Ok(model)
     }
 
     /// A `[params]` table as the parameters `P` (defaults for keys not given).
@@ -146,6 +208,13 @@ fn model_by_id<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Mo
             }
         ))
     })
+}
+
+fn scenario_error(path: &Path, reason: &str) -> Error {
+    Error::Scenario {
+        path: path.display().to_string(),
+        reason: reason.to_string(),
+    }
 }
 
 /// One line from a TOML error: the line number and the message, without the source snippet.

@@ -425,3 +425,72 @@ fn a_tracked_file_of_more_than_a_hundred_thousand_rows_is_refused() {
         "{msg}"
     );
 }
+
+/// The `params` object of `eval --json` pasted as a scenario's [params] (nulls left out, as TOML
+/// has none) gives the same evaluation, byte for byte: `omega_mode`, `periods` and the derived
+/// quantities are read back (issue 27: `omega_mode` was refused). A derived value that does not
+/// match the inputs is refused, naming it.
+#[test]
+fn eval_json_params_paste_back_into_a_scenario() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases: [&[&str]; 4] = [
+        &["pulled-mass", "--mu-d", "0.3", "--force", "0.1"],
+        &["woodpecker"],
+        &[
+            "woodpecker",
+            "--omega",
+            "total",
+            "--counterpart",
+            "tangent",
+            "--lever",
+            "2",
+        ],
+        &["woodpecker", "--periods", "12", "--z0", "0.0071"],
+    ];
+    for (i, args) in cases.iter().enumerate() {
+        let json = stickslip()
+            .arg("eval")
+            .args(*args)
+            .arg("--json")
+            .output()
+            .unwrap();
+        assert!(json.status.success(), "{args:?}");
+        let value: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+        let mut params = toml::Table::new();
+        for (k, v) in value["params"].as_object().unwrap() {
+            let v = match v {
+                serde_json::Value::Null => continue,
+                serde_json::Value::String(s) => toml::Value::String(s.clone()),
+                n if n.is_u64() => toml::Value::Integer(n.as_i64().unwrap()),
+                n => toml::Value::Float(n.as_f64().unwrap()),
+            };
+            params.insert(k.clone(), v);
+        }
+        let text = format!(
+            "model = \"{}\"\ntitle = \"pasted\"\n[params]\n{}",
+            args[0],
+            toml::to_string(&params).unwrap()
+        );
+        let path = dir.path().join(format!("pasted-{i}.toml"));
+        std::fs::write(&path, &text).unwrap();
+        let again = stickslip()
+            .args(["eval", args[0], "--json", "--scenario"])
+            .arg(&path)
+            .output()
+            .unwrap();
+        assert!(again.status.success(), "{text}\n{:?}", again.stderr);
+        assert_eq!(
+            String::from_utf8_lossy(&json.stdout),
+            String::from_utf8_lossy(&again.stdout),
+            "{text}"
+        );
+        // An edited derived value is refused, naming it.
+        let edited = text.replace("\nT = ", "\nT = 1.5e0\nT_was = ");
+        std::fs::write(&path, edited.replace("\nT_was = ", "\n# ")).unwrap();
+        let msg = one_line_error(
+            stickslip().args(["eval", args[0], "--scenario"]).arg(&path),
+            2,
+        );
+        assert!(msg.contains("T is derived"), "{msg}");
+    }
+}

@@ -235,6 +235,34 @@ impl Model {
     }
 }
 
+impl Model {
+    /// The inputs with their derived quantities, as the `params` object of `eval --json`
+    /// (physics.md §7), without `periods`.
+    pub fn derived_params(&self) -> serde_json::Map<String, serde_json::Value> {
+        let value = match self {
+            Model::PulledMass(p) => serde_json::to_value(pulled_mass::results::ParamsOut::of(p, 0)),
+            Model::Woodpecker(p) => serde_json::to_value(woodpecker::results::ParamsOut::of(p, 0)),
+        };
+        let mut map = match value {
+            Ok(serde_json::Value::Object(map)) => map,
+            _ => serde_json::Map::new(),
+        };
+        map.remove("periods");
+        map
+    }
+
+    /// The keys of [`Model::derived_params`] that are derived, not inputs (`omega`, the value
+    /// of ω, among them).
+    pub fn derived_keys(&self) -> Vec<String> {
+        let inputs = with_model!(self, p => serde_json::to_value(p).unwrap_or_default());
+        self.derived_params()
+            .keys()
+            .filter(|k| inputs.get(k.as_str()).is_none())
+            .cloned()
+            .collect()
+    }
+}
+
 /// A parameter of a model as the command line shows it: its key, its help with the default,
 /// and its values when it is a choice.
 #[derive(Clone, Debug, PartialEq)]

@@ -29,6 +29,20 @@ pub struct ParamsOut {
     pub phi: f64,
 }
 
+impl ParamsOut {
+    /// The inputs `p` with their derived quantities, for a run of `periods`.
+    pub fn of(p: &PulledMassParams, periods: u32) -> Self {
+        Self {
+            input: *p,
+            periods,
+            weight: p.weight(),
+            period: p.period(),
+            omega: p.omega(),
+            phi: p.phi(),
+        }
+    }
+}
+
 /// The §7 object for the pulled mass.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Evaluation {
@@ -88,14 +102,7 @@ pub fn evaluate_with_runs(
     let applicability = applicability(&closed_form);
     let evaluation = Evaluation {
         model: "pulled-mass",
-        params: ParamsOut {
-            input: *p,
-            periods,
-            weight: p.weight(),
-            period,
-            omega: p.omega(),
-            phi,
-        },
+        params: ParamsOut::of(p, periods),
         closed_form,
         linear,
         harmonic: summary_of(&runs.harmonic),

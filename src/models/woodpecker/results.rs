@@ -35,6 +35,23 @@ pub struct ParamsOut {
     pub delta0: Option<f64>,
 }
 
+impl ParamsOut {
+    /// The inputs `p` with their derived quantities, for a run of `periods`.
+    pub fn of(p: &WoodpeckerParams, periods: u32) -> Self {
+        let amplitudes = woodpecker::linear_amplitudes(p);
+        Self {
+            input: *p,
+            periods,
+            sleeve_weight: p.sleeve_weight(),
+            period: p.period(),
+            omega: p.omega(),
+            lambda: p.lambda(),
+            zeta0: amplitudes.map(|a| a.0),
+            delta0: amplitudes.map(|a| a.1),
+        }
+    }
+}
+
 /// The §7 object for the woodpecker.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Evaluation {
@@ -122,16 +139,7 @@ pub fn evaluate_with_runs(
     };
     let evaluation = Evaluation {
         model: "woodpecker",
-        params: ParamsOut {
-            input: *p,
-            periods,
-            sleeve_weight: w_s,
-            period: p.period(),
-            omega: p.omega(),
-            lambda: p.lambda(),
-            zeta0: amplitudes.map(|a| a.0),
-            delta0: amplitudes.map(|a| a.1),
-        },
+        params: ParamsOut::of(p, periods),
         closed_form,
         linear,
         harmonic: summary_of(&runs.harmonic),
