@@ -199,3 +199,35 @@ fn duplicate_column_names_in_tracked_data_are_refused() {
         &["columns 2 and 3", "line 1"],
     );
 }
+
+/// Positions near 1e302 mm (issue 27: "RMS inf mm … lag-1 autocorrelation NaN") are refused
+/// naming the line, the column and the limit; the example track is read as before.
+#[test]
+fn tracked_positions_beyond_a_kilometre_are_refused() {
+    let example = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/tracked-toy-example.csv"
+    );
+    let text = std::fs::read_to_string(example).unwrap();
+    let huge: String = text
+        .lines()
+        .map(|l| match l.split_once(',') {
+            Some((t, y)) if y.parse::<f64>().is_ok() => format!("{t},{}e302\n", y),
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("huge.csv");
+    std::fs::write(&file, huge).unwrap();
+    let out = dir.path().join("out");
+    refused(
+        &[
+            "fit",
+            file.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &["column y", "beyond 1e3 m", "line "],
+    );
+    assert!(!out.exists());
+}

@@ -33,6 +33,10 @@ pub const MIN_ROWS: usize = 10;
 /// returns in seconds.
 pub const MAX_ROWS: usize = 100_000;
 
+/// Largest |position| read (m): a tracked toy moves by centimetres, and squares of positions
+/// beyond ~1e154 m overflow the residual (RMS `inf`, autocorrelation `NaN`).
+pub const MAX_POSITION_M: f64 = 1e3;
+
 /// Unit of the position column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
 #[serde(rename_all = "lowercase")]
@@ -274,6 +278,19 @@ pub fn parse(text: &str, path: &Path, opts: &ReadOptions) -> Result<Tracked> {
         };
         let time = cell(time_col)? * time_scale;
         let position = cell(position_col)?;
+        if position.abs() * unit.metres() > MAX_POSITION_M {
+            return Err(Error::TrackedData {
+                path: path.display().to_string(),
+                line: Some(row.line),
+                column: Some(names[position_col].to_string()),
+                reason: format!(
+                    "position {} {} is beyond {MAX_POSITION_M:e} m: a tracked toy moves by \
+                     centimetres (is the column in another unit?)",
+                    short(position),
+                    unit.symbol()
+                ),
+            });
+        }
         if let Some((before, line)) = previous {
             if time <= before {
                 return Err(err(

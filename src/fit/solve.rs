@@ -583,15 +583,31 @@ pub fn termination_text(t: &TerminationReason, exhausted: bool, regular: bool) -
         TerminationReason::Numerical(what) => format!("stopped: NaN or infinity in {what}"),
         other => format!("stopped: {other:?}"),
     };
-    if regular {
-        text
-    } else {
-        format!("{text}; JᵀJ is singular: the data do not determine every free parameter")
+    match text.strip_prefix("converged ") {
+        _ if regular => text,
+        // A minimum with a singular JᵀJ is no convergence: say where the search stopped.
+        Some(test) => format!(
+            "stopped on its test {test} where JᵀJ is singular: the data do not determine every \
+             free parameter"
+        ),
+        None => format!("{text}; JᵀJ is singular: the data do not determine every free parameter"),
     }
 }
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn a_minimum_with_a_singular_jtj_is_not_called_converged() {
+        let ftol = TerminationReason::Converged {
+            ftol: true,
+            xtol: false,
+        };
+        assert_eq!(termination_text(&ftol, false, true), "converged (ftol)");
+        let singular = termination_text(&ftol, false, false);
+        assert!(!singular.contains("converged"), "{singular}");
+        assert!(singular.starts_with("stopped on its test (ftol) where JᵀJ is singular"));
+    }
     use super::*;
 
     #[test]
