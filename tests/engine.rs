@@ -328,6 +328,8 @@ fn a_sleeve_that_reverses_without_sticking_is_a_reversing_continuous_slip() {
             );
             assert_eq!((s.slips_per_period, s.sticks_per_period), (2, 0));
             assert_eq!(s.v_avg.is_some(), periods == 40, "settled only after 40");
+            // §7 knows no reversal regime: the JSON says what the motion is, a continuous slip.
+            assert_eq!(serde_json::to_value(s.regime).unwrap(), "continuous_slip");
         }
     }
 }

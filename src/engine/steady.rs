@@ -86,9 +86,21 @@ impl IntegrationRegime {
     }
 }
 
+impl IntegrationRegime {
+    /// The value of §7's `regime` key. The contract knows no reversal regime: a motion that
+    /// never sticks is `continuous_slip` whether or not it reverses; [`Self::id`] keeps the two
+    /// apart for the words and the maps.
+    pub const fn json_id(self) -> &'static str {
+        match self {
+            Self::ContinuousSlipReversing => Self::ContinuousSlip.id(),
+            other => other.id(),
+        }
+    }
+}
+
 impl Serialize for IntegrationRegime {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        s.serialize_str(self.id())
+        s.serialize_str(self.json_id())
     }
 }
 

@@ -459,7 +459,7 @@ mod tests {
             assert_eq!(Regime::ALL.iter().filter(|q| q.id() == r.id()).count(), 1);
         }
         for r in IntegrationRegime::ALL {
-            assert_eq!(serde_json::to_value(r).unwrap(), r.id());
+            assert_eq!(serde_json::to_value(r).unwrap(), r.json_id());
             assert!(!r.words().is_empty());
             assert_eq!(
                 IntegrationRegime::ALL
