@@ -63,18 +63,31 @@ pub struct Compact {
 }
 
 impl Compact {
-    /// The segments of replayed period `m`, which starts at position `x` (m).
-    pub(super) fn segments(&self, m: u32, x: f64, period: f64) -> Vec<Segment> {
-        let mut x = x;
-        let mut out = Vec::new();
-        for op in &self.ops {
-            match *op {
-                Op::Move { dx } => x += dx,
-                Op::Segment { t0, t1, motion } => out.push(segment(m, period, t0, t1, motion, x)),
-                Op::Event { .. } | Op::Retract { .. } => {}
+    /// The first segment of the replayed periods `periods` (started at the positions
+    /// `x_at_period_start`, m) that ends at or after absolute time `t` (s).
+    pub(super) fn first_ending_after(
+        &self,
+        periods: std::ops::Range<u32>,
+        x_at_period_start: &[f64],
+        period: f64,
+        t: f64,
+    ) -> Option<Segment> {
+        for m in periods {
+            let mut x = x_at_period_start[m as usize];
+            for op in &self.ops {
+                match *op {
+                    Op::Move { dx } => x += dx,
+                    Op::Segment { t0, t1, motion } => {
+                        let seg = segment(m, period, t0, t1, motion, x);
+                        if seg.t1 >= t {
+                            return Some(seg);
+                        }
+                    }
+                    Op::Event { .. } | Op::Retract { .. } => {}
+                }
             }
         }
-        out
+        None
     }
 }
 
@@ -207,9 +220,49 @@ impl Tape {
             segments,
         } = out;
         let v = self.recording.map_or(0.0, |start| f64::from_bits(start.v));
+        // A period whose events are not kept leaves the recorder as it found it, except for the
+        // last transition, which the next period's first slip is merged with when at the same
+        // instant. When the period has a stick or a retraction (or no transition at all), the
+        // last transition at its end is its own, whatever it was before: then only the periods
+        // next to a kept one go through the recorder, and the others just move x.
+        let own_last_transition = self.ops.iter().any(|op| {
+            matches!(
+                op,
+                Op::Event {
+                    kind: EventKind::Stick { .. },
+                    ..
+                } | Op::Retract { .. }
+            )
+        }) || !self
+            .ops
+            .iter()
+            .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
+        let moves: Vec<f64> = self
+            .ops
+            .iter()
+            .filter_map(|op| match *op {
+                Op::Move { dx } => Some(dx),
+                _ => None,
+            })
+            .collect();
         for m in from..periods {
             x_at_period_start.push(x);
             v_at_period_start.push(v);
+            let through_recorder = materialize
+                || !own_last_transition
+                || m == from
+                || rec.keeps(m)
+                || rec.keeps(m - 1)
+                || rec.keeps(m.saturating_add(1));
+            if !through_recorder {
+                for dx in &moves {
+                    x += dx;
+                }
+                if let Some(d) = dissipation.as_deref_mut() {
+                    d.push(self.dissipation);
+                }
+                continue;
+            }
             for op in &self.ops {
                 match *op {
                     Op::Event { t, kind, dx, v } => {

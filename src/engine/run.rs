@@ -149,11 +149,12 @@ impl Run {
                 // t has the segment the full list would have.
                 let m = (t / self.period).floor().clamp(0.0, f64::from(u32::MAX)) as u32;
                 let first = m.saturating_sub(1).max(compact.from);
-                (first..self.periods.min(m.saturating_add(2)))
-                    .flat_map(|p| {
-                        compact.segments(p, self.x_at_period_start[p as usize], self.period)
-                    })
-                    .find(|s| s.t1 >= t)
+                compact.first_ending_after(
+                    first..self.periods.min(m.saturating_add(2)),
+                    &self.x_at_period_start,
+                    self.period,
+                    t,
+                )
             }
         }
     }
@@ -191,7 +192,7 @@ pub(super) struct Recorder {
 }
 
 impl Recorder {
-    fn keeps(&self, n: u32) -> bool {
+    pub(super) fn keeps(&self, n: u32) -> bool {
         n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
     }
 
