@@ -282,7 +282,7 @@ impl Tape {
             }
         }
         let compact =
-            (self.segments && self.mode == Replay::Compact && from < periods).then(|| Compact {
+            (self.segments && self.mode == Replay::Compact && from < periods).then_some(Compact {
                 from,
                 ops: self.ops,
             });
