@@ -40,6 +40,9 @@ pub struct Point {
     pub v: f64,
     pub a: f64,
     pub jerk: f64,
+    /// x − x_c (m), the displacement since the start as computed before x_c is added: x is
+    /// exactly x_c + dx, so that a replayed period moves by the same sum ([`super::replay`]).
+    pub dx: f64,
     /// b(t) − b(t_c) of the arc's basis (t − t_c, or cos ωt − cos ωt_c), relative to the start.
     pub db: f64,
     /// (sin ωt, cos ωt) on a cos basis (from the arc's phase at its start and the kernels, to
@@ -306,8 +309,10 @@ impl PolyArc {
             jerk,
             ..
         } = *self;
+        let dx = w * (v_c + w * (0.5 * a_c + jerk * w / 6.0));
         Point {
-            x: x_c + w * (v_c + w * (0.5 * a_c + jerk * w / 6.0)),
+            x: x_c + dx,
+            dx,
             v: v_c + w * (a_c + 0.5 * jerk * w),
             a: a_c + jerk * w,
             jerk,
@@ -349,8 +354,10 @@ impl TrigArc {
         let r = -sin_c * k.minus_sin - cos_c * k.minus_cos;
         // sin(θc + δ)
         let sin_t = sin_c * (1.0 - k.one_minus_cos) + cos_c * k.sin;
+        let dx = w * (v_c + 0.5 * a_c * w) + x1 * r;
         Point {
-            x: x_c + (w * (v_c + 0.5 * a_c * w) + x1 * r),
+            x: x_c + dx,
+            dx,
             v: v_c + a_c * w + v1 * p,
             a: a_c + a1 * q,
             jerk: -a1 * omega * sin_t,
@@ -505,6 +512,15 @@ impl Arc {
     /// Start time t_c of the arc (s, within the period; the high part).
     pub fn t_start(&self) -> f64 {
         either!(self, arc => arc.t_start())
+    }
+
+    /// The same arc started at position `x` (m): the motion relative to the start does not
+    /// depend on where it starts (a replayed period, [`super::replay`]).
+    pub fn started_at(self, x: f64) -> Arc {
+        match self {
+            Arc::Poly(arc) => Arc::Poly(PolyArc { x_c: x, ..arc }),
+            Arc::Trig(arc) => Arc::Trig(TrigArc { x_c: x, ..arc }),
+        }
     }
 
     /// Velocity at the start (m/s).

@@ -16,10 +16,12 @@ pub mod accel;
 pub mod arc;
 pub mod dd;
 pub mod law;
+pub mod replay;
 pub mod roots;
 pub mod run;
 pub mod steady;
 
 pub use law::{Affine, Basis, Body, ForceLaw, Piece};
-pub use run::{integrate, Event, EventKind, Run, RunOptions, Segment};
+pub use replay::Replay;
+pub use run::{integrate, integrate_with, Event, EventKind, Run, RunOptions, Segment};
 pub use steady::{analyse, IntegrationRegime, OrbitKind, Steady};

@@ -6,6 +6,7 @@ use super::accel::SignChanges;
 use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
+use super::replay::{Compact, Outputs, Replay, StartState, Tape};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
 use crate::error::{Error, Result};
 
@@ -108,15 +109,17 @@ pub struct Run {
     /// Friction dissipation ∫ μd N_f |v| dt in each period (J); empty unless asked for
     /// ([`RunOptions::dissipation`]).
     pub dissipation: Vec<f64>,
-    /// Recorded segments (empty unless asked for).
+    /// Recorded segments (empty unless asked for); with [`Replay::Compact`], only up to the
+    /// first replayed period ([`Run::state_at`] covers the rest).
     pub segments: Vec<Segment>,
+    /// The replayed periods' segments, rebuilt on demand ([`Replay::Compact`]).
+    pub compact: Option<Compact>,
 }
 
 impl Run {
     /// (x, v, a) at absolute time t from the recorded segments, if t is covered.
     pub fn state_at(&self, t: f64) -> Option<(f64, f64, f64)> {
-        let i = self.segments.partition_point(|s| s.t1 < t);
-        let seg = self.segments.get(i)?;
+        let seg = self.segment_at(t)?;
         if t < seg.t0 {
             return None;
         }
@@ -131,10 +134,29 @@ impl Run {
 
     /// Whether the body is at rest at absolute time t (recorded segments only).
     pub fn stuck_at(&self, t: f64) -> Option<bool> {
-        let i = self.segments.partition_point(|s| s.t1 < t);
-        self.segments
-            .get(i)
+        self.segment_at(t)
             .map(|s| matches!(s.motion, Motion::Rest { .. }))
+    }
+
+    /// The first recorded segment that ends at or after absolute time t, replayed ones included.
+    fn segment_at(&self, t: f64) -> Option<Segment> {
+        let i = self.segments.partition_point(|s| s.t1 < t);
+        match (self.segments.get(i), &self.compact) {
+            (Some(seg), _) => Some(*seg),
+            (None, None) => None,
+            (None, Some(compact)) => {
+                // Segments of periods before m − 1 end before t; a window of the periods around
+                // t has the segment the full list would have.
+                let m = (t / self.period).floor().clamp(0.0, f64::from(u32::MAX)) as u32;
+                let first = m.saturating_sub(1).max(compact.from);
+                compact.first_ending_after(
+                    first..self.periods.min(m.saturating_add(2)),
+                    &self.x_at_period_start,
+                    self.period,
+                    t,
+                )
+            }
+        }
     }
 }
 
@@ -158,22 +180,24 @@ pub fn sample(run: &Run, t0: f64, t1: f64, n: usize) -> Vec<[f64; 4]> {
 }
 
 /// Keeps the events that are needed and merges a stick and a slip at the same instant.
-struct Recorder {
+pub(super) struct Recorder {
     events: Vec<Event>,
     periods: u32,
     period: f64,
     snap: f64,
     last_transition: Option<Event>,
     first_slip: Option<f64>,
+    /// The steps of the period, recorded for a replay.
+    tape: Tape,
 }
 
 impl Recorder {
-    fn keeps(&self, n: u32) -> bool {
+    pub(super) fn keeps(&self, n: u32) -> bool {
         n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
     }
 
     /// Takes back a slip onset at absolute time `t` that led to no motion.
-    fn retract_slip(&mut self, t: f64) {
+    pub(super) fn retract_slip(&mut self, t: f64) {
         if let Some(last) = self.events.last() {
             if matches!(last.kind, EventKind::Slip { .. })
                 && (last.t - t).abs() <= self.snap * (1.0 + t / self.period)
@@ -191,7 +215,7 @@ impl Recorder {
     }
 
     #[inline(always)]
-    fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
+    pub(super) fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
         let t = f64::from(n) * self.period + t_local;
         let mut event = Event {
             t,
@@ -240,8 +264,30 @@ struct Slide {
     normal_work: f64,
 }
 
-/// Integrates `body` under `law` from rest at x = 0, t = 0 for `opts.periods` periods.
+/// Absolute time (s) of local time `t` in the period starting at `period_start`, with the
+/// period end landing exactly on the next start.
+#[inline(always)]
+pub(super) fn absolute_time(period_start: f64, next_start: f64, period: f64, t: f64) -> f64 {
+    if t >= period {
+        next_start
+    } else {
+        period_start + t
+    }
+}
+
+/// Integrates `body` under `law` from rest at x = 0, t = 0 for `opts.periods` periods; an orbit
+/// that repeats exactly is replayed ([`Replay::Segments`]).
 pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> {
+    integrate_with(body, law, opts, Replay::Segments)
+}
+
+/// [`integrate`], with the periods of an orbit that repeats exactly treated as `replay` says.
+pub fn integrate_with(
+    body: &Body,
+    law: &ForceLaw,
+    opts: &RunOptions,
+    replay: Replay,
+) -> Result<Run> {
     let period = law.period;
     let snap = 8.0 * f64::EPSILON * period;
     let periods = opts.periods;
@@ -255,12 +301,14 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         snap,
         last_transition: None,
         first_slip: None,
+        tape: Tape::new(replay, opts.record_segments),
     };
     let cap = periods as usize + 1;
     let mut x_at_period_start = Vec::with_capacity(cap);
     let mut v_at_period_start = Vec::with_capacity(cap);
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
+    let mut compact = None;
     // The prepared pieces live on the stack when there are few of them (the models' laws have
     // at most `INLINE_PIECES`): a run then allocates only what it returns. Each is prepared in
     // its place (a prepared piece is a few hundred bytes).
@@ -290,16 +338,21 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
     };
 
     for n in 0..periods {
+        if rec.tape.repeats() {
+            let tape = std::mem::replace(&mut rec.tape, Tape::new(Replay::Off, false));
+            let out = Outputs {
+                x_at_period_start: &mut x_at_period_start,
+                v_at_period_start: &mut v_at_period_start,
+                dissipation: opts.dissipation.then_some(&mut dissipation),
+                segments: &mut segments,
+            };
+            (state.x, compact) = tape.replay((n, periods, period), state.x, &mut rec, out);
+            break;
+        }
+        rec.tape.begin(state.start());
         let period_start = f64::from(n) * period;
         let next_start = f64::from(n + 1) * period;
-        // Absolute time of a local time, with the period end landing exactly on the next start.
-        let absolute = |t: f64| {
-            if t >= period {
-                next_start
-            } else {
-                period_start + t
-            }
-        };
+        let absolute = |t: f64| absolute_time(period_start, next_start, period, t);
         // Called only where segments are recorded (the motion, an arc, is not copied otherwise).
         let mut record = |t0: f64, t1: f64, motion: Motion| {
             if t1 > t0 {
@@ -344,6 +397,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         if opts.dissipation {
             dissipation.push(body.mu_d * state.normal_work);
         }
+        rec.tape.end(body.mu_d * state.normal_work, state.start());
     }
     x_at_period_start.push(state.x);
     v_at_period_start.push(state.v);
@@ -357,6 +411,7 @@ pub fn integrate(body: &Body, law: &ForceLaw, opts: &RunOptions) -> Result<Run> 
         v_at_period_start,
         dissipation,
         segments,
+        compact,
     })
 }
 
@@ -377,6 +432,18 @@ struct State<'a> {
     carried: Option<(&'a Piece, f64, f64)>,
     /// ∫ N_f |v| dt in the period so far (when asked for).
     normal_work: f64,
+}
+
+impl State<'_> {
+    /// What the next period depends on besides x (at a period start, where nothing is carried).
+    fn start(&self) -> StartState {
+        StartState {
+            dir: self.dir,
+            v: self.v.to_bits(),
+            // Read only while slipping: a slip onset resets it.
+            accel_sign: if self.dir == 0 { 0 } else { self.accel_sign },
+        }
+    }
 }
 
 /// Walks the body through one piece of period `n` (starting at `period_start`), with the arcs
@@ -413,9 +480,12 @@ fn walk_piece<'a, M: ArcMotion>(
             let t_end = onset.map_or(piece.end, |(c, _)| c.t.hi);
             if opts.record_segments {
                 record(t, t_end, Motion::Rest { x: state.x });
+                rec.tape.segment(t, t_end, Motion::Rest { x: state.x });
             }
             let Some((crossing, s)) = onset else { break };
             rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, state.x, 0.0);
+            rec.tape
+                .event(crossing.t.hi, EventKind::Slip { dir: s }, None, 0.0);
             state.dir = s;
             state.accel_sign = 0;
             t = crossing.t.hi;
@@ -459,6 +529,8 @@ fn walk_piece<'a, M: ArcMotion>(
         let arc = M::from_start(piece.basis, slope, start, phase);
         let mut on_max = |tm: f64, at_max: Point| {
             rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
+            rec.tape
+                .event(tm, EventKind::SpeedMax, Some(at_max.dx), at_max.v);
         };
         let work_normal = opts.dissipation.then_some(normal_start);
         let slide = slide(
@@ -474,14 +546,17 @@ fn walk_piece<'a, M: ArcMotion>(
         let t_end = slide.stick.unwrap_or(piece.end);
         if opts.record_segments {
             record(t, t_end, Motion::Slide { arc: arc.arc() });
+            rec.tape.segment(t, t_end, Motion::Slide { arc: arc.arc() });
         }
         let end = slide.end;
         state.x = end.x;
+        rec.tape.moved(end.dx);
         match slide.stick {
             // A slip from rest that sticks where it started is shorter than the event
             // resolution (e.g. F ~ 1e-300 N): no motion. Stay stuck past the interval.
             Some(t_stick) if t_stick == t && state.v == 0.0 => {
                 rec.retract_slip(f64::from(n) * period + t);
+                rec.tape.retract(t);
                 state.dir = 0;
                 // Where the drive touches the threshold tangentially with μd = μs (φ = 2μs on
                 // the harmonic law) a has a double zero at the onset and its sign is lost to
@@ -503,6 +578,8 @@ fn walk_piece<'a, M: ArcMotion>(
                     state.x,
                     0.0,
                 );
+                rec.tape
+                    .event(t_stick, EventKind::Stick { dir: state.dir }, None, 0.0);
                 state.dir = 0;
                 t = t_stick;
                 phase_t = if M::TRIG { end.phase } else { None };

@@ -42,6 +42,8 @@ const TEMPLATES: &[(&str, &str)] = &[
     ),
 ];
 const HANDOUT_CSS: &str = include_str!("../../templates/handout.css");
+/// Pages of a printed handout, at most (for the time its print is allowed, [`pdf::print`]).
+const HANDOUT_PAGES: u32 = 4;
 
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
@@ -310,7 +312,7 @@ pub fn render(
         let html = page(&tera, "handout.html", &ctx)?;
         if let Some(browser) = browser {
             let name = format!("{id}.html");
-            let pdf = pdf::print(browser, &name, &html)?;
+            let pdf = pdf::print(browser, &name, &html, HANDOUT_PAGES)?;
             files.push(OutFile::new(format!("{id}.pdf"), pdf));
         }
         if html_requested {

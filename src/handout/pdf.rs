@@ -14,8 +14,18 @@ use crate::error::{Error, Result};
 pub const BROWSER_ENV: &str = "STICKSLIP_CHROMIUM";
 /// Names looked up on PATH, in order.
 const NAMES: &[&str] = &["chromium", "chromium-browser", "google-chrome"];
-/// A handout prints in 1–3 s; a browser stuck longer than this is killed.
-const TIMEOUT: Duration = Duration::from_secs(90);
+/// A handout prints in 1–3 s, the answer key of 500 students (13 MB of HTML) in about 65 s on
+/// an idle machine: a print is given this much time, plus [`TIMEOUT_PER_PAGE`] per page, before
+/// the browser is taken for stuck and killed.
+const TIMEOUT_BASE: Duration = Duration::from_secs(60);
+/// Time allowed per printed page (about 8× what a page of a 500-student key takes at load 1,
+/// room for a second build running beside it).
+const TIMEOUT_PER_PAGE: Duration = Duration::from_secs(1);
+
+/// The time a print of `pages` pages may take before the browser is killed.
+fn timeout(pages: u32) -> Duration {
+    TIMEOUT_BASE + TIMEOUT_PER_PAGE * pages
+}
 /// How often the running browser is polled.
 const POLL: Duration = Duration::from_millis(50);
 
@@ -132,9 +142,10 @@ fn owned_by_me(_meta: &fs::Metadata) -> bool {
     false
 }
 
-/// Prints `html` (a self-contained page, saved as `name` in a temporary folder) with `browser`
-/// and returns the PDF's bytes.
-pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
+/// Prints `html` (a self-contained page of about `pages` A4 pages, saved as `name` in a temporary
+/// folder) with `browser` and returns the PDF's bytes; the time allowed grows with `pages`.
+pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u8>> {
+    let limit = timeout(pages);
     let fail = |reason: String| Error::Pdf {
         path: name.to_string(),
         browser: browser.display().to_string(),
@@ -173,12 +184,12 @@ pub fn print(browser: &Path, name: &str, html: &str) -> Result<Vec<u8>> {
     let status = loop {
         match child.try_wait() {
             Ok(Some(status)) => break status,
-            Ok(None) if started.elapsed() > TIMEOUT => {
+            Ok(None) if started.elapsed() > limit => {
                 let _ = child.kill();
                 let _ = child.wait();
                 return Err(fail(format!(
                     "no answer within {} s, stopped",
-                    TIMEOUT.as_secs()
+                    limit.as_secs()
                 )));
             }
             Ok(None) => std::thread::sleep(POLL),
@@ -236,7 +247,7 @@ mod tests {
     fn a_browser_that_prints_nothing_is_an_error() {
         let dir = tempfile::tempdir().unwrap();
         let fake = executable(dir.path(), "fake-chromium");
-        let err = print(&fake, "x.html", "<p>x</p>").unwrap_err();
+        let err = print(&fake, "x.html", "<p>x</p>", 1).unwrap_err();
         assert!(matches!(err, Error::Pdf { .. }), "{err}");
         assert!(err.to_string().contains("no PDF written"), "{err}");
     }

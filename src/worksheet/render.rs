@@ -401,7 +401,9 @@ pub fn pdf(w: &Worksheets, lang: Lang, browser: &std::path::Path) -> Result<Vec<
         .map(|f| {
             let name = f.path.display().to_string();
             let html = String::from_utf8_lossy(&f.bytes);
-            let bytes = crate::handout::pdf::print(browser, &name, &html)?;
+            // One student per page (a key's page can run over: the time per page has room).
+            let pages = u32::try_from(w.students.len()).unwrap_or(u32::MAX);
+            let bytes = crate::handout::pdf::print(browser, &name, &html, pages)?;
             Ok(OutFile::new(f.path.with_extension("pdf"), bytes))
         })
         .collect()

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::engine::{analyse, integrate, Event, EventKind, Run, RunOptions};
+use crate::engine::{analyse, integrate_with, Event, EventKind, Replay, Run, RunOptions};
 use crate::error::Result;
 use crate::models::pulled_mass::formula::{self as cf, ClosedForm, Regime};
 use crate::models::pulled_mass::quantity::Key;
@@ -84,7 +84,14 @@ pub fn evaluate_with_runs(
         dissipation: true,
     };
     let body = pulled_mass::body(p);
-    let run_of = |law| -> Result<Run> { integrate(&body, &pulled_mass::force_law(p, law)?, &opts) };
+    let run_of = |law| -> Result<Run> {
+        integrate_with(
+            &body,
+            &pulled_mass::force_law(p, law)?,
+            &opts,
+            Replay::Compact,
+        )
+    };
     let runs = Runs {
         linear: run_of(LawKind::Linear)?,
         harmonic: run_of(LawKind::Harmonic)?,

@@ -3,7 +3,9 @@
 
 use serde::Serialize;
 
-use crate::engine::{analyse, integrate, Event, EventKind, IntegrationRegime, Run, RunOptions};
+use crate::engine::{
+    analyse, integrate_with, Event, EventKind, IntegrationRegime, Replay, Run, RunOptions,
+};
 use crate::error::Result;
 use crate::models::woodpecker::formula::{
     self as cf, LinearWoodpecker, Orbit, OrbitRegime, OrbitSlip, Phase, WoodpeckerClosedForm,
@@ -113,7 +115,14 @@ pub fn evaluate_with_runs(
         dissipation: true,
     };
     let body = woodpecker::body(p);
-    let run_of = |law| -> Result<Run> { integrate(&body, &woodpecker::force_law(p, law)?, &opts) };
+    let run_of = |law| -> Result<Run> {
+        integrate_with(
+            &body,
+            &woodpecker::force_law(p, law)?,
+            &opts,
+            Replay::Compact,
+        )
+    };
     let amplitudes = woodpecker::linear_amplitudes(p);
     let runs = Runs {
         linear: amplitudes.map(|_| run_of(LawKind::Linear)).transpose()?,

@@ -1,0 +1,291 @@
+//! Exact replay of a periodic orbit: once the state at two consecutive period starts is the same
+//! up to the shift in x (at rest, or slipping with the same v bit for bit), every later period is
+//! the recorded one.
+//!
+//! The forces depend on time only, and the motion relative to the start of an arc does not
+//! depend on where the arc starts ([`Point::dx`](super::arc::Point)): a period is a function of
+//! its start state ([`StartState`]: direction of slip, v, the sign of the acceleration for the
+//! speed maxima) and of its start position x₀, the latter only through additions x ← x + Δx of
+//! per-arc displacements that are themselves independent of x₀. So when period n starts in the
+//! state period n − 1 started in, period n repeats period n − 1 event for event:
+//!
+//! ```text
+//! period n − 1 (integrated, recorded):  ops = [event(t, kind, Δx?, v) | retract(t) | move(Δx) | segment(t0, t1, motion)]
+//! period m ≥ n (replayed):              x ← x_m; for op in ops: the same calls with the same operands
+//! ```
+//!
+//! The recorder ([`Recorder`]) and the segment list see the same calls with the same operands in
+//! the same order as under full integration, so every output is bit-identical to it (tested in
+//! tests/replay.rs against [`Replay::Off`]). Orbits whose start states differ (multi-period
+//! orbits, transients, a continuous slip whose v at the period start still changes in its last
+//! bits) are integrated period by period as before.
+
+use super::run::{absolute_time, EventKind, Motion, Recorder, Segment};
+
+/// What a run does with the periods of an orbit that repeats exactly ([`super::integrate_with`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Replay {
+    /// Integrate every period (the reference the replay is tested against).
+    Off,
+    /// Replay the recorded period; recorded segments are kept for every period.
+    Segments,
+    /// Replay the recorded period; the segments of replayed periods are not stored but rebuilt
+    /// on demand by [`Run::state_at`](super::Run::state_at), so that memory stays bounded for
+    /// runs of 10⁶ periods (the public `segments` then stops at the recorded period).
+    Compact,
+}
+
+/// One step of a recorded period, in the order the integration took it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Op {
+    /// An event at local time `t`: at the current position, or `dx` (m) beyond it.
+    Event {
+        t: f64,
+        kind: EventKind,
+        dx: Option<f64>,
+        v: f64,
+    },
+    /// A slip onset at local time `t` taken back.
+    Retract { t: f64 },
+    /// The body moved by `dx` (m) along an arc.
+    Move { dx: f64 },
+    /// A recorded segment over local [t0, t1]; its motion starts at the current position.
+    Segment { t0: f64, t1: f64, motion: Motion },
+}
+
+/// The segments of replayed periods, rebuilt on demand ([`Replay::Compact`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Compact {
+    /// First replayed period.
+    pub(super) from: u32,
+    /// The recorded period's steps.
+    ops: Vec<Op>,
+}
+
+impl Compact {
+    /// The first segment of the replayed periods `periods` (started at the positions
+    /// `x_at_period_start`, m) that ends at or after absolute time `t` (s).
+    pub(super) fn first_ending_after(
+        &self,
+        periods: std::ops::Range<u32>,
+        x_at_period_start: &[f64],
+        period: f64,
+        t: f64,
+    ) -> Option<Segment> {
+        for m in periods {
+            let mut x = x_at_period_start[m as usize];
+            for op in &self.ops {
+                match *op {
+                    Op::Move { dx } => x += dx,
+                    Op::Segment { t0, t1, motion } => {
+                        let seg = segment(m, period, t0, t1, motion, x);
+                        if seg.t1 >= t {
+                            return Some(seg);
+                        }
+                    }
+                    Op::Event { .. } | Op::Retract { .. } => {}
+                }
+            }
+        }
+        None
+    }
+}
+
+/// The segment of period `m` over local [t0, t1] with `motion` started at position `x`, with
+/// the absolute times the integration gives it.
+fn segment(m: u32, period: f64, t0: f64, t1: f64, motion: Motion, x: f64) -> Segment {
+    let period_start = f64::from(m) * period;
+    let next_start = f64::from(m + 1) * period;
+    let absolute = |t| absolute_time(period_start, next_start, period, t);
+    Segment {
+        t0: absolute(t0),
+        t1: absolute(t1),
+        period_start,
+        motion: match motion {
+            Motion::Rest { .. } => Motion::Rest { x },
+            Motion::Slide { arc } => Motion::Slide {
+                arc: arc.started_at(x),
+            },
+        },
+    }
+}
+
+/// What a period's motion depends on besides its start position: the direction of slip (0 at
+/// rest), v (m/s, as bits, so that −0 and +0 differ) and the sign of s·a on the last slipping
+/// stretch (a speed maximum across the period start).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct StartState {
+    pub dir: i8,
+    pub v: u64,
+    pub accel_sign: i8,
+}
+
+/// The steps of the current period, recorded while it may become the template.
+pub(super) struct Tape {
+    mode: Replay,
+    segments: bool,
+    ops: Vec<Op>,
+    /// The current period is being recorded, from this start state.
+    recording: Option<StartState>,
+    /// The last period was recorded in full and ended at rest: the next periods repeat it.
+    complete: bool,
+    /// The recorded period's friction dissipation (J).
+    dissipation: f64,
+}
+
+/// The outputs of a run that replayed periods extend.
+pub(super) struct Outputs<'a> {
+    pub x_at_period_start: &'a mut Vec<f64>,
+    pub v_at_period_start: &'a mut Vec<f64>,
+    pub dissipation: Option<&'a mut Vec<f64>>,
+    pub segments: &'a mut Vec<Segment>,
+}
+
+impl Tape {
+    pub(super) fn new(mode: Replay, segments: bool) -> Tape {
+        Tape {
+            mode,
+            segments,
+            ops: Vec::new(),
+            recording: None,
+            complete: false,
+            dissipation: 0.0,
+        }
+    }
+
+    /// At the start of a period: whether the last one repeats from here on.
+    #[inline]
+    pub(super) fn repeats(&self) -> bool {
+        self.complete
+    }
+
+    /// A period begins in state `start`.
+    #[inline]
+    pub(super) fn begin(&mut self, start: StartState) {
+        self.ops.clear();
+        self.recording = (self.mode != Replay::Off).then_some(start);
+    }
+
+    /// The period ended with friction dissipation `dissipation` (J) in state `end`: the next
+    /// periods repeat it when that is the state it started in.
+    #[inline]
+    pub(super) fn end(&mut self, dissipation: f64, end: StartState) {
+        self.complete = self.recording == Some(end);
+        self.dissipation = dissipation;
+    }
+
+    #[inline]
+    pub(super) fn event(&mut self, t: f64, kind: EventKind, dx: Option<f64>, v: f64) {
+        if self.recording.is_some() {
+            self.ops.push(Op::Event { t, kind, dx, v });
+        }
+    }
+
+    #[inline]
+    pub(super) fn retract(&mut self, t: f64) {
+        if self.recording.is_some() {
+            self.ops.push(Op::Retract { t });
+        }
+    }
+
+    #[inline]
+    pub(super) fn moved(&mut self, dx: f64) {
+        if self.recording.is_some() {
+            self.ops.push(Op::Move { dx });
+        }
+    }
+
+    #[inline]
+    pub(super) fn segment(&mut self, t0: f64, t1: f64, motion: Motion) {
+        if self.recording.is_some() && t1 > t0 {
+            self.ops.push(Op::Segment { t0, t1, motion });
+        }
+    }
+
+    /// Replays the recorded period for periods `from..periods` starting at position `x` (m),
+    /// through the recorder and into the outputs; returns the position at the end and, in
+    /// [`Replay::Compact`] mode, what rebuilds the replayed segments.
+    pub(super) fn replay(
+        self,
+        (from, periods, period): (u32, u32, f64),
+        mut x: f64,
+        rec: &mut Recorder,
+        out: Outputs,
+    ) -> (f64, Option<Compact>) {
+        let materialize = self.segments && self.mode == Replay::Segments;
+        let Outputs {
+            x_at_period_start,
+            v_at_period_start,
+            mut dissipation,
+            segments,
+        } = out;
+        let v = self.recording.map_or(0.0, |start| f64::from_bits(start.v));
+        // A period whose events are not kept leaves the recorder as it found it, except for the
+        // last transition, which the next period's first slip is merged with when at the same
+        // instant. When the period has a stick or a retraction (or no transition at all), the
+        // last transition at its end is its own, whatever it was before: then only the periods
+        // next to a kept one go through the recorder, and the others just move x.
+        let own_last_transition = self.ops.iter().any(|op| {
+            matches!(
+                op,
+                Op::Event {
+                    kind: EventKind::Stick { .. },
+                    ..
+                } | Op::Retract { .. }
+            )
+        }) || !self
+            .ops
+            .iter()
+            .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
+        let moves: Vec<f64> = self
+            .ops
+            .iter()
+            .filter_map(|op| match *op {
+                Op::Move { dx } => Some(dx),
+                _ => None,
+            })
+            .collect();
+        for m in from..periods {
+            x_at_period_start.push(x);
+            v_at_period_start.push(v);
+            let through_recorder = materialize
+                || !own_last_transition
+                || m == from
+                || rec.keeps(m)
+                || rec.keeps(m - 1)
+                || rec.keeps(m.saturating_add(1));
+            if !through_recorder {
+                for dx in &moves {
+                    x += dx;
+                }
+                if let Some(d) = dissipation.as_deref_mut() {
+                    d.push(self.dissipation);
+                }
+                continue;
+            }
+            for op in &self.ops {
+                match *op {
+                    Op::Event { t, kind, dx, v } => {
+                        rec.push(m, t, kind, dx.map_or(x, |dx| x + dx), v);
+                    }
+                    Op::Retract { t } => rec.retract_slip(f64::from(m) * period + t),
+                    Op::Move { dx } => x += dx,
+                    Op::Segment { t0, t1, motion } => {
+                        if materialize {
+                            segments.push(segment(m, period, t0, t1, motion, x));
+                        }
+                    }
+                }
+            }
+            if let Some(d) = dissipation.as_deref_mut() {
+                d.push(self.dissipation);
+            }
+        }
+        let compact =
+            (self.segments && self.mode == Replay::Compact && from < periods).then_some(Compact {
+                from,
+                ops: self.ops,
+            });
+        (x, compact)
+    }
+}
