@@ -57,7 +57,8 @@ impl SurfaceLaw {
         let finite = [drive, stiffness, normal, surface_speed]
             .iter()
             .all(|c| c.is_finite());
-        if !finite || !(stiffness < 0.0) || !(normal >= 0.0) {
+        // Finite coefficients compare as numbers (no NaN left).
+        if !finite || stiffness >= 0.0 || normal < 0.0 {
             return Err(Error::InvalidLaw(format!(
                 "a surface law needs finite coefficients, dD/dx = {stiffness} N/m < 0 and \
                  N_f = {normal} N >= 0"
@@ -203,6 +204,41 @@ impl HarmonicArc {
         (maxima, None)
     }
 
+    /// The angles δ in (0, `end`) at which the velocity vanishes (the turning points of x),
+    /// each located by bracketed root finding on an interval between zeros of a, where v is
+    /// monotone.
+    pub fn turns(&self, end: f64) -> Vec<f64> {
+        let pi = std::f64::consts::PI;
+        let w = self.y_c * self.omega;
+        // (v, dv/dδ, d²v/dδ²) times `sign`.
+        let v = |delta: f64, sign: f64| {
+            let (sin, cos) = fmath::sin_cos(delta);
+            (
+                sign * self.at_angle(delta).v,
+                sign * (-self.v_c * sin - w * cos),
+                sign * (-self.v_c * cos + w * sin),
+            )
+        };
+        let mut turns = Vec::new();
+        let mut p = 0.0;
+        let mut q = self.first_accel_zero();
+        while p < end {
+            let q_end = q.min(end);
+            let sign = if self.at_angle(p).v >= 0.0 { 1.0 } else { -1.0 };
+            let (at_p, at_q) = (v(p, sign), v(q_end, sign));
+            if at_p.0 > 0.0 && at_q.0 <= 0.0 {
+                turns.push(monotone_zero(
+                    |d| v(d, sign),
+                    (p, at_p.0),
+                    (q_end, at_q),
+                    true,
+                ));
+            }
+            (p, q) = (q, q + pi);
+        }
+        turns
+    }
+
     /// ∫ |v − v_s| dt from the start to angle δ within the slip (m): s·(Δx − v_s τ), from the
     /// closed form of x.
     pub fn slip_distance(&self, delta: f64) -> f64 {
@@ -231,6 +267,10 @@ pub enum SurfaceMotion {
 pub struct SurfaceSegment {
     pub t0: f64,
     pub t1: f64,
+    /// The segment's duration (s), from its own start rather than t1 − t0: the angle of the
+    /// arc over ω, or the distance carried over v_s (an absolute time late in a run carries
+    /// the rounding of the time of day).
+    pub duration: f64,
     pub motion: SurfaceMotion,
 }
 
@@ -323,6 +363,11 @@ pub fn integrate_surface(
     let mut slips = 0u32;
     // Carried from (t, x): the next slip onset, then the arc.
     let (mut t, mut x) = (0.0, opts.x0);
+    // How far |D(x)| may exceed μs N_f by the rounding of x at a stick (N): the position at the
+    // end of an arc is known to a few ulps of the arc's amplitude. A touch (μd = μs) ends at
+    // the onset's position, where |D| = μs N_f: its rounding must not start a slip the other
+    // way.
+    let mut rounding = 0.0;
     loop {
         if run.events.len() > MAX_EVENTS {
             return Err(Error::Stalled {
@@ -332,7 +377,7 @@ pub fn integrate_surface(
         }
         // STUCK at (t, x), v = v_s: the onset, now or where the moving x brings D(x) to ±μs N_f.
         let force = law.force(x);
-        let (t_on, x_on, s, y_c) = if force.abs() > limit {
+        let (t_on, x_on, s, y_c) = if force.abs() > limit + rounding {
             let s = force.signum();
             (t, x, s, x - centre(law, body, s))
         } else {
@@ -353,6 +398,7 @@ pub fn integrate_surface(
                 run.segments.push(SurfaceSegment {
                     t0: t,
                     t1: t_on,
+                    duration: (x_on - x) / v_s,
                     motion: SurfaceMotion::Carried {
                         t0: t,
                         x0: x,
@@ -409,6 +455,7 @@ pub fn integrate_surface(
                 run.segments.push(SurfaceSegment {
                     t0: t_on,
                     t1: f64::INFINITY,
+                    duration: f64::INFINITY,
                     motion: SurfaceMotion::Slip(arc),
                 });
             }
@@ -417,11 +464,14 @@ pub fn integrate_surface(
         };
         t = t_on + delta / omega;
         x = arc.at_angle(delta).x;
+        let amplitude = arc.y_c.hypot(arc.v_c / omega);
+        rounding = TOUCH_REL * -law.stiffness * (amplitude + x.abs());
         ledger = at(delta);
         if opts.record_segments {
             run.segments.push(SurfaceSegment {
                 t0: t_on,
                 t1: t,
+                duration: delta / omega,
                 motion: SurfaceMotion::Slip(arc),
             });
         }
