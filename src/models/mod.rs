@@ -13,7 +13,9 @@
 //! and monomorphised; the enum is the value people pass around (scenario files, command line,
 //! sweeps, worksheets, benchmarks) and is listed once, in the [`registry!`] call below.
 //!
-//! Registering a model: a `pub mod` line here and one entry in the `registry!` call.
+//! Registering a model: a `pub mod` line here and one entry in the `registry!` call, with
+//! the model's optional [`Capability`]s in brackets (test builds register a fourth model,
+//! `dummy`, that way).
 
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -23,6 +25,8 @@ use crate::error::Result;
 use param::{ChoiceSpec, ParamSpec};
 
 pub mod belt;
+#[cfg(test)]
+pub mod dummy;
 pub mod param;
 pub mod pulled_mass;
 pub mod woodpecker;
@@ -127,24 +131,29 @@ pub(crate) use pick;
 /// dispatch macros [`with_model!`] and [`with_capability!`] are generated from the one list.
 /// Each entry lists the model's optional capabilities ([`Capability`]) in brackets.
 macro_rules! registry {
-    ($d:tt $($variant:ident($params:ty) [$($cap:ident)*]),+ $(,)?) => {
+    ($d:tt $($(#[$meta:meta])* $variant:ident($params:ty) [$($cap:ident)*]),+ $(,)?) => {
         /// A model with its parameters: the value the rest of the program passes around.
         #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
         #[serde(untagged)]
         pub enum Model {
-            $($variant($params)),+
+            $($(#[$meta])* $variant($params)),+
         }
 
         impl Model {
             /// Every model with its default parameters, in the order of the registry.
+            // Pushed one by one: an entry may be under `#[cfg]`, which an element of `vec![]`
+            // cannot carry.
+            #[allow(clippy::vec_init_then_push)]
             pub fn defaults() -> Vec<Model> {
-                vec![$(Model::$variant(<$params>::default())),+]
+                let mut all = Vec::new();
+                $($(#[$meta])* all.push(Model::$variant(<$params>::default()));)+
+                all
             }
 
             /// Whether the model offers `capability`.
             pub fn has(&self, capability: Capability) -> bool {
                 let caps: &[&str] = match self {
-                    $(Model::$variant(_) => &[$(stringify!($cap)),*],)+
+                    $($(#[$meta])* Model::$variant(_) => &[$(stringify!($cap)),*],)+
                 };
                 caps.contains(&capability.id())
             }
@@ -156,7 +165,7 @@ macro_rules! registry {
         macro_rules! with_model {
             ($d m:expr, $d p:ident => $d body:expr) => {
                 match $d m {
-                    $($crate::models::Model::$variant($d p) => $d body,)+
+                    $($(#[$meta])* $crate::models::Model::$variant($d p) => $d body,)+
                 }
             };
         }
@@ -167,7 +176,7 @@ macro_rules! registry {
         macro_rules! with_capability {
             ($d m:expr, $d cap:ident, $d p:ident => $d body:expr, else $d missing:expr) => {
                 match $d m {
-                    $($crate::models::Model::$variant($d p) => $crate::models::pick!(
+                    $($(#[$meta])* $crate::models::Model::$variant($d p) => $crate::models::pick!(
                         $d cap [$($cap)*] { $d body } { let _ = $d p; $d missing }
                     ),)+
                 }
@@ -180,6 +189,9 @@ registry! {$
     PulledMass(pulled_mass::PulledMassParams) [present explore exercise claims],
     Woodpecker(woodpecker::WoodpeckerParams) [present explore exercise claims],
     Belt(belt::BeltParams) [],
+    // A test build's fourth model: its folder and this line, nothing else (README).
+    #[cfg(test)]
+    Dummy(dummy::DummyParams) [],
 }
 
 // The explorer and the presentation layer dispatch on the model too.
