@@ -12,7 +12,7 @@ use crate::cli::{
 use crate::error::Error;
 use crate::export::CsvDialect;
 use crate::models::param::invalid;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS, MAX_PERIODS};
 use crate::present::Present;
 use crate::report::{self, Format};
@@ -119,8 +119,18 @@ fn eval(args: &ModelArgs) -> Result<()> {
             M::text(&evaluation)
         })
     }
+    // The JSON of any model; its tables and CSV files where the model presents itself.
     let (model, periods) = model_params(args)?;
-    print_stdout(&with_model!(&model, p => show(p, periods, args))?)
+    let out = if args.common.json && args.common.csv.is_none() {
+        crate::explore::evaluate_json(&model, periods)? + "\n"
+    } else {
+        with_capability!(&model, present, p => show(p, periods, args)?,
+            else return Err(Error::Unsupported {
+                model: model.id(),
+                what: "text tables or CSV files yet: give --json".to_string(),
+            }.into()))
+    };
+    print_stdout(&out)
 }
 
 /// `stickslip claims MODEL`: the paper's claims on the given parameters (the other model keeps
@@ -130,6 +140,7 @@ fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()>
     reject_flag("claims", "--csv", common.csv.is_some())?;
     reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
     let (params, _) = model_params(&model.args)?;
+    params.require(crate::models::Capability::Claims)?;
     let sample = crate::claims::Sample {
         seed,
         size: samples,

@@ -30,6 +30,11 @@ pub enum Error {
     /// A force law that does not tile its period with finite pieces.
     #[error("invalid force law: {}", excerpt(.0, REASON_CHARS))]
     InvalidLaw(String),
+    /// Something a model does not have: a capability a command needs (a report, a worksheet, an
+    /// explorer map), or a time-periodic force law for a model whose force depends on the
+    /// position. `what` says what is missing and, where there is one, what to use instead.
+    #[error("the {model} model has no {}", excerpt(what, REASON_CHARS))]
+    Unsupported { model: &'static str, what: String },
     /// The engine could not advance (should not happen for valid laws).
     #[error("integration stalled at t = {} s: {reason}", short(*t))]
     Stalled { t: f64, reason: &'static str },
@@ -253,7 +258,8 @@ impl Error {
             | Self::Output { .. }
             | Self::OutOfRange { .. }
             | Self::NoChromium { .. }
-            | Self::Formula { .. } => 2,
+            | Self::Formula { .. }
+            | Self::Unsupported { .. } => 2,
             Self::Stalled { .. }
             | Self::Library { .. }
             | Self::InvalidLaw(_)

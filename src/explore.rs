@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 use crate::engine::{integrate, ForceLaw, IntegrationRegime, RunOptions};
 use crate::error::{Error, Result};
 use crate::models::param::invalid;
-use crate::models::{with_model, LawKind, Model, Physics};
+use crate::models::{with_capability, with_model, Capability, LawKind, Model, Physics};
 use crate::params::{validate_periods, DEFAULT_PERIODS};
 use crate::results::quantity::Quantity;
 use crate::results::Applicability;
@@ -119,6 +119,32 @@ impl Setup {
     }
 }
 
+/// The evaluation of any registered model, by its id and a parameter map (the model's
+/// defaults overridden by `setup`, SI): the JSON of `stickslip eval MODEL … --json` as a value
+/// (its objects' keys sorted, as `serde_json::Value` keeps them). What tests and bindings call
+/// instead of listing the models.
+pub fn evaluate(setup: &Setup, periods: u32) -> Result<serde_json::Value> {
+    evaluate_model(&setup.model()?, periods)
+}
+
+/// [`evaluate`] of a model already built (validated here).
+pub fn evaluate_model(model: &Model, periods: u32) -> Result<serde_json::Value> {
+    fn of<M: Physics>(p: &M, periods: u32) -> Result<serde_json::Value> {
+        serde_json::to_value(p.evaluate(periods)?).map_err(|e| Error::InvalidLaw(e.to_string()))
+    }
+    with_model!(model, p => of(p, periods))
+}
+
+/// The text `stickslip eval MODEL … --json` prints for `model`, without the final newline
+/// (keys in the order of the model's evaluation).
+pub fn evaluate_json(model: &Model, periods: u32) -> Result<String> {
+    fn of<M: Physics>(p: &M, periods: u32) -> Result<String> {
+        serde_json::to_string_pretty(&p.evaluate(periods)?)
+            .map_err(|e| Error::InvalidLaw(e.to_string()))
+    }
+    with_model!(model, p => of(p, periods))
+}
+
 /// The page's request for one parameter set.
 #[derive(Clone, Debug, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -197,7 +223,8 @@ pub fn parse<'a, T: Deserialize<'a>>(bytes: &'a [u8]) -> Result<T> {
 /// Evaluates, describes and samples one parameter set.
 pub fn explore(request: &Request) -> Result<Explored> {
     let model = request.setup.model()?;
-    with_model!(&model, p => explore_model(p, request))
+    with_capability!(&model, explore, p => explore_model(p, request),
+        else Err(model.missing(Capability::Explore)))
 }
 
 fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
@@ -325,7 +352,8 @@ pub fn map(request: &MapRequest) -> Result<(MapInfo, Vec<u8>)> {
             format!("1 <= cells <= {MAX_CELLS}, rows within them"),
         ));
     }
-    with_model!(&model, p => Ok(map_rows(p, law, n, (r0, r1))))
+    with_capability!(&model, explore, p => Ok(map_rows(p, law, n, (r0, r1))),
+        else Err(model.missing(Capability::Explore)))
 }
 
 fn map_rows<M: Explore>(p: &M, law: LawKind, n: u32, (r0, r1): (u32, u32)) -> (MapInfo, Vec<u8>) {

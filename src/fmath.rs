@@ -29,6 +29,16 @@ pub fn asin(x: f64) -> f64 {
     libm::asin(x)
 }
 
+/// arctan x.
+pub fn atan(x: f64) -> f64 {
+    libm::atan(x)
+}
+
+/// atan2(y, x), the angle of the point (x, y) in (−π, π].
+pub fn atan2(y: f64, x: f64) -> f64 {
+    libm::atan2(y, x)
+}
+
 /// log₁₀ x.
 pub fn log10(x: f64) -> f64 {
     libm::log10(x)

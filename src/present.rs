@@ -31,6 +31,8 @@ pub struct Laws<'a> {
 
 /// The presentation of a model.
 pub trait Present: Physics {
+    /// What the sketch of the apparatus shows, for its caption ("the block on the table …").
+    const SKETCH_WHAT: &'static str;
     /// The standard figures, claims and caption of a scenario of this model.
     fn standard_scene(&self) -> StandardScene;
     /// The figures of `kind` for the scene `scene_id`.

@@ -22,7 +22,6 @@ use stickslip::error::Error;
 use stickslip::fit::data::{parse, ReadOptions};
 use stickslip::fit::{fit, FitParam};
 use stickslip::models::woodpecker::WoodpeckerParams;
-use stickslip::models::{Model, Physics};
 use stickslip::params::Scenario;
 
 /// Longest message the command line prints (main adds "error: ").
@@ -164,13 +163,8 @@ fn eval(argv: &[String]) -> Result<(), String> {
         unreachable!("an eval line parses as eval")
     };
     let label = format!("{argv:?}");
-    let outcome = model_params(&model.args).and_then(|(model, periods)| {
-        let json = match model {
-            Model::PulledMass(p) => p.evaluate(periods).map(|e| serde_json::to_string(&e)),
-            Model::Woodpecker(p) => p.evaluate(periods).map(|e| serde_json::to_string(&e)),
-        };
-        Ok(json?.expect("an evaluation serializes"))
-    });
+    let outcome = model_params(&model.args)
+        .and_then(|(model, periods)| Ok(stickslip::explore::evaluate_json(&model, periods)?));
     match outcome {
         Ok(json) => {
             for bad in ["NaN", "Infinity", "inf"] {

@@ -25,7 +25,7 @@ use serde::Serialize;
 
 use crate::draws::Draws;
 use crate::error::{Error, Result};
-use crate::models::{with_model, Model, Physics};
+use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
 use crate::results::{CheckValue, Checked};
 use crate::worksheet::exercise::{Exercise, Measured};
@@ -356,7 +356,10 @@ enum Measure {
 
 /// The checks of `case` on the standard run.
 fn checks_of(case: &Model) -> Result<Vec<crate::results::Check>> {
-    Ok(with_model!(case, p => p.checks_and_linear_run(DEFAULT_PERIODS, false)?.0))
+    Ok(
+        with_capability!(case, exercise, p => p.checks_and_linear_run(DEFAULT_PERIODS, false)?.0,
+        else return Err(case.missing(Capability::Exercise))),
+    )
 }
 
 fn measured_elsewhere(
@@ -364,7 +367,8 @@ fn measured_elsewhere(
     quantity: &str,
     checks: &[crate::results::Check],
 ) -> Option<Measured> {
-    with_model!(case, p => p.measured_elsewhere(quantity, checks))
+    // A model without worksheets has no quantity measured in another's place.
+    with_capability!(case, exercise, p => p.measured_elsewhere(quantity, checks), else None)
 }
 
 /// The measured value of `quantity` on `case`: the numeric side of the tool's check of it (or,
@@ -540,25 +544,26 @@ fn regime_ids(model: Model) -> Vec<&'static str> {
     ids
 }
 
-fn probe(model: Model, rng: &mut Draws) -> Model {
+fn probe(model: Model, rng: &mut Draws) -> Result<Model> {
     fn of<M: Exercise>(_: &M, rng: &mut Draws) -> Model {
         M::probe(rng).into_model()
     }
-    with_model!(&model, p => of(p, rng))
+    with_capability!(&model, exercise, p => Ok(of(p, rng)), else Err(model.missing(Capability::Exercise)))
 }
 
 fn boundaries(model: Model) -> &'static [&'static str] {
     fn of<M: Exercise>(_: &M) -> &'static [&'static str] {
         M::boundaries()
     }
-    with_model!(&model, p => of(p))
+    // A model without worksheets has no boundaries to pack draws against.
+    with_capability!(&model, exercise, p => of(p), else &[])
 }
 
 fn onto_boundary(model: Model, i: usize, offset: f64) -> Option<Model> {
     fn of<M: Exercise>(p: &M, i: usize, offset: f64) -> Option<Model> {
         Some(p.onto_boundary(i, offset)?.into_model())
     }
-    with_model!(&model, p => of(p, i, offset))
+    with_capability!(&model, exercise, p => of(p, i, offset), else None)
 }
 
 /// The sample: probes of the whole domain, and sets packed against each boundary from both
@@ -569,7 +574,7 @@ fn draw_sample(
     samples: usize,
     seed: u64,
     regime: Option<&str>,
-) -> Vec<(Model, Option<Near>)> {
+) -> Result<Vec<(Model, Option<Near>)>> {
     let mut rng = Draws::new(seed);
     let names = boundaries(model);
     let mut out = Vec::with_capacity(samples);
@@ -580,7 +585,7 @@ fn draw_sample(
         if out.len() == samples {
             break;
         }
-        let base = probe(model, &mut rng);
+        let base = probe(model, &mut rng)?;
         let drawn = if !names.is_empty() && j % 5 < packed_of_five {
             let turn = j / 5 * packed_of_five + j % 5;
             let i = (turn / 2) % names.len();
@@ -604,7 +609,7 @@ fn draw_sample(
             out.push((m, near));
         }
     }
-    out
+    Ok(out)
 }
 
 /// Runs the check: the given parameters, then `samples` seeded sets over the model's whole
@@ -618,6 +623,8 @@ pub fn run(req: &Request) -> Result<Report> {
         ));
     }
     req.case.validate()?;
+    req.case.require(Capability::Exercise)?;
+    req.case.require(Capability::Present)?;
     if let Some(r) = &req.regime {
         let valid = regime_ids(req.case);
         if !valid.contains(&r.as_str()) {
@@ -630,11 +637,11 @@ pub fn run(req: &Request) -> Result<Report> {
     }
     let known = symbols(&req.case);
     let formula = Formula::read(&req.formula, &known)?;
-    let drawn = draw_sample(req.case, req.samples, req.seed, req.regime.as_deref());
+    let drawn = draw_sample(req.case, req.samples, req.seed, req.regime.as_deref())?;
     // The names of the measurable quantities, from the given set and a pilot drawn over every
     // regime (whatever `--regime` keeps).
     let mut names = measurable(&req.case)?;
-    for (case, _) in draw_sample(req.case, PILOT, req.seed, None) {
+    for (case, _) in draw_sample(req.case, PILOT, req.seed, None)? {
         if let Ok(here) = measurable(&case) {
             names.extend(here);
         }
@@ -1005,7 +1012,8 @@ mod tests {
             1000,
             3,
             None,
-        );
+        )
+        .unwrap();
         assert_eq!(drawn.len(), 1000);
         for boundary in ["φ = 1/Θ", "φ = φ_c", "φ = 2μs"] {
             let near: Vec<f64> = drawn

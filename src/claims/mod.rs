@@ -100,11 +100,13 @@ pub enum Given {
 }
 
 impl Given {
-    /// The model whose parameters `model` carries.
+    /// The model whose parameters `model` carries (the paper's sets for a model the claims
+    /// are not about).
     pub fn of(model: &Model) -> Self {
         match model {
             Model::PulledMass(_) => Self::PulledMass,
             Model::Woodpecker(_) => Self::Woodpecker,
+            _ => Self::Paper,
         }
     }
 

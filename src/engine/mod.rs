@@ -11,9 +11,14 @@
 //! in one basis function (t − t_ref, or cos ωt). On each piece the motion is known in closed
 //! form ([`arc::Arc`]), so the integration is exact: no step size anywhere, events are located by
 //! bracketed root finding on monotone intervals ([`roots`]) to about 1e-15 relative.
+//!
+//! A force affine in the position on a moving surface (a block on a belt) is the autonomous
+//! system of [`autonomous`]: harmonic slip arcs, sticking at the surface's speed, and a cycle
+//! (with its period) found from the events.
 
 pub mod accel;
 pub mod arc;
+pub mod autonomous;
 pub mod dd;
 pub mod law;
 pub mod replay;
@@ -21,6 +26,9 @@ pub mod roots;
 pub mod run;
 pub mod steady;
 
+pub use autonomous::{
+    detect_cycle, integrate_surface, Cycle, HarmonicArc, SurfaceLaw, SurfaceOptions, SurfaceRun,
+};
 pub use law::{Affine, Basis, Body, ForceLaw, Piece};
 pub use replay::Replay;
 pub use run::{integrate, integrate_with, Event, EventKind, Run, RunOptions, Segment};

@@ -14,7 +14,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 
-use crate::models::with_model;
+use crate::models::with_capability;
 use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx};
 use crate::report::figures::style::Geometry;
@@ -72,7 +72,10 @@ pub struct PageTwo {
 /// the pulled mass, the spring coordinate's counterparts for the woodpecker), each unless the
 /// scene has that kind already.
 pub fn kinds(scene: &Scene) -> Vec<FigureKind> {
-    let standard = with_model!(&scene.setup, p => p.standard_scene().figures);
+    // A model without a presentation has no standard figures (its scenes are refused on
+    // loading).
+    let standard =
+        with_capability!(&scene.setup, present, p => p.standard_scene().figures, else Vec::new());
     let mut kinds = scene.figures.clone();
     for kind in standard {
         let same = std::mem::discriminant(&kind);

@@ -17,7 +17,7 @@ use serde::Serialize;
 use crate::claims::{self, Sample};
 use crate::error::{Error, Result};
 use crate::lang::phrases::Translator;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Capability, Model};
 use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx, SceneCtx};
 use crate::report::render::{
@@ -118,6 +118,7 @@ pub fn list() -> Result<String> {
 /// The handout of `scene` in the language of `words`: context, figures and claims. Phrases
 /// without a translation stay in English and are listed by `words` ([`Translator::missing`]).
 pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
+    scene.setup.require(Capability::Present)?;
     let (pulled, wood, given) = claim_params(scene);
     let claims = claims::evaluate_given(&pulled, &wood, given, &Sample::default())?;
     let with_figures = Scene {
@@ -233,7 +234,8 @@ fn translate_scene(ctx: &mut SceneCtx, words: &Translator) {
 /// reason ("t_ST, v̄: why").
 fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
     let lang = words.lang();
-    let steps = with_model!(setup, p => p.derivation());
+    // A model without a presentation has no chain (`build` refuses it first).
+    let steps = with_capability!(setup, present, p => p.derivation(), else Vec::new());
     let mut shown = Vec::new();
     let mut in_place: Vec<&str> = Vec::new();
     let mut left_out: Vec<(&str, Vec<&str>)> = Vec::new();

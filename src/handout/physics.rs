@@ -4,7 +4,7 @@
 //! the handout's chain (thresholds such as μd,MIN; the report shows them).
 
 use crate::derivation::StepKey;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Model};
 use crate::present::Present;
 
 /// How a step of the chain is shown.
@@ -25,7 +25,7 @@ pub fn note(setup: &Model, key: StepKey) -> Option<(Note, Option<&'static str>)>
     fn note_of<M: Present>(_: &M, key: StepKey) -> Option<(Note, Option<&'static str>)> {
         M::handout_note(key)
     }
-    with_model!(setup, p => note_of(p, key))
+    with_capability!(setup, present, p => note_of(p, key), else None)
 }
 
 /// The equation of motion of the scene's model, line by line.
@@ -33,7 +33,8 @@ pub fn equation_of_motion(setup: &Model) -> &'static [(&'static str, &'static st
     fn lines<M: Present>(_: &M) -> &'static [(&'static str, &'static str)] {
         M::equation_of_motion()
     }
-    with_model!(setup, p => lines(p))
+    // A model without a presentation has no equation of motion to show (nor a handout).
+    with_capability!(setup, present, p => lines(p), else &[])
 }
 
 #[cfg(test)]
@@ -43,7 +44,7 @@ mod tests {
 
     #[test]
     fn every_line_renders_to_mathml() {
-        let lines = Model::defaults()
+        let lines = Model::offering(crate::models::Capability::Present)
             .iter()
             .flat_map(equation_of_motion)
             .collect::<Vec<_>>();

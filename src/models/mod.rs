@@ -13,7 +13,9 @@
 //! and monomorphised; the enum is the value people pass around (scenario files, command line,
 //! sweeps, worksheets, benchmarks) and is listed once, in the [`registry!`] call below.
 //!
-//! Registering a model: a `pub mod` line here and one entry in the `registry!` call.
+//! Registering a model: a `pub mod` line here and one entry in the `registry!` call, with
+//! the model's optional [`Capability`]s in brackets (test builds register a fourth model,
+//! `dummy`, that way).
 
 use serde::de::DeserializeOwned;
 use serde::Serialize;
@@ -22,6 +24,9 @@ use crate::engine::{Body, ForceLaw};
 use crate::error::Result;
 use param::{ChoiceSpec, ParamSpec};
 
+pub mod belt;
+#[cfg(test)]
+pub mod dummy;
 pub mod param;
 pub mod pulled_mass;
 pub mod woodpecker;
@@ -67,32 +72,118 @@ pub trait Physics:
     fn evaluate(&self, periods: u32) -> Result<Self::Evaluation>;
     /// The id of the regime of the linearized law's closed forms.
     fn closed_form_regime(&self) -> &'static str;
+    /// The `params` object of `eval --json` (physics.md §7): the inputs with their derived
+    /// quantities; by default the inputs alone.
+    fn params_json(&self) -> serde_json::Value {
+        serde_json::to_value(self).unwrap_or_default()
+    }
 }
 
-/// Lists the models once: the [`Model`] enum, [`Model::defaults`] and the dispatch macro
-/// [`with_model!`] are generated from the one list.
+/// What a model may offer beyond [`Physics`], each an optional capability: the commands that
+/// need one refuse a model without it ([`Model::require`]), never serve it empty or borrowed
+/// output. A capability is a trait the model's params struct implements in its folder.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Capability {
+    /// `crate::present::Present`: report scenes and figures, tables, derivation, text, CSV.
+    Present,
+    /// [`crate::explore::Explore`]: the explorer page (regime sentence, apparatus, regime map).
+    Explore,
+    /// `crate::worksheet::Exercise`: worksheets, and `check`'s draws over the model's domain.
+    Exercise,
+    /// The paper's claims about the model (`stickslip claims`).
+    Claims,
+}
+
+impl Capability {
+    /// The capability's name in the registry ("present").
+    pub fn id(self) -> &'static str {
+        match self {
+            Capability::Present => "present",
+            Capability::Explore => "explore",
+            Capability::Exercise => "exercise",
+            Capability::Claims => "claims",
+        }
+    }
+
+    /// What the capability gives, for a refusal ("report pages, tables or figures").
+    pub fn words(self) -> &'static str {
+        match self {
+            Capability::Present => "report pages, handouts, sweeps, figures or text tables yet",
+            Capability::Explore => "explorer page yet",
+            Capability::Exercise => "worksheets, nor the drawn parameter sets of `check`",
+            Capability::Claims => "claims of the paper to check",
+        }
+    }
+}
+
+/// `pick!(cap [caps…] {yes} {no})`: `yes` when `cap` is one of `caps`, else `no` (the branch
+/// not taken is dropped before type checking: a model need not implement a capability it does
+/// not list).
+#[doc(hidden)]
+macro_rules! pick {
+    (present [present $($rest:ident)*] $yes:tt $no:tt) => { $yes };
+    (explore [explore $($rest:ident)*] $yes:tt $no:tt) => { $yes };
+    (exercise [exercise $($rest:ident)*] $yes:tt $no:tt) => { $yes };
+    (claims [claims $($rest:ident)*] $yes:tt $no:tt) => { $yes };
+    ($cap:ident [] $yes:tt $no:tt) => { $no };
+    ($cap:ident [$first:ident $($rest:ident)*] $yes:tt $no:tt) => {
+        $crate::models::pick!($cap [$($rest)*] $yes $no)
+    };
+}
+pub(crate) use pick;
+
+/// Lists the models once: the [`Model`] enum, [`Model::defaults`], [`Model::has`] and the
+/// dispatch macros [`with_model!`] and [`with_capability!`] are generated from the one list.
+/// Each entry lists the model's optional capabilities ([`Capability`]) in brackets.
 macro_rules! registry {
-    ($d:tt $($variant:ident($params:ty)),+ $(,)?) => {
+    ($d:tt $($(#[$meta:meta])* $variant:ident($params:ty) [$($cap:ident)*]),+ $(,)?) => {
         /// A model with its parameters: the value the rest of the program passes around.
         #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
         #[serde(untagged)]
         pub enum Model {
-            $($variant($params)),+
+            $($(#[$meta])* $variant($params)),+
         }
 
         impl Model {
             /// Every model with its default parameters, in the order of the registry.
+            // Pushed one by one: an entry may be under `#[cfg]`, which an element of `vec![]`
+            // cannot carry.
+            #[allow(clippy::vec_init_then_push)]
             pub fn defaults() -> Vec<Model> {
-                vec![$(Model::$variant(<$params>::default())),+]
+                let mut all = Vec::new();
+                $($(#[$meta])* all.push(Model::$variant(<$params>::default()));)+
+                all
+            }
+
+            /// Whether the model offers `capability`.
+            pub fn has(&self, capability: Capability) -> bool {
+                let caps: &[&str] = match self {
+                    $($(#[$meta])* Model::$variant(_) => &[$(stringify!($cap)),*],)+
+                };
+                caps.contains(&capability.id())
             }
         }
 
         /// `with_model!(model, p => expr)`: `expr` with `p` bound to the model's params struct
-        /// (a `match` with one arm per registered model).
+        /// (a `match` with one arm per registered model): for what every model has
+        /// ([`Physics`]).
         macro_rules! with_model {
             ($d m:expr, $d p:ident => $d body:expr) => {
                 match $d m {
-                    $($crate::models::Model::$variant($d p) => $d body,)+
+                    $($(#[$meta])* $crate::models::Model::$variant($d p) => $d body,)+
+                }
+            };
+        }
+
+        /// `with_capability!(model, cap, p => expr, else missing)`: `expr` with `p` bound to
+        /// the params struct of a model that offers capability `cap` (`present`, `explore`,
+        /// `exercise`), `missing` for the others.
+        macro_rules! with_capability {
+            ($d m:expr, $d cap:ident, $d p:ident => $d body:expr, else $d missing:expr) => {
+                match $d m {
+                    $($(#[$meta])* $crate::models::Model::$variant($d p) => $crate::models::pick!(
+                        $d cap [$($cap)*] { $d body } { let _ = $d p; $d missing }
+                    ),)+
                 }
             };
         }
@@ -100,12 +191,16 @@ macro_rules! registry {
 }
 
 registry! {$
-    PulledMass(pulled_mass::PulledMassParams),
-    Woodpecker(woodpecker::WoodpeckerParams),
+    PulledMass(pulled_mass::PulledMassParams) [present explore exercise claims],
+    Woodpecker(woodpecker::WoodpeckerParams) [present explore exercise claims],
+    Belt(belt::BeltParams) [],
+    // A test build's fourth model: its folder and this line, nothing else (README).
+    #[cfg(test)]
+    Dummy(dummy::DummyParams) [],
 }
 
 // The explorer and the presentation layer dispatch on the model too.
-pub(crate) use with_model;
+pub(crate) use {with_capability, with_model};
 
 impl Model {
     /// The model's id ("pulled-mass", "woodpecker").
@@ -124,6 +219,32 @@ impl Model {
     /// Every model id, in the order of the registry.
     pub fn ids() -> Vec<&'static str> {
         Self::defaults().iter().map(Model::id).collect()
+    }
+
+    /// Refuses the model when it lacks `capability`: the one-line error of a command that
+    /// needs it.
+    pub fn require(&self, capability: Capability) -> Result<()> {
+        if self.has(capability) {
+            Ok(())
+        } else {
+            Err(self.missing(capability))
+        }
+    }
+
+    /// The refusal of a command that needs `capability` of this model.
+    pub fn missing(&self, capability: Capability) -> crate::error::Error {
+        crate::error::Error::Unsupported {
+            model: self.id(),
+            what: capability.words().to_string(),
+        }
+    }
+
+    /// The registered models that offer `capability`, with their default parameters.
+    pub fn offering(capability: Capability) -> Vec<Model> {
+        Self::defaults()
+            .into_iter()
+            .filter(|m| m.has(capability))
+            .collect()
     }
 
     /// Checks every parameter against its valid range.
@@ -239,12 +360,8 @@ impl Model {
     /// The inputs with their derived quantities, as the `params` object of `eval --json`
     /// (physics.md §7), without `periods`.
     pub fn derived_params(&self) -> serde_json::Map<String, serde_json::Value> {
-        let value = match self {
-            Model::PulledMass(p) => serde_json::to_value(pulled_mass::results::ParamsOut::of(p, 0)),
-            Model::Woodpecker(p) => serde_json::to_value(woodpecker::results::ParamsOut::of(p, 0)),
-        };
-        let mut map = match value {
-            Ok(serde_json::Value::Object(map)) => map,
+        let mut map = match with_model!(self, p => p.params_json()) {
+            serde_json::Value::Object(map) => map,
             _ => serde_json::Map::new(),
         };
         map.remove("periods");

@@ -18,7 +18,7 @@ pub const MU_MIN: f64 = 1e-6;
 pub const MAGNITUDE: (f64, f64) = (1e-50, 1e50);
 
 /// The rule a parameter's value must satisfy; the error message states it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Rule {
     /// A positive magnitude: [`MAGNITUDE`].0 ≤ x ≤ [`MAGNITUDE`].1.
     Positive,
@@ -28,6 +28,8 @@ pub enum Rule {
     StaticFriction,
     /// The dynamic friction coefficient: [`MU_MIN`] ≤ μd ≤ μs (the model's `mu_s`).
     DynamicFriction,
+    /// A closed range lo ≤ x ≤ hi in SI units (a model's lab ranges).
+    Range { lo: f64, hi: f64 },
 }
 
 /// A numeric input parameter of the model whose parameters are `P`.
@@ -93,6 +95,7 @@ impl<P> ParamSpec<P> {
             Rule::Finite => (-hi..=hi).contains(&value),
             Rule::StaticFriction => (MU_MIN..=MU_MAX).contains(&value),
             Rule::DynamicFriction => (MU_MIN..=mu_s).contains(&value),
+            Rule::Range { lo, hi } => (lo..=hi).contains(&value),
         };
         if ok {
             return Ok(());
@@ -105,6 +108,7 @@ impl<P> ParamSpec<P> {
             Rule::DynamicFriction => {
                 format!("{} <= {key} <= mu_s (mu_s = {})", num(MU_MIN), num(mu_s))
             }
+            Rule::Range { lo, hi } => format!("{} <= {key} <= {}", num(lo), num(hi)),
         };
         Err(invalid(key, num(value), rule))
     }

@@ -10,7 +10,7 @@ use super::render::Material;
 use super::{Format, OutFile, Scene};
 use crate::error::Result;
 use crate::lang::phrases::Translator;
-use crate::models::Model;
+use crate::models::{Capability, Model};
 use crate::worksheet::{self, Lang, Request};
 
 /// The scenes with a handout, and what each teaches.
@@ -68,7 +68,7 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
             what: "the same handout in Italian (words, figure labels, decimal commas)".to_string(),
         });
     }
-    for model in Model::defaults() {
+    for model in Model::offering(Capability::Exercise) {
         let sheets = worksheet::generate(
             &Request {
                 model,

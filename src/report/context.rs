@@ -5,7 +5,7 @@ use serde::Serialize;
 
 use crate::error::Result;
 use crate::handout::physics::equation_of_motion;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Capability, Model};
 use crate::output::format::{people, people_rel, people_tolerance};
 use crate::present::Present;
 use crate::report::math::mathml;
@@ -140,15 +140,21 @@ pub struct SceneCtx {
 
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
-    let mut ctx = with_model!(&scene.setup, p => p.scene_tables(scene)?);
+    let missing = || scene.setup.missing(Capability::Present);
+    fn sketch<M: Present>(p: &M) -> (&'static str, String) {
+        (M::SKETCH_WHAT, p.sketch(Phase::Slipping))
+    }
+    let mut ctx = with_capability!(&scene.setup, present, p => p.scene_tables(scene)?,
+        else return Err(missing()));
+    let (what, svg) =
+        with_capability!(&scene.setup, present, p => sketch(p), else return Err(missing()));
     ctx.sketch = FigureCtx {
         id: format!("{}-apparatus", scene.id),
         caption: format!(
-            "The apparatus with this page's parameters, {}; forces at the slip onset, to \
-             scale.",
-            SKETCH_WHAT[usize::from(scene.setup.id() == "woodpecker")]
+            "The apparatus with this page's parameters, {what}; forces at the slip onset, to \
+             scale."
         ),
-        svg: with_model!(&scene.setup, p => p.sketch(Phase::Slipping)),
+        svg,
         file: format!("figures/{}-apparatus.svg", scene.id),
     };
     ctx.motion = motion_lines(&scene.setup);
@@ -268,12 +274,6 @@ pub(crate) fn count(name: &str, n: u32) -> ParamRow {
         unit: String::new(),
     }
 }
-
-/// What each model's sketch shows (pulled mass, woodpecker).
-const SKETCH_WHAT: [&str; 2] = [
-    "the block on the table pulled by F, pressed by the spring and the hanging mass under it",
-    "the sleeve on the pole, tilted by the spring that carries the bird, gripping at two contacts",
-];
 
 /// The equation of motion of `setup`'s model, each line in MathML and LaTeX with its physics.
 pub fn motion_lines(setup: &Model) -> Vec<MotionLine> {

@@ -26,7 +26,7 @@ use super::writer::OutFile;
 use crate::error::Result;
 use crate::explore::{self, Explore, LawText};
 use crate::models::param::{ParamSpec, Rule};
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
 
 /// The engine, built by `.ci/wasm` (CI rebuilds it and fails if it differs).
@@ -68,11 +68,15 @@ pub enum Placement {
 /// The page, with the built-in `scenes` as presets.
 pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
     let data = PageData {
-        models: Model::defaults()
+        models: Model::offering(Capability::Explore)
             .iter()
-            .map(|m| with_model!(m, p => model_data(p)))
+            .filter_map(|m| with_capability!(m, explore, p => Some(model_data(p)), else None))
             .collect(),
-        presets: scenes.iter().map(preset).collect(),
+        presets: scenes
+            .iter()
+            .filter(|s| s.setup.has(Capability::Explore))
+            .map(preset)
+            .collect(),
         integration_regimes: explore::integration_regimes(),
         laws: [
             law("linear", "linearized law", 1, Stroke::Dashed),
@@ -275,7 +279,7 @@ fn param_data<P>(s: &ParamSpec<P>, p: &P) -> ParamData {
 }
 
 fn preset(scene: &Scene) -> Preset {
-    fn values<M: Explore>(
+    fn values<M: Physics>(
         p: &M,
     ) -> (
         BTreeMap<&'static str, f64>,

@@ -19,7 +19,7 @@ use rayon::prelude::*;
 
 use crate::error::{Error, Result};
 use crate::models::param::{invalid, num};
-use crate::models::{with_model, Model, Physics};
+use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::present::Present;
 use crate::results::Summary;
 
@@ -201,6 +201,7 @@ pub fn grid_value(from: f64, to: f64, i: u32, n: u32) -> f64 {
 /// Errors: the request fails [`validate`]; every point is invalid (the first point's error is
 /// returned, so that a bad fixed parameter is named); or the engine fails at some point.
 pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Sweep> {
+    base.require(Capability::Present)?;
     let param = validate(base, spec)?;
     let points = (0..spec.steps)
         .into_par_iter()
@@ -240,7 +241,8 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
             laws.closed_form_regime,
         ))
     }
-    let evaluated = with_model!(model, p => laws(p, periods));
+    let evaluated = with_capability!(model, present, p => laws(p, periods),
+        else return Err(model.missing(Capability::Present)));
     match evaluated {
         Ok((harmonic, linear, closed)) => Ok(Point {
             value,

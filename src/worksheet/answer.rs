@@ -12,7 +12,7 @@ use super::question::{Kind, Question};
 use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
 use crate::error::Result;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Capability, Model};
 use crate::params::DEFAULT_PERIODS;
 use crate::present::Present;
 use crate::results::quantity::AnyKey;
@@ -72,14 +72,15 @@ struct Evaluated {
 }
 
 fn evaluate(case: &Model, record_segments: bool) -> Result<Evaluated> {
-    let (checks, linear) =
-        with_model!(case, p => p.checks_and_linear_run(DEFAULT_PERIODS, record_segments)?);
+    let (checks, linear) = with_capability!(case, exercise, p => p.checks_and_linear_run(DEFAULT_PERIODS, record_segments)?,
+            else return Err(case.missing(Capability::Exercise)));
     Ok(Evaluated { checks, linear })
 }
 
 /// The worked steps of a case.
 pub fn steps(case: &Model) -> Vec<Step> {
-    with_model!(case, p => p.derivation())
+    // A model without a presentation has no worked steps (the commands refuse it first).
+    with_capability!(case, present, p => p.derivation(), else Vec::new())
 }
 
 /// The step of `key` with a value (its form applies), if any.
@@ -119,7 +120,8 @@ pub fn answer(
         let answer = match question.kind {
             Kind::ClosedForm(key) => measured(question, steps, &evaluated, key),
             Kind::Threshold(key) => {
-                with_model!(case, p => p.threshold(question, steps, key)?)
+                with_capability!(case, exercise, p => p.threshold(question, steps, key)?,
+                    else return Err(case.missing(Capability::Exercise)))
             }
             Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
             Kind::ReadFigure(key) => {
@@ -190,7 +192,8 @@ fn regime(
         return None;
     };
     let value = |key: AnyKey| applying(steps, key).and_then(|s| s.value);
-    let comparisons = with_model!(case, p => p.regime_comparisons(&value));
+    let comparisons =
+        with_capability!(case, exercise, p => p.regime_comparisons(&value), else Vec::new());
     Some(Answer {
         question,
         value: Value::Text(case.closed_form_regime().to_string()),

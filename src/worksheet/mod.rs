@@ -30,7 +30,7 @@ pub use question::{Kind, Question, Regime};
 pub use render::{pdf, render};
 
 use crate::error::{Error, Result};
-use crate::models::Model;
+use crate::models::{Capability, Model};
 
 /// Draws per student before giving up on the requested regime and questions.
 pub const MAX_ATTEMPTS: u32 = 20_000;
@@ -73,6 +73,7 @@ pub struct Worksheets {
 
 /// The regime and the questions of `req`, checked against the model's catalogue.
 pub fn resolve(req: &Request) -> Result<(Regime, Vec<&'static Question>)> {
+    req.model.require(Capability::Exercise)?;
     let regimes = question::regimes(req.model);
     let regime = match &req.regime {
         None => regimes[0],
@@ -142,6 +143,7 @@ fn names(questions: &[&Question]) -> String {
 
 /// Draws, checks and answers every student's case, ticking `progress` once per student.
 pub fn generate(req: &Request, progress: &ProgressBar) -> Result<Worksheets> {
+    req.model.require(Capability::Exercise)?;
     if !(1..=MAX_STUDENTS).contains(&req.students) {
         return Err(crate::models::param::invalid(
             "students",
@@ -182,7 +184,7 @@ pub fn student(
 ) -> Result<Student> {
     let mut rng = Draws::new(seed);
     for _ in 0..attempts {
-        let case = sample::draw(model, regime, &mut rng);
+        let case = sample::draw(model, regime, &mut rng)?;
         if case.closed_form_regime() != regime.id() {
             continue;
         }
@@ -230,7 +232,7 @@ mod tests {
 
     #[test]
     fn every_regime_asks_enough_questions() {
-        for model in Model::defaults() {
+        for model in Model::offering(Capability::Exercise) {
             for regime in question::regimes(model) {
                 let (_, qs) = resolve(&request(model, Some(regime.id()), None)).unwrap();
                 assert!(
@@ -340,7 +342,7 @@ mod tests {
     /// per student, 306 s for 500).
     #[test]
     fn every_regime_is_drawn_in_a_bounded_number_of_draws() {
-        for model in Model::defaults() {
+        for model in Model::offering(Capability::Exercise) {
             for regime in question::regimes(model) {
                 let req = request(model, Some(regime.id()), None);
                 let (regime, qs) = resolve(&req).unwrap();

@@ -4,7 +4,7 @@
 //! motion. Also the regimes a teacher can ask for and the inequalities that decide them.
 
 use super::exercise::Exercise;
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Model};
 use crate::results::quantity::AnyKey;
 
 /// A regime a worksheet can ask for: a closed-form regime of its model, by id.
@@ -91,7 +91,8 @@ pub fn catalogue(model: Model) -> &'static [Question] {
     fn of<M: Exercise>(_: &M) -> &'static [Question] {
         M::catalogue()
     }
-    with_model!(&model, p => of(p))
+    // A model without worksheets asks no questions (`generate` refuses it first).
+    with_capability!(&model, exercise, p => of(p), else &[])
 }
 
 /// Regimes a worksheet can ask for (closed-form regimes), the default first. The others
@@ -100,7 +101,7 @@ pub fn regimes(model: Model) -> &'static [Regime] {
     fn of<M: Exercise>(_: &M) -> &'static [Regime] {
         M::regimes()
     }
-    with_model!(&model, p => of(p))
+    with_capability!(&model, exercise, p => of(p), else &[])
 }
 
 /// The rules that decide the regime, as (regime, condition in LaTeX), shown with the regime
@@ -109,7 +110,7 @@ pub fn regime_rules(model: Model) -> &'static [(Regime, &'static str)] {
     fn of<M: Exercise>(_: &M) -> &'static [(Regime, &'static str)] {
         M::regime_rules()
     }
-    with_model!(&model, p => of(p))
+    with_capability!(&model, exercise, p => of(p), else &[])
 }
 
 /// The option of the motion question that names the closed-form regime `regime` of `model`.
@@ -123,5 +124,5 @@ pub fn regime_option(model: Model, regime: &str) -> &'static str {
             .find(|id| *id == regime)?;
         Some(M::regime_option(id))
     }
-    with_model!(&model, p => of(p, regime)).unwrap_or("")
+    with_capability!(&model, exercise, p => of(p, regime), else None).unwrap_or("")
 }

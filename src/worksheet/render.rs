@@ -15,7 +15,7 @@ use crate::derivation::{self, Step};
 use crate::error::Result;
 use crate::lang::phrases::Translator;
 use crate::lang::{Catalogue, Lang};
-use crate::models::{with_model, Model, Physics};
+use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::output::format::{rel, sig};
 use crate::report::context::regime_words;
 use crate::report::math::mathml;
@@ -53,7 +53,8 @@ pub(crate) fn definitions_tex(case: &Model) -> Vec<String> {
         M::DEFINED
     }
     let steps = super::answer::steps(case);
-    with_model!(case, p => of(p))
+    // A model without worksheets defines no symbols on a sheet (`generate` refuses it first).
+    with_capability!(case, exercise, p => of(p), else &[])
         .iter()
         .filter_map(|symbol| steps.iter().find(|s| s.symbol == *symbol))
         .map(|s| format!("{} = {}", s.symbol, s.formula()))
@@ -278,7 +279,9 @@ fn sketch_file(number: u32) -> String {
 /// The apparatus of `case`, at rest at t = 0, labelled with the given values only, in the
 /// words of `lang`.
 fn sketch(case: &Model, lang: Lang) -> Result<String> {
-    Ok(Translator::new(lang)?.svg(&with_model!(case, p => p.sketch_givens())))
+    let svg = with_capability!(case, exercise, p => p.sketch_givens(),
+        else return Err(case.missing(Capability::Exercise)));
+    Ok(Translator::new(lang)?.svg(&svg))
 }
 
 /// A sheet's context; `reads_figure`: a question reads the forces figure, drawn here.
@@ -496,7 +499,7 @@ mod tests {
 
     #[test]
     fn every_rule_and_question_symbol_renders_to_mathml() {
-        for model in Model::defaults() {
+        for model in Model::offering(Capability::Exercise) {
             let texts = question::regime_rules(model)
                 .iter()
                 .map(|r| r.1)
@@ -520,11 +523,11 @@ mod tests {
         fn defined<M: Exercise>(_: &M) -> usize {
             M::DEFINED.len()
         }
-        for model in Model::defaults() {
+        for model in Model::offering(Capability::Exercise) {
             let d = definitions(&model, &Words::new(Lang::En, model).unwrap());
             assert_eq!(
                 d.len(),
-                with_model!(&model, p => defined(p)),
+                with_capability!(&model, exercise, p => defined(p), else 0),
                 "{}",
                 model.id()
             );

@@ -6,7 +6,8 @@ use crate::draws::Draws;
 
 use super::exercise::Exercise;
 use super::question::Regime;
-use crate::models::{with_model, Model};
+use crate::error::Result;
+use crate::models::{with_capability, Capability, Model};
 
 /// `x` to three significant figures, as the nearest f64 of the shortest decimal (0.437, 45.2).
 pub fn round3(x: f64) -> f64 {
@@ -15,11 +16,12 @@ pub fn round3(x: f64) -> f64 {
 
 /// A candidate set for `model`, aimed at `regime` where the draw can be (rounded; the caller
 /// checks the regime of the rounded set).
-pub fn draw(model: Model, regime: Regime, rng: &mut Draws) -> Model {
+pub fn draw(model: Model, regime: Regime, rng: &mut Draws) -> Result<Model> {
     fn draw_as<M: Exercise>(_: &M, regime: Regime, rng: &mut Draws) -> Model {
         M::draw(regime, rng).into_model()
     }
-    with_model!(&model, p => draw_as(p, regime, rng))
+    with_capability!(&model, exercise, p => Ok(draw_as(p, regime, rng)),
+        else Err(model.missing(Capability::Exercise)))
 }
 
 #[cfg(test)]
@@ -38,11 +40,14 @@ mod tests {
 
     #[test]
     fn draws_are_valid_and_reproducible() {
-        for model in Model::defaults() {
+        for model in Model::offering(Capability::Exercise) {
             let regime = question::regimes(model)[0];
             let (mut a, mut b) = (Draws::new(3), Draws::new(3));
             for _ in 0..200 {
-                let (x, y) = (draw(model, regime, &mut a), draw(model, regime, &mut b));
+                let (x, y) = (
+                    draw(model, regime, &mut a).unwrap(),
+                    draw(model, regime, &mut b).unwrap(),
+                );
                 assert_eq!(x, y);
                 assert_eq!(x.id(), model.id());
                 x.validate().unwrap();

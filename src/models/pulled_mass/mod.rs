@@ -78,4 +78,8 @@ impl Physics for PulledMassParams {
     fn closed_form_regime(&self) -> &'static str {
         formula::regime(self.phi(), self.mu_s, self.mu_d).id()
     }
+
+    fn params_json(&self) -> serde_json::Value {
+        serde_json::to_value(results::ParamsOut::of(self, 0)).unwrap_or_default()
+    }
 }

@@ -12,6 +12,9 @@ use crate::report::sketch::{self, Phase};
 use crate::report::{OutFile, Scene};
 
 impl Present for PulledMassParams {
+    const SKETCH_WHAT: &'static str =
+        "the block on the table pulled by F, pressed by the spring and the hanging mass under it";
+
     fn standard_scene(&self) -> StandardScene {
         StandardScene {
             figures: vec![

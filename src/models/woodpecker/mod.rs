@@ -83,4 +83,8 @@ impl Physics for WoodpeckerParams {
     fn closed_form_regime(&self) -> &'static str {
         formula::evaluate(&results::linear_inputs(self)).regime.id()
     }
+
+    fn params_json(&self) -> serde_json::Value {
+        serde_json::to_value(results::ParamsOut::of(self, 0)).unwrap_or_default()
+    }
 }

@@ -13,6 +13,9 @@ use crate::report::sketch::{self, Phase};
 use crate::report::{OutFile, Scene};
 
 impl Present for WoodpeckerParams {
+    const SKETCH_WHAT: &'static str = "the sleeve on the pole, tilted by the spring that carries \
+                                       the bird, gripping at two contacts";
+
     fn standard_scene(&self) -> StandardScene {
         StandardScene {
             figures: vec![

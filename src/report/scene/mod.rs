@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use serde::Serialize;
 
 use crate::error::{Error, Result};
-use crate::models::{with_model, Model};
+use crate::models::{with_capability, Capability, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS};
 use crate::present::Present;
 use crate::report::figures::spec::{CategoryMap, LineChart};
@@ -191,7 +191,9 @@ impl Scene {
                 path: path.display().to_string(),
                 reason: "the file name gives no scene name".to_string(),
             })?;
-        let standard = with_model!(&scenario.model, p => p.standard_scene());
+        let model = scenario.model;
+        let standard = with_capability!(&model, present, p => p.standard_scene(),
+            else return Err(model.missing(Capability::Present)));
         let (figures, claims, caption) = (standard.figures, standard.claims, standard.caption);
         Self::from_scenario(&id, &scenario, path, caption, figures, claims)
     }
@@ -231,7 +233,8 @@ impl Scene {
     pub fn build_figures(&self) -> Result<Vec<Figure>> {
         let mut out = Vec::new();
         for kind in &self.figures {
-            let built = with_model!(&self.setup, p => p.figures(&self.id, *kind)?);
+            let built = with_capability!(&self.setup, present, p => p.figures(&self.id, *kind)?,
+                else return Err(self.setup.missing(Capability::Present)));
             out.extend(built);
         }
         Ok(out)

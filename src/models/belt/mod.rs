@@ -1,0 +1,78 @@
+//! The textbook stick-slip oscillator (docs/belt.md): a block of mass m on a belt moving at
+//! v_b, held by a spring k to a wall, with static and dynamic friction μs ≥ μd. The paper's
+//! stick condition with a different forcing: the force depends on the position (the spring)
+//! and the surface moves, so the engine runs it as an autonomous system
+//! ([`crate::engine::autonomous`]) whose period is an output. Everything about the model
+//! lives in this folder:
+//!
+//! ```text
+//! params.rs    the parameters with their lab ranges
+//! body.rs      the block and its surface law (D = −k x, N_f = m g, surface speed v_b)
+//! formula.rs   the closed forms (B1)–(B17), one pure function per quantity
+//! quantity.rs  the registry of the quantities: key, symbol, unit, equation
+//! results.rs   the evaluation: closed forms, the exact integration's last cycle, checks
+//! ```
+//!
+//! The belt has no presentation capabilities yet (report, worksheet, explorer): the commands
+//! that need them refuse it.
+
+pub mod body;
+pub mod formula;
+pub mod params;
+pub mod quantity;
+pub mod results;
+
+pub use params::BeltParams;
+
+use crate::engine::{Body, ForceLaw};
+use crate::error::{Error, Result};
+use crate::models::param::ParamSpec;
+use crate::models::{LawKind, Model, Physics};
+
+/// The model's id.
+pub const ID: &str = "belt";
+
+impl Physics for BeltParams {
+    const ID: &'static str = ID;
+    const ABOUT: &'static str =
+        "The textbook stick-slip oscillator: a spring-held block on a moving belt";
+    const DEFAULTS_SOURCE: &'static str = params::DEFAULTS_SOURCE;
+    const PARAMS: &'static [ParamSpec<Self>] = params::PARAMS;
+    type Evaluation = results::Evaluation;
+
+    fn into_model(self) -> Model {
+        Model::Belt(self)
+    }
+
+    fn validate(&self) -> Result<()> {
+        BeltParams::validate(self)
+    }
+
+    /// The period of the stick-slip cycle (B11) (s): an output of the motion, not of a
+    /// forcing.
+    fn period(&self) -> f64 {
+        formula::evaluate(self).period
+    }
+
+    fn body(&self) -> Body {
+        body::body(self)
+    }
+
+    /// None: the belt's force depends on the position, not on time.
+    fn force_law(&self, _law: LawKind) -> Result<ForceLaw> {
+        Err(Error::Unsupported {
+            model: ID,
+            what: "time-periodic force law: its force depends on the position and its belt \
+                   moves (`stickslip eval belt` integrates it exactly)"
+                .to_string(),
+        })
+    }
+
+    fn evaluate(&self, cycles: u32) -> Result<results::Evaluation> {
+        results::evaluate(self, cycles)
+    }
+
+    fn closed_form_regime(&self) -> &'static str {
+        formula::evaluate(self).regime.id()
+    }
+}

@@ -1,0 +1,87 @@
+//! The belt through the front door: `stickslip eval belt --json` prints its evaluation with
+//! every check passing, the model-agnostic evaluation by id and parameter map answers for every
+//! registered model, and the commands that need a capability the belt does not have refuse it
+//! with one line naming the model and exit code 2 (never empty or borrowed output).
+
+use std::collections::BTreeMap;
+
+use assert_cmd::Command;
+use stickslip::explore::{evaluate, Setup};
+use stickslip::models::Model;
+
+fn stickslip() -> Command {
+    let mut cmd = Command::cargo_bin("stickslip").expect("binary");
+    cmd.current_dir(env!("CARGO_MANIFEST_DIR"));
+    cmd
+}
+
+#[test]
+fn eval_belt_json_passes_every_check() {
+    let out = stickslip()
+        .args(["eval", "belt", "--json", "--v-b", "0.2", "--mu-d", "0.3"])
+        .assert()
+        .success()
+        .get_output()
+        .clone();
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(json["model"], "belt");
+    assert_eq!(json["params"]["v_b"], 0.2);
+    assert_eq!(json["closed_form"]["regime"], "stick_slip");
+    let checks = json["checks"].as_array().expect("checks");
+    assert!(checks.len() >= 15);
+    for c in checks {
+        assert_eq!(c["pass"], true, "{c}");
+    }
+}
+
+#[test]
+fn every_model_evaluates_by_id_and_parameter_map() {
+    for model in Model::defaults() {
+        let setup = Setup {
+            model: model.id().to_string(),
+            params: BTreeMap::from([("mu_d".to_string(), 0.2)]),
+            ..Setup::default()
+        };
+        let json = evaluate(&setup, 4).unwrap();
+        assert_eq!(json["model"], model.id());
+        assert_eq!(json["params"]["mu_d"], 0.2, "{}", model.id());
+        assert!(!json["checks"].as_array().unwrap().is_empty());
+    }
+    let unknown = Setup {
+        model: "belt".to_string(),
+        params: BTreeMap::from([("force".to_string(), 1.0)]),
+        ..Setup::default()
+    };
+    assert!(evaluate(&unknown, 4)
+        .unwrap_err()
+        .to_string()
+        .contains("force"));
+}
+
+#[test]
+fn commands_without_the_capability_refuse_the_belt_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().to_str().unwrap();
+    let lines: [&[&str]; 6] = [
+        &["eval", "belt"],
+        &["claims", "belt"],
+        &[
+            "sweep", "belt", "--param", "k", "--from", "1", "--to", "10", "--steps", "3", "-o", out,
+        ],
+        &["check", "belt", "1", "--quantity", "period"],
+        &["worksheet", "--model", "belt", "-o", out],
+        &["eval", "belt", "--json", "--csv", out],
+    ];
+    for args in lines {
+        let assert = stickslip().args(args).assert().code(2);
+        let output = assert.get_output();
+        assert!(output.stdout.is_empty(), "{args:?}: no output");
+        let err = String::from_utf8_lossy(&output.stderr);
+        assert_eq!(err.trim_end().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains("the belt model has no"), "{args:?}: {err}");
+    }
+    assert!(
+        std::fs::read_dir(dir.path()).unwrap().next().is_none(),
+        "nothing written"
+    );
+}
