@@ -506,7 +506,7 @@ mod tests {
                     m.starts_with("<math") && !m.contains("merror"),
                     "{tex}: {m}"
                 );
-                // pulldown-latex escapes the entity of `\ ` twice: no such spaces.
+                // No entity escaped twice (`&amp;nbsp;` for `\ `).
                 assert!(!m.contains("&amp;"), "{tex}: {m}");
             }
         }
