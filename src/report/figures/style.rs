@@ -6,7 +6,7 @@
 //! system font is read and the SVG bytes are the same on every machine.
 
 use plotters::coord::Shift;
-use plotters::element::{Circle, PathElement, Rectangle, Text};
+use plotters::element::{Circle, PathElement, Polygon, Rectangle, Text};
 use plotters::prelude::{DrawingArea, SVGBackend};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{Color, IntoFont, RGBColor, ShapeStyle, TextStyle};
@@ -184,7 +184,7 @@ pub fn fill_color(i: usize) -> RGBColor {
 /// Patterns are tuned at width 2 and scale with the width so dots stay round-ish.
 pub fn dash_pattern(stroke: Stroke, width: u32) -> Vec<f64> {
     let base: &[f64] = match stroke {
-        Stroke::Solid | Stroke::Points => &[],
+        Stroke::Solid | Stroke::Points | Stroke::Marker => &[],
         Stroke::Dashed => &[10.0, 5.0],
         Stroke::Dotted => &[2.0, 4.0],
         Stroke::DashDot => &[11.0, 4.0, 2.0, 4.0],
@@ -331,6 +331,10 @@ pub fn draw_curve(
                 .map_err(draw_err)?;
         }
         return Ok(());
+    }
+    if stroke == Stroke::Marker {
+        root.draw(&Polygon::new(points.to_vec(), color.filled()))
+            .map_err(draw_err)?;
     }
     draw_stroked(root, points, color, width, &dash_pattern(stroke, width))
 }
@@ -488,8 +492,17 @@ fn draw_legend_column(
                 stroke,
                 width,
             } => {
+                let (mx, r) = (x0 + LEGEND_SAMPLE / 2, LEGEND_SWATCH / 2 + 1);
                 let sample = if stroke == Stroke::Points {
-                    vec![(x0 + LEGEND_SAMPLE / 2, cy)]
+                    vec![(mx, cy)]
+                } else if stroke == Stroke::Marker {
+                    vec![
+                        (mx - r, cy),
+                        (mx, cy - r),
+                        (mx + r, cy),
+                        (mx, cy + r),
+                        (mx - r, cy),
+                    ]
                 } else {
                     vec![(x0, cy), (x0 + LEGEND_SAMPLE, cy)]
                 };
