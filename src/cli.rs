@@ -45,8 +45,9 @@ pub enum Command {
         /// Random parameter sets per sampled claim (1 to 1000000).
         #[arg(long, default_value_t = 2000, allow_negative_numbers = true)]
         samples: usize,
+        /// The model whose parameters are given; without one, both models at the paper's sets.
         #[command(subcommand)]
-        model: ModelCommand<NoArgs>,
+        model: Option<ModelCommand<ClaimsArgs>>,
     },
     /// Benchmark every time-stepping method against the exact engine: work-precision sweeps,
     /// where each method fails, and optionally SciPy side by side (written to --out).
@@ -140,8 +141,10 @@ pub struct WorksheetArgs {
     /// Seed of the parameter draw: the same seed gives the same sheets.
     #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
     pub seed: u64,
-    /// Regime of every student's case [default: slip_stick for the pulled mass,
-    /// double_slip_stick for the woodpecker].
+    /// Regime of every student's case, or `mixed`: the class drawn across all the model's
+    /// regimes, at least ⌊n/r⌋ of the n students in each of its r regimes (the first n mod r
+    /// regimes one more), in a seeded shuffled order, with the questions every regime can answer
+    /// [default: slip_stick for the pulled mass, double_slip_stick for the woodpecker].
     #[arg(long, value_name = "REGIME")]
     pub regime: Option<String>,
     /// Questions, comma-separated keys [default: every question that the regime allows].
@@ -333,6 +336,34 @@ pub struct CommonArgs {
 #[derive(Clone, Debug, Args)]
 pub struct NoArgs {}
 
+/// `claims`: no options of its own beside the model's (its seed and sample come before the model).
+#[derive(Clone, Debug, Args)]
+pub struct ClaimsArgs {}
+
+/// The shared options (ids of [`CommonArgs`]) a command refuses: hidden from its `--help`, so
+/// that the help lists only what the command takes (the command still says why it refuses one).
+pub trait Refuses {
+    const REFUSED: &'static [&'static str] = &[];
+}
+
+impl Refuses for NoArgs {}
+impl Refuses for ClaimsArgs {
+    const REFUSED: &'static [&'static str] = &["csv", "csv_dialect"];
+}
+impl Refuses for SweepArgs {
+    const REFUSED: &'static [&'static str] = &["json", "csv"];
+}
+impl Refuses for CheckArgs {
+    const REFUSED: &'static [&'static str] = &["csv", "csv_dialect", "periods"];
+}
+
+/// `cmd` with the shared options `refused` hidden from its help.
+fn hide(cmd: clap::Command, refused: &[&str]) -> clap::Command {
+    refused
+        .iter()
+        .fold(cmd, |cmd, id| cmd.mut_arg(*id, |a| a.hide(true)))
+}
+
 /// The parameter flags of a model as given on the command line, and the shared options. The
 /// flags are made from the model's parameter descriptors; [`crate::commands::model_params`]
 /// applies them over the scenario and the defaults.
@@ -415,7 +446,11 @@ impl<M: Physics> FromArgMatches for ModelFlags<M> {
 
 impl<M: Physics> Args for ModelFlags<M> {
     fn augment_args(cmd: clap::Command) -> clap::Command {
-        ModelArgs::augment(&M::default().into_model(), cmd)
+        // `fit` refuses --periods and --csv (its integration spans the tracked data).
+        hide(
+            ModelArgs::augment(&M::default().into_model(), cmd),
+            &["periods", "csv"],
+        )
     }
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
@@ -450,12 +485,12 @@ impl<X: FromArgMatches> FromArgMatches for ModelCommand<X> {
     }
 }
 
-impl<X: Args> Subcommand for ModelCommand<X> {
+impl<X: Args + Refuses> Subcommand for ModelCommand<X> {
     fn augment_subcommands(cmd: clap::Command) -> clap::Command {
         Model::defaults().iter().fold(cmd, |cmd, model| {
             let sub = ModelArgs::augment(model, clap::Command::new(model.id()));
             // The model's line, not the doc of `X`, is the subcommand's about.
-            cmd.subcommand(X::augment_args(sub).about(model.about()))
+            cmd.subcommand(hide(X::augment_args(sub), X::REFUSED).about(model.about()))
         })
     }
 

@@ -6,8 +6,8 @@ use std::io::Write;
 use anyhow::{Context, Result};
 
 use crate::cli::{
-    BenchArgs, CheckArgs, Cli, Command, CommonArgs, ExplorerArgs, FitArgs, HandoutArgs, ModelArgs,
-    ModelCommand, NoArgs, ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
+    BenchArgs, CheckArgs, ClaimsArgs, Cli, Command, CommonArgs, ExplorerArgs, FitArgs, HandoutArgs,
+    ModelArgs, ModelCommand, ReportArgs, SheetFormat, SweepArgs, WorksheetArgs,
 };
 use crate::error::Error;
 use crate::export::CsvDialect;
@@ -133,20 +133,29 @@ fn eval(args: &ModelArgs) -> Result<()> {
     print_stdout(&out)
 }
 
-/// `stickslip claims MODEL`: the paper's claims on the given parameters (the other model keeps
+/// `stickslip claims [MODEL]`: the paper's claims on the given parameters (the other model keeps
 /// the paper's set) and on a seeded random sample.
-fn claims(seed: u64, samples: usize, model: &ModelCommand<NoArgs>) -> Result<()> {
-    let common = &model.args.common;
-    reject_flag("claims", "--csv", common.csv.is_some())?;
-    reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
-    let (params, _) = model_params(&model.args)?;
-    params.require(crate::models::Capability::Claims)?;
+fn claims(seed: u64, samples: usize, model: &Option<ModelCommand<ClaimsArgs>>) -> Result<()> {
     let sample = crate::claims::Sample {
         seed,
         size: samples,
     };
-    let claims = crate::claims::evaluate_for(&params, &sample)?;
-    print_stdout(&if common.json {
+    // Without a model: both models at the paper's sets, as text.
+    let (claims, json) = match model {
+        Some(model) => {
+            let common = &model.args.common;
+            reject_flag("claims", "--csv", common.csv.is_some())?;
+            reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
+            let (params, _) = model_params(&model.args)?;
+            params.require(crate::models::Capability::Claims)?;
+            (crate::claims::evaluate_for(&params, &sample)?, common.json)
+        }
+        None => {
+            let (pulled, wood) = (Default::default(), Default::default());
+            (crate::claims::evaluate(&pulled, &wood, &sample)?, false)
+        }
+    };
+    print_stdout(&if json {
         serde_json::to_string_pretty(&claims)? + "\n"
     } else {
         crate::output::text::claims(&claims)
@@ -227,12 +236,28 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
         args.lang,
     )?);
     let written = report::write_all(&args.out, &files)?;
+    // The regimes in words, with their counts when the class is mixed.
+    let mut counts: Vec<(&str, usize)> = Vec::new();
+    for s in &sheets.students {
+        let id = s.case.closed_form_regime();
+        match counts.iter_mut().find(|(r, _)| *r == id) {
+            Some((_, n)) => *n += 1,
+            None => counts.push((id, 1)),
+        }
+    }
+    let regimes = match counts.as_slice() {
+        [(id, _)] => format!("regime: {}", report::context::regime_words(id)),
+        _ => counts
+            .iter()
+            .map(|(id, n)| format!("{n} × {}", report::context::regime_words(id)))
+            .collect::<Vec<_>>()
+            .join(", "),
+    };
     print_stdout(&format!(
-        "wrote {} files for {} students ({}, regime {}) to {}\n",
+        "wrote {} files for {} students ({}; {regimes}) to {}\n",
         written.len(),
         sheets.students.len(),
         args.model.id(),
-        sheets.regime,
         shown(&args.out)
     ))
 }

@@ -68,7 +68,7 @@
 
   function defaults(m) {
     const values = {};
-    for (const p of m.params) values[p.key] = p.default === null ? null : p.default / p.factor;
+    for (const p of m.params) values[p.key] = p.default === null ? null : toSi(p.default, p);
     const choices = {};
     for (const c of m.choices) choices[c.key] = c.default;
     return { values, choices };
@@ -95,6 +95,11 @@
     const [m, e] = x.toExponential(digits - 1).split("e");
     return `${Number(m)}e${Number(e)}`;
   }
+
+  /** A shown value in SI units, without the float noise of the unit's division (2.708 mm is
+   *  0.002708 m, not 0.0027080000000000003): 15 significant digits, the page's value and the
+   *  one its `stickslip eval` line prints. */
+  function toSi(x, p) { return Number((x / p.factor).toPrecision(15)); }
 
   /** Rounds a slider's value to 4 significant digits (the value sent and shown). */
   const round4 = (x) => Number(x.toPrecision(4));
@@ -150,20 +155,24 @@
         .forEach((p) => group.append(el("option", { value: p.id }, p.title)));
       preset.append(group);
     }
-    preset.addEventListener("change", () => {
-      const p = DATA.presets.find((q) => q.id === preset.value);
-      if (!p) return;
-      state.model = p.model;
-      const set = defaults(models[p.model]);
-      Object.assign(set.values, p.params);
-      Object.assign(set.choices, p.choices);
-      sets[p.model] = set;
-      rebuild();
-    });
+    preset.addEventListener("change", () => { if (applyPreset(preset.value)) rebuild(); });
     $("reset").addEventListener("click", () => {
       sets[state.model] = defaults(model());
       rebuild();
     });
+  }
+
+  /** Selects the built-in scene `id` as the current set (false when there is no such scene). */
+  function applyPreset(id) {
+    const p = DATA.presets.find((q) => q.id === id);
+    if (!p) return false;
+    state.model = p.model;
+    const set = defaults(models[p.model]);
+    Object.assign(set.values, p.params);
+    Object.assign(set.choices, p.choices);
+    sets[p.model] = set;
+    $("preset").value = id;
+    return true;
   }
 
   function buildParams() {
@@ -191,7 +200,7 @@
         const cid = `u-${p.key}`;
         const check = el("input", { type: "checkbox", id: cid });
         check.addEventListener("change", () => {
-          current().values[p.key] = check.checked ? null : fromPosition(p, Number(slider.value)) / p.factor;
+          current().values[p.key] = check.checked ? null : toSi(fromPosition(p, Number(slider.value)), p);
           syncParam(p);
           update();
         });
@@ -200,14 +209,14 @@
         div.append(label);
       }
       slider.addEventListener("input", () => {
-        current().values[p.key] = fromPosition(p, Number(slider.value)) / p.factor;
+        current().values[p.key] = toSi(fromPosition(p, Number(slider.value)), p);
         syncParam(p, "slider");
         update();
       });
       number.addEventListener("change", () => {
         const v = Number(number.value);
         if (number.value.trim() === "" || !Number.isFinite(v)) { syncParam(p); return; }
-        current().values[p.key] = v / p.factor;
+        current().values[p.key] = toSi(v, p);
         syncParam(p, "number");
         update();
       });
@@ -425,11 +434,14 @@
   // ---------------------------------------------------------------------------------------
   // The regime in words
 
+  /** "1 slip", "2 slips". */
+  function plural(n, one, many) { return `${n} ${n === 1 ? one : many}`; }
+
   function lawWords(summary) {
     if (!summary) return "does not exist for these parameters";
     const r = DATA.integration_regimes.find((q) => q.id === summary.regime);
     const counts = summary.slips_per_period + summary.sticks_per_period > 0
-      ? [`${summary.slips_per_period} slip(s) and ${summary.sticks_per_period} stick(s) per period`] : [];
+      ? [`${plural(summary.slips_per_period, "slip", "slips")} and ${plural(summary.sticks_per_period, "stick", "sticks")} per period`] : [];
     if (summary.immediate_slip) counts.push("slips at t = 0");
     const speed = summary.v_avg === null ? "no steady mean speed" : `mean speed ${fmt(summary.v_avg * 1e3, 4)} mm/s`;
     return `${r ? r.words : summary.regime}${counts.length ? ` (${counts.join("; ")})` : ""}; ${speed}`;
@@ -760,6 +772,18 @@
     canvas.setAttribute("aria-label", `Regime map of the ${law} over ${xp.symbol} and ${yp.symbol}`);
   }
 
+  /** The map cell (i, j) of the current set, clamped to the map; its centre without a set. */
+  function currentCell() {
+    const { info, n } = map;
+    const values = view ? view.evaluation.params : null;
+    const cellOf = (axis) => {
+      const v = values ? values[axis.key] : NaN;
+      const k = Math.floor(((v - axis.range[0]) / (axis.range[1] - axis.range[0])) * n);
+      return Number.isFinite(k) ? Math.min(n - 1, Math.max(0, k)) : Math.floor(n / 2);
+    };
+    return [cellOf(info.x), cellOf(info.y)];
+  }
+
   /** Sets the map's two parameters to the centre of cell (i, j). */
   function pickCell(i, j) {
     if (!map) return;
@@ -767,7 +791,7 @@
     const at = (r, k) => r[0] + ((r[1] - r[0]) * (k + 0.5)) / n;
     for (const [axis, k] of [[info.x, i], [info.y, j]]) {
       const p = axisParam(axis.key);
-      current().values[axis.key] = round4(at(axis.range, k) * p.factor) / p.factor;
+      current().values[axis.key] = toSi(round4(at(axis.range, k) * p.factor), p);
       syncParam(p);
     }
     update();
@@ -789,7 +813,9 @@
     canvas.addEventListener("keydown", (ev) => {
       if (!map) return;
       const moves = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowDown: [0, -1] };
-      if (!state.mapCursor) state.mapCursor = [Math.floor(map.n / 2), Math.floor(map.n / 2)];
+      // The keyboard cursor starts at the cell of the current set (the map's centre when the
+      // set lies outside the map).
+      if (!state.mapCursor) state.mapCursor = currentCell();
       if (moves[ev.key]) {
         const [di, dj] = moves[ev.key];
         const [i, j] = state.mapCursor;
@@ -815,6 +841,8 @@
     buildSwitches();
     setupPlayer();
     setupMap();
+    // A scene page links here as explorer.html#preset=SCENE (works from file://).
+    applyPreset(new URLSearchParams(window.location.hash.slice(1)).get("preset"));
     rebuild();
     probe.timings.firstRender = performance.now();
     $("status").textContent = "Ready: move a slider, pick a preset, or click the map.";

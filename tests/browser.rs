@@ -180,13 +180,17 @@ fn print_pages(pdfinfo: &Path, pdf: &Path) -> u32 {
         .unwrap_or(0)
 }
 
-/// axe-core in Chromium on every page of the default report, at desktop and phone width: no
-/// serious or critical violation (figures without a text alternative, missing landmarks,
-/// contrast, scrollable tables out of keyboard reach). Needs Node with axe-core and
-/// playwright-core in `STICKSLIP_NODE_MODULES` (default `target/axe/node_modules`, where
-/// `.ci/run` installs them).
+/// axe-core in Chromium on every page the tool writes (report scenes, index, lecture notes,
+/// explorer, handouts and worksheets with their keys in English and Italian, the bench page,
+/// the `check` page), at a 1280-px and a 390-px window: no serious or critical violation (figures
+/// without a text alternative, missing landmarks, contrast, scrollable boxes out of keyboard
+/// reach); nothing reaches past the window's right edge outside a scrolling box (the boxes that
+/// scroll sideways are printed, not asserted: at 1280 px the verification tables of the scenes
+/// still scroll by up to 40 %, issue 28). Needs Node
+/// with axe-core and playwright-core in `STICKSLIP_NODE_MODULES` (default
+/// `target/axe/node_modules`, where `.ci/run` installs them).
 #[test]
-fn every_page_has_no_serious_accessibility_violation() {
+fn every_page_has_no_serious_accessibility_violation_and_fits_its_window() {
     let modules = std::env::var("STICKSLIP_NODE_MODULES").map_or_else(
         |_| Path::new(env!("CARGO_MANIFEST_DIR")).join("target/axe/node_modules"),
         PathBuf::from,
@@ -215,14 +219,9 @@ fn every_page_has_no_serious_accessibility_violation() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let files = render(&builtin_scenes().unwrap(), &[Format::Html]).unwrap();
-    write_all(dir.path(), &files).unwrap();
-    let pages: Vec<String> = files
-        .iter()
-        .filter(|f| f.path.extension().is_some_and(|e| e == "html"))
-        .map(|f| dir.path().join(&f.path).display().to_string())
-        .collect();
+    let pages = common::write_every_page(dir.path());
     let out = Command::new(node)
+        .current_dir(dir.path())
         .arg(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/axe/run.mjs"))
         .arg(&browser)
         .arg(&modules)
@@ -237,9 +236,22 @@ fn every_page_has_no_serious_accessibility_violation() {
         .collect();
     // Every page at both widths.
     assert_eq!(results.len(), 2 * pages.len(), "{stdout}");
+    let failures: Vec<String> = results
+        .iter()
+        .filter(|r| {
+            r["violations"] != serde_json::json!([]) || r["outside"] != serde_json::json!([])
+        })
+        .map(|r| r.to_string())
+        .collect();
     for r in &results {
-        assert_eq!(r["violations"], serde_json::json!([]), "{r}");
+        if r["width"] == 1280 && r["scrolled"] != serde_json::json!([]) {
+            eprintln!(
+                "scrolls sideways at 1280 px: {} {}",
+                r["page"], r["scrolled"]
+            );
+        }
     }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]

@@ -162,6 +162,7 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
         "dragChanged",
         "mapChanged",
         "mapKeyboard",
+        "mapCursorAtSet",
         "woodChanged",
     ] {
         assert_eq!(checks[key], true, "{key}: {checks}");
@@ -186,6 +187,7 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
         "{steps}"
     );
     assert_eq!(checks["phoneOverflow"], 0, "{checks}");
+    assert_eq!(checks["phonePlotWithSlider"], true, "{checks}");
 
     // Every set the page visited: the same bytes as the command line.
     let visited = r["visited"].as_array().unwrap();

@@ -364,3 +364,52 @@ fn no_page_cites_a_section_readers_do_not_have() {
         assert!(!text.contains("physics.md §"), "{}", f.path.display());
     }
 }
+
+/// Every formula of every HTML page the tool writes (report, handouts, worksheets and keys in
+/// both languages, bench, check) is MathML Core that parses as XML (so `<` and `&` are
+/// escaped), writes μ as U+03BC (never U+00B5 MICRO SIGN, which renders upright and reads
+/// "micro"), marks the dots and bars over a symbol as accents, and holds no `merror`; no formula
+/// fell back to its LaTeX source.
+#[test]
+fn every_formula_the_tool_writes_is_valid_mathml_core() {
+    const ACCENTS: [&str; 7] = ["˙", "¨", "¯", "‾", "^", "ˆ", "~"];
+    let dir = tempfile::tempdir().unwrap();
+    let mut formulas = std::collections::BTreeSet::new();
+    for page in common::write_every_page(dir.path()) {
+        let html = std::fs::read_to_string(&page).unwrap();
+        let name = page.strip_prefix(dir.path()).unwrap().display().to_string();
+        assert!(
+            !html.contains("<code>\\"),
+            "{name}: a formula left as LaTeX"
+        );
+        let mut rest = html.as_str();
+        while let Some(start) = rest.find("<math") {
+            let end = rest[start..].find("</math>").expect("closed") + start + "</math>".len();
+            formulas.insert(rest[start..end].to_string());
+            rest = &rest[end..];
+        }
+    }
+    for math in &formulas {
+        let doc =
+            roxmltree::Document::parse(math).unwrap_or_else(|e| panic!("not XML ({e}): {math}"));
+        assert!(!math.contains('\u{b5}'), "micro sign: {math}");
+        for node in doc.descendants().filter(|n| n.is_element()) {
+            assert_ne!(node.tag_name().name(), "merror", "{math}");
+            if node.text().is_some_and(|t| ACCENTS.contains(&t)) {
+                let parent = node.parent_element().unwrap();
+                assert!(
+                    node.tag_name().name() == "mo"
+                        && parent.tag_name().name() == "mover"
+                        && parent.attribute("accent") == Some("true"),
+                    "accent not marked: {math}"
+                );
+            }
+        }
+    }
+    // The pages hold hundreds of distinct formulas (374 in November 2026).
+    assert!(
+        formulas.len() > 300,
+        "only {} formulas found",
+        formulas.len()
+    );
+}

@@ -41,7 +41,9 @@ fn the_harmonic_double_slip_stick_ends_near_the_critical_z0() {
     let stdout = String::from_utf8(assert.get_output().stdout.clone()).unwrap();
     assert_eq!(stdout.lines().count(), 1, "{stdout}");
     assert!(
-        stdout.contains("50 points") && stdout.contains("double_slip_stick -> double_slip_no_halt"),
+        stdout.contains("50 points") && stdout.contains(
+                "two slips and two sticks per period -> one slip per period that slows down without stopping in between"
+            ),
         "{stdout}"
     );
     assert!(

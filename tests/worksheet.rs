@@ -253,6 +253,73 @@ fn other_regimes_are_drawn_and_confirmed() {
     }
 }
 
+/// `--regime mixed` draws the class across every regime the model allows: each of the r regimes
+/// at least ⌊n/r⌋ times, every student's answers confirmed in its own regime, the same
+/// questions on every sheet, the regime question's answer differing across the class.
+#[test]
+fn a_mixed_class_is_drawn_across_every_regime_with_a_minimum_each() {
+    for (model, regimes) in [
+        (
+            "pulled-mass",
+            &["slip_stick", "slip_stick_late", "continuous_slip"][..],
+        ),
+        (
+            "woodpecker",
+            &[
+                "double_slip_stick",
+                "double_slip_no_halt",
+                "single_slip_stick",
+                "continuous_or_multiperiod",
+            ][..],
+        ),
+    ] {
+        let tmp = tempfile::tempdir().unwrap();
+        let n = 7;
+        worksheet(
+            tmp.path(),
+            &[
+                "--model",
+                model,
+                "--students",
+                "7",
+                "--regime",
+                "mixed",
+                "--format",
+                "md",
+            ],
+        );
+        let key = read_json(tmp.path());
+        let students = key["students"].as_array().unwrap();
+        assert_eq!(students.len(), n);
+        for r in regimes {
+            let count = students.iter().filter(|s| s["regime"] == *r).count();
+            assert!(count >= n / regimes.len(), "{model}: {count} of {n} in {r}");
+        }
+        let asked = |s: &Value| -> Vec<String> {
+            s["answers"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|a| a["key"].as_str().unwrap().to_string())
+                .collect()
+        };
+        assert!(
+            students.iter().all(|s| asked(s) == asked(&students[0])),
+            "{model}"
+        );
+        let answers: std::collections::BTreeSet<String> = students
+            .iter()
+            .flat_map(|s| s["answers"].as_array().unwrap().iter())
+            .filter(|a| a["key"] == "regime")
+            .map(|a| a["value"].to_string())
+            .collect();
+        assert!(
+            answers.len() > 1,
+            "{model}: one regime answer for the class: {answers:?}"
+        );
+    }
+}
+
 /// Significant figures of a decimal as written by serde_json (shortest round trip).
 fn significant_figures(x: f64) -> usize {
     let sci = format!("{:e}", x.abs());

@@ -75,6 +75,8 @@ pub(super) fn figure(id: &str, caption: String, spec: &LineChart) -> Result<Figu
         id: id.to_string(),
         reason: e.to_string(),
     })?;
+    // The caption is the figure's text alternative (axe: svg-img-alt).
+    let svg = crate::report::figures::style::with_text(&svg, &caption, &caption);
     Ok(FigureCtx {
         id: id.to_string(),
         caption,

@@ -79,7 +79,7 @@ fn renders(tex: &str) {
         m.starts_with("<math") && !m.contains("merror"),
         "{tex}\n{m}"
     );
-    // pulldown-latex escapes the entity of `\ ` twice: no such spaces.
+    // No entity escaped twice (`&amp;nbsp;` for `\ `).
     assert!(!m.contains("&amp;"), "{tex}\n{m}");
 }
 

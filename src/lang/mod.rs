@@ -81,7 +81,7 @@ impl Lang {
     /// MathML of `tex` with this language's decimal sign: `0{,}25` comes out of the converter
     /// as two numbers around a comma operator, joined here into one number again.
     pub fn mathml(self, tex: &str) -> String {
-        crate::report::math::mathml(&self.tex(tex)).replace("</mn><mrow><mo>,</mo></mrow><mn>", ",")
+        crate::report::math::mathml(&self.tex(tex)).replace("</mn><mo rspace=\"0\">,</mo><mn>", ",")
     }
 
     /// An SVG's numbers with this language's decimal sign, in text content only (never in

@@ -23,6 +23,16 @@ pub fn sig(x: Option<f64>, digits: usize) -> String {
     }
 }
 
+/// `x` to at most `digits` significant digits without the zeros after the last significant one
+/// (`0.5886`, `1.5e-5`, never `0.5886000000`): the terminal's numbers; "—" for a missing value.
+pub fn short(x: Option<f64>, digits: usize) -> String {
+    let text = sig(x, digits);
+    match text.split_once('e') {
+        Some((mantissa, exponent)) => format!("{}e{exponent}", trim_zeros(mantissa)),
+        None => trim_zeros(&text).to_string(),
+    }
+}
+
 /// A relative error in scientific notation with two digits ("—" when missing).
 pub fn rel(x: Option<f64>) -> String {
     match x {
@@ -40,6 +50,16 @@ pub fn people(x: Option<f64>, digits: usize) -> String {
     match text.split_once('e') {
         Some((mantissa, exponent)) => times_ten(trim_zeros(mantissa), exponent),
         None if text.contains('.') => trim_zeros(&text).to_string(),
+        None => text,
+    }
+}
+
+/// `x` to `digits` significant figures, zeros kept (`2.610`), plain for 1e-3 ≤ |x| < 1e6, else
+/// `9.526 × 10⁻⁴` (never `9.526e-4`): an answer stated to its figures; "—" for a missing value.
+pub fn figures(x: Option<f64>, digits: usize) -> String {
+    let text = sig(x, digits);
+    match text.split_once('e') {
+        Some((mantissa, exponent)) => times_ten(mantissa, exponent),
         None => text,
     }
 }

@@ -3,7 +3,8 @@
 
 use std::fmt::Write;
 
-use super::format::{rel, sig};
+use super::format::{rel, short};
+use crate::report::context::regime_words;
 use crate::results::quantity::Registry;
 use crate::results::{Applicability, Check, CheckValue, Summary};
 
@@ -23,7 +24,7 @@ pub(crate) fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -
             out,
             "  {:<14} {:>18}  {:<6} {:<11} {}",
             q.symbol,
-            sig(v, DIGITS),
+            short(v, DIGITS),
             q.unit,
             q.equation,
             q.tag
@@ -65,16 +66,37 @@ pub(crate) fn checks_table(out: &mut String, checks: &[Check]) {
             .quantity
             .quantity()
             .map_or(c.quantity.id(), |q| q.symbol.into());
-        let _ = writeln!(
-            out,
-            "  {:<24} {:<18} {:>18} {:>18} {:>9}  {}",
-            symbol,
-            c.equation,
-            value(&c.closed_form),
-            value(&c.numeric),
-            rel(c.rel_error),
-            c.verdict()
-        );
+        if let (CheckValue::Text(closed), CheckValue::Text(numeric)) = (&c.closed_form, &c.numeric)
+        {
+            // Words do not fit the number columns: one line, both sides named when they differ.
+            let words = if closed == numeric {
+                format!("{} (both)", regime_words(closed))
+            } else {
+                format!(
+                    "closed form: {}; integration: {}",
+                    regime_words(closed),
+                    regime_words(numeric)
+                )
+            };
+            let _ = writeln!(
+                out,
+                "  {:<24} {:<18} {words}  {}",
+                symbol,
+                c.equation,
+                c.verdict()
+            );
+        } else {
+            let _ = writeln!(
+                out,
+                "  {:<24} {:<18} {:>18} {:>18} {:>9}  {}",
+                symbol,
+                c.equation,
+                value(&c.closed_form),
+                value(&c.numeric),
+                rel(c.rel_error),
+                c.verdict()
+            );
+        }
         if let Some(note) = &c.note {
             let _ = writeln!(out, "  {:<24} ({note})", "");
         }
@@ -83,8 +105,8 @@ pub(crate) fn checks_table(out: &mut String, checks: &[Check]) {
 
 fn value(v: &CheckValue) -> String {
     match v {
-        CheckValue::Number(x) => sig(Some(*x), DIGITS),
-        CheckValue::Text(s) => s.clone(),
+        CheckValue::Number(x) => short(Some(*x), DIGITS),
+        CheckValue::Text(s) => regime_words(s).to_string(),
     }
 }
 
@@ -102,14 +124,21 @@ fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmo
     let row = |out: &mut String, name: &str, h: String, l: String| {
         let _ = writeln!(out, "  {name:<26} {h:>22} {l:>22}");
     };
-    row(out, "", "harmonic".into(), "linear".into());
-    row(
+    // The regimes in words, one line each (too long for the table's columns).
+    let _ = writeln!(
         out,
-        "regime",
-        harmonic.regime.id().into(),
-        linear.regime.id().into(),
+        "  regime, harmonic:   {}",
+        regime_words(harmonic.regime.id())
     );
-    let s = |x: Option<f64>| sig(x, DIGITS);
+    if !harmonic_only {
+        let _ = writeln!(
+            out,
+            "  regime, linear:     {}",
+            regime_words(linear.regime.id())
+        );
+    }
+    row(out, "", "harmonic".into(), "linear".into());
+    let s = |x: Option<f64>| short(x, DIGITS);
     row(
         out,
         "immediate slip",
@@ -158,12 +187,12 @@ fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmo
         let events: Vec<String> = law
             .steady_events
             .iter()
-            .map(|e| format!("{} at phase {}", e.kind, sig(Some(e.phase), 8)))
+            .map(|e| format!("{} at phase {}", e.kind, short(Some(e.phase), 8)))
             .chain(law.steady_speed_maxima.iter().map(|m| {
                 format!(
                     "v max {} m/s at phase {}",
-                    sig(Some(m.v), 8),
-                    sig(Some(m.phase), 8)
+                    short(Some(m.v), 8),
+                    short(Some(m.phase), 8)
                 )
             }))
             .collect();

@@ -322,10 +322,11 @@ pub(crate) fn blank(scene: &Scene, model: &str) -> SceneCtx {
 }
 
 pub(crate) fn integration_regime(law: &str, s: &Summary) -> RegimeRow {
+    let plural = |n: u32, one: &str, many: &str| format!("{n} {}", if n == 1 { one } else { many });
     let slips = format!(
-        "{} slip(s) and {} stick(s) in the last period, period multiplicity {}",
-        s.slips_per_period,
-        s.sticks_per_period,
+        "{} and {} in the last period, period multiplicity {}",
+        plural(s.slips_per_period, "slip", "slips"),
+        plural(s.sticks_per_period, "stick", "sticks"),
         s.period_multiplicity
             .map_or("—".to_string(), |n| n.to_string())
     );

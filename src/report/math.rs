@@ -1,17 +1,24 @@
-//! LaTeX to MathML for the HTML pages (pulldown-latex); the Markdown pages keep the LaTeX
-//! between `$…$`, which GitHub renders.
+//! LaTeX to MathML Core for the HTML pages (math-core); the Markdown pages keep the LaTeX
+//! between `$…$`, which GitHub renders. math-core writes μ as U+03BC (not the micro sign),
+//! escapes `<` and `&` in its tokens and marks `\dot`/`\ddot`/`\bar` as accents.
 
-use pulldown_latex::{push_mathml, Parser, RenderConfig, Storage};
+use std::sync::OnceLock;
+
+use math_core::{LatexToMathML, MathCoreConfig, MathDisplay};
+
+/// The converter, built once (its configuration holds no macros, so building cannot fail).
+fn converter() -> Option<&'static LatexToMathML> {
+    static CONVERTER: OnceLock<Option<LatexToMathML>> = OnceLock::new();
+    CONVERTER
+        .get_or_init(|| LatexToMathML::new(MathCoreConfig::default()).ok())
+        .as_ref()
+}
 
 /// MathML of an inline LaTeX formula; the escaped source in a `<code>` when it does not parse.
 pub fn mathml(latex: &str) -> String {
-    let storage = Storage::new();
-    let parser = Parser::new(latex, &storage);
-    let mut out = String::new();
-    match push_mathml(&mut out, parser, RenderConfig::default()) {
-        Ok(()) => out,
-        Err(_) => format!("<code>{}</code>", escape(latex)),
-    }
+    converter()
+        .and_then(|c| c.convert_with_local_state(latex, MathDisplay::Inline).ok())
+        .map_or_else(|| format!("<code>{}</code>", escape(latex)), |r| r.mathml)
 }
 
 /// Minimal HTML escaping for text placed in markup.

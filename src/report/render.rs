@@ -389,6 +389,9 @@ pub fn render_with(
             c.insert("prev", &i.checked_sub(1).map(|j| Link::of(&contexts[j])));
             c.insert("next", &contexts.get(i + 1).map(Link::of));
             c.insert("shared", &None::<Link>);
+            // The explorer beside the report has a preset for every built-in scene.
+            let explorer = material.iter().any(|m| m.html == super::explorer::FILE);
+            c.insert("explorer", &explorer.then_some(super::explorer::FILE));
             files.push(OutFile::new(
                 format!("{}.{ext}", ctx.id),
                 page(&format!("scene.{ext}"), &c)?,

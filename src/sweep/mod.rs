@@ -188,12 +188,32 @@ pub fn grid_value(from: f64, to: f64, i: u32, n: u32) -> f64 {
     if i + 1 == n {
         return to;
     }
-    let value = from + (to - from) * f64::from(i) / f64::from(n - 1);
+    if i == 0 {
+        return from;
+    }
+    let step = (to - from) / f64::from(n - 1);
+    let value = from + step * f64::from(i);
     if value.is_finite() {
-        return value;
+        return at_resolution(value, step.abs());
     }
     let t = f64::from(i) / f64::from(n - 1);
     from * (1.0 - t) + to * t
+}
+
+/// `value` rounded to a millionth of the grid's `step`, in decimal: the shortest digits that
+/// tell the point from its neighbours, without the float noise of `from + step × i`
+/// (0.0048, not 0.0048000000000000004). Unchanged when the step is not a positive finite number
+/// or too coarse for decimals.
+fn at_resolution(value: f64, step: f64) -> f64 {
+    if !(step.is_finite() && step > 0.0) {
+        return value;
+    }
+    let decimals = 6 - crate::fmath::log10(step).floor() as i32;
+    if !(0..=300).contains(&decimals) {
+        return value;
+    }
+    let decimals = decimals as usize;
+    format!("{value:.decimals$}").parse().unwrap_or(value)
 }
 
 /// Runs the sweep in parallel over the grid, ticking `progress` once per point.
@@ -266,5 +286,31 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
             closed_form: None,
         }),
         Err(e) => Err(e),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::grid_value;
+
+    #[test]
+    fn grid_points_read_as_short_decimals_at_the_grids_resolution() {
+        for n in [7_u32, 300, 1000] {
+            let (from, to) = (0.0027, 0.009);
+            let step = (to - from) / f64::from(n - 1);
+            let mut last = f64::NEG_INFINITY;
+            for i in 0..n {
+                let v = grid_value(from, to, i, n);
+                let exact = from + step * f64::from(i);
+                assert!((v - exact).abs() <= 1e-6 * step, "{n} {i}: {v} vs {exact}");
+                assert!(v > last, "{n} {i}: not increasing");
+                last = v;
+                // At most 6 digits beyond the step's first: no 17-digit float noise.
+                let digits = format!("{v}").trim_start_matches("0.").len();
+                assert!(digits <= 12, "{n} {i}: {v}");
+            }
+        }
+        assert_eq!(grid_value(0.0027, 0.009, 2, 7), 0.0048);
+        assert_eq!(grid_value(0.0027, 0.009, 3, 7), 0.00585);
     }
 }

@@ -8,6 +8,7 @@ use std::path::Path;
 use super::{LawPoint, Point, Sweep};
 use crate::error::{Error, Result};
 use crate::export::num;
+use crate::report::context::regime_words;
 use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::{Curve, LineChart, Panel, Stroke};
 use crate::report::OutFile;
@@ -159,7 +160,7 @@ pub fn summary_line(s: &Sweep, out: &Path) -> String {
     let seen = |regimes: Vec<(&str, usize)>| {
         regimes
             .iter()
-            .map(|(r, n)| format!("{r} ({n})"))
+            .map(|(r, n)| format!("{} ({n})", regime_words(r)))
             .collect::<Vec<_>>()
             .join(", ")
     };
@@ -176,8 +177,8 @@ pub fn summary_line(s: &Sweep, out: &Path) -> String {
         .map(|(r, p)| {
             format!(
                 "{} -> {} between {} = {} and {}{unit}",
-                r[0],
-                r[1],
+                regime_words(r[0]),
+                regime_words(r[1]),
                 s.param.name,
                 num(p[0].value),
                 num(p[1].value)

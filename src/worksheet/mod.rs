@@ -36,6 +36,10 @@ use crate::models::{Capability, Model};
 pub const MAX_ATTEMPTS: u32 = 20_000;
 /// Largest number of students (one sheet each).
 pub const MAX_STUDENTS: u32 = 500;
+/// `--regime mixed`: the class drawn across every regime of the model, at least ⌊n/r⌋ of its
+/// n students in each of the r regimes (the first n mod r regimes get one more), in a seeded
+/// shuffled order; the sheets ask the questions that every regime can answer.
+pub const MIXED: &str = "mixed";
 
 /// What the teacher asks for.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,7 +47,7 @@ pub struct Request {
     pub model: Model,
     pub students: u32,
     pub seed: u64,
-    /// A regime id of [`question::regimes`]; `None`: the model's standard regime.
+    /// A regime id of [`question::regimes`], or [`MIXED`]; `None`: the model's standard regime.
     pub regime: Option<String>,
     /// Question keys of [`question::catalogue`]; `None`: every question that can be answered
     /// in the regime.
@@ -77,6 +81,7 @@ pub fn resolve(req: &Request) -> Result<(Regime, Vec<&'static Question>)> {
     let regimes = question::regimes(req.model);
     let regime = match &req.regime {
         None => regimes[0],
+        Some(r) if r == MIXED => Regime::new(MIXED),
         Some(r) => regimes
             .iter()
             .copied()
@@ -90,15 +95,17 @@ pub fn resolve(req: &Request) -> Result<(Regime, Vec<&'static Question>)> {
                     regimes
                         .iter()
                         .map(|r| r.id())
+                        .chain([MIXED])
                         .collect::<Vec<_>>()
                         .join(", ")
                 ),
             })?,
     };
     let catalogue = question::catalogue(req.model);
+    // Mixed: the questions of every regime.
     let in_regime: Vec<&'static Question> = catalogue
         .iter()
-        .filter(|q| q.regimes.contains(&regime))
+        .filter(|q| q.regimes.contains(&regime) || regimes.iter().all(|r| q.regimes.contains(r)))
         .collect();
     let Some(keys) = &req.questions else {
         return Ok((regime, in_regime));
@@ -154,9 +161,15 @@ pub fn generate(req: &Request, progress: &ProgressBar) -> Result<Worksheets> {
     let (regime, questions) = resolve(req)?;
     let mut master = Draws::new(req.seed);
     let seeds: Vec<(u32, u64)> = (1..=req.students).map(|n| (n, master.word())).collect();
+    let per_student = if regime.id() == MIXED {
+        mixed(question::regimes(req.model), req.students, &mut master)
+    } else {
+        vec![regime; req.students as usize]
+    };
     let students = seeds
         .par_iter()
-        .map(|&(number, seed)| {
+        .zip(&per_student)
+        .map(|(&(number, seed), &regime)| {
             let s = student(req.model, regime, &questions, number, seed, MAX_ATTEMPTS);
             progress.inc(1);
             s
@@ -170,6 +183,17 @@ pub fn generate(req: &Request, progress: &ProgressBar) -> Result<Worksheets> {
         questions,
         students,
     })
+}
+
+/// The regimes of `n` students drawn across `regimes` ([`MIXED`]): each regime ⌊n/r⌋ times, the
+/// first n mod r once more, shuffled (Fisher–Yates) by `draws`.
+fn mixed(regimes: &[Regime], n: u32, draws: &mut Draws) -> Vec<Regime> {
+    let mut out: Vec<Regime> = regimes.iter().copied().cycle().take(n as usize).collect();
+    for i in (1..out.len()).rev() {
+        let j = (draws.word() % (i as u64 + 1)) as usize;
+        out.swap(i, j);
+    }
+    out
 }
 
 /// One student's case in `regime` whose every answer is confirmed, from at most `attempts`

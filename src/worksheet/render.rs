@@ -16,8 +16,9 @@ use crate::error::Result;
 use crate::lang::phrases::Translator;
 use crate::lang::{Catalogue, Lang};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
-use crate::output::format::{rel, sig};
+use crate::output::format::{figures, people, people_rel};
 use crate::report::context::regime_words;
+use crate::report::figures::style::with_text;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};
 use crate::report::{Format, OutFile};
@@ -300,13 +301,20 @@ fn sheet_ctx(s: &Student, words: &Words, reads_figure: bool) -> Result<SheetCtx>
             .as_ref()
             .map(|_| figure_file(s.number))
             .unwrap_or_default(),
-        figure_svg: figure.unwrap_or_default(),
+        figure_svg: figure
+            .map(|svg| {
+                let t = |key: &str| words.catalogue.text(&format!("sheet.{key}"), &[]);
+                Ok::<_, crate::error::Error>(with_text(&svg, &t("figure")?, &t("figure_caption")?))
+            })
+            .transpose()?
+            .unwrap_or_default(),
     })
 }
 
+/// A value to `digits` figures (`× 10ⁿ`, never e-notation) with its unit, or a regime in words.
 fn number(v: &Value, digits: usize, unit: &str, words: &Words) -> String {
     match v {
-        Value::Number(x) => words.number(&with_unit(sig(Some(*x), digits), unit)),
+        Value::Number(x) => words.number(&with_unit(figures(Some(*x), digits), unit)),
         Value::Text(t) => words.regime(t),
     }
 }
@@ -361,12 +369,17 @@ fn answer_ctx(
             }
             (value, _) => number(value, ANSWER_DIGITS, q.unit(), words),
         },
-        numeric: number(&a.numeric, NUMERIC_DIGITS, q.unit(), words),
+        numeric: match &a.numeric {
+            Value::Number(x) => {
+                words.number(&with_unit(people(Some(*x), NUMERIC_DIGITS), q.unit()))
+            }
+            other => number(other, NUMERIC_DIGITS, q.unit(), words),
+        },
         rel_error: a
             .rel_error
-            .map_or(String::new(), |e| words.number(&rel(Some(e)))),
+            .map_or(String::new(), |e| words.number(&people_rel(Some(e)))),
         tolerance: a.tolerance.map_or(String::new(), |t| {
-            words.number(&with_unit(sig(Some(t), 2), q.unit()))
+            words.number(&with_unit(figures(Some(t), 2), q.unit()))
         }),
     })
 }
@@ -378,7 +391,14 @@ fn key_ctx(s: &Student, words: &Words) -> Result<KeyCtx> {
         number: s.number,
         params: params_ctx(&s.case, words),
         figure_svg: match &s.key_figure {
-            Some(svg) => words.lang.svg_numbers(svg),
+            Some(svg) => {
+                let t = |key: &str| words.catalogue.text(&format!("sheet.{key}"), &[]);
+                with_text(
+                    &words.lang.svg_numbers(svg),
+                    &t("speed")?,
+                    &t("speed_caption")?,
+                )
+            }
             None => String::new(),
         },
         figure_file: s
@@ -511,7 +531,7 @@ mod tests {
                     m.starts_with("<math") && !m.contains("merror"),
                     "{tex}: {m}"
                 );
-                // pulldown-latex escapes the entity of `\ ` twice: no such spaces.
+                // No entity escaped twice (`&amp;nbsp;` for `\ `).
                 assert!(!m.contains("&amp;"), "{tex}: {m}");
             }
         }

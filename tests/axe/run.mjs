@@ -1,6 +1,10 @@
-// Runs axe-core on HTML pages in headless Chromium (playwright-core, Debian's chromium) and
-// prints one JSON line per page: {"page", "violations": [{"id", "impact", "nodes"}]}, only the
-// serious and critical ones. Usage: node run.mjs CHROMIUM NODE_MODULES PAGE...
+// Runs axe-core on HTML pages in headless Chromium (playwright-core, Debian's chromium) at a
+// 1280-px and a 390-px window and prints one JSON line per page and width: {"page", "width",
+// "violations": [{"id", "impact", "nodes"}], "outside": [...], "scrolled": [...]}: only the
+// serious and critical violations; the elements that reach past the window's right edge with no
+// scrolling box around them (`outside`), and the boxes that scroll sideways because their content
+// is wider (`scrolled`, e.g. a table wider than its column).
+// Usage: node run.mjs CHROMIUM NODE_MODULES PAGE...
 // Called by tests/browser.rs; .ci/run installs axe-core and playwright-core with npm.
 import { createRequire } from "node:module";
 import path from "node:path";
@@ -12,7 +16,7 @@ const axeSource = require("fs").readFileSync(require.resolve("axe-core/axe.min.j
 
 const browser = await launcher.launch({ executablePath: chromium, args: ["--no-sandbox"] });
 try {
-  for (const [width, height] of [[1200, 1600], [390, 844]]) {
+  for (const [width, height] of [[1280, 1000], [390, 844]]) {
     const page = await browser.newPage({ viewport: { width, height } });
     for (const file of pages) {
       await page.goto("file://" + path.resolve(file));
@@ -21,7 +25,30 @@ try {
       const violations = result.violations
         .filter((v) => v.impact === "serious" || v.impact === "critical")
         .map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.length }));
-      console.log(JSON.stringify({ page: path.basename(file), width, violations }));
+      const { outside, scrolled } = await page.evaluate(() => {
+        const vw = document.documentElement.clientWidth;
+        const name = (el) => el.tagName.toLowerCase() + (el.id ? "#" + el.id : "") +
+          (el.className && typeof el.className === "string" ? "." + el.className.trim().split(/\s+/).join(".") : "");
+        const clips = (el) => ["auto", "scroll", "hidden", "clip"].includes(getComputedStyle(el).overflowX);
+        const outside = [];
+        const scrolled = [];
+        for (const el of document.body.querySelectorAll("*")) {
+          const style = getComputedStyle(el);
+          if (style.display === "none" || style.visibility === "hidden") continue;
+          if (["auto", "scroll"].includes(style.overflowX) && el.scrollWidth > el.clientWidth + 1) {
+            scrolled.push(`${name(el)} ${el.scrollWidth} > ${el.clientWidth}`);
+          }
+          const right = el.getBoundingClientRect().right;
+          if (right > vw + 1) {
+            let a = el.parentElement;
+            while (a && a !== document.body && !clips(a)) a = a.parentElement;
+            if (!a || a === document.body) outside.push(`${name(el)} right ${Math.round(right)} > ${vw}`);
+          }
+        }
+        return { outside: outside.slice(0, 5), scrolled: scrolled.slice(0, 5) };
+      });
+      const where = path.relative(process.cwd(), file);
+      console.log(JSON.stringify({ page: where, width, violations, outside, scrolled }));
     }
     await page.close();
   }

@@ -117,3 +117,70 @@ pub fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<String>>) {
         .collect();
     (header, rows)
 }
+
+/// Every kind of HTML page the tool writes, written by the binary into `dir`: the report
+/// (scenes, index, lecture notes, explorer, handouts and worksheets with their answer keys in
+/// English), the Italian worksheets and keys, a quick bench page and a `check` page. Returns the
+/// pages' paths, sorted.
+pub fn write_every_page(dir: &Path) -> Vec<PathBuf> {
+    let runs: [&[&str]; 5] = [
+        &["report", "--format", "html"],
+        &[
+            "worksheet",
+            "--model",
+            "pulled-mass",
+            "--students",
+            "2",
+            "--lang",
+            "it",
+            "--format",
+            "html",
+        ],
+        &[
+            "worksheet",
+            "--model",
+            "woodpecker",
+            "--students",
+            "2",
+            "--lang",
+            "it",
+            "--format",
+            "html",
+        ],
+        &["bench", "--quick"],
+        &[
+            "check",
+            "pulled-mass",
+            "v_avg = g*T*phi^3*Gamma",
+            "--samples",
+            "20",
+        ],
+    ];
+    for (i, args) in runs.iter().enumerate() {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_stickslip"))
+            .args(*args)
+            .arg("--out")
+            .arg(dir.join(format!("run{i}")))
+            .output()
+            .unwrap();
+        // `check` exits 3 when the formula disagrees somewhere: still a page.
+        assert!(
+            matches!(out.status.code(), Some(0 | 3)),
+            "{args:?}: {out:?}"
+        );
+    }
+    let mut pages = Vec::new();
+    let mut stack = vec![dir.to_path_buf()];
+    while let Some(d) = stack.pop() {
+        for entry in std::fs::read_dir(&d).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if path.extension().is_some_and(|e| e == "html") {
+                pages.push(path);
+            }
+        }
+    }
+    pages.sort();
+    pages
+}

@@ -87,6 +87,15 @@ try {
   await page.keyboard.press("Enter");
   const mapKeyed = await visit("pulled mass, map by keyboard");
   out.checks.mapKeyboard = mapKeyed.evaluation !== clicked.evaluation;
+  // The keyboard cursor starts at the current set, not at the map's centre: after the
+  // defaults, Enter alone moves the set only to the centre of its own cell.
+  await page.click("#reset");
+  const reset = await visit("pulled mass, defaults again");
+  await page.focus("#map");
+  await page.keyboard.press("Enter");
+  const entered = await visit("pulled mass, map Enter at once");
+  const near = (k) => Math.abs(entered.request.params[k] - reset.request.params[k]) <= 0.05 * Math.abs(reset.request.params[k]);
+  out.checks.mapCursorAtSet = near("mu_s") && near("mu_d");
 
   // An invalid value typed in: the one-line error, no console error.
   await page.fill("#n-mu_d", "5");
@@ -145,6 +154,14 @@ try {
       .filter((v) => v.impact === "serious" || v.impact === "critical")
       .map((v) => ({ id: v.id, impact: v.impact, width, colorScheme, nodes: v.nodes.map((n) => n.target.join(" ")).slice(0, 3) })));
     if (width < 500) out.checks.phoneOverflow = await page.evaluate(() => document.documentElement.scrollWidth - window.innerWidth);
+    // On a phone a plot stays in view while the last slider is in view (and moved).
+    if (width < 500) out.checks.phonePlotWithSlider = await page.evaluate(() => {
+      const slider = [...document.querySelectorAll("#params input[type=range]")].pop();
+      slider.scrollIntoView({ block: "end" });
+      const inView = (r) => r.top >= -1 && r.bottom <= window.innerHeight + 1 && r.height > 0;
+      return inView(slider.getBoundingClientRect()) && inView(document.getElementById("plot-x").getBoundingClientRect());
+    });
+    if (width < 500 && shots) await page.screenshot({ path: path.join(shots, `explorer-390-${colorScheme}.png`) });
   }
 } finally {
   await browser.close();

@@ -9,7 +9,7 @@ use super::results::{self as pulled_mass, Evaluation};
 use super::{quantity as pm, PulledMassParams};
 use crate::error::Result;
 use crate::models::param::num as pnum;
-use crate::output::format::sig;
+use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
@@ -73,10 +73,10 @@ pub(crate) fn text(e: &Evaluation) -> String {
     let _ = writeln!(
         out,
         "derived:    W = m g = {} N, omega = {} rad/s, T = {} s, phi = F/W = {}",
-        sig(Some(p.weight), TEXT_DIGITS),
-        sig(Some(p.omega), TEXT_DIGITS),
-        sig(Some(p.period), TEXT_DIGITS),
-        sig(Some(p.phi), TEXT_DIGITS)
+        short(Some(p.weight), TEXT_DIGITS),
+        short(Some(p.omega), TEXT_DIGITS),
+        short(Some(p.period), TEXT_DIGITS),
+        short(Some(p.phi), TEXT_DIGITS)
     );
     let _ = writeln!(
         out,
@@ -95,10 +95,13 @@ pub(crate) fn text(e: &Evaluation) -> String {
 /// The inequality of §1.5 that decides the regime, with its numbers.
 fn regime_reason(e: &Evaluation) -> String {
     let c = &e.closed_form;
-    let (phi, two_mu_s) = (sig(Some(c.phi), 6), sig(Some(2.0 * e.params.input.mu_s), 6));
+    let (phi, two_mu_s) = (
+        short(Some(c.phi), 6),
+        short(Some(2.0 * e.params.input.mu_s), 6),
+    );
     let (stick, cont) = (
-        sig(Some(c.phi_stick_max), 6),
-        sig(Some(c.phi_continuous), 6),
+        short(Some(c.phi_stick_max), 6),
+        short(Some(c.phi_continuous), 6),
     );
     match c.regime {
         Regime::ImmediateContinuousSlip => format!("phi = {phi} > 2 mu_s = {two_mu_s}"),

@@ -934,11 +934,21 @@ fn map_cells(
         .flatten()
         .for_each(|&i| present[usize::from(i)] = true);
     let mut remap = [0u8; REGIMES.len()];
-    let mut categories = Vec::new();
+    let mut categories: Vec<(String, usize)> = Vec::new();
     for (i, regime) in REGIMES.iter().enumerate() {
         if present[i] {
-            remap[i] = categories.len() as u8;
-            categories.push((regime.1.to_string(), regime.2));
+            // Two regimes with one fill share one legend row ("A or B"): a swatch names one
+            // thing.
+            match categories.iter().position(|c| c.1 == regime.2) {
+                Some(k) => {
+                    remap[i] = k as u8;
+                    categories[k].0 = format!("{} or {}", categories[k].0, regime.1);
+                }
+                None => {
+                    remap[i] = categories.len() as u8;
+                    categories.push((regime.1.to_string(), regime.2));
+                }
+            }
         }
     }
     let cells = raw
@@ -998,9 +1008,13 @@ fn map_curves(p: &WoodpeckerParams, x: (f64, f64), y: (f64, f64)) -> Vec<Curve> 
     type Of = fn(&WoodpeckerClosedForm) -> Option<f64>;
     let boundaries: [(&str, (usize, Stroke), Of); 4] = [
         ("μd,MIN(I) (51)", (0, Stroke::Solid), |c| c.mu_d_min_1),
-        ("μd,HALT(I) [D]", (0, Stroke::Dashed), |c| c.mu_d_halt_1),
+        ("μd,HALT(I) (derived)", (0, Stroke::Dashed), |c| {
+            c.mu_d_halt_1
+        }),
         ("μd,MIN(II) (65)", (7, Stroke::DashDot), |c| c.mu_d_min_2),
-        ("μd,HALT(II) [D]", (7, Stroke::Dotted), |c| c.mu_d_halt_2),
+        ("μd,HALT(II) (derived)", (7, Stroke::Dotted), |c| {
+            c.mu_d_halt_2
+        }),
     ];
     let mut curves: Vec<Curve> = boundaries
         .iter()
@@ -1354,9 +1368,9 @@ mod tests {
             .contains("exact integration of the linear law"));
         for l in [
             "μd,MIN(I) (51)",
-            "μd,HALT(I) [D]",
+            "μd,HALT(I) (derived)",
             "μd,MIN(II) (65)",
-            "μd,HALT(II) [D]",
+            "μd,HALT(II) (derived)",
         ] {
             assert!(labels.contains(&l), "{l}");
         }

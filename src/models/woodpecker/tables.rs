@@ -8,7 +8,7 @@ use super::results::{self as woodpecker};
 use super::{quantity as wp, WoodpeckerParams};
 use crate::error::Result;
 use crate::models::param::num as pnum;
-use crate::output::format::sig;
+use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
@@ -117,7 +117,7 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     let _ = writeln!(
         out,
         "options:    lambda = {} ({}), omega = {}, counterpart = {}",
-        sig(Some(p.lambda), TEXT_DIGITS),
+        short(Some(p.lambda), TEXT_DIGITS),
         if i.lever.is_some() { "given" } else { "l/h" },
         i.omega.id(),
         i.counterpart.id()
@@ -125,11 +125,11 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     let _ = writeln!(
         out,
         "derived:    W_S = m_S g = {} N, omega = {} rad/s, T = {} s, zeta0 = {} m, delta0 = {} m",
-        sig(Some(p.sleeve_weight), TEXT_DIGITS),
-        sig(Some(p.omega), TEXT_DIGITS),
-        sig(Some(p.period), TEXT_DIGITS),
-        sig(p.zeta0, TEXT_DIGITS),
-        sig(p.delta0, TEXT_DIGITS)
+        short(Some(p.sleeve_weight), TEXT_DIGITS),
+        short(Some(p.omega), TEXT_DIGITS),
+        short(Some(p.period), TEXT_DIGITS),
+        short(p.zeta0, TEXT_DIGITS),
+        short(p.delta0, TEXT_DIGITS)
     );
     let _ = writeln!(
         out,

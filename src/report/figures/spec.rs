@@ -10,6 +10,9 @@ pub enum Stroke {
     DashDot,
     /// Each point as a small open circle, not joined: measured data.
     Points,
+    /// The points as one filled outline (a marker such as the scene's diamond on a map); its
+    /// legend row shows the same shape.
+    Marker,
 }
 
 /// One curve: (x, y) points in plot units, a legend label, a palette index and a stroke.
@@ -48,7 +51,7 @@ impl Curve {
                 (cx - dx, cy),
             ],
             color,
-            stroke: Stroke::Solid,
+            stroke: Stroke::Marker,
         })
     }
 }

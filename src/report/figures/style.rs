@@ -6,7 +6,7 @@
 //! system font is read and the SVG bytes are the same on every machine.
 
 use plotters::coord::Shift;
-use plotters::element::{Circle, PathElement, Rectangle, Text};
+use plotters::element::{Circle, PathElement, Polygon, Rectangle, Text};
 use plotters::prelude::{DrawingArea, SVGBackend};
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 use plotters::style::{Color, IntoFont, RGBColor, ShapeStyle, TextStyle};
@@ -184,7 +184,7 @@ pub fn fill_color(i: usize) -> RGBColor {
 /// Patterns are tuned at width 2 and scale with the width so dots stay round-ish.
 pub fn dash_pattern(stroke: Stroke, width: u32) -> Vec<f64> {
     let base: &[f64] = match stroke {
-        Stroke::Solid | Stroke::Points => &[],
+        Stroke::Solid | Stroke::Points | Stroke::Marker => &[],
         Stroke::Dashed => &[10.0, 5.0],
         Stroke::Dotted => &[2.0, 4.0],
         Stroke::DashDot => &[11.0, 4.0, 2.0, 4.0],
@@ -268,7 +268,7 @@ pub fn dash_runs(points: &[(i32, i32)], pattern: &[f64]) -> Vec<Vec<(i32, i32)>>
             done += left;
             let t = done / len;
             let p = to_px((a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t));
-            if piece % 2 == 0 {
+            if piece.is_multiple_of(2) {
                 push_distinct(&mut current, p);
                 if current.len() > 1 {
                     runs.push(std::mem::take(&mut current));
@@ -281,11 +281,11 @@ pub fn dash_runs(points: &[(i32, i32)], pattern: &[f64]) -> Vec<Vec<(i32, i32)>>
             left = pattern[piece];
         }
         left -= len - done;
-        if piece % 2 == 0 {
+        if piece.is_multiple_of(2) {
             push_distinct(&mut current, w[1]);
         }
     }
-    if piece % 2 == 0 && current.len() > 1 {
+    if piece.is_multiple_of(2) && current.len() > 1 {
         runs.push(current);
     }
     runs
@@ -331,6 +331,10 @@ pub fn draw_curve(
                 .map_err(draw_err)?;
         }
         return Ok(());
+    }
+    if stroke == Stroke::Marker {
+        root.draw(&Polygon::new(points.to_vec(), color.filled()))
+            .map_err(draw_err)?;
     }
     draw_stroked(root, points, color, width, &dash_pattern(stroke, width))
 }
@@ -488,8 +492,17 @@ fn draw_legend_column(
                 stroke,
                 width,
             } => {
+                let (mx, r) = (x0 + LEGEND_SAMPLE / 2, LEGEND_SWATCH / 2 + 1);
                 let sample = if stroke == Stroke::Points {
-                    vec![(x0 + LEGEND_SAMPLE / 2, cy)]
+                    vec![(mx, cy)]
+                } else if stroke == Stroke::Marker {
+                    vec![
+                        (mx - r, cy),
+                        (mx, cy - r),
+                        (mx + r, cy),
+                        (mx, cy + r),
+                        (mx - r, cy),
+                    ]
                 } else {
                     vec![(x0, cy), (x0 + LEGEND_SAMPLE, cy)]
                 };

@@ -446,7 +446,7 @@ const BUILTINS: &[Builtin] = &[
     builtin(
         "fig16-no-intermediate-halt",
         wood(
-            "Fig. 16: no intermediate halt (z0 = 7.1 mm)",
+            "Fig. 16: no intermediate halt under the harmonic law (z0 = 7.1 mm)",
             "Regime boundaries are sharp: 0.1 mm of spring set-up changes the motion.",
         ),
         FIG16,
