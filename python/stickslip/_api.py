@@ -12,6 +12,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import os
 import tempfile
 from dataclasses import dataclass, field
@@ -429,16 +430,19 @@ class _folder:
 
 
 def _columns(text: str) -> Series:
-    """A CSV text as columns: float arrays where every cell reads as a number, else strings."""
+    """A CSV text as columns: float arrays where every cell is a number or blank (a quantity
+    that does not exist there, e.g. v̄ in continuous slip: NaN), else lists of strings."""
     rows = list(csv.reader(io.StringIO(text)))
     header, body = rows[0], rows[1:]
     columns: dict[str, Any] = {}
     for i, name in enumerate(header):
         cells = [r[i] for r in body]
         try:
-            columns[name] = np.array([float(c) for c in cells], dtype=np.float64)
+            numbers = [float(c) if c else math.nan for c in cells]
         except ValueError:
             columns[name] = cells
+        else:
+            columns[name] = np.array(numbers, dtype=np.float64)
     return Series(columns)
 
 
