@@ -104,6 +104,10 @@ fn eval(args: &ModelArgs, out: &mut dyn Write) -> Result<()> {
     if args.common.csv.is_none() && args.common.csv_dialect.is_some() {
         anyhow::bail!("--csv-dialect applies to the files of --csv DIR: give --csv too");
     }
+    if args.common.csv.as_deref() == Some(std::path::Path::new(crate::params::STDIN)) {
+        // Four files (time series and events of both laws) do not fit one stream.
+        anyhow::bail!("--csv takes a folder for its four files, not - (standard output)");
+    }
     fn show<M: Present>(p: &M, periods: u32, args: &ModelArgs) -> Result<String> {
         let evaluation = match &args.common.csv {
             None => p.evaluate(periods)?,
@@ -161,6 +165,10 @@ fn fit(args: &FitArgs, out: &mut dyn Write) -> Result<()> {
     let common = &args.model.args.common;
     reject_flag("fit", "--periods", common.periods.is_some())?;
     reject_flag("fit", "--csv", common.csv.is_some())?;
+    one_stdin(&[
+        ("FILE", Some(&args.file)),
+        ("--scenario", common.scenario.as_deref()),
+    ])?;
     let Model::Woodpecker(base) = model_params(&args.model.args)?.0 else {
         unreachable!("fit takes the woodpecker's flags")
     };
@@ -383,6 +391,10 @@ fn check(model: &ModelCommand<CheckArgs>, out: &mut dyn Write) -> Result<()> {
     reject_flag("check", "--csv", common.csv.is_some())?;
     reject_flag("check", "--csv-dialect", common.csv_dialect.is_some())?;
     reject_flag("check", "--periods", common.periods.is_some())?;
+    one_stdin(&[
+        ("--formulas", model.extra.formulas.as_deref()),
+        ("--scenario", common.scenario.as_deref()),
+    ])?;
     let (case, _) = model_params(&model.args)?;
     let args = &model.extra;
     if args.symbols {
@@ -503,6 +515,23 @@ fn same_file(a: &std::fs::Metadata, b: &std::fs::Metadata) -> bool {
 #[cfg(not(unix))]
 fn same_file(_a: &std::fs::Metadata, _b: &std::fs::Metadata) -> bool {
     false
+}
+
+/// At most one input may be `-` (standard input is read once).
+fn one_stdin(inputs: &[(&str, Option<&std::path::Path>)]) -> Result<()> {
+    let stdin = std::path::Path::new(crate::params::STDIN);
+    let named: Vec<&str> = inputs
+        .iter()
+        .filter(|(_, p)| *p == Some(stdin))
+        .map(|(flag, _)| *flag)
+        .collect();
+    if named.len() > 1 {
+        anyhow::bail!(
+            "{}: only one of them can be - (standard input is read once)",
+            named.join(" and ")
+        );
+    }
+    Ok(())
 }
 
 /// The CSV dialect asked for.

@@ -93,8 +93,8 @@ where
     }
 }
 
-/// clap's message on one line: the problem, the flags it names and the possible values, without
-/// the usage and help hints that follow a blank line.
+/// clap's message on one line: the problem, the flags it names and the possible values, and
+/// its "did you mean" tip in parentheses; without the usage and help hints.
 fn one_line(clap_message: &str) -> String {
     let line = clap_message
         .lines()
@@ -103,9 +103,17 @@ fn one_line(clap_message: &str) -> String {
         .collect::<Vec<_>>()
         .join(" ");
     if line.is_empty() {
-        "error: invalid usage".to_string()
-    } else {
+        return "error: invalid usage".to_string();
+    }
+    let tips: Vec<&str> = clap_message
+        .lines()
+        .map(str::trim)
+        .filter(|l| l.starts_with("tip:"))
+        .collect();
+    if tips.is_empty() {
         line
+    } else {
+        format!("{line} ({})", tips.join("; "))
     }
 }
 
@@ -116,5 +124,60 @@ pub fn ignore_file_size_signal() {
     // SAFETY: setting the disposition of one signal to SIG_IGN; no handler is involved.
     unsafe {
         libc::signal(libc::SIGXFSZ, libc::SIG_IGN);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn captured(args: &[&str]) -> (u8, String, String) {
+        let (mut out, mut err) = (Vec::new(), Vec::new());
+        let code = run_args(
+            std::iter::once("stickslip").chain(args.iter().copied()),
+            Streams {
+                out: &mut out,
+                err: &mut err,
+                process: false,
+            },
+        );
+        let text = |b: Vec<u8>| String::from_utf8(b).unwrap();
+        (code, text(out), text(err))
+    }
+
+    #[test]
+    fn clap_errors_keep_their_did_you_mean_tip_on_the_one_line() {
+        let (code, out, err) = captured(&["evl"]);
+        assert_eq!((code, out.as_str()), (2, ""));
+        assert_eq!(
+            err,
+            "error: unrecognized subcommand 'evl' (tip: a similar subcommand exists: 'eval')\n"
+        );
+        let (code, _, err) = captured(&["eval", "woodpecker", "--mu_d", "0.3"]);
+        assert_eq!(code, 2);
+        assert!(
+            err.starts_with("error: unexpected argument '--mu_d' found (tip: "),
+            "{err}"
+        );
+        assert!(
+            err.contains("'--mu-d'") && err.lines().count() == 1,
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn captured_output_is_what_the_terminal_gets() {
+        let (code, out, err) = captured(&["eval", "pulled-mass", "--json"]);
+        assert_eq!((code, err.as_str()), (0, ""));
+        assert!(out.starts_with("{\n  \"model\": \"pulled-mass\""), "{out}");
+        let (code, out, _) = captured(&["--version"]);
+        let version = format!("stickslip {}\n", env!("CARGO_PKG_VERSION"));
+        assert_eq!((code, out), (0, version));
+        let (code, out, err) = captured(&["eval", "pulled-mass", "--mu-d", "2"]);
+        assert_eq!((code, out.as_str()), (2, ""));
+        assert!(
+            err.starts_with("error: invalid parameter mu_d = 2"),
+            "{err}"
+        );
     }
 }
