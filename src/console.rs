@@ -149,10 +149,13 @@ mod tests {
     fn clap_errors_keep_their_did_you_mean_tip_on_the_one_line() {
         let (code, out, err) = captured(&["evl"]);
         assert_eq!((code, out.as_str()), (2, ""));
-        assert_eq!(
-            err,
-            "error: unrecognized subcommand 'evl' (tip: a similar subcommand exists: 'eval')\n"
+        // clap names every near subcommand ('help' is one for "evl").
+        assert!(
+            err.starts_with("error: unrecognized subcommand 'evl' (tip: ")
+                && err.contains("'eval'"),
+            "{err}"
         );
+        assert_eq!(err.lines().count(), 1, "{err}");
         let (code, _, err) = captured(&["eval", "woodpecker", "--mu_d", "0.3"]);
         assert_eq!(code, 2);
         assert!(

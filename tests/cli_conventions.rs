@@ -170,14 +170,28 @@ fn a_dash_reads_standard_input_for_fit_scenario_and_formulas() {
 
     let scenario = "scenarios/fig16-no-intermediate-halt.toml";
     assert_eq!(
-        run(&["eval", "woodpecker", "--scenario", "-", "--json"], Some(read(scenario))),
-        run(&["eval", "woodpecker", "--scenario", scenario, "--json"], None)
+        run(
+            &["eval", "woodpecker", "--scenario", "-", "--json"],
+            Some(read(scenario))
+        ),
+        run(
+            &["eval", "woodpecker", "--scenario", scenario, "--json"],
+            None
+        )
     );
 
     let formulas = "scenarios/checks/paper-formulas.toml";
     let check = |source: &str, stdin| {
         let mut cmd = stickslip();
-        cmd.args(["check", "pulled-mass", "--formulas", source, "--samples", "20", "--json"]);
+        cmd.args([
+            "check",
+            "pulled-mass",
+            "--formulas",
+            source,
+            "--samples",
+            "20",
+            "--json",
+        ]);
         if let Some(text) = stdin {
             cmd.write_stdin(text);
         }

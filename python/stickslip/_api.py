@@ -208,9 +208,7 @@ def check(
     ``[[check]]`` tables). A formula that disagrees is a verdict in the report
     (``verdict``), not an exception; with ``out`` the pages are written there too.
     """
-    argv = ["check", model]
-    if formula is not None:
-        argv.append(formula)
+    argv = ["check", model, "--json", *_model_flags(params)]
     argv += _flags(
         quantity=quantity,
         formulas=formulas,
@@ -220,7 +218,8 @@ def check(
         out=out,
         scenario=scenario,
     )
-    return _json_of(argv + _model_flags(params) + ["--json"], verdicts=True)
+    # After `--`, a formula that starts with a minus sign is not read as a flag.
+    return _json_of(argv + ([] if formula is None else ["--", formula]), verdicts=True)
 
 
 def claims(

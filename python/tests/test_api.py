@@ -116,6 +116,9 @@ def test_check_returns_the_report_and_a_wrong_formula_as_a_verdict(command):
         "pulled-mass", "g T \\varphi^3 \\Gamma", quantity="v_avg", regime="slip_stick"
     )
     assert right["agrees"] is True
+    # A formula that starts with a minus sign is a formula, not a flag.
+    negative = stickslip.check("pulled-mass", "-(0 - t_{SL})", quantity="t_slip")
+    assert negative["formula"] == "-(0 - t_{SL})"
     with pytest.raises(ValueError, match="quantity"):
         stickslip.check("pulled-mass", "g T", quantity="no_such_quantity")
 
