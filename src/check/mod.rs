@@ -584,7 +584,7 @@ fn draw_sample(
         let drawn = if !names.is_empty() && j % 5 < packed_of_five {
             let turn = j / 5 * packed_of_five + j % 5;
             let i = (turn / 2) % names.len();
-            let side = if turn % 2 == 0 { 1.0 } else { -1.0 };
+            let side = if turn.is_multiple_of(2) { 1.0 } else { -1.0 };
             let offset = side * 10f64.powf(-rng.between(OFFSET_DECADES.0, OFFSET_DECADES.1));
             onto_boundary(base, i, offset).map(|m| {
                 (

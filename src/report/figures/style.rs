@@ -268,7 +268,7 @@ pub fn dash_runs(points: &[(i32, i32)], pattern: &[f64]) -> Vec<Vec<(i32, i32)>>
             done += left;
             let t = done / len;
             let p = to_px((a.0 + (b.0 - a.0) * t, a.1 + (b.1 - a.1) * t));
-            if piece % 2 == 0 {
+            if piece.is_multiple_of(2) {
                 push_distinct(&mut current, p);
                 if current.len() > 1 {
                     runs.push(std::mem::take(&mut current));
@@ -281,11 +281,11 @@ pub fn dash_runs(points: &[(i32, i32)], pattern: &[f64]) -> Vec<Vec<(i32, i32)>>
             left = pattern[piece];
         }
         left -= len - done;
-        if piece % 2 == 0 {
+        if piece.is_multiple_of(2) {
             push_distinct(&mut current, w[1]);
         }
     }
-    if piece % 2 == 0 && current.len() > 1 {
+    if piece.is_multiple_of(2) && current.len() > 1 {
         runs.push(current);
     }
     runs
