@@ -118,7 +118,7 @@ const RANDOM_SETS: usize = 2000;
 /// bound 2μs, μd = μs for every third set.
 fn random_pulled_mass(rng: &mut StdRng, i: usize) -> PulledMassParams {
     let mu_s = rng.gen_range(0.1..1.0);
-    let mu_d = if i % 3 == 0 {
+    let mu_d = if i.is_multiple_of(3) {
         mu_s
     } else {
         mu_s * rng.gen_range(0.3..1.0)

@@ -25,7 +25,7 @@ fn pulled_mass_set(rng: &mut StdRng, i: usize) -> PulledMassParams {
     let mu = rng.gen_range(0.05..1.2);
     // Half of the sets just below the immediate-slip bound 2μ (the slip starts next to t = 0,
     // where the onset is ill-conditioned), the others log-uniform from 1e-9 up.
-    let phi = if i % 2 == 0 {
+    let phi = if i.is_multiple_of(2) {
         2.0 * mu * (1.0 - random_sets::log_uniform(rng, 1e-15, 1e-2))
     } else {
         random_sets::log_uniform(rng, 1e-9, 2.0 * mu)

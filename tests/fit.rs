@@ -120,7 +120,7 @@ fn recovers(truth: WoodpeckerParams, free: &[&str], seed: u64) {
     for (i, name) in ["mu_s", "mu_d", "k", "z0", "d0"].iter().enumerate() {
         let exact = value(&truth, name);
         let start = if free.contains(name) {
-            exact * if i % 2 == 0 { 1.03 } else { 0.97 }
+            exact * if i.is_multiple_of(2) { 1.03 } else { 0.97 }
         } else {
             exact
         };

@@ -142,7 +142,7 @@ fn eval_line() -> impl Strategy<Value = Vec<String>> {
                     // --periods runs what it asks for: keep it short, or refused.
                     if f == "--periods" && v.parse::<i64>().is_ok_and(|n| n > 16) {
                         argv.push("16".to_string());
-                    } else if f == "--scenario" && v.len() % 2 == 0 {
+                    } else if f == "--scenario" && v.len().is_multiple_of(2) {
                         argv.push(format!(
                             "{}/scenarios/fig15-double-slip-stick.toml",
                             env!("CARGO_MANIFEST_DIR")

@@ -21,7 +21,7 @@ pub fn woodpecker(rng: &mut StdRng, i: usize) -> WoodpeckerParams {
     let d0 = rng.gen_range(0.002..0.02);
     WoodpeckerParams {
         mu_s,
-        mu_d: if i % 3 == 0 {
+        mu_d: if i.is_multiple_of(3) {
             mu_s
         } else {
             mu_s * rng.gen_range(0.3..=1.0)
