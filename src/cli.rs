@@ -108,7 +108,7 @@ pub struct FitArgs {
     /// Tracked positions: a CSV file with a header row, a time column (s) and a position
     /// column (m, cm or mm); `,` or `;` separated, `#` comments and title lines allowed; rows
     /// with a blank time or position cell are skipped and counted. Exit 3 when the fitted
-    /// model does not describe the data (files written, flagged).
+    /// model does not describe the data (files written, flagged). `-` reads standard input.
     #[arg(value_name = "FILE")]
     pub file: PathBuf,
     /// Time and position columns, each a header name or a 1-based number [default: the first
@@ -159,8 +159,8 @@ pub struct WorksheetArgs {
           default_values_t = [SheetFormat::Html, SheetFormat::Md])]
     pub format: Vec<SheetFormat>,
     /// Also print the worksheets and the answer key to worksheets.pdf and answer-key.pdf (A4,
-    /// one student per page) with headless Chromium ($STICKSLIP_CHROMIUM, else chromium,
-    /// chromium-browser or google-chrome on PATH).
+    /// one student per page) with headless Chromium ($STICKSLIP_CHROMIUM, else Chromium,
+    /// Chrome or Edge on PATH or in their install folders).
     #[arg(long)]
     pub pdf: bool,
     /// Language of the worksheets, answer keys and question banks (words and decimal sign).
@@ -238,7 +238,7 @@ pub struct CheckArgs {
     #[arg(long, value_name = "ID")]
     pub regime: Option<String>,
     /// Several formulas from a TOML file: `[[check]]` tables with `formula`, `quantity` and
-    /// optionally `regime`.
+    /// optionally `regime` (`-`: standard input).
     #[arg(long, value_name = "FILE", conflicts_with_all = ["formula", "quantity"])]
     pub formulas: Option<PathBuf>,
     /// Parameter sets drawn (1 to 100000).
@@ -300,7 +300,7 @@ pub struct HandoutArgs {
     #[arg(long, short = 'o', default_value = "handouts")]
     pub out: PathBuf,
     /// Also print the HTML to <SCENE>.pdf with headless Chromium ($STICKSLIP_CHROMIUM, else
-    /// chromium, chromium-browser or google-chrome on PATH).
+    /// Chromium, Chrome or Edge on PATH or in their install folders).
     #[arg(long)]
     pub pdf: bool,
     /// Formats, comma-separated.
@@ -314,7 +314,8 @@ pub struct HandoutArgs {
 /// Options shared by every model.
 #[derive(Clone, Debug, Args)]
 pub struct CommonArgs {
-    /// Scenario file (TOML) with the parameters; flags given as well override it.
+    /// Scenario file (TOML) with the parameters (`-`: standard input); flags given as well
+    /// override it.
     #[arg(long, value_name = "FILE")]
     pub scenario: Option<PathBuf>,
     /// Periods to integrate (1 to 1000000) [default: 8, or the scenario's].

@@ -17,25 +17,28 @@ use crate::params::{Scenario, DEFAULT_PERIODS, MAX_PERIODS};
 use crate::present::Present;
 use crate::report::{self, Format};
 
-/// Runs a parsed command line.
-pub fn run(cli: Cli) -> Result<()> {
+/// Runs a parsed command line; what it prints goes to `out`, its notes to `err`.
+pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<()> {
     match cli.command {
-        Command::Eval { model } => eval(&model.args),
-        Command::Report(args) => report(&args),
+        Command::Eval { model } => eval(&model.args, out),
+        Command::Report(args) => report(&args, out),
         Command::Claims {
             seed,
             samples,
             model,
-        } => claims(seed, samples, &model),
-        Command::Bench(args) => bench(&args),
-        Command::Handout(args) => handout(&args),
-        Command::Sweep { model } => sweep(&model),
-        Command::Check { model } => check(&model),
-        Command::Fit(args) => fit(&args),
-        Command::Worksheet(args) => worksheet(&args),
-        Command::Explorer(args) => explorer(&args),
-        Command::Completions { shell } => print_stdout(&crate::shell::completions(shell)),
-        Command::Man => print_stdout(&crate::shell::man_page().context("rendering the man page")?),
+        } => claims(seed, samples, &model, out),
+        Command::Bench(args) => bench(&args, out),
+        Command::Handout(args) => handout(&args, out, err),
+        Command::Sweep { model } => sweep(&model, out),
+        Command::Check { model } => check(&model, out),
+        Command::Fit(args) => fit(&args, out),
+        Command::Worksheet(args) => worksheet(&args, out),
+        Command::Explorer(args) => explorer(&args, out),
+        Command::Completions { shell } => print_stdout(out, &crate::shell::completions(shell)),
+        Command::Man => print_stdout(
+            out,
+            &crate::shell::man_page().context("rendering the man page")?,
+        ),
     }
 }
 
@@ -97,9 +100,13 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
 }
 
 /// `stickslip eval MODEL`: the §7 evaluation as tables or JSON, and the CSV files with --csv.
-fn eval(args: &ModelArgs) -> Result<()> {
+fn eval(args: &ModelArgs, out: &mut dyn Write) -> Result<()> {
     if args.common.csv.is_none() && args.common.csv_dialect.is_some() {
         anyhow::bail!("--csv-dialect applies to the files of --csv DIR: give --csv too");
+    }
+    if args.common.csv.as_deref() == Some(std::path::Path::new(crate::params::STDIN)) {
+        // Four files (time series and events of both laws) do not fit one stream.
+        anyhow::bail!("--csv takes a folder for its four files, not - (standard output)");
     }
     fn show<M: Present>(p: &M, periods: u32, args: &ModelArgs) -> Result<String> {
         let evaluation = match &args.common.csv {
@@ -121,7 +128,7 @@ fn eval(args: &ModelArgs) -> Result<()> {
     }
     // The JSON of any model; its tables and CSV files where the model presents itself.
     let (model, periods) = model_params(args)?;
-    let out = if args.common.json && args.common.csv.is_none() {
+    let text = if args.common.json && args.common.csv.is_none() {
         crate::explore::evaluate_json(&model, periods)? + "\n"
     } else {
         with_capability!(&model, present, p => show(p, periods, args)?,
@@ -130,12 +137,17 @@ fn eval(args: &ModelArgs) -> Result<()> {
                 what: "text tables or CSV files yet: give --json".to_string(),
             }.into()))
     };
-    print_stdout(&out)
+    print_stdout(out, &text)
 }
 
 /// `stickslip claims [MODEL]`: the paper's claims on the given parameters (the other model keeps
 /// the paper's set) and on a seeded random sample.
-fn claims(seed: u64, samples: usize, model: &Option<ModelCommand<ClaimsArgs>>) -> Result<()> {
+fn claims(
+    seed: u64,
+    samples: usize,
+    model: &Option<ModelCommand<ClaimsArgs>>,
+    out: &mut dyn Write,
+) -> Result<()> {
     let sample = crate::claims::Sample {
         seed,
         size: samples,
@@ -155,20 +167,27 @@ fn claims(seed: u64, samples: usize, model: &Option<ModelCommand<ClaimsArgs>>) -
             (crate::claims::evaluate(&pulled, &wood, &sample)?, false)
         }
     };
-    print_stdout(&if json {
-        serde_json::to_string_pretty(&claims)? + "\n"
-    } else {
-        crate::output::text::claims(&claims)
-    })
+    print_stdout(
+        out,
+        &if json {
+            serde_json::to_string_pretty(&claims)? + "\n"
+        } else {
+            crate::output::text::claims(&claims)
+        },
+    )
 }
 
 /// `stickslip fit`: read, fit, write the files, print; a fit that did not converge is still
 /// written and printed (flagged), then reported as an error (exit 1); one that converged to a
 /// minimum that does not describe the data likewise, as a negative verdict (exit 3).
-fn fit(args: &FitArgs) -> Result<()> {
+fn fit(args: &FitArgs, out: &mut dyn Write) -> Result<()> {
     let common = &args.model.args.common;
     reject_flag("fit", "--periods", common.periods.is_some())?;
     reject_flag("fit", "--csv", common.csv.is_some())?;
+    one_stdin(&[
+        ("FILE", Some(&args.file)),
+        ("--scenario", common.scenario.as_deref()),
+    ])?;
     let Model::Woodpecker(base) = model_params(&args.model.args)?.0 else {
         unreachable!("fit takes the woodpecker's flags")
     };
@@ -182,11 +201,14 @@ fn fit(args: &FitArgs) -> Result<()> {
     let files = dialect(common).apply(crate::fit::render(&fit)?);
     refuse_overwriting_inputs(&args.out, &files, &[("FILE", &args.file)])?;
     report::write_all(&args.out, &files)?;
-    print_stdout(&if common.json {
-        crate::fit::json(&fit)?
-    } else {
-        crate::fit::text(&fit, &args.out)
-    })?;
+    print_stdout(
+        out,
+        &if common.json {
+            crate::fit::json(&fit)?
+        } else {
+            crate::fit::text(&fit, &args.out)
+        },
+    )?;
     if !fit.converged {
         return Err(Error::NotConverged {
             reason: format!(
@@ -211,7 +233,7 @@ fn fit(args: &FitArgs) -> Result<()> {
 }
 
 /// `stickslip worksheet`: every sheet and the key are rendered before anything is written.
-fn worksheet(args: &WorksheetArgs) -> Result<()> {
+fn worksheet(args: &WorksheetArgs, out: &mut dyn Write) -> Result<()> {
     let request = crate::worksheet::Request {
         model: args.model,
         students: args.students,
@@ -253,17 +275,20 @@ fn worksheet(args: &WorksheetArgs) -> Result<()> {
             .collect::<Vec<_>>()
             .join(", "),
     };
-    print_stdout(&format!(
-        "wrote {} files for {} students ({}; {regimes}) to {}\n",
-        written.len(),
-        sheets.students.len(),
-        args.model.id(),
-        shown(&args.out)
-    ))
+    print_stdout(
+        out,
+        &format!(
+            "wrote {} files for {} students ({}; {regimes}) to {}\n",
+            written.len(),
+            sheets.students.len(),
+            args.model.id(),
+            shown(&args.out)
+        ),
+    )
 }
 
 /// `stickslip bench`: measure, render, write; the elapsed time goes to stderr.
-fn bench(args: &BenchArgs) -> Result<()> {
+fn bench(args: &BenchArgs, out: &mut dyn Write) -> Result<()> {
     report::lock::claim_if_exists(&args.out)?;
     let started = std::time::Instant::now();
     let config = crate::bench::Config {
@@ -279,15 +304,14 @@ fn bench(args: &BenchArgs) -> Result<()> {
         started.elapsed().as_secs_f64(),
         results.elapsed_s
     );
-    print_stdout(&format!(
-        "wrote {} files to {}\n",
-        written.len(),
-        shown(&args.out)
-    ))
+    print_stdout(
+        out,
+        &format!("wrote {} files to {}\n", written.len(), shown(&args.out)),
+    )
 }
 
 /// `stickslip report`: the built-in scenes or the given scenario files.
-fn report(args: &ReportArgs) -> Result<()> {
+fn report(args: &ReportArgs, out: &mut dyn Write) -> Result<()> {
     report::lock::claim_if_exists(&args.out)?;
     let (scenes, files) = if args.scenarios.is_empty() {
         let scenes = report::builtin_scenes()?;
@@ -307,35 +331,37 @@ fn report(args: &ReportArgs) -> Result<()> {
     refuse_overwriting_inputs(&args.out, &files, &inputs)?;
     let written = report::write_all(&args.out, &files)?;
     let plural = |n: usize, word: &str| format!("{n} {word}{}", if n == 1 { "" } else { "s" });
-    print_stdout(&format!(
-        "wrote {} for {} to {}\n",
-        plural(written.len(), "file"),
-        plural(scenes.len(), "scene"),
-        shown(&args.out)
-    ))
+    print_stdout(
+        out,
+        &format!(
+            "wrote {} for {} to {}\n",
+            plural(written.len(), "file"),
+            plural(scenes.len(), "scene"),
+            shown(&args.out)
+        ),
+    )
 }
 
 /// `stickslip explorer`: the page, with the built-in scenes as presets.
-fn explorer(args: &ExplorerArgs) -> Result<()> {
+fn explorer(args: &ExplorerArgs, out: &mut dyn Write) -> Result<()> {
     report::lock::claim_if_exists(&args.out)?;
     let page = report::explorer::render(
         &report::builtin_scenes()?,
         report::explorer::Placement::Alone,
     )?;
     report::write_all(&args.out, std::slice::from_ref(&page))?;
-    print_stdout(&format!(
-        "wrote {} to {}\n",
-        page.path.display(),
-        shown(&args.out)
-    ))
+    print_stdout(
+        out,
+        &format!("wrote {} to {}\n", page.path.display(), shown(&args.out)),
+    )
 }
 
 /// `stickslip handout`: the browser is looked up first and everything (the PDF included) is
 /// rendered before anything is written.
-fn handout(args: &HandoutArgs) -> Result<()> {
+fn handout(args: &HandoutArgs, out: &mut dyn Write, err: &mut dyn Write) -> Result<()> {
     use crate::handout;
     let Some(id) = args.scene.as_deref().filter(|_| !args.list) else {
-        return print_stdout(&handout::list()?);
+        return print_stdout(out, &handout::list()?);
     };
     report::lock::claim_if_exists(&args.out)?;
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
@@ -346,7 +372,8 @@ fn handout(args: &HandoutArgs) -> Result<()> {
     let missing = words.missing();
     if !missing.is_empty() {
         // A scenario file's own words, or a claim worded for parameters the catalogue has not met.
-        eprintln!(
+        let _ = writeln!(
+            err,
             "note: {} phrase(s) have no {} translation and stay in English, e.g. \"{}\"",
             missing.len(),
             args.lang.code(),
@@ -354,17 +381,20 @@ fn handout(args: &HandoutArgs) -> Result<()> {
             crate::error::excerpt(&missing[0], 80)
         );
     }
-    print_stdout(&format!(
-        "wrote {} files for {} to {}\n",
-        written.len(),
-        scene.id,
-        shown(&args.out)
-    ))
+    print_stdout(
+        out,
+        &format!(
+            "wrote {} files for {} to {}\n",
+            written.len(),
+            scene.id,
+            shown(&args.out)
+        ),
+    )
 }
 
 /// `stickslip sweep MODEL`: the grid around the base parameters of flags and scenario; files
 /// are written only once every point has been computed.
-fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
+fn sweep(model: &ModelCommand<SweepArgs>, out: &mut dyn Write) -> Result<()> {
     let common = &model.args.common;
     reject_flag("sweep", "--json", common.json)?;
     reject_flag("sweep", "--csv", common.csv.is_some())?;
@@ -386,21 +416,25 @@ fn sweep(model: &ModelCommand<SweepArgs>) -> Result<()> {
         refuse_overwriting_inputs(&grid.out, &files, &[("--scenario", path)])?;
     }
     report::write_all(&grid.out, &files)?;
-    print_stdout(&crate::sweep::summary_line(&result, &grid.out))
+    print_stdout(out, &crate::sweep::summary_line(&result, &grid.out))
 }
 
 /// `stickslip check MODEL FORMULA --quantity NAME` (or `--formulas FILE`): each report as text
 /// or JSON, and with `--out` as a page.
-fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
+fn check(model: &ModelCommand<CheckArgs>, out: &mut dyn Write) -> Result<()> {
     let common = &model.args.common;
     reject_flag("check", "--csv", common.csv.is_some())?;
     reject_flag("check", "--csv-dialect", common.csv_dialect.is_some())?;
     reject_flag("check", "--periods", common.periods.is_some())?;
+    one_stdin(&[
+        ("--formulas", model.extra.formulas.as_deref()),
+        ("--scenario", common.scenario.as_deref()),
+    ])?;
     let (case, _) = model_params(&model.args)?;
     let args = &model.extra;
     if args.symbols {
         reject_flag("check --symbols", "--json", common.json)?;
-        return print_stdout(&crate::check::symbols_text(&case));
+        return print_stdout(out, &crate::check::symbols_text(&case));
     }
     if let Some(out) = &args.out {
         report::lock::claim_if_exists(out)?;
@@ -461,15 +495,18 @@ fn check(model: &ModelCommand<CheckArgs>) -> Result<()> {
         }
         report::write_all(out, &files)?;
     }
-    print_stdout(&match (common.json, reports.as_slice()) {
-        (true, [one]) => serde_json::to_string_pretty(one)? + "\n",
-        (true, all) => serde_json::to_string_pretty(all)? + "\n",
-        (false, all) => all
-            .iter()
-            .map(crate::check::text)
-            .collect::<Vec<_>>()
-            .join("\n"),
-    })?;
+    print_stdout(
+        out,
+        &match (common.json, reports.as_slice()) {
+            (true, [one]) => serde_json::to_string_pretty(one)? + "\n",
+            (true, all) => serde_json::to_string_pretty(all)? + "\n",
+            (false, all) => all
+                .iter()
+                .map(crate::check::text)
+                .collect::<Vec<_>>()
+                .join("\n"),
+        },
+    )?;
     // Reported in full above; the exit code (3) lets a script or CI job act on the verdict.
     match reports.iter().find_map(crate::check::Report::negative) {
         Some(verdict) => Err(verdict.into()),
@@ -515,6 +552,23 @@ fn same_file(_a: &std::fs::Metadata, _b: &std::fs::Metadata) -> bool {
     false
 }
 
+/// At most one input may be `-` (standard input is read once).
+fn one_stdin(inputs: &[(&str, Option<&std::path::Path>)]) -> Result<()> {
+    let stdin = std::path::Path::new(crate::params::STDIN);
+    let named: Vec<&str> = inputs
+        .iter()
+        .filter(|(_, p)| *p == Some(stdin))
+        .map(|(flag, _)| *flag)
+        .collect();
+    if named.len() > 1 {
+        anyhow::bail!(
+            "{}: only one of them can be - (standard input is read once)",
+            named.join(" and ")
+        );
+    }
+    Ok(())
+}
+
 /// The CSV dialect asked for.
 fn dialect(common: &CommonArgs) -> CsvDialect {
     common.csv_dialect.unwrap_or_default()
@@ -533,13 +587,10 @@ fn shown(path: &std::path::Path) -> String {
     crate::error::excerpt_path(&path.display().to_string())
 }
 
-/// Prints to standard output; a closed pipe (`| head`) is not an error of ours.
-fn print_stdout(text: &str) -> Result<()> {
-    let mut stdout = std::io::stdout().lock();
-    match stdout
-        .write_all(text.as_bytes())
-        .and_then(|()| stdout.flush())
-    {
+/// Prints to standard output (or the writer that stands for it); a closed pipe (`| head`) is
+/// not an error of ours.
+fn print_stdout(out: &mut dyn Write, text: &str) -> Result<()> {
+    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
         other => other.context("writing to standard output"),
     }

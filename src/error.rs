@@ -104,8 +104,8 @@ pub enum Error {
     UnknownScene { id: String },
     /// `--pdf` without a headless Chromium to print with.
     #[error(
-        "--pdf needs headless Chromium: install the `chromium` package or set \
-         STICKSLIP_CHROMIUM{}",
+        "--pdf needs headless Chromium: install Chromium, Google Chrome or Microsoft Edge, or \
+         set STICKSLIP_CHROMIUM to the browser's program{}",
         excerpt(detail, REASON_CHARS)
     )]
     NoChromium {

@@ -19,7 +19,8 @@
 //! handouts, worksheets, sweeps, fits and benchmarks. Without it the core (params, models,
 //! engine, results, claims, solvers, explore) builds on its own, for wasm32 too; there
 //! [`wasm`] exports the explorer page's entry points (`stickslip explorer`). The `peers` feature
-//! (off by default) adds the benchmark's compiled peer from diffsol.
+//! (off by default) adds the benchmark's compiled peer from diffsol; `python` (off by default)
+//! the Python module of the wheel ([`python`]).
 
 #[cfg(feature = "cli")]
 pub mod bench;
@@ -30,6 +31,8 @@ pub mod claims;
 pub mod cli;
 #[cfg(feature = "cli")]
 pub mod commands;
+#[cfg(feature = "cli")]
+pub mod console;
 #[cfg(feature = "cli")]
 pub mod derivation;
 pub mod draws;
@@ -50,6 +53,8 @@ pub mod output;
 pub mod params;
 #[cfg(feature = "cli")]
 pub mod present;
+#[cfg(feature = "python")]
+pub mod python;
 #[cfg(feature = "cli")]
 pub mod report;
 pub mod results;

@@ -69,16 +69,25 @@ pub struct Scenario {
 /// reading this much.
 pub const MAX_INPUT_BYTES: u64 = 16 << 20;
 
-/// The bytes of an input file, at most [`MAX_INPUT_BYTES`]; the error is a reason for a message
-/// naming the file and `flag`.
+/// The path that stands for standard input (`stickslip fit -`, `--scenario -`, `--formulas -`).
+pub const STDIN: &str = "-";
+
+/// The bytes of an input file (standard input for [`STDIN`]), at most [`MAX_INPUT_BYTES`]; the
+/// error is a reason for a message naming the file and `flag`.
 pub fn read_input(path: &Path, flag: &str) -> std::result::Result<Vec<u8>, String> {
     use std::io::Read;
-    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
-    if file.metadata().is_ok_and(|m| m.is_dir()) {
-        return Err("is a folder, not a file".to_string());
-    }
+    let source: Box<dyn Read> = if path == Path::new(STDIN) {
+        Box::new(std::io::stdin().lock())
+    } else {
+        let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+        if file.metadata().is_ok_and(|m| m.is_dir()) {
+            return Err("is a folder, not a file".to_string());
+        }
+        Box::new(file)
+    };
     let mut bytes = Vec::new();
-    file.take(MAX_INPUT_BYTES + 1)
+    source
+        .take(MAX_INPUT_BYTES + 1)
         .read_to_end(&mut bytes)
         .map_err(|e| e.to_string())?;
     if bytes.len() as u64 > MAX_INPUT_BYTES {

@@ -1,7 +1,8 @@
 //! The conventions of a Rust command line, as a user meets them: `stickslip completions
 //! <SHELL>` prints a script for each of the five shells that names the subcommands,
 //! `stickslip man` prints a roff page that opens with `.TH` and lists the subcommands, an
-//! unknown shell is bad input (exit 2), and `-o` is the short form of every `--out`.
+//! unknown shell is bad input (exit 2), `-o` is the short form of every `--out`, `-` reads
+//! standard input for `fit`, `--scenario` and `--formulas`, and `--csv -` is refused.
 
 use assert_cmd::Command;
 use clap::CommandFactory;
@@ -224,4 +225,88 @@ fn help_lists_no_flag_the_command_refuses() {
             }
         }
     }
+}
+
+#[test]
+fn a_dash_reads_standard_input_for_fit_scenario_and_formulas() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let read = |p: &str| std::fs::read_to_string(root.join(p)).expect("input file");
+    let dir = tempfile::tempdir().expect("temporary folder");
+    let run = |args: &[&str], stdin: Option<String>| {
+        let mut cmd = stickslip();
+        cmd.args(args);
+        if let Some(text) = stdin {
+            cmd.write_stdin(text);
+        }
+        let out = cmd.assert().success().get_output().clone();
+        String::from_utf8(out.stdout).expect("UTF-8")
+    };
+
+    let scenario = "scenarios/fig16-no-intermediate-halt.toml";
+    assert_eq!(
+        run(
+            &["eval", "woodpecker", "--scenario", "-", "--json"],
+            Some(read(scenario))
+        ),
+        run(
+            &["eval", "woodpecker", "--scenario", scenario, "--json"],
+            None
+        )
+    );
+
+    let formulas = "scenarios/checks/paper-formulas.toml";
+    let check = |source: &str, stdin| {
+        let mut cmd = stickslip();
+        cmd.args([
+            "check",
+            "pulled-mass",
+            "--formulas",
+            source,
+            "--samples",
+            "20",
+            "--json",
+        ]);
+        if let Some(text) = stdin {
+            cmd.write_stdin(text);
+        }
+        // Some of the file's formulas are wrong on purpose: a verdict (exit 3), reported in full.
+        cmd.assert().code(3).get_output().stdout.clone()
+    };
+    assert_eq!(check("-", Some(read(formulas))), check(formulas, None));
+
+    let data = "scenarios/tracked-toy-example.csv";
+    let out = |name: &str| dir.path().join(name).display().to_string();
+    let from_stdin = run(&["fit", "-", "-o", &out("a"), "--json"], Some(read(data)));
+    let from_file = run(&["fit", data, "-o", &out("b"), "--json"], None);
+    let fitted = |json: &str| {
+        let mut v: serde_json::Value = serde_json::from_str(json).expect("JSON");
+        v["data"]["file"] = serde_json::Value::Null;
+        v
+    };
+    assert_eq!(fitted(&from_stdin), fitted(&from_file));
+}
+
+#[test]
+fn standard_input_is_read_once_and_csv_to_standard_output_is_refused() {
+    let dir = tempfile::tempdir().expect("temporary folder");
+    let refused = |args: &[&str]| {
+        let out = stickslip()
+            .current_dir(dir.path())
+            .args(args)
+            .write_stdin("")
+            .assert()
+            .code(2)
+            .get_output()
+            .clone();
+        assert!(out.stdout.is_empty());
+        String::from_utf8(out.stderr).expect("UTF-8")
+    };
+    let err = refused(&["eval", "woodpecker", "--csv", "-"]);
+    assert!(err.starts_with("error: --csv takes a folder"), "{err}");
+    assert!(!dir.path().join("-").exists(), "no folder named -");
+    let err = refused(&["fit", "-", "--scenario", "-", "-o", "fit"]);
+    assert_eq!(
+        err,
+        "error: FILE and --scenario: only one of them can be - (standard input is read once)\n"
+    );
 }

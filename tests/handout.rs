@@ -269,7 +269,7 @@ fn bad_handout_input_is_refused_without_writing() {
     refused(
         &["fig15-double-slip-stick", "--pdf"],
         &[("STICKSLIP_CHROMIUM", "/nonexistent/chromium")],
-        "--pdf needs headless Chromium: install the `chromium` package or set STICKSLIP_CHROMIUM",
+        "--pdf needs headless Chromium: install Chromium, Google Chrome or Microsoft Edge, or set STICKSLIP_CHROMIUM",
     );
 }
 

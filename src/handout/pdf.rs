@@ -10,10 +10,8 @@ use std::time::{Duration, Instant};
 
 use crate::error::{Error, Result};
 
-/// Environment variable naming the browser binary; it wins over the search of PATH.
+/// Environment variable naming the browser binary; it wins over the search.
 pub const BROWSER_ENV: &str = "STICKSLIP_CHROMIUM";
-/// Names looked up on PATH, in order.
-const NAMES: &[&str] = &["chromium", "chromium-browser", "google-chrome"];
 /// A handout prints in 1–3 s, the answer key of 500 students (13 MB of HTML) in about 65 s on
 /// an idle machine: a print is given this much time, plus [`TIMEOUT_PER_PAGE`] per page, before
 /// the browser is taken for stuck and killed.
@@ -29,13 +27,106 @@ fn timeout(pages: u32) -> Duration {
 /// How often the running browser is polled.
 const POLL: Duration = Duration::from_millis(50);
 
-/// The browser to print with: `$STICKSLIP_CHROMIUM`, else the first of chromium,
-/// chromium-browser, google-chrome on PATH.
-pub fn locate() -> Result<PathBuf> {
-    locate_in(std::env::var_os(BROWSER_ENV), std::env::var_os("PATH"))
+/// The operating systems whose browser install folders are known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Os {
+    Linux,
+    MacOs,
+    Windows,
 }
 
-fn locate_in(named: Option<OsString>, path: Option<OsString>) -> Result<PathBuf> {
+impl Os {
+    /// The system this program was built for (other Unix systems search like Linux).
+    pub const CURRENT: Os = if cfg!(windows) {
+        Os::Windows
+    } else if cfg!(target_os = "macos") {
+        Os::MacOs
+    } else {
+        Os::Linux
+    };
+}
+
+/// Where a browser may be: a program name looked up on PATH, or a file where an installer puts it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Candidate {
+    OnPath(&'static str),
+    File(PathBuf),
+}
+
+/// Chromium-family browsers that print headless (Chromium, Google Chrome, Microsoft Edge),
+/// where teachers have them on `os`, in the order they are tried. `env` reads an environment
+/// variable (the Windows install roots and the macOS home folder).
+pub fn candidates(os: Os, env: &dyn Fn(&str) -> Option<OsString>) -> Vec<Candidate> {
+    use Candidate::{File, OnPath};
+    match os {
+        Os::Linux => [
+            "chromium",
+            "chromium-browser",
+            "google-chrome",
+            "google-chrome-stable",
+            "microsoft-edge",
+            "microsoft-edge-stable",
+        ]
+        .into_iter()
+        .map(OnPath)
+        .collect(),
+        Os::MacOs => {
+            const APPS: [&str; 3] = [
+                "Google Chrome.app/Contents/MacOS/Google Chrome",
+                "Microsoft Edge.app/Contents/MacOS/Microsoft Edge",
+                "Chromium.app/Contents/MacOS/Chromium",
+            ];
+            let home_apps = env("HOME").map(|h| PathBuf::from(h).join("Applications"));
+            let mut found: Vec<Candidate> = ["/Applications"]
+                .into_iter()
+                .map(PathBuf::from)
+                .chain(home_apps)
+                .flat_map(|dir| APPS.map(|app| File(dir.join(app))))
+                .collect();
+            found.extend(["chromium", "google-chrome"].into_iter().map(OnPath));
+            found
+        }
+        Os::Windows => {
+            // Per-machine installs under Program Files (either), per-user ones under LOCALAPPDATA.
+            const APPS: [&str; 3] = [
+                r"Google\Chrome\Application\chrome.exe",
+                r"Microsoft\Edge\Application\msedge.exe",
+                r"Chromium\Application\chrome.exe",
+            ];
+            let roots: Vec<PathBuf> = ["ProgramFiles", "ProgramFiles(x86)", "LOCALAPPDATA"]
+                .into_iter()
+                .filter_map(|v| env(v).filter(|r| !r.is_empty()).map(PathBuf::from))
+                .collect();
+            let mut found: Vec<Candidate> = APPS
+                .iter()
+                .flat_map(|app| roots.iter().map(move |r| File(r.join(app))))
+                .collect();
+            found.extend(
+                ["chrome.exe", "msedge.exe", "chromium.exe"]
+                    .into_iter()
+                    .map(OnPath),
+            );
+            found
+        }
+    }
+}
+
+/// The browser to print with: `$STICKSLIP_CHROMIUM`, else the first of [`candidates`] that
+/// exists (Chromium, Chrome or Edge on PATH or in their install folders).
+pub fn locate() -> Result<PathBuf> {
+    let env = |name: &str| std::env::var_os(name);
+    locate_in(
+        std::env::var_os(BROWSER_ENV),
+        std::env::var_os("PATH"),
+        &candidates(Os::CURRENT, &env),
+    )
+}
+
+fn locate_in(
+    named: Option<OsString>,
+    path: Option<OsString>,
+    candidates: &[Candidate],
+) -> Result<PathBuf> {
     if let Some(named) = named.filter(|n| !n.is_empty()) {
         let named = PathBuf::from(named);
         // A bare name is looked up on PATH like the defaults.
@@ -51,9 +142,12 @@ fn locate_in(named: Option<OsString>, path: Option<OsString>) -> Result<PathBuf>
             ),
         });
     }
-    NAMES
+    candidates
         .iter()
-        .find_map(|n| search(path.as_deref(), Path::new(n)))
+        .find_map(|c| match c {
+            Candidate::OnPath(name) => search(path.as_deref(), Path::new(name)),
+            Candidate::File(file) => is_executable(file).then(|| file.clone()),
+        })
         .ok_or_else(|| Error::NoChromium {
             detail: String::new(),
         })
@@ -173,7 +267,7 @@ pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u
             work.path().join("profile").display()
         ))
         .arg(format!("--print-to-pdf={}", pdf.display()))
-        .arg(format!("file://{}", page.display()))
+        .arg(file_url(&page))
         .stdin(Stdio::null())
         .stdout(Stdio::null())
         // A file, not a pipe: a chatty browser cannot block on a full pipe while we wait.
@@ -209,6 +303,109 @@ pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u
     Err(fail(format!("{status}, no PDF written{last_line}")))
 }
 
+/// The `file:` URL of an absolute path: `file:///tmp/x.html`, `file:///C:/Users/x.html`.
+fn file_url(path: &Path) -> String {
+    let shown = path.display().to_string().replace('\\', "/");
+    let slash = if shown.starts_with('/') { "" } else { "/" };
+    format!("file://{slash}{shown}")
+}
+
+#[cfg(test)]
+mod candidate_tests {
+    use super::*;
+
+    fn no_env(_: &str) -> Option<OsString> {
+        None
+    }
+
+    #[test]
+    fn linux_looks_for_chromium_chrome_and_edge_on_path() {
+        let names: Vec<_> = candidates(Os::Linux, &no_env)
+            .into_iter()
+            .map(|c| match c {
+                Candidate::OnPath(n) => n,
+                Candidate::File(f) => panic!("{} is not a PATH name", f.display()),
+            })
+            .collect();
+        assert_eq!(
+            names[..3],
+            ["chromium", "chromium-browser", "google-chrome"]
+        );
+        assert!(names.contains(&"google-chrome-stable") && names.contains(&"microsoft-edge"));
+    }
+
+    #[test]
+    fn macos_looks_in_the_applications_folders_then_on_path() {
+        let home = |v: &str| (v == "HOME").then(|| OsString::from("/Users/ada"));
+        let found = candidates(Os::MacOs, &home);
+        let files: Vec<PathBuf> = found
+            .iter()
+            .filter_map(|c| match c {
+                Candidate::File(f) => Some(f.clone()),
+                Candidate::OnPath(_) => None,
+            })
+            .collect();
+        assert_eq!(
+            files[0],
+            Path::new("/Applications/Google Chrome.app/Contents/MacOS/Google Chrome")
+        );
+        assert!(files.contains(&PathBuf::from(
+            "/Applications/Microsoft Edge.app/Contents/MacOS/Microsoft Edge"
+        )));
+        assert!(files.contains(&PathBuf::from(
+            "/Users/ada/Applications/Chromium.app/Contents/MacOS/Chromium"
+        )));
+        assert_eq!(files.len(), 6);
+        assert!(found.contains(&Candidate::OnPath("chromium")));
+        // Without HOME only /Applications.
+        assert_eq!(candidates(Os::MacOs, &no_env).len(), 3 + 2);
+    }
+
+    #[test]
+    fn windows_looks_in_program_files_and_local_app_data_for_exe_files() {
+        let env = |v: &str| match v {
+            "ProgramFiles" => Some(OsString::from(r"C:\Program Files")),
+            "ProgramFiles(x86)" => Some(OsString::from(r"C:\Program Files (x86)")),
+            "LOCALAPPDATA" => Some(OsString::from(r"C:\Users\ada\AppData\Local")),
+            _ => None,
+        };
+        let found = candidates(Os::Windows, &env);
+        let shown: Vec<String> = found
+            .iter()
+            .map(|c| match c {
+                Candidate::File(f) => f.display().to_string(),
+                Candidate::OnPath(n) => (*n).to_string(),
+            })
+            .collect();
+        // Joined with the separator of the machine running the test: compare with `/` for `\`.
+        let shown: Vec<String> = shown.iter().map(|s| s.replace('/', "\\")).collect();
+        for want in [
+            r"C:\Program Files\Google\Chrome\Application\chrome.exe",
+            r"C:\Program Files (x86)\Google\Chrome\Application\chrome.exe",
+            r"C:\Users\ada\AppData\Local\Google\Chrome\Application\chrome.exe",
+            r"C:\Program Files (x86)\Microsoft\Edge\Application\msedge.exe",
+            r"C:\Program Files\Microsoft\Edge\Application\msedge.exe",
+            r"C:\Users\ada\AppData\Local\Chromium\Application\chrome.exe",
+            "chrome.exe",
+            "msedge.exe",
+        ] {
+            assert!(shown.iter().any(|s| s == want), "{want} not in {shown:?}");
+        }
+        assert_eq!(found.len(), 3 * 3 + 3);
+        // A root that is not set adds nothing.
+        assert_eq!(candidates(Os::Windows, &no_env).len(), 3);
+    }
+
+    #[test]
+    fn file_urls_have_three_slashes_on_every_system() {
+        assert_eq!(file_url(Path::new("/tmp/a b.html")), "file:///tmp/a b.html");
+        assert_eq!(
+            file_url(Path::new(r"C:\Users\x.html")),
+            "file:///C:/Users/x.html"
+        );
+    }
+}
+
 // The fake browsers are shell scripts made executable with Unix permissions.
 #[cfg(all(test, unix))]
 mod tests {
@@ -228,18 +425,22 @@ mod tests {
         let on_path = executable(dir.path(), "chromium");
         let other = executable(dir.path(), "my-browser");
         let path = Some(dir.path().as_os_str().to_owned());
-        assert_eq!(locate_in(None, path.clone()).unwrap(), on_path);
+        let linux = candidates(Os::Linux, &|_| None);
+        assert_eq!(locate_in(None, path.clone(), &linux).unwrap(), on_path);
+        // An install folder's file is found without PATH.
+        let installed = [Candidate::File(other.clone())];
+        assert_eq!(locate_in(None, None, &installed).unwrap(), other);
         assert_eq!(
-            locate_in(Some(other.clone().into()), path.clone()).unwrap(),
+            locate_in(Some(other.clone().into()), path.clone(), &linux).unwrap(),
             other
         );
         assert_eq!(
-            locate_in(Some("my-browser".into()), path.clone()).unwrap(),
+            locate_in(Some("my-browser".into()), path.clone(), &linux).unwrap(),
             other
         );
-        let err = locate_in(Some(dir.path().join("nope").into()), path).unwrap_err();
+        let err = locate_in(Some(dir.path().join("nope").into()), path, &linux).unwrap_err();
         assert!(err.to_string().contains("STICKSLIP_CHROMIUM"), "{err}");
-        let err = locate_in(None, Some(OsString::new())).unwrap_err();
+        let err = locate_in(None, Some(OsString::new()), &linux).unwrap_err();
         assert!(err.to_string().starts_with("--pdf needs headless Chromium"));
     }
 
