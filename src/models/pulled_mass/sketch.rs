@@ -365,7 +365,7 @@ mod tests {
     #[test]
     fn the_vertical_forces_on_the_block_balance_at_the_drawn_instant() {
         let slipping = PulledMassParams::default();
-        let mut stuck = slipping.clone();
+        let mut stuck = slipping;
         stuck.force = 0.05;
         for (p, phase) in [(&slipping, Phase::Slipping), (&stuck, Phase::Stuck)] {
             let svg = pulled_mass(p, phase);
