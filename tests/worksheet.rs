@@ -773,7 +773,7 @@ fn italian_sheets_have_italian_words_and_decimal_commas() {
         "Figura 1.",
         "trazione F",
         "forza (N)",
-        "fessura nel tavolo",
+        "forze sul blocco",
     ] {
         assert!(sheets.contains(word), "{word}");
     }

@@ -139,17 +139,18 @@ impl Step {
     /// The whole worked line in LaTeX: `symbol = formula = substituted = result`, or without the
     /// result when the form does not apply.
     pub fn worked_tex(&self) -> String {
-        let mut line = format!(
-            "{} = {} = {}",
-            self.symbol,
-            self.formula(),
-            self.substituted()
-        );
-        if let Some(result) = self.result_tex() {
-            line.push_str(" = ");
-            line.push_str(&result);
-        }
-        line
+        self.worked_pieces().join(" ")
+    }
+
+    /// [`Step::worked_tex`] in the pieces a long line may wrap between: "symbol = formula",
+    /// "= substituted", "= result".
+    pub fn worked_pieces(&self) -> Vec<String> {
+        let mut pieces = vec![
+            format!("{} = {}", self.symbol, self.formula()),
+            format!("= {}", self.substituted()),
+        ];
+        pieces.extend(self.result_tex().map(|r| format!("= {r}")));
+        pieces
     }
 }
 

@@ -6,7 +6,7 @@
 //! Figures are drawn on the column canvas ([`Geometry::COLUMN`]: legends and labels print at
 //! 8.2 pt), then taller while the page keeps its figures and claims ([`fill`]). Heights are
 //! estimated in mm from the figure sizes and the text lengths, with constants measured on
-//! Chromium's print of `templates/handout.css` (A4, 9 mm margins, DejaVu fonts); the browser
+//! Chromium's print of `templates/handout.css` (A4, 5 mm margins, DejaVu fonts); the browser
 //! test prints every built-in scene and checks that it takes exactly two pages and that page 2
 //! is filled.
 
@@ -24,20 +24,20 @@ use crate::report::Scene;
 /// At most this many figures: two side by side, and each further one below the shorter column.
 const MAX_FIGURES: usize = 4;
 /// Printed height of page 2's content: A4 less the margins, less room for font differences.
-const PAGE_MM: f64 = 297.0 - 2.0 * 9.0 - 12.0;
-/// A figure column is 90.5 mm wide, its SVGs drawn on the column canvas.
-const MM_PER_PX: f64 = 90.5 / Geometry::COLUMN.width as f64;
-/// A caption line (6.5 pt over a column) and its characters; the figure's margins.
-const CAPTION_LINE_MM: f64 = 2.8;
-const CAPTION_LINE_CHARS: usize = 75;
+const PAGE_MM: f64 = 297.0 - 2.0 * 5.0 - 12.0;
+/// A figure column is 90.5 mm wide; an SVG fills it whatever its canvas's width.
+const COLUMN_MM: f64 = 90.5;
+/// A caption line (8 pt over a column) and its characters; the figure's margins.
+const CAPTION_LINE_MM: f64 = 3.4;
+const CAPTION_LINE_CHARS: usize = 60;
 const FIGURE_MARGIN_MM: f64 = 3.5;
 /// The verification table: heading and summary, then each row (the header row too).
-const TABLE_MM: f64 = 17.1;
-const TABLE_ROW_MM: f64 = 3.93;
-/// The claims: heading and footer, then per claim its lines (7.5 pt over the page) and margin.
-const CLAIMS_MM: f64 = 10.0;
-const CLAIM_LINE_MM: f64 = 3.25;
-const CLAIM_LINE_CHARS: usize = 135;
+const TABLE_MM: f64 = 18.5;
+const TABLE_ROW_MM: f64 = 4.4;
+/// The claims: heading and footer, then per claim its lines (8 pt over the page) and margin.
+const CLAIMS_MM: f64 = 10.5;
+const CLAIM_LINE_MM: f64 = 3.45;
+const CLAIM_LINE_CHARS: usize = 125;
 const CLAIM_MARGIN_MM: f64 = 1.0;
 /// The line naming the claims that do not fit.
 const BRIEF_MM: f64 = 8.0;
@@ -175,7 +175,7 @@ fn lines(chars: usize, per_line: usize) -> f64 {
 }
 
 fn figure_mm(f: &FigureCtx) -> f64 {
-    svg_height(&f.svg) * MM_PER_PX
+    svg_size(&f.svg, " height=\"") * COLUMN_MM / svg_size(&f.svg, " width=\"").max(1.0)
         + CAPTION_LINE_MM * lines(f.caption.chars().count() + 12, CAPTION_LINE_CHARS)
         + FIGURE_MARGIN_MM
 }
@@ -189,10 +189,11 @@ fn claim_mm(c: &ClaimCtx) -> f64 {
     CLAIM_LINE_MM * text + CLAIM_MARGIN_MM
 }
 
-/// The `height` attribute of an SVG root (0 when missing).
-fn svg_height(svg: &str) -> f64 {
+/// The `height` (or `width`) attribute of an SVG root, `attribute` being ` height="` (0 when
+/// missing).
+fn svg_size(svg: &str, attribute: &str) -> f64 {
     let root = &svg[..svg.find('>').unwrap_or(0)];
-    root.split_once(" height=\"")
+    root.split_once(attribute)
         .and_then(|(_, rest)| rest.split('"').next())
         .and_then(|h| h.parse().ok())
         .unwrap_or(0.0)
@@ -206,7 +207,7 @@ mod tests {
         FigureCtx {
             id: id.to_string(),
             caption: "A caption of one line.".to_string(),
-            svg: format!("<svg width=\"900\" height=\"{height}\" viewBox=\"0 0 900 {height}\">"),
+            svg: format!("<svg width=\"440\" height=\"{height}\" viewBox=\"0 0 440 {height}\">"),
             file: String::new(),
         }
     }
@@ -252,7 +253,7 @@ mod tests {
             Vec::new(),
         );
         assert_eq!((page.columns[0].len(), page.columns[1].len()), (1, 1));
-        assert_eq!(svg_height(&figure("x", 624).svg), 624.0);
+        assert_eq!(svg_size(&figure("x", 624).svg, " height=\""), 624.0);
     }
 
     #[test]
@@ -291,7 +292,7 @@ mod tests {
         let column = page_two(draw(Geometry::COLUMN).unwrap(), 8, Vec::new());
         let filled = fill(draw, 8, Vec::new()).unwrap();
         assert!(filled.room_mm >= 0.0 && filled.room_mm < column.room_mm);
-        let height = |p: &PageTwo| svg_height(&p.columns[0][0].figure.svg);
+        let height = |p: &PageTwo| svg_size(&p.columns[0][0].figure.svg, " height=\"");
         assert!(height(&filled) > height(&column));
         // A page with no room left keeps the column canvas.
         let full = fill(draw, 40, Vec::new()).unwrap();

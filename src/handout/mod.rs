@@ -144,12 +144,16 @@ pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
             *label = words.text(label);
         }
     }
+    // The apparatus sketch (its free-body diagram drawn for a column's width) is always
+    // placed: second, beside the first figure.
+    let sketch = ctx.sketch.clone();
     let draw = |g| -> Result<Vec<FigureCtx>> {
         let mut figures = figure_contexts(&drawings, g)?;
         for f in &mut figures {
             f.caption = first_sentence(&f.caption).to_string();
             f.svg = words.lang().svg_numbers(&f.svg);
         }
+        figures.insert(1.min(figures.len()), sketch.clone());
         Ok(figures)
     };
     let page = layout::fill(
@@ -263,14 +267,12 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
             in_place.push(reason);
         }
         // "symbol = formula", "= substituted", "= result": a long line wraps between pieces.
-        let mut pieces = match note {
-            Note::Numbers => vec![format!("{} = {}", step.symbol, step.substituted())],
-            _ => vec![
-                format!("{} = {}", step.symbol, step.formula()),
-                format!("= {}", step.substituted()),
-            ],
+        let pieces = match note {
+            Note::Numbers => std::iter::once(format!("{} = {}", step.symbol, step.substituted()))
+                .chain(step.result_tex().map(|r| format!("= {r}")))
+                .collect(),
+            _ => step.worked_pieces(),
         };
-        pieces.extend(step.result_tex().map(|r| format!("= {r}")));
         shown.push(StepCtx {
             key: step.key.id().to_string(),
             equation: step.equation.to_string(),
@@ -326,12 +328,8 @@ pub fn render(
             format!("{id}.md"),
             page(&tera, "handout.md", &ctx)?,
         ));
-        let scene = &handout.scene;
-        files.extend(
-            std::iter::once(&scene.sketch)
-                .chain(&scene.figures)
-                .map(FigureCtx::out_file),
-        );
+        // The figures of page 2, the apparatus sketch among them.
+        files.extend(handout.scene.figures.iter().map(FigureCtx::out_file));
     }
     Ok(files)
 }

@@ -15,7 +15,6 @@
 
 use std::fmt::Write as _;
 
-use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::WoodpeckerParams;
 
 /// What the body is doing in the sketch: it decides which friction law labels the friction
@@ -41,41 +40,25 @@ impl Phase {
 
 /// Width of every sketch (px of the SVG user space).
 const WIDTH: f64 = 900.0;
-/// Label and small-print font sizes (px).
-const FONT: f64 = 16.0;
-const SMALL: f64 = 13.5;
+/// The woodpecker's label size and smallest glyph, subscripts included (px): 29 px of 900
+/// print at 8.3 pt across a 90.5 mm column (A4, two columns), the width it is printed at.
+const W_FONT: f64 = 30.0;
+const W_SUB: f64 = 29.0;
 /// Arrowhead length and half-width (px).
-const HEAD_LEN: f64 = 11.0;
+pub(crate) const HEAD_LEN: f64 = 11.0;
 const HEAD_HALF: f64 = 5.0;
 
 /// Okabe & Ito colours, as in the charts (`figures::style::PALETTE`).
-const BLUE: &str = "#0072B2"; // pulling force F
-const VERMILLION: &str = "#D55E00"; // friction
-const GREEN: &str = "#009E73"; // normal / contact forces
-const PURPLE: &str = "#CC79A7"; // spring and its force
-const ORANGE: &str = "#E69F00"; // velocity
-const INK: &str = "currentColor"; // outlines, text, weights
-
-/// The pulled mass of Sec. 2: the block m on the table, pulled by F, pressed by the spring k
-/// with the equal mass m' hanging under it through a slot in the table (paper Sec. 2).
-///
-/// The forces on the block are drawn to one scale (a 100 mN bar gives it) at one instant:
-/// [`Phase::Stuck`] at t = 0, where N = 2W and static friction balances F; [`Phase::Slipping`]
-/// at the slip onset, where F = μs N (or t = 0 for an immediate slip, F > 2μs W) and the
-/// friction drops to μd N.
-pub fn pulled_mass(p: &PulledMassParams, phase: Phase) -> String {
-    draw_pulled_mass(p, phase, Labels::Computed)
-}
-
-/// The pulled mass at rest at t = 0 labelled with the given values only, for a worksheet: the
-/// derived values (W, T, N, φ) are the student's to work out, so they are named, not numbered.
-pub fn pulled_mass_givens(p: &PulledMassParams) -> String {
-    draw_pulled_mass(p, Phase::Stuck, Labels::Givens)
-}
+pub(crate) const BLUE: &str = "#0072B2"; // pulling force F
+pub(crate) const VERMILLION: &str = "#D55E00"; // friction
+pub(crate) const GREEN: &str = "#009E73"; // normal / contact forces
+pub(crate) const PURPLE: &str = "#CC79A7"; // spring and its force
+pub(crate) const ORANGE: &str = "#E69F00"; // velocity
+pub(crate) const INK: &str = "currentColor"; // outlines, text, weights
 
 /// Which values the labels of a sketch show.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Labels {
+pub(crate) enum Labels {
     /// Given and derived values (W, T, N, …).
     Computed,
     /// Given values only; derived ones by their symbols.
@@ -84,267 +67,12 @@ enum Labels {
 
 impl Labels {
     /// `symbolic`, then ` = value` unless only givens are shown.
-    fn derived(self, symbolic: &str, value: String) -> String {
+    pub(crate) fn derived(self, symbolic: &str, value: String) -> String {
         match self {
             Labels::Computed => format!("{symbolic} = {value}"),
             Labels::Givens => symbolic.to_string(),
         }
     }
-}
-
-fn draw_pulled_mass(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
-    let w = p.weight();
-    let f = p.force;
-    let immediate = f > 2.0 * p.mu_s * w;
-    // The instant drawn: N there, and the friction on the block.
-    let (n, friction, instant) = match phase {
-        Phase::Stuck if immediate => (2.0 * w, p.mu_s * 2.0 * w, "t = 0"),
-        Phase::Stuck => (2.0 * w, f, "t = 0"),
-        Phase::Slipping if immediate => (2.0 * w, p.mu_d * 2.0 * w, "t = 0"),
-        Phase::Slipping => (f / p.mu_s, p.mu_d * f / p.mu_s, "the slip onset"),
-    };
-    let period = p.period();
-
-    // One force scale: the largest force drawn is 190 px.
-    let biggest = [2.0 * w, f, n, friction].into_iter().fold(0.0, f64::max);
-    let scale = 190.0 / biggest;
-    let len = |force: f64| (force * scale).max(HEAD_LEN + 4.0);
-
-    let height = 470.0;
-    let mut s = Svg::new(height);
-    let title = format!(
-        "Pulled mass, {}: block, pulling force, spring and hanging mass",
-        phase.words()
-    );
-    let friction_words = match (phase, immediate) {
-        (Phase::Stuck, false) => format!(
-            "static friction F_f = F = {} balances the pull (it could reach μs N = {})",
-            mn(friction),
-            mn(p.mu_s * n)
-        ),
-        (Phase::Stuck, true) => format!(
-            "the pull exceeds the static capacity μs N = {}: the block cannot stay at rest",
-            mn(friction)
-        ),
-        (Phase::Slipping, _) => format!("dynamic friction F_f = μd N = {}", mn(friction)),
-    };
-    let desc = if labels == Labels::Givens {
-        format!(
-            "A block of mass m = {m} lies on a table and is pulled to the right by a constant \
-             force F = {F}. Under it, through a slot in the table, a spring of stiffness k = {k} \
-             carries a second mass m' = m = {m} that oscillates, so the normal force N(t) swings \
-             between 0 and twice the block's weight. Friction coefficients μs = {mus}, μd = \
-             {mud}. Drawn at rest at t = 0.",
-            m = grams(p.mass),
-            F = mn(f),
-            k = plain(p.k, "N/m"),
-            mus = num(p.mu_s),
-            mud = num(p.mu_d),
-        )
-    } else {
-        format!(
-        "A block of mass m = {m} lies on a table and is pulled to the right by a constant force \
-         F = {F}. Under it, through a slot in the table, a spring of stiffness k = {k} carries a \
-         second mass m' = m = {m} that oscillates with period T = {T}, so the normal force \
-         N(t) = W (1 + cos ωt) swings between 0 and 2W = {N2}, with W = mg = {W}. Friction \
-         coefficients μs = {mus}, μd = {mud}. Drawn at {instant}: N = {N}, {friction_words}. \
-         Force arrows to one scale.",
-        m = grams(p.mass),
-        F = mn(f),
-        k = plain(p.k, "N/m"),
-        T = ms(period),
-        N2 = mn(2.0 * w),
-        W = mn(w),
-        mus = num(p.mu_s),
-        mud = num(p.mu_d),
-        N = mn(n),
-    )
-    };
-    s.open(&title, &desc);
-
-    // Header.
-    s.text(
-        24.0,
-        32.0,
-        "start",
-        FONT,
-        &format!("Pulled mass, {}: drawn at {instant}", phase.words()),
-    );
-    let rule = match phase {
-        Phase::Stuck => "stuck while F ≤ μ_{s} N(t)",
-        Phase::Slipping => "slips once F > μ_{s} N(t); while sliding, friction is μ_{d} N(t)",
-    };
-    s.text(24.0, 54.0, "start", SMALL, rule);
-
-    // The table: two slabs and the slot between them (the block rides on its edges).
-    let top = 300.0;
-    let slab = 20.0;
-    let (slot_l, slot_r) = (250.0, 640.0);
-    for (x0, x1) in [(40.0, slot_l), (slot_r, 860.0)] {
-        s.rect(x0, top, x1 - x0, slab, 0.18, 1.2);
-    }
-    s.dashed(slot_l, top, slot_r, top, INK, 1.0);
-    s.dashed(slot_l, top + slab, slot_r, top + slab, INK, 1.0);
-    s.text(slot_r - 6.0, top - 8.0, "end", SMALL, "slot in the table");
-
-    // The block.
-    let (bx, bw, bh) = (345.0, 180.0, 80.0);
-    let by = top - bh;
-    let cx = bx + bw / 2.0;
-    s.rect(bx, by, bw, bh, 0.12, 1.6);
-    s.text(
-        cx,
-        by + bh / 2.0 + 6.0,
-        "middle",
-        FONT,
-        &format!("m = {}", grams(p.mass)),
-    );
-
-    // Spring and hanging mass under the block.
-    let spring_top = top;
-    let (hw, hh) = (74.0, 46.0);
-    let hang_y = top + 82.0;
-    s.spring(cx, spring_top, hang_y, 7, 13.0, PURPLE);
-    s.rect(cx - hw / 2.0, hang_y, hw, hh, 0.12, 1.6);
-    s.text(
-        cx + hw / 2.0 + 10.0,
-        hang_y + 20.0,
-        "start",
-        FONT,
-        &format!("m' = m = {}", grams(p.mass)),
-    );
-    s.text(
-        cx + hw / 2.0 + 10.0,
-        hang_y + 40.0,
-        "start",
-        SMALL,
-        &labels.derived("oscillates: T = 2π√(m'/k)", ms(period)),
-    );
-    s.text(
-        cx - 20.0,
-        top + 46.0,
-        "end",
-        FONT,
-        &format!("k = {}", plain(p.k, "N/m")),
-    );
-    // The oscillation, a double arrow left of the hanging mass.
-    let ox = cx - hw / 2.0 - 16.0;
-    s.dimension(
-        None,
-        (ox, hang_y - 2.0),
-        (ox, hang_y + hh + 2.0),
-        PURPLE,
-        2.0,
-    );
-
-    // Pulling force F, on a short rope from the block's right face.
-    let fy = by + bh / 2.0 - 6.0;
-    let f_end = bx + bw + 18.0 + len(f);
-    s.line(bx + bw, fy, bx + bw + 18.0, fy, INK, 1.5);
-    s.arrow(
-        Some("force-f"),
-        (bx + bw + 18.0, fy),
-        (f_end, fy),
-        BLUE,
-        3.0,
-    );
-    s.text(
-        bx + bw + 22.0,
-        fy - 12.0,
-        "start",
-        FONT,
-        &format!("F = {}", mn(f)),
-    );
-
-    // Friction on the block, along the table surface, against the (coming) motion.
-    let ff_y = top - 7.0;
-    s.arrow(
-        Some("force-friction"),
-        (bx, ff_y),
-        (bx - len(friction), ff_y),
-        VERMILLION,
-        3.0,
-    );
-    let ff_label = match (phase, immediate) {
-        (Phase::Stuck, false) => "F_{f} = F ≤ μ_{s} N".to_string(),
-        (Phase::Stuck, true) => labels.derived("F_{f} = μ_{s} N", mn(friction)),
-        (Phase::Slipping, _) => format!("F_{{f}} = μ_{{d}} N = {}", mn(friction)),
-    };
-    s.text(bx - 8.0, ff_y - 12.0, "end", FONT, &ff_label);
-
-    // Normal force from the table: up, from the contact, in the block's left part; its label
-    // left of the block, level with the tip or with the block's top, whichever is higher.
-    let nx = bx + 40.0;
-    let n_tip = top - len(n);
-    s.arrow(Some("force-n"), (nx, top), (nx, n_tip), GREEN, 3.0);
-    let n_label_y = (n_tip + 12.0).min(by + 16.0);
-    s.text(
-        bx - 12.0,
-        n_label_y,
-        "end",
-        FONT,
-        &format!("{} at {instant}", labels.derived("N", mn(n))),
-    );
-    s.text(
-        bx - 12.0,
-        n_label_y + 20.0,
-        "end",
-        SMALL,
-        "N(t) = W(1 + cos ωt): 0 … 2W",
-    );
-
-    // Weight of the block, down from the block's centre height (right of the spring).
-    let wx = bx + bw - 40.0;
-    let w_tip = by + bh / 2.0 + len(w);
-    s.arrow(Some("force-w"), (wx, by + bh / 2.0), (wx, w_tip), INK, 3.0);
-    s.text(
-        wx + 12.0,
-        w_tip - 2.0,
-        "start",
-        FONT,
-        &labels.derived("W = mg", mn(w)),
-    );
-
-    // Velocity (slipping) or "v = 0" (stuck), above the block.
-    match phase {
-        Phase::Slipping => {
-            s.arrow(
-                None,
-                (cx - 40.0, by - 18.0),
-                (cx + 40.0, by - 18.0),
-                ORANGE,
-                5.0,
-            );
-            s.text(cx - 50.0, by - 12.0, "end", FONT, "v");
-        }
-        Phase::Stuck => s.text(cx, by - 14.0, "middle", FONT, "v = 0"),
-    }
-
-    // Friction coefficients and the force scale, bottom left.
-    s.text(
-        40.0,
-        height - 56.0,
-        "start",
-        FONT,
-        &format!("μ_{{s}} = {}, μ_{{d}} = {}", num(p.mu_s), num(p.mu_d)),
-    );
-    s.text(
-        40.0,
-        height - 34.0,
-        "start",
-        SMALL,
-        &labels.derived("φ = F/W", num(f / w)),
-    );
-    let bar = 0.1 * scale;
-    s.line(40.0, height - 16.0, 40.0 + bar, height - 16.0, INK, 3.0);
-    s.text(
-        48.0 + bar,
-        height - 11.0,
-        "start",
-        SMALL,
-        "100 mN (force scale)",
-    );
-    s.finish()
 }
 
 /// The falling woodpecker of Sec. 3 (paper Fig. 13): the sleeve on the vertical pole, tilted
@@ -384,8 +112,7 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     let n_max = lambda * fe_max.abs().max(fe_min.abs());
     let period = p.period();
 
-    let height = 560.0;
-    let mut s = Svg::new(height);
+    let mut s = Svg::sized(WIDTH, 0.0, W_SUB);
     let title = format!(
         "Falling woodpecker, {}: sleeve on the pole, spring and bird",
         phase.words()
@@ -441,30 +168,23 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     };
     s.open(&title, &desc);
     s.text(
-        24.0,
-        32.0,
+        20.0,
+        36.0,
         "start",
-        FONT,
+        W_FONT,
         &format!("Falling woodpecker, {}", phase.words()),
-    );
-    s.text(
-        24.0,
-        54.0,
-        "start",
-        SMALL,
-        "tilt of the sleeve greatly exaggerated",
     );
 
     // The sleeve: a hole of half-width a (pole + clearance) and half-height b, walls of
     // thickness `wall`, tilted clockwise by θ until the hole's top-left and bottom-right inner
     // corners touch the pole, with the contacts h apart vertically.
-    let px = 250.0;
+    let px = 300.0;
     let pole_half = 12.0;
     let clearance = 2.5;
     let wall = 14.0;
     let a = pole_half + clearance;
     let (theta, b) = sleeve_tilt(a, pole_half, h_px);
-    let (cx, cy) = (px, 210.0);
+    let (cx, cy) = (px, 250.0);
     let rot = |dx: f64, dy: f64| {
         let (sn, cs) = theta.sin_cos();
         (cx + dx * cs - dy * sn, cy + dx * sn + dy * cs)
@@ -477,6 +197,26 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     // The line of action of F_e: l from the pole's axis.
     let spring_x = px + l_px;
 
+    // The spring's geometry first: the bird at z = z0 and the band its centre sweeps decide
+    // where the lines of numbers below begin.
+    let bird_r = 19.0;
+    let natural = 44.0;
+    let z_zero = arm_end.1 + natural - z_lo.min(0.0) * scale;
+    let y_of = |z_mm: f64| z_zero + z_mm * scale;
+    let bird_y = y_of(z0_mm);
+    let (band_top, band_bot) = (y_of(z0_mm - d0_mm.abs()), y_of(z0_mm + d0_mm.abs()));
+    let f_len = 52.0;
+    let w_top = cy + b * 0.3;
+    let vy = w_top + 130.0;
+    let info_top = [
+        band_bot + 60.0,
+        bird_y + 130.0,
+        vy + 110.0,
+        c2.1 + f_len + 110.0,
+    ]
+    .into_iter()
+    .fold(0.0, f64::max);
+
     // The ring behind the pole, the pole, then the ring's two walls cut open in front.
     let ring = [
         rot(-a - wall, -b),
@@ -487,13 +227,19 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     s.polygon(&ring, INK, 0.08, 0.8);
     s.rect(
         px - pole_half,
-        74.0,
+        cy - b - 110.0,
         2.0 * pole_half,
-        height - 84.0,
+        info_top - 30.0 - (cy - b - 110.0),
         0.1,
         1.2,
     );
-    s.text(px + pole_half + 8.0, height - 16.0, "start", SMALL, "pole");
+    s.text(
+        px + pole_half + 8.0,
+        info_top - 40.0,
+        "start",
+        W_FONT,
+        "pole",
+    );
     let left_wall = [
         rot(-a - wall, -b),
         rot(-a, -b),
@@ -520,25 +266,17 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     s.dashed(c1.0, c1.1, px, c1.1, INK, 1.0);
     s.dashed(c2.0, c2.1, px, c2.1, INK, 1.0);
     s.dimension(Some("dim-h"), (px, c1.1), (px, c2.1), INK, 1.2);
-    let left_of_sleeve = cx - a - wall - 16.0;
+    let left_of_sleeve = cx - a - wall - 14.0;
     s.text(
         left_of_sleeve,
-        cy + 6.0,
+        cy + 12.0,
         "end",
-        FONT,
+        W_FONT,
         &format!("h = {}", mm_text(h_mm)),
-    );
-    s.text(
-        left_of_sleeve,
-        cy + 24.0,
-        "end",
-        SMALL,
-        "between the contacts",
     );
 
     // Contact forces N (horizontal, pushing the sleeve off the pole) and friction (up the pole).
     let n_len = 62.0;
-    let f_len = 52.0;
     s.arrow(
         Some("force-n"),
         (c1.0, c1.1),
@@ -553,14 +291,14 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         GREEN,
         3.0,
     );
-    s.text(c1.0 - n_len - 8.0, c1.1 + 6.0, "end", FONT, "N = λ|F_{e}|");
     s.text(
-        c2.0 + n_len + 6.0,
-        c2.1 + 26.0,
-        "start",
-        FONT,
+        c1.0 - n_len - 8.0,
+        c1.1 + 10.0,
+        "end",
+        W_FONT,
         "N = λ|F_{e}|",
     );
+    s.text(c2.0 + 20.0, c2.1 + 38.0, "start", W_FONT, "N = λ|F_{e}|");
     let f_label = match phase {
         Phase::Stuck => "F_{f} ≤ μ_{s} N",
         Phase::Slipping => "F_{f} = μ_{d} N",
@@ -572,7 +310,13 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         VERMILLION,
         3.0,
     );
-    s.text(c1.0 - 10.0, c1.1 - f_len / 2.0 - 4.0, "end", FONT, f_label);
+    s.text(
+        c1.0 - 12.0,
+        c1.1 - f_len / 2.0 - 6.0,
+        "end",
+        W_FONT,
+        f_label,
+    );
     s.arrow(
         Some("force-friction"),
         (c2.0, c2.1 + f_len),
@@ -580,33 +324,31 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         VERMILLION,
         3.0,
     );
-    s.text(c2.0 + 8.0, c2.1 + f_len + 18.0, "start", FONT, f_label);
+    s.text(c2.0 + 10.0, c2.1 + f_len + 24.0, "start", W_FONT, f_label);
 
     // Weight of the sleeve, from the left wall.
     let wx = cx - a - wall / 2.0 - 2.0;
-    let w_top = cy + b * 0.3;
     s.arrow(Some("force-w"), (wx, w_top), (wx, w_top + 80.0), INK, 3.0);
     s.text(
         wx - 10.0,
         w_top + 78.0,
         "end",
-        FONT,
+        W_FONT,
         &labels.derived("W_{S}", mn(ws)),
     );
 
     // Velocity of the sleeve, or "v = 0".
     let vx = 150.0;
-    let vy = w_top + 110.0;
     match phase {
         Phase::Slipping => {
             s.arrow(None, (vx, vy), (vx, vy + 70.0), ORANGE, 6.0);
-            s.text(vx - 14.0, vy + 42.0, "end", FONT, "v");
+            s.text(vx - 14.0, vy + 46.0, "end", W_FONT, "v");
         }
-        Phase::Stuck => s.text(vx, vy + 42.0, "middle", FONT, "v = 0"),
+        Phase::Stuck => s.text(vx, vy + 46.0, "middle", W_FONT, "v = 0"),
     }
 
     // l: from the pole's axis to the spring's line of action, above the sleeve.
-    let l_y = c1.1 - f_len - 22.0;
+    let l_y = c1.1 - f_len - 62.0;
     s.dashed(
         spring_x,
         arm_end.1 - 2.0 * arm_half,
@@ -619,27 +361,21 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     let l_mid = (px + spring_x) / 2.0;
     s.text(
         l_mid,
-        l_y - 8.0,
+        l_y - 10.0,
         "middle",
-        FONT,
+        W_FONT,
         &format!("l = {}", mm_text(l_mm)),
     );
     s.text(
-        l_mid + 10.0,
-        l_y + 24.0,
+        l_mid + 20.0,
+        l_y + 36.0,
         "middle",
-        SMALL,
+        W_FONT,
         &labels.derived("λ = l/h", num(lambda)),
     );
 
     // The spring: natural length, then the coordinate z; the bird drawn at z = z0, and the band
     // its centre sweeps, z0 − d0 … z0 + d0.
-    let bird_r = 19.0;
-    let natural = 44.0;
-    let z_zero = arm_end.1 + natural - z_lo.min(0.0) * scale;
-    let y_of = |z_mm: f64| z_zero + z_mm * scale;
-    let bird_y = y_of(z0_mm);
-    let (band_top, band_bot) = (y_of(z0_mm - d0_mm.abs()), y_of(z0_mm + d0_mm.abs()));
     s.band(
         spring_x - bird_r - 8.0,
         band_top,
@@ -649,18 +385,21 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     );
     s.spring(spring_x, arm_end.1, bird_y - bird_r, 8, 11.0, PURPLE);
     bird(&mut s, spring_x, bird_y, bird_r);
+    let left_of_band = spring_x - bird_r - 14.0;
+    let below_friction = c2.1 + f_len + 64.0;
+    let mw_y = (bird_y + 40.0).max(below_friction);
     s.text(
-        spring_x - bird_r - 16.0,
-        bird_y + 6.0,
+        left_of_band,
+        mw_y,
         "end",
-        FONT,
-        &format!("bird m_{{W}} = {}", grams(p.m_bird)),
+        W_FONT,
+        &format!("m_{{W}} = {}", grams(p.m_bird)),
     );
     s.text(
-        spring_x - 22.0,
-        (bird_y - 40.0).max(arm_end.1 + 30.0),
+        left_of_band,
+        mw_y + 36.0,
         "end",
-        FONT,
+        W_FONT,
         &format!("k = {}", plain(p.k, "N/m")),
     );
 
@@ -673,7 +412,13 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         PURPLE,
         3.0,
     );
-    s.text(fe_x + 10.0, arm_end.1 + 24.0, "start", FONT, "F_{e} = k z");
+    s.text(
+        fe_x + 10.0,
+        arm_end.1 - 10.0,
+        "start",
+        W_FONT,
+        "F_{e} = k z",
+    );
 
     // z0 and d0 as a chain of dimensions right of the band.
     let dim_x = spring_x + bird_r + 36.0;
@@ -700,66 +445,56 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         s.dimension(Some("dim-z0"), (dim_x, y0), (dim_x, bird_y), INK, 1.2);
     }
     s.dimension(Some("dim-d0"), (dim_x, bird_y), (dim_x, band_bot), INK, 1.2);
-    // The z = 0 line's labels go on its side away from the bird (above it when z0 ≥ 0); the
+    // The z = 0 line's label goes on its side away from the bird (above it when z0 ≥ 0); the
     // z0 label at the middle of its dimension, or beside the bird's line when that is short.
     let bird_above = z0_mm < 0.0;
-    let (formula_y, zero_y) = if bird_above {
-        (y0 + 40.0, y0 + 20.0)
-    } else {
-        (y0 - 28.0, y0 - 8.0)
-    };
-    s.text(
-        lx,
-        formula_y,
-        "start",
-        SMALL,
-        &labels.derived("z = z_{0} + d_{0} cos ωt, T", ms(period)),
-    );
-    s.text(lx, zero_y, "start", SMALL, "z = 0: spring unstretched");
-    let z0_y = if (y0 - bird_y).abs() >= 34.0 {
-        (y0 + bird_y) / 2.0 + 6.0
+    let zero_y = if bird_above { y0 + 34.0 } else { y0 - 8.0 };
+    s.text(lx, zero_y, "start", W_FONT, "z = 0: unstretched");
+    let z0_y = if (y0 - bird_y).abs() >= 70.0 {
+        (y0 + bird_y) / 2.0 + 10.0
     } else if bird_above {
         bird_y - 10.0
     } else {
-        bird_y + 22.0
+        bird_y + 32.0
     };
     s.text(
         lx,
         z0_y,
         "start",
-        FONT,
-        &format!("z_{{0}} = {} (offset)", mm_text(z0_mm)),
+        W_FONT,
+        &format!("z_{{0}} = {}", mm_text(z0_mm)),
     );
-    let d0_from = if bird_above { formula_y + 10.0 } else { bird_y };
-    let d0_y = ((d0_from + band_bot) / 2.0 + 6.0).max(z0_y + 30.0);
+    let d0_y = ((bird_y + band_bot) / 2.0 + 10.0).max(z0_y + 36.0);
     s.text(
         lx,
         d0_y,
         "start",
-        FONT,
-        &format!("d_{{0}} = {} (amplitude)", mm_text(d0_mm)),
-    );
-    s.text(
-        lx,
-        d0_y + 20.0,
-        "start",
-        SMALL,
-        "shaded: the range of the bird's centre",
+        W_FONT,
+        &format!("d_{{0}} = {}", mm_text(d0_mm)),
     );
 
-    // The numbers that are not lengths, bottom left.
-    let mut info = vec![
-        format!("sleeve m_{{S}} = {}", grams(p.m_sleeve)),
-        format!("μ_{{s}} = {}, μ_{{d}} = {}", num(p.mu_s), num(p.mu_d)),
-    ];
+    // The numbers that are not drawn, and the reading of the drawing, below it.
+    let mut info = vec![format!(
+        "sleeve m_{{S}} = {}, μ_{{s}} = {}, μ_{{d}} = {}",
+        grams(p.m_sleeve),
+        num(p.mu_s),
+        num(p.mu_d)
+    )];
+    info.push(labels.derived("z = z_{0} + d_{0} cos ωt, T", ms(period)));
     if labels == Labels::Computed {
-        info.push(format!("F_{{e}} from {} to {}", mn(fe_min), mn(fe_max)));
-        info.push(format!("N up to {}", mn(n_max)));
+        info.push(format!(
+            "F_{{e}} from {} to {}, N up to {}",
+            mn(fe_min),
+            mn(fe_max),
+            mn(n_max)
+        ));
     }
+    info.push("shaded: the range of the bird's centre".to_string());
+    info.push("h between the contacts; tilt exaggerated".to_string());
     for (i, line) in info.iter().enumerate() {
-        s.text(24.0, height - 92.0 + 22.0 * i as f64, "start", SMALL, line);
+        s.text(20.0, info_top + 36.0 * i as f64, "start", W_FONT, line);
     }
-    s.finish()
+    s.finish_at(info_top + 36.0 * (info.len() as f64 - 1.0) + 14.0)
 }
 
 /// The tilt θ (rad, clockwise) and the hole's half-height b of the sleeve: the hole's top-left
@@ -814,7 +549,7 @@ fn bird(s: &mut Svg, x: f64, y: f64, r: f64) {
 }
 
 /// A coordinate rounded to 0.1 px, without a trailing ".0" and never "-0".
-fn c(v: f64) -> String {
+pub(crate) fn c(v: f64) -> String {
     let r = (v * 10.0).round() / 10.0;
     let r = if r == 0.0 { 0.0 } else { r };
     let t = format!("{r:.1}");
@@ -822,7 +557,7 @@ fn c(v: f64) -> String {
 }
 
 /// A number to four significant digits, trailing zeros dropped, with a true minus sign.
-fn num(v: f64) -> String {
+pub(crate) fn num(v: f64) -> String {
     if !v.is_finite() {
         return "—".to_string();
     }
@@ -842,32 +577,32 @@ fn num(v: f64) -> String {
 }
 
 /// A value with its unit, separated by a space.
-fn plain(v: f64, unit: &str) -> String {
+pub(crate) fn plain(v: f64, unit: &str) -> String {
     format!("{} {unit}", num(v))
 }
 
 /// A force in N, shown in mN.
-fn mn(newton: f64) -> String {
+pub(crate) fn mn(newton: f64) -> String {
     plain(newton * 1e3, "mN")
 }
 
 /// A mass in kg, shown in g.
-fn grams(kg: f64) -> String {
+pub(crate) fn grams(kg: f64) -> String {
     plain(kg * 1e3, "g")
 }
 
 /// A time in s, shown in ms.
-fn ms(s: f64) -> String {
+pub(crate) fn ms(s: f64) -> String {
     plain(s * 1e3, "ms")
 }
 
 /// A length already in mm.
-fn mm_text(mm: f64) -> String {
+pub(crate) fn mm_text(mm: f64) -> String {
     plain(mm, "mm")
 }
 
 /// XML escaping of text content and attribute values.
-fn escape(text: &str) -> String {
+pub(crate) fn escape(text: &str) -> String {
     text.replace('&', "&amp;")
         .replace('<', "&lt;")
         .replace('>', "&gt;")
@@ -877,46 +612,75 @@ fn escape(text: &str) -> String {
 /// A point of the SVG user space (px).
 type Point = (f64, f64);
 
-/// The SVG being written: its height, and the elements so far.
-struct Svg {
+/// The SVG being written: its size, the smallest subscript (px; 0: subscripts at 75 % of
+/// their label), and the elements so far.
+pub(crate) struct Svg {
+    width: f64,
     height: f64,
+    sub_min: f64,
     out: String,
 }
 
 impl Svg {
-    fn new(height: f64) -> Self {
+    /// A canvas `width` × `height` px whose subscripts print at no less than `sub_min` px
+    /// (a sketch drawn for a given printed width keeps every glyph at the legible size).
+    pub(crate) fn sized(width: f64, height: f64, sub_min: f64) -> Self {
         Self {
+            width,
             height,
+            sub_min,
             out: String::new(),
         }
     }
 
     /// The root element with its title and description.
-    fn open(&mut self, title: &str, desc: &str) {
+    pub(crate) fn open(&mut self, title: &str, desc: &str) {
         let _ = write!(
             self.out,
             "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 {w} {h}\" width=\"{w}\" \
              height=\"{h}\" preserveAspectRatio=\"xMidYMid meet\" role=\"img\" \
              style=\"max-width:100%;height:auto;color-scheme:light dark\" \
              font-family=\"sans-serif\" fill=\"{INK}\">\n<title>{title}</title>\n<desc>{desc}</desc>\n",
-            w = c(WIDTH),
+            w = c(self.width),
             h = c(self.height),
             title = escape(title),
             desc = escape(desc),
         );
     }
 
-    fn finish(mut self) -> String {
+    pub(crate) fn finish(mut self) -> String {
         self.out.push_str("</svg>\n");
         self.out
     }
 
-    fn raw(&mut self, element: &str) {
+    /// Like [`Svg::finish`], for a canvas whose height is known only once it is drawn: the
+    /// root written by [`Svg::open`] gets `height` (px).
+    fn finish_at(mut self, height: f64) -> String {
+        let old = format!(
+            " {} {}\" width=\"{}\" height=\"{}\"",
+            c(self.width),
+            c(self.height),
+            c(self.width),
+            c(self.height)
+        );
+        let new = format!(
+            " {} {}\" width=\"{}\" height=\"{}\"",
+            c(self.width),
+            c(height),
+            c(self.width),
+            c(height)
+        );
+        self.out = self.out.replacen(&old, &new, 1);
+        self.height = height;
+        self.finish()
+    }
+
+    pub(crate) fn raw(&mut self, element: &str) {
         self.out.push_str(element);
         self.out.push('\n');
     }
 
-    fn line(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
+    pub(crate) fn line(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
         let _ = writeln!(
             self.out,
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{stroke}\" stroke-width=\"{}\"/>",
@@ -928,7 +692,7 @@ impl Svg {
         );
     }
 
-    fn dashed(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
+    pub(crate) fn dashed(&mut self, x1: f64, y1: f64, x2: f64, y2: f64, stroke: &str, width: f64) {
         let _ = writeln!(
             self.out,
             "<line x1=\"{}\" y1=\"{}\" x2=\"{}\" y2=\"{}\" stroke=\"{stroke}\" stroke-width=\"{}\" \
@@ -942,7 +706,7 @@ impl Svg {
     }
 
     /// A body: outlined and filled in the ink at low opacity.
-    fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, opacity: f64, stroke: f64) {
+    pub(crate) fn rect(&mut self, x: f64, y: f64, w: f64, h: f64, opacity: f64, stroke: f64) {
         let _ = writeln!(
             self.out,
             "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{INK}\" fill-opacity=\"{}\" \
@@ -968,7 +732,7 @@ impl Svg {
         );
     }
 
-    fn polygon(&mut self, points: &[(f64, f64)], ink: &str, opacity: f64, stroke: f64) {
+    pub(crate) fn polygon(&mut self, points: &[(f64, f64)], ink: &str, opacity: f64, stroke: f64) {
         let pts: Vec<String> = points
             .iter()
             .map(|(x, y)| format!("{},{}", c(*x), c(*y)))
@@ -983,7 +747,7 @@ impl Svg {
         );
     }
 
-    fn circle(&mut self, x: f64, y: f64, r: f64, fill: &str) {
+    pub(crate) fn circle(&mut self, x: f64, y: f64, r: f64, fill: &str) {
         let _ = writeln!(
             self.out,
             "<circle cx=\"{}\" cy=\"{}\" r=\"{}\" fill=\"{fill}\"/>",
@@ -1008,7 +772,14 @@ impl Svg {
 
     /// An arrow from `from` to its head at `to`: a shaft and a filled head; in a
     /// `<g class="…">` when given a class, so that tests and stylesheets can find it.
-    fn arrow(&mut self, class: Option<&str>, from: Point, to: Point, color: &str, width: f64) {
+    pub(crate) fn arrow(
+        &mut self,
+        class: Option<&str>,
+        from: Point,
+        to: Point,
+        color: &str,
+        width: f64,
+    ) {
         let ((x1, y1), (x2, y2)) = (from, to);
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = dx.hypot(dy);
@@ -1047,7 +818,14 @@ impl Svg {
 
     /// A dimension line: thin, a head at each end, in a `<g>` (class `dimension` unless
     /// given) whose `data-length` is the distance measured (px).
-    fn dimension(&mut self, class: Option<&str>, from: Point, to: Point, color: &str, width: f64) {
+    pub(crate) fn dimension(
+        &mut self,
+        class: Option<&str>,
+        from: Point,
+        to: Point,
+        color: &str,
+        width: f64,
+    ) {
         let ((x1, y1), (x2, y2)) = (from, to);
         let (dx, dy) = (x2 - x1, y2 - y1);
         let len = dx.hypot(dy);
@@ -1076,7 +854,15 @@ impl Svg {
     }
 
     /// A vertical coil spring from y1 down to y2: straight ends, `coils` zigzags.
-    fn spring(&mut self, x: f64, y1: f64, y2: f64, coils: usize, half: f64, color: &str) {
+    pub(crate) fn spring(
+        &mut self,
+        x: f64,
+        y1: f64,
+        y2: f64,
+        coils: usize,
+        half: f64,
+        color: &str,
+    ) {
         let end = 10.0_f64.min((y2 - y1) / 4.0);
         let (a, b) = (y1 + end, y2 - end);
         let n = 2 * coils.max(1);
@@ -1101,7 +887,7 @@ impl Svg {
     }
 
     /// A text label. `_{…}` writes a subscript.
-    fn text(&mut self, x: f64, y: f64, anchor: &str, size: f64, label: &str) {
+    pub(crate) fn text(&mut self, x: f64, y: f64, anchor: &str, size: f64, label: &str) {
         let _ = write!(
             self.out,
             "<text x=\"{}\" y=\"{}\" text-anchor=\"{anchor}\" font-size=\"{}\" xml:space=\"preserve\">",
@@ -1110,19 +896,31 @@ impl Svg {
             c(size)
         );
         let shift = c(size * 0.3);
+        let sub = if self.sub_min > 0.0 {
+            c((0.85 * size).max(self.sub_min))
+        } else {
+            "75%".to_string()
+        };
         let mut rest = label;
         let mut lowered = false;
         while !rest.is_empty() {
             match rest.find("_{") {
                 Some(i) => {
                     let (before, after) = rest.split_at(i);
-                    push_run(&mut self.out, before, &mut lowered, false, &shift);
+                    push_run(&mut self.out, before, &mut lowered, false, &shift, &sub);
                     let close = after.find('}').unwrap_or(after.len());
-                    push_run(&mut self.out, &after[2..close], &mut lowered, true, &shift);
+                    push_run(
+                        &mut self.out,
+                        &after[2..close],
+                        &mut lowered,
+                        true,
+                        &shift,
+                        &sub,
+                    );
                     rest = after.get(close + 1..).unwrap_or("");
                 }
                 None => {
-                    push_run(&mut self.out, rest, &mut lowered, false, &shift);
+                    push_run(&mut self.out, rest, &mut lowered, false, &shift, &sub);
                     rest = "";
                 }
             }
@@ -1133,7 +931,7 @@ impl Svg {
 
 /// Writes one run of a label: plain, or a subscript (smaller, lowered); the baseline comes back
 /// with the first plain run after a subscript.
-fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &str) {
+fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &str, size: &str) {
     if run.is_empty() {
         return;
     }
@@ -1142,12 +940,12 @@ fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &
         (true, false) => {
             let _ = write!(
                 out,
-                "<tspan dy=\"{shift}\" font-size=\"75%\">{text}</tspan>"
+                "<tspan dy=\"{shift}\" font-size=\"{size}\">{text}</tspan>"
             );
             *lowered = true;
         }
         (true, true) => {
-            let _ = write!(out, "<tspan font-size=\"75%\">{text}</tspan>");
+            let _ = write!(out, "<tspan font-size=\"{size}\">{text}</tspan>");
         }
         (false, true) => {
             let _ = write!(out, "<tspan dy=\"-{shift}\">{text}</tspan>");
@@ -1160,6 +958,8 @@ fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::pulled_mass::sketch::{pulled_mass, pulled_mass_givens};
+    use crate::models::pulled_mass::PulledMassParams;
 
     fn both_models(phase: Phase) -> [String; 2] {
         [
@@ -1243,7 +1043,8 @@ mod tests {
                 assert!(root.has_tag_name("svg"));
                 assert_eq!(root.attribute("role"), Some("img"));
                 assert_eq!(root.attribute("font-family"), Some("sans-serif"));
-                assert!(root.attribute("viewBox").unwrap().starts_with("0 0 900 "));
+                let view = root.attribute("viewBox").unwrap();
+                assert!(view.starts_with("0 0 900 ") || view.starts_with("0 0 600 "));
                 assert!(root.attribute("style").unwrap().contains("max-width:100%"));
                 // <title> and <desc> come first, so that readers find them.
                 let first: Vec<&str> = root
@@ -1395,8 +1196,10 @@ mod tests {
             "m = 60 g",
             "F = 180 mN",
             "k = 45 N/m",
-            "W = mg = 588.6 mN",
-            "N = 1177 mN at t = 0",
+            "W = 588.6 mN",
+            "N = 1177 mN",
+            "S = 588.6 mN",
+            "vertical: N = W + S: 1177 = 588.6 + 588.6 mN",
         ] {
             assert!(labels.iter().any(|t| t == want), "{want}: {labels:?}");
         }
@@ -1404,16 +1207,14 @@ mod tests {
         for want in [
             "l = 16 mm",
             "h = 7 mm",
-            "z0 = 7 mm (offset)",
-            "d0 = 9 mm (amplitude)",
+            "z0 = 7 mm",
+            "d0 = 9 mm",
             "WS = 58.86 mN",
         ] {
             assert!(labels.iter().any(|t| t == want), "{want}: {labels:?}");
         }
         // The subscript is a lowered, smaller tspan, and the baseline comes back after it.
-        assert!(
-            wood.contains("W<tspan dy=\"4.8\" font-size=\"75%\">S</tspan><tspan dy=\"-4.8\"> = ")
-        );
+        assert!(wood.contains("W<tspan dy=\"9\" font-size=\"29\">S</tspan><tspan dy=\"-9\"> = "));
     }
 
     #[test]

@@ -7,8 +7,9 @@ use crate::engine::Run;
 use crate::error::{Error, Result};
 use crate::lang::Lang;
 use crate::models::{LawKind, Model};
-use crate::report::figures::chart::line_chart;
+use crate::report::figures::chart::line_chart_in;
 use crate::report::figures::spec::{Curve, LineChart, Marker, Panel, Stroke};
+use crate::report::figures::style::Geometry;
 use crate::report::scene::sampling::{curve, sample};
 
 /// Points of the figure over its two periods (event times are added).
@@ -61,7 +62,7 @@ pub fn v_figure(run: &Run) -> Result<(String, f64)> {
         }],
         markers: Vec::new(),
     };
-    let svg = line_chart(&chart).map_err(|e| figure_error(e.to_string()))?;
+    let svg = line_chart_in(&chart, Geometry::COLUMN).map_err(|e| figure_error(e.to_string()))?;
     Ok((svg, spacing))
 }
 
@@ -138,7 +139,7 @@ pub fn force_figure(case: &Model, lang: Lang) -> Result<String> {
         }],
         markers: grid,
     };
-    let svg = line_chart(&chart).map_err(|e| figure_error(e.to_string()))?;
+    let svg = line_chart_in(&chart, Geometry::COLUMN).map_err(|e| figure_error(e.to_string()))?;
     Ok(lang.svg_numbers(&svg))
 }
 

@@ -222,6 +222,20 @@ impl Words {
         }
     }
 
+    /// A worked step as formulas that a printed line wraps between (a whole step is often
+    /// wider than an A4 column); the TeX stays one line.
+    fn worked(&self, step: &Step) -> Math {
+        let pieces = step.worked_pieces();
+        Math {
+            mathml: pieces
+                .iter()
+                .map(|p| self.lang.mathml(p))
+                .collect::<Vec<_>>()
+                .join(" "),
+            tex: self.lang.tex(&pieces.join(" ")),
+        }
+    }
+
     pub(crate) fn number(&self, text: &str) -> String {
         self.lang.number(text)
     }
@@ -348,14 +362,14 @@ fn answer_ctx(
         for s in derivation::working(steps, step) {
             if !shown.contains(&s.symbol) {
                 shown.push(s.symbol);
-                working.push(words.math(&s.worked_tex()));
+                working.push(words.worked(s));
             }
         }
         shown.push(step.symbol);
     }
     let worked = match (&a.step, q.kind) {
         (_, Kind::Regime(_)) => Some(words.math(&comparisons_tex(&a.comparisons))),
-        (Some(step), _) => Some(words.math(&step.worked_tex())),
+        (Some(step), _) => Some(words.worked(step)),
         (None, _) => None,
     };
     Ok(AnswerCtx {

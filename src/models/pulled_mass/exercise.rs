@@ -107,7 +107,7 @@ impl Exercise for PulledMassParams {
     }
 
     fn sketch_givens(&self) -> String {
-        crate::report::sketch::pulled_mass_givens(self)
+        super::sketch::pulled_mass_givens(self)
     }
 
     fn regime_rules() -> &'static [(Regime, &'static str)] {

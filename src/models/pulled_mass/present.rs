@@ -1,6 +1,6 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, tables, teaching, PulledMassParams};
+use super::{derivation, results, scene, sketch, tables, teaching, PulledMassParams};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
@@ -8,7 +8,7 @@ use crate::handout::physics::Note;
 use crate::present::{Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
-use crate::report::sketch::{self, Phase};
+use crate::report::sketch::Phase;
 use crate::report::{OutFile, Scene};
 
 impl Present for PulledMassParams {
