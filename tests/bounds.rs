@@ -124,12 +124,17 @@ fn check_symbols_refuses_json_and_bare_commands_say_error() {
         &["check", "pulled-mass", "--symbols", "--json"],
         &["--json"],
     );
-    for args in [&[][..], &["eval"][..], &["claims"][..]] {
+    for args in [&[][..], &["eval"][..], &["sweep"][..]] {
         let out = run(args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.starts_with("error:"), "{args:?}: {err}");
     }
+    // `claims` alone judges both models at the paper's sets (issue 28).
+    let out = run(&["claims", "--samples", "5"]);
+    assert_eq!(out.status.code(), Some(0));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("pulled") && text.contains("woodpecker"), "{text}");
 }
 
 #[test]

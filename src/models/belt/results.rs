@@ -118,7 +118,7 @@ pub fn evaluate_with_run(p: &BeltParams, cycles: u32) -> Result<(Evaluation, Sur
     };
     let run = integrate_surface(&body(p), &surface_law(p)?, &opts)?;
     let integration = measure(p, &run, cycles)?;
-    let checks = checks(&c, &integration);
+    let checks = checks(p, &c, &integration);
     let evaluation = Evaluation {
         model: super::ID,
         params: ParamsOut {
@@ -216,12 +216,15 @@ fn measure(p: &BeltParams, run: &SurfaceRun, cycles: u32) -> Result<Integration>
 /// (the stick's end x_e carries the rounding of the arc's amplitude A, and t_stick = 2Δ/v_b is
 /// its difference with x_s); positions, and the amplitude measured as half the distance
 /// between the extremes, on the scale of the positions they are computed from (A or x_s); the
-/// shares on 1.
-fn checks(c: &ClosedForm, m: &Integration) -> Vec<Check> {
+/// shares on 1; the belt's power on the static capacity dragged at the belt's speed, μs m g v_b
+/// (its work over a stick is ½k(x_s² − x_e²), whose factor x_s + x_e = 2x_d is a difference
+/// of positions of size x_s: with μd ≪ μs it carries eps·x_s, not eps·x_d).
+fn checks(p: &BeltParams, c: &ClosedForm, m: &Integration) -> Vec<Check> {
     let scale = |key: Key| match key {
         Key::TSlip | Key::TStick | Key::Period => c.period,
         Key::XSlipEnd | Key::XMax | Key::XMin | Key::Amplitude => c.amplitude.max(c.x_s),
         Key::StickShare | Key::SlipShare => 1.0,
+        Key::PowerBelt => p.mu_s * p.mass * p.g * p.v_b,
         _ => 0.0,
     };
     let mut out: Vec<Check> = super::quantity::ALL
