@@ -117,23 +117,24 @@ pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
             ),
             _ => format!("{}: the exact engine failed.", p.title),
         };
-        // The target against the compiled peers: the exact engine ≥ 10× the fastest at 1e-10,
-        // where the arcs are not polynomials that an RK method of order ≥ 3 integrates exactly.
+        // The target against the compiled peers: the exact engine ≥ 10× the fastest that
+        // misses no event at 1e-10 (a peer that misses events solves an easier problem), where
+        // the arcs are not polynomials that an RK method of order ≥ 3 integrates exactly.
         let exact_at_target =
             at_level(&p.id, "exact", Metric::EventTime, TARGET_LEVEL).and_then(|c| c.time_s);
         if p.id.contains("harmonic") {
-            sentence.push_str(&match (exact_at_target, fastest_peer(TARGET_LEVEL, false)) {
-                (Some(e), Some((t, name))) => format!(
-                    " At {TARGET_LEVEL:.0e} s: {name}, {}× the exact time (target ≥ {TARGET_RATIO}×: {}).{}",
+            sentence.push_str(&match (exact_at_target, fastest_peer(TARGET_LEVEL, true)) {
+                (Some(e), Some((t, name))) => {
+                    format!(
+                    " At {TARGET_LEVEL:.0e} s: {name} (the fastest compiled peer that misses no \
+                     event), {}× the exact time (target ≥ {TARGET_RATIO}×: {}).",
                     sig(Some(t / e), 3),
                     if t / e >= TARGET_RATIO { "met" } else { "not met" },
-                    caveat(
-                        name,
-                        TARGET_LEVEL,
-                        headline_peer.is_some_and(|(_, first)| first == name)
-                    )
-                ),
-                _ => format!(" No compiled peer reached {TARGET_LEVEL:.0e} s."),
+                )
+                }
+                _ => {
+                    format!(" No compiled peer that misses no event reached {TARGET_LEVEL:.0e} s.")
+                }
             });
         } else {
             sentence.push_str(

@@ -354,7 +354,8 @@ enum Measure {
     Skip(String),
 }
 
-/// The checks of `case` on the standard run.
+/// The checks of `case` on the standard run (the linearized law only: the harmonic law is not
+/// integrated).
 fn checks_of(case: &Model) -> Result<Vec<crate::results::Check>> {
     Ok(
         with_capability!(case, exercise, p => p.checks_and_linear_run(DEFAULT_PERIODS, false)?.0,
@@ -374,8 +375,13 @@ fn measured_elsewhere(
 /// The measured value of `quantity` on `case`: the numeric side of the tool's check of it (or,
 /// where its closed form describes another regime, of the checks that measure the same thing
 /// here), where that check passes, so the integration is known to be right on this set.
-fn measured(case: &Model, quantity: &str) -> Result<Measure> {
-    let checks = checks_of(case)?;
+/// `checks` are those of `case` ([`checks_of`]).
+fn measured(
+    case: &Model,
+    quantity: &str,
+    checks: Result<Vec<crate::results::Check>>,
+) -> Result<Measure> {
+    let checks = checks?;
     let regime = || crate::report::context::regime_words(case.closed_form_regime());
     if quantity == STICKS {
         let check = checks.iter().find(|c| c.quantity.id() == "regime");
@@ -430,9 +436,9 @@ pub struct Named {
     pub words: String,
 }
 
-/// The measurable quantities of the checks on `case`.
-fn measurable(case: &Model) -> Result<Vec<Named>> {
-    Ok(checks_of(case)?
+/// The measurable quantities of `checks` (those of one set).
+fn measurable(checks: &[crate::results::Check]) -> Vec<Named> {
+    checks
         .iter()
         .filter(|c| matches!(c.numeric, CheckValue::Number(_)))
         .map(|c| match c.quantity {
@@ -446,13 +452,14 @@ fn measurable(case: &Model) -> Result<Vec<Named>> {
                 ..Named::default()
             },
         })
-        .collect())
+        .collect()
 }
 
+/// The sample of `case`, whose checks are `checks` ([`checks_of`]).
 fn sample(
     formula: &Formula,
     sources: &[Source],
-    case: Model,
+    (case, checks): (Model, Result<Vec<crate::results::Check>>),
     quantity: &str,
     near: Option<Near>,
 ) -> Result<Sample> {
@@ -470,7 +477,7 @@ fn sample(
     };
     // A set the model cannot evaluate (a combination out of double precision's range) is no
     // evidence either way.
-    let measure = match measured(&case, quantity) {
+    let measure = match measured(&case, quantity, checks) {
         Ok(m) => m,
         Err(e) if e.exit_code() == 2 => Measure::Skip(format!("not computable: {e}")),
         Err(e) => return Err(e),
@@ -640,10 +647,12 @@ pub fn run(req: &Request) -> Result<Report> {
     let drawn = draw_sample(req.case, req.samples, req.seed, req.regime.as_deref())?;
     // The names of the measurable quantities, from the given set and a pilot drawn over every
     // regime (whatever `--regime` keeps).
-    let mut names = measurable(&req.case)?;
+    // The given set's checks, once: for the names and for its sample.
+    let given_checks = checks_of(&req.case)?;
+    let mut names = measurable(&given_checks);
     for (case, _) in draw_sample(req.case, PILOT, req.seed, None)? {
-        if let Ok(here) = measurable(&case) {
-            names.extend(here);
+        if let Ok(here) = checks_of(&case) {
+            names.extend(measurable(&here));
         }
     }
     names.push(Named {
@@ -658,7 +667,13 @@ pub fn run(req: &Request) -> Result<Report> {
         .cloned()
         .unwrap_or_default();
     let sources = sources(&req.case, &formula);
-    let mut given = sample(&formula, &sources, req.case, &quantity, None)?;
+    let mut given = sample(
+        &formula,
+        &sources,
+        (req.case, Ok(given_checks)),
+        &quantity,
+        None,
+    )?;
     if req.regime.as_deref().is_some_and(|r| r != given.regime) {
         given.agrees = None;
         given.rel_error = None;
@@ -666,7 +681,10 @@ pub fn run(req: &Request) -> Result<Report> {
     }
     let samples = drawn
         .into_par_iter()
-        .map(|(case, near)| sample(&formula, &sources, case, &quantity, near))
+        .map(|(case, near)| {
+            let checks = checks_of(&case);
+            sample(&formula, &sources, (case, checks), &quantity, near)
+        })
         .collect::<Result<Vec<_>>>()?;
     let read_as = ReadAs {
         plain: formula.plain(),

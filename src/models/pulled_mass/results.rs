@@ -74,73 +74,114 @@ pub fn evaluate_with_runs(
     periods: u32,
     record_segments: bool,
 ) -> Result<(Evaluation, Runs)> {
+    let linear = linear_part(p, periods, record_segments)?;
+    let harmonic_run = run_of(p, LawKind::Harmonic, periods, record_segments)?;
+    let applicability = applicability(&linear.closed_form);
+    let evaluation = Evaluation {
+        model: "pulled-mass",
+        params: ParamsOut::of(p, periods),
+        closed_form: linear.closed_form,
+        linear: linear.summary,
+        harmonic: summary_of(p, &harmonic_run),
+        checks: linear.checks,
+        applicability,
+    };
+    in_range(
+        &evaluation.params,
+        &evaluation.closed_form,
+        [&evaluation.linear, &evaluation.harmonic],
+    )?;
+    let runs = Runs {
+        linear: linear.run,
+        harmonic: harmonic_run,
+    };
+    Ok((evaluation, runs))
+}
+
+/// Only what the checks read: the closed forms against the linearized law's run (returned, with
+/// segments when `record_segments`); the harmonic law is not integrated. Refuses what
+/// [`evaluate_with_runs`] refuses on the same grounds (parameters, closed forms, linear run).
+pub fn linear_checks(
+    p: &PulledMassParams,
+    periods: u32,
+    record_segments: bool,
+) -> Result<(Vec<Check>, Run)> {
+    let linear = linear_part(p, periods, record_segments)?;
+    in_range(
+        &ParamsOut::of(p, periods),
+        &linear.closed_form,
+        [&linear.summary],
+    )?;
+    Ok((linear.checks, linear.run))
+}
+
+/// The closed forms, the linearized law's run and summary, and the checks against them.
+struct Linear {
+    closed_form: ClosedForm,
+    run: Run,
+    summary: Summary,
+    checks: Vec<Check>,
+}
+
+fn linear_part(p: &PulledMassParams, periods: u32, record_segments: bool) -> Result<Linear> {
     p.validate()?;
     validate_periods(periods)?;
-    let (g, period, phi) = (p.g, p.period(), p.phi());
-    let closed_form = cf::evaluate(g, period, p.force, phi, p.mu_s, p.mu_d);
+    let closed_form = cf::evaluate(p.g, p.period(), p.force, p.phi(), p.mu_s, p.mu_d);
+    let run = run_of(p, LawKind::Linear, periods, record_segments)?;
+    let summary = summary_of(p, &run);
+    let checks = checks(p, &closed_form, &run, &summary);
+    Ok(Linear {
+        closed_form,
+        run,
+        summary,
+        checks,
+    })
+}
+
+/// The exact integration of `law` for `periods` periods (with segments when `record_segments`).
+fn run_of(p: &PulledMassParams, law: LawKind, periods: u32, record_segments: bool) -> Result<Run> {
     let opts = RunOptions {
         periods,
         record_segments,
         dissipation: true,
     };
-    let body = pulled_mass::body(p);
-    let run_of = |law| -> Result<Run> {
-        integrate_with(
-            &body,
-            &pulled_mass::force_law(p, law)?,
-            &opts,
-            Replay::Compact,
-        )
-    };
-    let runs = Runs {
-        linear: run_of(LawKind::Linear)?,
-        harmonic: run_of(LawKind::Harmonic)?,
-    };
-    let summary_of = |run: &Run| {
-        Summary::new(run, &analyse(run), |v_avg, friction| Power {
-            key: Key::Power.id(),
-            symbol: "F v̄",
-            driving: v_avg.map(|v| p.force * v),
-            friction,
-        })
-    };
-    let linear = summary_of(&runs.linear);
-    let checks = checks(p, &closed_form, &runs.linear, &linear);
-    let applicability = applicability(&closed_form);
-    let evaluation = Evaluation {
-        model: "pulled-mass",
-        params: ParamsOut::of(p, periods),
-        closed_form,
-        linear,
-        harmonic: summary_of(&runs.harmonic),
-        checks,
-        applicability,
-    };
-    in_range(&evaluation)?;
-    Ok((evaluation, runs))
+    integrate_with(
+        &pulled_mass::body(p),
+        &pulled_mass::force_law(p, law)?,
+        &opts,
+        Replay::Compact,
+    )
+}
+
+fn summary_of(p: &PulledMassParams, run: &Run) -> Summary {
+    Summary::new(run, &analyse(run), |v_avg, friction| Power {
+        key: Key::Power.id(),
+        symbol: "F v̄",
+        driving: v_avg.map(|v| p.force * v),
+        friction,
+    })
 }
 
 /// Refuses parameters whose combination drives a derived parameter, a closed form or an
-/// integrated quantity out of the range of double precision.
-fn in_range(e: &Evaluation) -> Result<()> {
+/// integrated quantity (of `summaries`) out of the range of double precision.
+fn in_range<const N: usize>(
+    params: &ParamsOut,
+    closed_form: &ClosedForm,
+    summaries: [&Summary; N],
+) -> Result<()> {
     let derived = [
-        ("W", e.params.weight),
-        ("T", e.params.period),
-        ("omega", e.params.omega),
-        ("phi", e.params.phi),
+        ("W", params.weight),
+        ("T", params.period),
+        ("omega", params.omega),
+        ("phi", params.phi),
     ];
-    let closed = Key::numbers().filter_map(|entry| {
-        Some((
-            entry.quantity.id,
-            e.closed_form.value(entry.key).computed()?,
-        ))
-    });
+    let closed = Key::numbers()
+        .filter_map(|entry| Some((entry.quantity.id, closed_form.value(entry.key).computed()?)));
     ensure_in_range(
         derived
             .into_iter()
             .chain(closed)
-            .chain(e.linear.numbers())
-            .chain(e.harmonic.numbers()),
+            .chain(summaries.into_iter().flat_map(Summary::numbers)),
         "F, m, k and g",
     )
 }

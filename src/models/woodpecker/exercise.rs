@@ -198,8 +198,7 @@ impl Exercise for WoodpeckerParams {
         periods: u32,
         record_segments: bool,
     ) -> Result<(Vec<Check>, Option<Run>)> {
-        let (e, runs) = results::evaluate_with_runs(self, periods, record_segments)?;
-        Ok((e.checks, runs.linear))
+        results::linear_checks(self, periods, record_segments)
     }
 }
 

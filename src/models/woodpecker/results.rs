@@ -106,64 +106,123 @@ pub fn evaluate_with_runs(
     periods: u32,
     record_segments: bool,
 ) -> Result<(Evaluation, Runs)> {
+    let linear = linear_part(p, periods, record_segments)?;
+    let harmonic_run = run_of(p, LawKind::Harmonic, periods, record_segments)?;
+    let (linear_run, linear_summary) = linear.run.unzip();
+    let evaluation = Evaluation {
+        model: "woodpecker",
+        params: ParamsOut::of(p, periods),
+        closed_form: linear.closed_form,
+        linear: linear_summary,
+        harmonic: summary_of(p, &harmonic_run),
+        checks: linear.checks,
+        applicability: linear.applicability,
+        domain_note: linear.domain_note,
+    };
+    in_range(
+        &evaluation.params,
+        &evaluation.closed_form,
+        evaluation
+            .linear
+            .iter()
+            .chain(std::iter::once(&evaluation.harmonic)),
+    )?;
+    let runs = Runs {
+        linear: linear_run,
+        harmonic: harmonic_run,
+    };
+    Ok((evaluation, runs))
+}
+
+/// Only what the checks read: the closed forms against the linearized law's run (returned, with
+/// segments when `record_segments`; `None` outside its domain); the harmonic law is not
+/// integrated. Refuses what [`evaluate_with_runs`] refuses on the same grounds (parameters,
+/// closed forms, linear run).
+pub fn linear_checks(
+    p: &WoodpeckerParams,
+    periods: u32,
+    record_segments: bool,
+) -> Result<(Vec<Check>, Option<Run>)> {
+    let linear = linear_part(p, periods, record_segments)?;
+    let (run, summary) = linear.run.unzip();
+    in_range(
+        &ParamsOut::of(p, periods),
+        &linear.closed_form,
+        summary.iter(),
+    )?;
+    Ok((linear.checks, run))
+}
+
+/// The closed forms, the linearized law's run and summary (where the law exists), and the checks
+/// against them.
+struct Linear {
+    closed_form: WoodpeckerClosedForm,
+    run: Option<(Run, Summary)>,
+    checks: Vec<Check>,
+    applicability: Vec<Applicability>,
+    domain_note: Option<String>,
+}
+
+fn linear_part(p: &WoodpeckerParams, periods: u32, record_segments: bool) -> Result<Linear> {
     p.validate()?;
     validate_periods(periods)?;
     let closed_form = cf::evaluate(&linear_inputs(p));
+    let run = woodpecker::linear_amplitudes(p)
+        .map(|_| run_of(p, LawKind::Linear, periods, record_segments))
+        .transpose()?
+        .map(|run| {
+            let summary = summary_of(p, &run);
+            (run, summary)
+        });
+    let domain_note = domain_note(p, &closed_form);
+    let applicability = applicability(&closed_form, domain_note.as_deref());
+    let checks = match &run {
+        Some((run, summary)) if domain_note.is_none() => {
+            checks(p, &closed_form, &applicability, run, summary)
+        }
+        _ => Vec::new(),
+    };
+    Ok(Linear {
+        closed_form,
+        run,
+        checks,
+        applicability,
+        domain_note,
+    })
+}
+
+/// The exact integration of `law` for `periods` periods (with segments when `record_segments`).
+fn run_of(p: &WoodpeckerParams, law: LawKind, periods: u32, record_segments: bool) -> Result<Run> {
     let opts = RunOptions {
         periods,
         record_segments,
         dissipation: true,
     };
-    let body = woodpecker::body(p);
-    let run_of = |law| -> Result<Run> {
-        integrate_with(
-            &body,
-            &woodpecker::force_law(p, law)?,
-            &opts,
-            Replay::Compact,
-        )
-    };
-    let amplitudes = woodpecker::linear_amplitudes(p);
-    let runs = Runs {
-        linear: amplitudes.map(|_| run_of(LawKind::Linear)).transpose()?,
-        harmonic: run_of(LawKind::Harmonic)?,
-    };
+    integrate_with(
+        &woodpecker::body(p),
+        &woodpecker::force_law(p, law)?,
+        &opts,
+        Replay::Compact,
+    )
+}
+
+fn summary_of(p: &WoodpeckerParams, run: &Run) -> Summary {
     let w_s = p.sleeve_weight();
-    let summary_of = |run: &Run| {
-        Summary::new(run, &analyse(run), |v_avg, friction| Power {
-            key: Key::PowerWeight.id(),
-            symbol: "W_S v̄",
-            driving: v_avg.map(|v| w_s * v),
-            friction,
-        })
-    };
-    let linear = runs.linear.as_ref().map(summary_of);
-    let domain_note = domain_note(p, &closed_form);
-    let applicability = applicability(&closed_form, domain_note.as_deref());
-    let checks = match (&runs.linear, &linear) {
-        (Some(run), Some(summary)) if domain_note.is_none() => {
-            checks(p, &closed_form, &applicability, run, summary)
-        }
-        _ => Vec::new(),
-    };
-    let evaluation = Evaluation {
-        model: "woodpecker",
-        params: ParamsOut::of(p, periods),
-        closed_form,
-        linear,
-        harmonic: summary_of(&runs.harmonic),
-        checks,
-        applicability,
-        domain_note,
-    };
-    in_range(&evaluation)?;
-    Ok((evaluation, runs))
+    Summary::new(run, &analyse(run), |v_avg, friction| Power {
+        key: Key::PowerWeight.id(),
+        symbol: "W_S v̄",
+        driving: v_avg.map(|v| w_s * v),
+        friction,
+    })
 }
 
 /// Refuses parameters whose combination drives a derived parameter, a closed form or an
-/// integrated quantity out of the range of double precision.
-fn in_range(e: &Evaluation) -> Result<()> {
-    let p = &e.params;
+/// integrated quantity (of `summaries`) out of the range of double precision.
+fn in_range<'a>(
+    p: &ParamsOut,
+    closed_form: &WoodpeckerClosedForm,
+    summaries: impl Iterator<Item = &'a Summary>,
+) -> Result<()> {
     let derived = [
         ("W_S", Some(p.sleeve_weight)),
         ("T", Some(p.period)),
@@ -174,18 +233,12 @@ fn in_range(e: &Evaluation) -> Result<()> {
     ]
     .into_iter()
     .filter_map(|(name, x)| Some((name, x?)));
-    let closed = Key::numbers().filter_map(|entry| {
-        Some((
-            entry.quantity.id,
-            e.closed_form.value(entry.key).computed()?,
-        ))
-    });
-    let linear = e.linear.as_ref().map(Summary::numbers).unwrap_or_default();
+    let closed = Key::numbers()
+        .filter_map(|entry| Some((entry.quantity.id, closed_form.value(entry.key).computed()?)));
     ensure_in_range(
         derived
             .chain(closed)
-            .chain(linear)
-            .chain(e.harmonic.numbers()),
+            .chain(summaries.flat_map(Summary::numbers)),
         "k, the masses, l, h, z0, d0 and g",
     )
 }
