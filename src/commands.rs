@@ -121,7 +121,7 @@ fn eval(args: &ModelArgs, out: &mut dyn Write) -> Result<()> {
             }
         };
         Ok(if args.common.json {
-            serde_json::to_string_pretty(&evaluation)? + "\n"
+            serde_json::to_string_pretty(&crate::results::Versioned::new(&evaluation))? + "\n"
         } else {
             M::text(&evaluation)
         })
@@ -170,7 +170,7 @@ fn claims(
     print_stdout(
         out,
         &if json {
-            serde_json::to_string_pretty(&claims)? + "\n"
+            serde_json::to_string_pretty(&crate::results::Versioned::new(&claims))? + "\n"
         } else {
             crate::output::text::claims(&claims)
         },
@@ -498,8 +498,13 @@ fn check(model: &ModelCommand<CheckArgs>, out: &mut dyn Write) -> Result<()> {
     print_stdout(
         out,
         &match (common.json, reports.as_slice()) {
-            (true, [one]) => serde_json::to_string_pretty(one)? + "\n",
-            (true, all) => serde_json::to_string_pretty(all)? + "\n",
+            (true, [one]) => {
+                serde_json::to_string_pretty(&crate::results::Versioned::new(one))? + "\n"
+            }
+            (true, all) => {
+                let all: Vec<_> = all.iter().map(crate::results::Versioned::new).collect();
+                serde_json::to_string_pretty(&all)? + "\n"
+            }
             (false, all) => all
                 .iter()
                 .map(crate::check::text)

@@ -22,7 +22,7 @@ use crate::models::param::invalid;
 use crate::models::{with_capability, with_model, Capability, LawKind, Model, Physics};
 use crate::params::{validate_periods, DEFAULT_PERIODS};
 use crate::results::quantity::Quantity;
-use crate::results::Applicability;
+use crate::results::{Applicability, Versioned};
 
 /// Periods the page shows by default.
 pub const SHOWN_PERIODS: u32 = 4;
@@ -130,7 +130,8 @@ pub fn evaluate(setup: &Setup, periods: u32) -> Result<serde_json::Value> {
 /// [`evaluate`] of a model already built (validated here).
 pub fn evaluate_model(model: &Model, periods: u32) -> Result<serde_json::Value> {
     fn of<M: Physics>(p: &M, periods: u32) -> Result<serde_json::Value> {
-        serde_json::to_value(p.evaluate(periods)?).map_err(|e| Error::InvalidLaw(e.to_string()))
+        serde_json::to_value(Versioned::new(&p.evaluate(periods)?))
+            .map_err(|e| Error::InvalidLaw(e.to_string()))
     }
     with_model!(model, p => of(p, periods))
 }
@@ -139,7 +140,7 @@ pub fn evaluate_model(model: &Model, periods: u32) -> Result<serde_json::Value> 
 /// (keys in the order of the model's evaluation).
 pub fn evaluate_json(model: &Model, periods: u32) -> Result<String> {
     fn of<M: Physics>(p: &M, periods: u32) -> Result<String> {
-        serde_json::to_string_pretty(&p.evaluate(periods)?)
+        serde_json::to_string_pretty(&Versioned::new(&p.evaluate(periods)?))
             .map_err(|e| Error::InvalidLaw(e.to_string()))
     }
     with_model!(model, p => of(p, periods))
@@ -261,7 +262,7 @@ fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
         }
     }
     Ok(Explored {
-        evaluation: serde_json::to_string_pretty(&evaluation).map_err(json)?,
+        evaluation: serde_json::to_string_pretty(&Versioned::new(&evaluation)).map_err(json)?,
         extras: serde_json::to_string(&extras).map_err(json)?,
         curves,
     })
@@ -396,7 +397,9 @@ mod tests {
         let text = String::from_utf8(done.text).unwrap();
         let (evaluation, extras) = text.split_once('\0').unwrap();
         let p = crate::models::pulled_mass::PulledMassParams::default();
-        let want = serde_json::to_string_pretty(&p.evaluate(DEFAULT_PERIODS).unwrap()).unwrap();
+        let want =
+            serde_json::to_string_pretty(&Versioned::new(&p.evaluate(DEFAULT_PERIODS).unwrap()))
+                .unwrap();
         assert_eq!(evaluation, want);
         assert!(serde_json::from_str::<serde_json::Value>(extras).is_ok());
         assert_eq!(
@@ -434,7 +437,9 @@ mod tests {
             ..Default::default()
         };
         p.counterpart = crate::models::woodpecker::formula::Counterpart::Extremes;
-        let want = serde_json::to_string_pretty(&p.evaluate(DEFAULT_PERIODS).unwrap()).unwrap();
+        let want =
+            serde_json::to_string_pretty(&Versioned::new(&p.evaluate(DEFAULT_PERIODS).unwrap()))
+                .unwrap();
         assert_eq!(got.evaluation, want);
         let extras: serde_json::Value = serde_json::from_str(&got.extras).unwrap();
         // Phase I's halt threshold is 0.513 here: the slips merge.

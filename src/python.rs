@@ -138,7 +138,7 @@ fn evaluated_model<M: Explore + Present>(p: &M, periods: u32) -> Result<Evaluate
         })
         .collect();
     Ok((
-        serde_json::to_string_pretty(&evaluation).map_err(json)?,
+        serde_json::to_string_pretty(&crate::results::Versioned::new(&evaluation)).map_err(json)?,
         serde_json::to_string(&extras).map_err(json)?,
         files,
     ))

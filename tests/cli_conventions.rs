@@ -310,3 +310,58 @@ fn standard_input_is_read_once_and_csv_to_standard_output_is_refused() {
         "error: FILE and --scenario: only one of them can be - (standard input is read once)\n"
     );
 }
+
+/// The first key of a JSON document (the text as written, so the order is the writer's).
+fn first_key(text: &str) -> String {
+    let rest = text.trim_start().strip_prefix('{').expect("an object");
+    let rest = rest.trim_start().strip_prefix('"').expect("a key");
+    rest.split('"').next().unwrap().to_string()
+}
+
+#[test]
+fn every_json_output_opens_with_the_schema_version() {
+    let tmp = tempfile::tempdir().unwrap();
+    let dir = |name: &str| tmp.path().join(name).display().to_string();
+    let formula = "v_avg = g*T*phi^3*Gamma";
+    let mut texts = vec![
+        ("eval", stdout_of(&["eval", "woodpecker", "--json"])),
+        ("claims", stdout_of(&["claims", "pulled-mass", "--json"])),
+        (
+            "check",
+            stdout_of(&["check", "pulled-mass", formula, "--samples", "3", "--json"]),
+        ),
+    ];
+    stdout_of(&[
+        "check",
+        "pulled-mass",
+        formula,
+        "--samples",
+        "3",
+        "-o",
+        &dir("c"),
+    ]);
+    stdout_of(&["worksheet", "--model", "woodpecker", "-o", &dir("w")]);
+    stdout_of(&[
+        "fit",
+        "scenarios/tracked-toy-example.csv",
+        "--scenario",
+        "scenarios/fig26-tracked-toy.toml",
+        "-o",
+        &dir("f"),
+    ]);
+    for file in ["c/check.json", "w/answer-key.json", "f/fit.json"] {
+        texts.push((
+            file,
+            std::fs::read_to_string(tmp.path().join(file)).unwrap(),
+        ));
+    }
+    for (what, text) in texts {
+        assert_eq!(first_key(&text), stickslip::results::SCHEMA_KEY, "{what}");
+        let v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        assert_eq!(
+            v[stickslip::results::SCHEMA_KEY],
+            stickslip::results::SCHEMA_VERSION,
+            "{what}"
+        );
+    }
+}

@@ -82,6 +82,7 @@ fn fig15_json_has_the_keys_of_section_7_and_the_worked_numbers() {
         k
     };
     let mut top = [
+        "schema_version",
         "model",
         "params",
         "closed_form",

@@ -51,10 +51,12 @@ pub fn render(r: &BenchResults) -> Result<Vec<OutFile>> {
         },
         OutFile {
             path: PathBuf::from("results.json"),
-            bytes: (serde_json::to_string_pretty(r).map_err(|e| Error::Output {
-                path: "results.json".into(),
-                reason: e.to_string(),
-            })? + "\n")
+            bytes: (serde_json::to_string_pretty(&crate::results::Versioned::new(r)).map_err(
+                |e| Error::Output {
+                    path: "results.json".into(),
+                    reason: e.to_string(),
+                },
+            )? + "\n")
                 .into_bytes(),
         },
         OutFile {

@@ -285,9 +285,11 @@ pub fn render(r: &Report) -> Result<Vec<OutFile>> {
     ctx.insert("worst", &worst);
     ctx.insert("css", CSS);
     ctx.insert("version", env!("CARGO_PKG_VERSION"));
-    let json = serde_json::to_string_pretty(r).map_err(|e| Error::Output {
-        path: "check.json".to_string(),
-        reason: e.to_string(),
+    let json = serde_json::to_string_pretty(&crate::results::Versioned::new(r)).map_err(|e| {
+        Error::Output {
+            path: "check.json".to_string(),
+            reason: e.to_string(),
+        }
     })? + "\n";
     Ok(vec![
         OutFile::new("check.html", page(&tera, "check.html", &ctx)?),

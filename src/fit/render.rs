@@ -38,7 +38,7 @@ pub fn render(fit: &Fit) -> Result<Vec<OutFile>> {
 
 /// The fit as pretty JSON (SI units), with a final newline.
 pub fn json(fit: &Fit) -> Result<String> {
-    serde_json::to_string_pretty(fit)
+    serde_json::to_string_pretty(&crate::results::Versioned::new(fit))
         .map(|s| s + "\n")
         .map_err(|e| Error::Output {
             path: "fit.json".to_string(),

@@ -4,9 +4,11 @@
 pub mod checks;
 pub mod quantity;
 pub mod summary;
+pub mod version;
 
 pub use checks::{rel_diff, Check, CheckValue, Checked, TOLERANCE};
 pub use summary::{Power, Summary};
+pub use version::{Versioned, SCHEMA_KEY, SCHEMA_VERSION};
 
 use crate::error::{Error, Result};
 

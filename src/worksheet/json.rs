@@ -101,7 +101,8 @@ pub fn key_json(w: &Worksheets) -> Result<Vec<u8>> {
         questions: w.questions.iter().map(|q| q.key()).collect(),
         students,
     };
-    let mut bytes = serde_json::to_vec_pretty(&json).map_err(json_error)?;
+    let mut bytes =
+        serde_json::to_vec_pretty(&crate::results::Versioned::new(&json)).map_err(json_error)?;
     bytes.push(b'\n');
     Ok(bytes)
 }
