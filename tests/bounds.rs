@@ -134,7 +134,10 @@ fn check_symbols_refuses_json_and_bare_commands_say_error() {
     let out = run(&["claims", "--samples", "5"]);
     assert_eq!(out.status.code(), Some(0));
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(text.contains("pulled") && text.contains("woodpecker"), "{text}");
+    assert!(
+        text.contains("pulled") && text.contains("woodpecker"),
+        "{text}"
+    );
 }
 
 #[test]
