@@ -413,3 +413,67 @@ fn every_formula_the_tool_writes_is_valid_mathml_core() {
         formulas.len()
     );
 }
+
+/// Every relative link of the committed `reports/` (HTML `href`/`src`, Markdown `](…)`) names a
+/// file that exists; the worksheets, their answer keys and the index link each other (issue 28).
+#[test]
+fn every_relative_link_of_the_reports_resolves_and_the_keys_are_linked() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("reports");
+    let mut pages = Vec::new();
+    let mut stack = vec![root.clone()];
+    while let Some(dir) = stack.pop() {
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                stack.push(path);
+            } else if matches!(
+                path.extension().and_then(|e| e.to_str()),
+                Some("html" | "md")
+            ) {
+                pages.push(path);
+            }
+        }
+    }
+    let mut dead = Vec::new();
+    for page in &pages {
+        let text = std::fs::read_to_string(page).unwrap();
+        let html = page.extension().is_some_and(|e| e == "html");
+        let targets: Vec<String> = if html {
+            ["href=\"", "src=\""]
+                .iter()
+                .flat_map(|open| text.split(open).skip(1))
+                .filter_map(|rest| rest.split('"').next())
+                .map(|t| t.replace("&#x2F;", "/"))
+                .collect()
+        } else {
+            text.split("](")
+                .skip(1)
+                .filter_map(|rest| rest.split(')').next())
+                .map(str::to_string)
+                .collect()
+        };
+        for target in targets {
+            let file = target.split('#').next().unwrap_or_default();
+            if file.is_empty() || file.contains(':') || file.contains(' ') {
+                continue; // a fragment, an absolute URL, a data: URI or prose in parentheses
+            }
+            let resolved = page.parent().unwrap().join(file);
+            if !resolved.exists() {
+                dead.push(format!("{} → {target}", page.display()));
+            }
+        }
+    }
+    assert!(dead.is_empty(), "dead links:\n{}", dead.join("\n"));
+
+    let read = |p: &str| std::fs::read_to_string(root.join(p)).unwrap();
+    for model in ["pulled-mass", "woodpecker"] {
+        let folder = format!("worksheets/{model}");
+        assert!(read("index.html")
+            .contains(&format!("{folder}/answer-key.html").replace('/', "&#x2F;")));
+        assert!(read("index.md").contains(&format!("({folder}/answer-key.md)")));
+        assert!(read(&format!("{folder}/worksheets.html")).contains("href=\"answer-key.html\""));
+        assert!(read(&format!("{folder}/answer-key.html")).contains("href=\"worksheets.html\""));
+        assert!(read(&format!("{folder}/worksheets.md")).contains("(answer-key.md)"));
+        assert!(read(&format!("{folder}/answer-key.md")).contains("(worksheets.md)"));
+    }
+}

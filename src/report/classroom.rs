@@ -60,12 +60,14 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
             md: format!("handouts/{id}.md"),
             title: format!("Handout: {}", scene.title),
             what: what.to_string(),
+            key: None,
         });
         links.push(Material {
             html: format!("handouts/it/{id}.html"),
             md: format!("handouts/it/{id}.md"),
             title: format!("Dispensa: {}", italian.text(&scene.title)),
             what: "the same handout in Italian (words, figure labels, decimal commas)".to_string(),
+            key: None,
         });
     }
     for model in Model::offering(Capability::Exercise) {
@@ -93,8 +95,12 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
             title: format!("Worksheets: {title}"),
             what: format!(
                 "{STUDENTS} students, each with their own parameters (seed {SEED}), and the \
-                 answer key with every answer worked out (answer-key)"
+                 answer key with every answer worked out"
             ),
+            key: Some((
+                format!("{folder}/answer-key.html"),
+                format!("{folder}/answer-key.md"),
+            )),
         });
     }
     links.push(Material {
@@ -104,6 +110,7 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         what: "the exact engine against time-stepping integrators: work-precision charts and \
                where each method fails (written by `stickslip bench`)"
             .to_string(),
+        key: None,
     });
     Ok((files, links))
 }

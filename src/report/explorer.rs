@@ -55,6 +55,7 @@ pub fn material() -> Material {
                laws, the regime, every closed form against the integration, the regime map and \
                the apparatus animated (one file that works offline, from a USB stick)"
             .to_string(),
+        key: None,
     }
 }
 

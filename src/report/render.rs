@@ -292,6 +292,8 @@ pub struct Material {
     pub md: String,
     pub title: String,
     pub what: String,
+    /// The answer key beside the material (HTML and Markdown links), if it has one.
+    pub key: Option<(String, String)>,
 }
 
 /// The checks of `scenes` counted once per distinct parameter set (scenes that share a set
