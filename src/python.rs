@@ -26,7 +26,7 @@ use crate::error::{Error, Result};
 use crate::explore::{parse, Explore, Setup};
 use crate::export::CsvDialect;
 use crate::models::param::invalid;
-use crate::models::with_model;
+use crate::models::with_capability;
 use crate::present::Present;
 use crate::report::figures::{chart, map};
 use crate::report::math::mathml;
@@ -119,7 +119,12 @@ fn evaluated(setup: &str, periods: Option<i64>) -> Result<Evaluated> {
             )
         })?,
     };
-    with_model!(&model, p => evaluated_model(p, periods))
+    with_capability!(&model, present, p => evaluated_model(p, periods),
+    else Err(Error::Unsupported {
+        model: model.id(),
+        what: "the Python evaluation (series and display) yet: use stickslip.cli(['eval', …, '--json'])"
+            .to_string(),
+    }))
 }
 
 fn evaluated_model<M: Explore + Present>(p: &M, periods: u32) -> Result<Evaluated> {
@@ -155,10 +160,13 @@ fn figure(py: Python<'_>, setup: String) -> PyResult<String> {
 fn figure_svg(setup: &str) -> Result<String> {
     let model = parse::<Setup>(setup.as_bytes())?.model()?;
     model.validate()?;
-    let figures = with_model!(&model, p => {
+    let figures = with_capability!(&model, present, p => {
         let kind = p.standard_scene().figures[0];
         p.figures("python", kind)?
-    });
+    }, else return Err(Error::Unsupported {
+        model: model.id(),
+        what: "figures yet".to_string(),
+    }));
     let Some(first) = figures.first() else {
         return Ok(String::new());
     };
@@ -193,7 +201,8 @@ fn quantities(py: Python<'_>, model: String) -> PyResult<Vec<QuantityRow>> {
         ..Setup::default()
     };
     let model = setup.model().map_err(|e| refusal(py, &e))?;
-    let list = with_model!(&model, p => quantities_of(p));
+    // A model that the explorer does not carry has no rows for the display yet.
+    let list = with_capability!(&model, explore, p => quantities_of(p), else Vec::new());
     Ok(list
         .into_iter()
         .map(|q| {
