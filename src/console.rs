@@ -172,7 +172,10 @@ mod tests {
     fn captured_output_is_what_the_terminal_gets() {
         let (code, out, err) = captured(&["eval", "pulled-mass", "--json"]);
         assert_eq!((code, err.as_str()), (0, ""));
-        assert!(out.starts_with("{\n  \"model\": \"pulled-mass\""), "{out}");
+        assert!(
+            out.starts_with("{\n  \"schema_version\": \"1\",\n  \"model\": \"pulled-mass\""),
+            "{out}"
+        );
         let (code, out, _) = captured(&["--version"]);
         let version = format!("stickslip {}\n", env!("CARGO_PKG_VERSION"));
         assert_eq!((code, out), (0, version));
