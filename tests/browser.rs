@@ -165,9 +165,10 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
 fn page_budget(page: &str) -> u32 {
     match page {
         "all-scenes.html" => 30,
-        "index.html" => 2,
-        // The map page carries two of the paper's claims with their evidence tables.
-        "woodpecker-regime-map.html" => 4,
+        // With every printed word at 8 pt or more (issue 28) the index takes a third page, and
+        // the two scenes that carry the paper's claims with their evidence tables a fourth.
+        "index.html" => 3,
+        "woodpecker-regime-map.html" | "lambda1-printed-formulas.html" => 4,
         _ => 3,
     }
 }
