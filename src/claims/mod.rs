@@ -181,6 +181,10 @@ pub struct Claims {
     pub claims: Vec<Claim>,
 }
 
+/// The inputs of one evaluation of the claims: the two models' sets and which one was given
+/// (the report computes the claims once per distinct value).
+pub type Inputs = (PulledMassParams, WoodpeckerParams, Given);
+
 /// The parameter pair the claims are computed on when one model's set is given: that set for
 /// its model, the paper's default set for the other.
 pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {

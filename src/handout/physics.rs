@@ -5,19 +5,8 @@
 
 use crate::derivation::StepKey;
 use crate::models::{with_capability, Model};
+pub use crate::present::vocab::Note;
 use crate::present::Present;
-
-/// How a step of the chain is shown.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Note {
-    /// A definition or a shorthand with a few words: the step takes half a row.
-    Label(&'static str),
-    /// A step of the motion with a sentence of physics: the step takes a whole row.
-    Sentence(&'static str),
-    /// Only the numbers (symbol = substituted = result), half a row: the woodpecker's phase
-    /// II, whose formulas are those of phase I with u^(−) ↔ u^(+), η ↔ η' (physics.md §3.4).
-    Numbers,
-}
 
 /// How the step of `key` is shown in the chain of `setup`'s model, and the heading before it;
 /// `None`: not in the chain.

@@ -77,6 +77,11 @@ pub trait Physics:
     fn params_json(&self) -> serde_json::Value {
         serde_json::to_value(self).unwrap_or_default()
     }
+    /// The words of this model's regime `id` (its closed forms' regimes), `None` for an id it
+    /// does not define.
+    fn regime_words(_id: &str) -> Option<&'static str> {
+        None
+    }
 }
 
 /// What a model may offer beyond [`Physics`], each an optional capability: the commands that
@@ -214,6 +219,17 @@ impl Model {
     /// The default parameters of the model with `id`.
     pub fn from_id(id: &str) -> Option<Model> {
         Self::defaults().into_iter().find(|m| m.id() == id)
+    }
+
+    /// The words of regime `id` of any registered model, in the order of the registry
+    /// (`None`: no model defines it).
+    pub fn regime_words(id: &str) -> Option<&'static str> {
+        fn words<M: Physics>(_: &M, id: &str) -> Option<&'static str> {
+            M::regime_words(id)
+        }
+        Self::defaults()
+            .iter()
+            .find_map(|m| with_model!(m, p => words(p, id)))
     }
 
     /// Every model id, in the order of the registry.

@@ -1,142 +1,21 @@
 //! The template context of a scene: every number already formatted, every formula already
 //! rendered, so that the templates hold no computation (STYLE habit 7).
 
-use serde::Serialize;
-
 use crate::error::Result;
 use crate::handout::physics::equation_of_motion;
 use crate::models::{with_capability, Capability, Model};
 use crate::output::format::{people, people_rel, people_tolerance};
+pub use crate::present::vocab::{
+    ClaimCtx, FigureCtx, MotionLine, ParamRow, RegimeRow, SceneCtx, Table, VerificationRow,
+};
+use crate::present::vocab::{Phase, Scene};
 use crate::present::Present;
 use crate::report::math::mathml;
-use crate::report::scene::Scene;
-use crate::report::sketch::Phase;
-use crate::report::writer::OutFile;
 use crate::results::quantity::{Quantity, Registry};
 use crate::results::{Applicability, Check, CheckValue, Checked, Summary};
 
 /// Significant digits of the tables.
 pub(crate) const DIGITS: usize = 8;
-
-/// A row of the parameter table.
-#[derive(Clone, Debug, Serialize)]
-pub struct ParamRow {
-    pub name: String,
-    pub value: String,
-    pub unit: String,
-}
-
-/// The regime of one law and the reason.
-#[derive(Clone, Debug, Serialize)]
-pub struct RegimeRow {
-    pub law: String,
-    pub regime: String,
-    pub why: String,
-}
-
-/// A row of the verification table.
-#[derive(Clone, Debug, Serialize)]
-pub struct VerificationRow {
-    pub symbol: String,
-    /// MathML for HTML and LaTeX for Markdown.
-    pub formula_mathml: String,
-    pub formula_tex: String,
-    pub equation: String,
-    /// Where the guide derives a formula the paper does not number (equation "§…"), relative to
-    /// `reports/`; empty for the paper's numbered equations.
-    pub guide: String,
-    pub tag: String,
-    pub closed_form: String,
-    pub numeric: String,
-    /// SI unit of the closed form and the numeric value (empty: a number).
-    pub unit: String,
-    pub rel_error: String,
-    pub tolerance: String,
-    /// "pass", "FAIL", "n/a" (outside its regime) or "—" (no numeric counterpart).
-    pub verdict: String,
-    /// CSS class: pass, fail, na, none.
-    pub class: String,
-    /// Why the formula does not describe this motion (greyed rows).
-    pub note: String,
-}
-
-/// A table with a header row.
-#[derive(Clone, Debug, Serialize)]
-pub struct Table {
-    pub header: Vec<String>,
-    pub rows: Vec<Vec<String>>,
-}
-
-/// A figure: the SVG for HTML (inline) and the file name for Markdown.
-#[derive(Clone, Debug, Serialize)]
-pub struct FigureCtx {
-    pub id: String,
-    pub caption: String,
-    pub svg: String,
-    pub file: String,
-}
-
-impl FigureCtx {
-    /// The figure as the SVG file beside a Markdown page (`file`).
-    pub fn out_file(&self) -> OutFile {
-        OutFile::new(&self.file, self.svg.as_bytes())
-    }
-}
-
-/// A line of the equation of motion, in symbols, with a sentence of physics.
-#[derive(Clone, Debug, Serialize)]
-pub struct MotionLine {
-    pub mathml: String,
-    pub tex: String,
-    pub note: String,
-}
-
-/// A claim of the paper with its computed verdict.
-#[derive(Clone, Debug, Serialize)]
-pub struct ClaimCtx {
-    pub id: u8,
-    pub title: String,
-    pub paper_says: String,
-    pub verdict: String,
-    /// The verdict's id (`confirmed`, `refuted`, …) for the page's style, whatever the
-    /// language of `verdict`.
-    pub verdict_class: String,
-    /// Why the claim does not apply to the given set ("" when it does).
-    pub does_not_apply: String,
-    pub finding: String,
-    pub numbers: Vec<String>,
-}
-
-/// Everything a scene page shows.
-#[derive(Clone, Debug, Serialize)]
-pub struct SceneCtx {
-    pub id: String,
-    pub title: String,
-    pub model: String,
-    /// The part of the reading path ([`Part::heading`]) and why the scene matters.
-    pub part: String,
-    pub why: String,
-    /// The apparatus with the scene's parameters, at the slip onset.
-    pub sketch: FigureCtx,
-    /// The equation of motion and the force laws.
-    pub motion: Vec<MotionLine>,
-    pub caption: String,
-    pub description: String,
-    pub params: Vec<ParamRow>,
-    pub regimes: Vec<RegimeRow>,
-    pub verification: Vec<VerificationRow>,
-    pub checks_passed: usize,
-    pub checks_total: usize,
-    pub all_pass: bool,
-    pub figures: Vec<FigureCtx>,
-    pub linearization: Table,
-    pub claims: Vec<ClaimCtx>,
-    /// Why the closed forms do not apply at all, if so.
-    pub domain_note: String,
-    /// Regimes for the index: closed form (linear) and harmonic integration.
-    pub closed_regime: String,
-    pub harmonic_regime: String,
-}
 
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
@@ -414,20 +293,9 @@ fn value(v: &CheckValue) -> String {
 /// or `id` itself if it names none.
 pub fn regime_words(id: &str) -> &str {
     use crate::engine::IntegrationRegime;
-    use crate::models::pulled_mass::formula::Regime;
-    use crate::models::woodpecker::formula::OrbitRegime;
-    Regime::ALL
-        .iter()
-        .find(|r| r.id() == id)
-        .map(|r| r.words())
+    Model::regime_words(id)
         .or_else(|| {
             IntegrationRegime::ALL
-                .iter()
-                .find(|r| r.id() == id)
-                .map(|r| r.words())
-        })
-        .or_else(|| {
-            OrbitRegime::ALL
                 .iter()
                 .find(|r| r.id() == id)
                 .map(|r| r.words())

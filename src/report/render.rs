@@ -12,8 +12,6 @@ use super::scene::{Drawing, Figure, Part, Scene};
 use super::writer::OutFile;
 use crate::claims::{self, Claims, Given, Sample};
 use crate::error::{Error, Result};
-use crate::models::pulled_mass::PulledMassParams;
-use crate::models::woodpecker::WoodpeckerParams;
 
 /// Output formats of the report.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -180,7 +178,7 @@ pub(crate) fn first_sentence(text: &str) -> &str {
 
 /// The parameter pair the claims of a scene are computed on: the scene's own set for its
 /// model (the one given), the paper's default set for the other.
-pub(crate) fn claim_params(scene: &Scene) -> (PulledMassParams, WoodpeckerParams, Given) {
+pub(crate) fn claim_params(scene: &Scene) -> claims::Inputs {
     let (p, w) = crate::claims::params_for(&scene.setup);
     (p, w, Given::of(&scene.setup))
 }
@@ -326,7 +324,7 @@ pub fn render_with(
 ) -> Result<Vec<OutFile>> {
     let tera = templates(&[])?;
     // Claims are computed once per distinct parameter pair.
-    let mut pairs: Vec<(PulledMassParams, WoodpeckerParams, Given)> = Vec::new();
+    let mut pairs: Vec<claims::Inputs> = Vec::new();
     for s in scenes {
         let pair = claim_params(s);
         if !pairs.contains(&pair) {

@@ -29,22 +29,7 @@ use serde::{Deserialize, Serialize};
 
 use super::lock;
 use crate::error::{Error, Result};
-
-/// A rendered output file: a path relative to the output folder, and its bytes.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct OutFile {
-    pub path: PathBuf,
-    pub bytes: Vec<u8>,
-}
-
-impl OutFile {
-    pub fn new(path: impl Into<PathBuf>, bytes: impl Into<Vec<u8>>) -> Self {
-        OutFile {
-            path: path.into(),
-            bytes: bytes.into(),
-        }
-    }
-}
+pub use crate::present::vocab::OutFile;
 
 /// Prefix of the staging folder (hidden; removed before `write_all` returns, or by the next
 /// run after a crash).

@@ -75,4 +75,14 @@ impl Physics for BeltParams {
     fn closed_form_regime(&self) -> &'static str {
         formula::evaluate(self).regime.id()
     }
+
+    fn regime_words(id: &str) -> Option<&'static str> {
+        [
+            formula::Regime::StickSlip,
+            formula::Regime::TouchingOscillation,
+        ]
+        .into_iter()
+        .find(|r| r.id() == id)
+        .map(formula::Regime::words)
+    }
 }

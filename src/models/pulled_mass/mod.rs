@@ -81,6 +81,13 @@ impl Physics for PulledMassParams {
         formula::regime(self.phi(), self.mu_s, self.mu_d).id()
     }
 
+    fn regime_words(id: &str) -> Option<&'static str> {
+        formula::Regime::ALL
+            .iter()
+            .find(|r| r.id() == id)
+            .map(|r| r.words())
+    }
+
     fn params_json(&self) -> serde_json::Value {
         serde_json::to_value(results::ParamsOut::of(self, 0)).unwrap_or_default()
     }

@@ -4,12 +4,8 @@ use super::{derivation, results, scene, sketch, tables, teaching, PulledMassPara
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
-use crate::handout::physics::Note;
+use crate::present::vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
 use crate::present::{Laws, Present, StandardScene};
-use crate::report::context::SceneCtx;
-use crate::report::scene::{Figure, FigureKind};
-use crate::report::sketch::Phase;
-use crate::report::{OutFile, Scene};
 
 impl Present for PulledMassParams {
     const SKETCH_WHAT: &'static str =

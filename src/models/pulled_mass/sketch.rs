@@ -419,4 +419,16 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn default_pulled_mass_snapshot() {
+        insta::assert_snapshot!(
+            "pulled_mass_stuck",
+            pulled_mass(&PulledMassParams::default(), Phase::Stuck)
+        );
+        insta::assert_snapshot!(
+            "pulled_mass_slipping",
+            pulled_mass(&PulledMassParams::default(), Phase::Slipping)
+        );
+    }
 }

@@ -128,7 +128,7 @@ impl Exercise for WoodpeckerParams {
     }
 
     fn sketch_givens(&self) -> String {
-        crate::report::sketch::woodpecker_givens(self)
+        super::sketch::woodpecker_givens(self)
     }
 
     fn regime_rules() -> &'static [(Regime, &'static str)] {

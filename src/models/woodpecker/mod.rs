@@ -13,6 +13,7 @@
 //! claims.rs      the paper's claims about this model (claims 4, 6); halt.rs claim 5, lever.rs claim 8
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
 //! scene.rs       the report's figures of this model
+//! sketch.rs      the sketch of the apparatus with its forces (reports, handouts, worksheets)
 //! ```
 
 pub mod body;
@@ -34,6 +35,8 @@ pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
+#[cfg(feature = "cli")]
+pub mod sketch;
 #[cfg(feature = "cli")]
 mod tables;
 #[cfg(feature = "cli")]
@@ -82,6 +85,13 @@ impl Physics for WoodpeckerParams {
 
     fn closed_form_regime(&self) -> &'static str {
         formula::evaluate(&results::linear_inputs(self)).regime.id()
+    }
+
+    fn regime_words(id: &str) -> Option<&'static str> {
+        formula::OrbitRegime::ALL
+            .iter()
+            .find(|r| r.id() == id)
+            .map(|r| r.words())
     }
 
     fn params_json(&self) -> serde_json::Value {

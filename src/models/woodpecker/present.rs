@@ -1,16 +1,14 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, spring_coordinate, tables, teaching, WoodpeckerParams};
+use super::{
+    derivation, results, scene, sketch, spring_coordinate, tables, teaching, WoodpeckerParams,
+};
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
-use crate::handout::physics::Note;
 use crate::models::LawKind;
+use crate::present::vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
 use crate::present::{Laws, Present, StandardScene};
-use crate::report::context::SceneCtx;
-use crate::report::scene::{Figure, FigureKind};
-use crate::report::sketch::{self, Phase};
-use crate::report::{OutFile, Scene};
 
 impl Present for WoodpeckerParams {
     const SKETCH_WHAT: &'static str = "the sleeve on the pole, tilted by the spring that carries \

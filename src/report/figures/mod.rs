@@ -3,5 +3,6 @@
 
 pub mod chart;
 pub mod map;
-pub mod spec;
 pub mod style;
+
+pub use crate::present::spec;

@@ -2,16 +2,16 @@
 //! tables, its worked derivation, its teaching notes, its terminal tables and CSV files.
 //! Implemented by each model's params struct in `src/models/<name>/present.rs`; the report,
 //! handout, worksheet, sweep and command line reach it through [`crate::models::with_model!`].
+//! The types of its signatures live in [`vocab`], a leaf that names no model.
 
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
-use crate::handout::physics::Note;
 use crate::models::Physics;
-use crate::report::context::SceneCtx;
-use crate::report::scene::{Figure, FigureKind};
-use crate::report::sketch::Phase;
-use crate::report::{OutFile, Scene};
 use crate::results::Summary;
+use vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
+
+pub mod spec;
+pub mod vocab;
 
 /// The figures, claims and caption of a user's scenario of this model.
 pub struct StandardScene {

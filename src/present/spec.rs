@@ -1,5 +1,6 @@
 //! What a figure shows, as plain data: the physics side fills these, the renderers in
-//! [`super::chart`] and [`super::map`] draw them. No physics here.
+//! [`crate::report::figures::chart`] and [`crate::report::figures::map`] draw them. No physics
+//! here.
 
 /// How a curve is stroked, so that curves stay distinguishable in black-and-white print.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
