@@ -11,16 +11,22 @@
 //! formula.rs   the closed forms (B1)–(B17), one pure function per quantity
 //! quantity.rs  the registry of the quantities: key, symbol, unit, equation
 //! results.rs   the evaluation: closed forms, the exact integration's last cycle, checks
+//! scene.rs     the figures: x(t) and v(t) with the belt's speed, the phase portrait
+//! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase
 //! ```
 //!
-//! The belt has no presentation capabilities yet (report, worksheet, explorer): the commands
-//! that need them refuse it.
+//! The belt has no presentation capabilities yet (report, worksheet, explorer), only the
+//! sketch and the figures a presentation will show: the commands that need them refuse it.
 
 pub mod body;
 pub mod formula;
 pub mod params;
 pub mod quantity;
 pub mod results;
+#[cfg(feature = "cli")]
+pub mod scene;
+#[cfg(feature = "cli")]
+pub mod sketch;
 
 pub use params::BeltParams;
 
