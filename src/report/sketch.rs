@@ -464,6 +464,31 @@ fn push_run(out: &mut String, run: &str, lowered: &mut bool, sub: bool, shift: &
     }
 }
 
+/// The (class without `force-`, signed dx, signed dy) of each force arrow of a sketch, from its
+/// shaft's start to its tip (px; right and up positive): for the tests that check the forces
+/// of a free-body diagram balance.
+#[cfg(test)]
+pub(crate) fn force_arrows(svg: &str) -> Vec<(String, f64, f64)> {
+    let doc = roxmltree::Document::parse(svg).unwrap();
+    doc.descendants()
+        .filter(|n| n.has_tag_name("g"))
+        .filter_map(|g| {
+            let class = g.attribute("class")?.strip_prefix("force-")?.to_string();
+            let line = g.children().find(|c| c.has_tag_name("line"))?;
+            let at = |a| line.attribute(a).unwrap().parse::<f64>().unwrap();
+            let poly = g.children().find(|c| c.has_tag_name("polygon"))?;
+            let tip: Vec<f64> = poly
+                .attribute("points")
+                .unwrap()
+                .split([' ', ','])
+                .take(2)
+                .map(|v| v.parse().unwrap())
+                .collect();
+            Some((class, tip[0] - at("x1"), at("y1") - tip[1]))
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

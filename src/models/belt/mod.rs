@@ -92,3 +92,24 @@ impl Physics for BeltParams {
         .map(formula::Regime::words)
     }
 }
+
+/// Sets the figure and sketch tests draw: the defaults, μd = μs (a touching oscillation) and a
+/// stiff, light, fast set.
+#[cfg(test)]
+pub(crate) fn test_sets() -> Vec<BeltParams> {
+    vec![
+        BeltParams::default(),
+        BeltParams {
+            mu_d: 0.6,
+            ..Default::default()
+        },
+        BeltParams {
+            mass: 0.05,
+            k: 2000.0,
+            v_b: 2.0,
+            mu_s: 1.2,
+            mu_d: 0.3,
+            ..Default::default()
+        },
+    ]
+}

@@ -205,30 +205,13 @@ pub fn phase_portrait(scene_id: &str, p: &BeltParams) -> Result<Figure> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::belt::test_sets as sets;
 
     fn chart(f: &Figure) -> &LineChart {
         match &f.drawing {
             Drawing::Chart(c) => c,
             Drawing::Map(_) => panic!("a chart"),
         }
-    }
-
-    fn sets() -> Vec<BeltParams> {
-        vec![
-            BeltParams::default(),
-            BeltParams {
-                mu_d: 0.6,
-                ..Default::default()
-            },
-            BeltParams {
-                mass: 0.05,
-                k: 2000.0,
-                v_b: 2.0,
-                mu_s: 1.2,
-                mu_d: 0.3,
-                ..Default::default()
-            },
-        ]
     }
 
     #[test]

@@ -352,48 +352,8 @@ fn zigzag(s: &mut Svg, x1: f64, x2: f64, y: f64, coils: usize, half: f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// The (class, signed dx, signed dy) of each force arrow, from its shaft's start to its tip
-    /// (right and up positive).
-    fn forces(svg: &str) -> Vec<(String, f64, f64)> {
-        let doc = roxmltree::Document::parse(svg).unwrap();
-        doc.descendants()
-            .filter(|n| n.has_tag_name("g"))
-            .filter_map(|g| {
-                let class = g.attribute("class")?.strip_prefix("force-")?.to_string();
-                let line = g.children().find(|c| c.has_tag_name("line"))?;
-                let at = |a| line.attribute(a).unwrap().parse::<f64>().unwrap();
-                let poly = g.children().find(|c| c.has_tag_name("polygon"))?;
-                let tip: Vec<f64> = poly
-                    .attribute("points")
-                    .unwrap()
-                    .split([' ', ','])
-                    .take(2)
-                    .map(|v| v.parse().unwrap())
-                    .collect();
-                Some((class, tip[0] - at("x1"), at("y1") - tip[1]))
-            })
-            .collect()
-    }
-
-    /// Both phases, on the default set, a set with μd = μs and a stiff, light, fast one.
-    fn sets() -> Vec<BeltParams> {
-        vec![
-            BeltParams::default(),
-            BeltParams {
-                mu_d: 0.6,
-                ..Default::default()
-            },
-            BeltParams {
-                mass: 0.05,
-                k: 2000.0,
-                v_b: 2.0,
-                mu_s: 1.2,
-                mu_d: 0.3,
-                ..Default::default()
-            },
-        ]
-    }
+    use crate::models::belt::test_sets as sets;
+    use crate::report::sketch::force_arrows as forces;
 
     #[test]
     fn the_forces_on_the_block_balance_at_the_drawn_instant() {

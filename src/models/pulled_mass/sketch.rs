@@ -339,26 +339,11 @@ fn draw(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
 mod tests {
     use super::*;
 
-    /// The (class, x1, y1, x2, y2) of each force arrow's shaft.
+    /// The (class, signed vertical length, up positive) of each force arrow.
     fn forces(svg: &str) -> Vec<(String, f64)> {
-        let doc = roxmltree::Document::parse(svg).unwrap();
-        doc.descendants()
-            .filter(|n| n.has_tag_name("g"))
-            .filter_map(|g| {
-                let class = g.attribute("class")?.strip_prefix("force-")?.to_string();
-                let line = g.children().find(|c| c.has_tag_name("line"))?;
-                let y = |a| line.attribute(a).unwrap().parse::<f64>().unwrap();
-                let poly = g.children().find(|c| c.has_tag_name("polygon"))?;
-                let tip: Vec<f64> = poly
-                    .attribute("points")
-                    .unwrap()
-                    .split([' ', ','])
-                    .take(2)
-                    .map(|v| v.parse().unwrap())
-                    .collect();
-                // Signed vertical length, up positive, from the shaft's start to the tip.
-                Some((class, y("y1") - tip[1]))
-            })
+        crate::report::sketch::force_arrows(svg)
+            .into_iter()
+            .map(|(class, _, dy)| (class, dy))
             .collect()
     }
 
