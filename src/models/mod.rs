@@ -396,6 +396,20 @@ impl Model {
     }
 }
 
+/// The words of the regime whose id is `id` (the closed forms of any model, or an integration),
+/// or `id` itself if it names none.
+pub fn regime_words(id: &str) -> &str {
+    use crate::engine::IntegrationRegime;
+    Model::regime_words(id)
+        .or_else(|| {
+            IntegrationRegime::ALL
+                .iter()
+                .find(|r| r.id() == id)
+                .map(|r| r.words())
+        })
+        .unwrap_or(id)
+}
+
 /// A parameter of a model as the command line shows it: its key, its help with the default,
 /// and its values when it is a choice.
 #[derive(Clone, Debug, PartialEq)]

@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use super::format::{rel, short};
-use crate::report::context::regime_words;
+use crate::models::regime_words;
 use crate::results::quantity::Registry;
 use crate::results::{Applicability, Check, CheckValue, Summary};
 

@@ -289,19 +289,7 @@ fn value(v: &CheckValue) -> String {
     }
 }
 
-/// The words of the regime whose id is `id` (closed forms of either model or an integration),
-/// or `id` itself if it names none.
-pub fn regime_words(id: &str) -> &str {
-    use crate::engine::IntegrationRegime;
-    Model::regime_words(id)
-        .or_else(|| {
-            IntegrationRegime::ALL
-                .iter()
-                .find(|r| r.id() == id)
-                .map(|r| r.words())
-        })
-        .unwrap_or(id)
-}
+pub use crate::models::regime_words;
 
 fn check_row(q: &Quantity, c: &Check) -> VerificationRow {
     VerificationRow {
