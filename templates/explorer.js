@@ -8,8 +8,6 @@
   const $ = (id) => document.getElementById(id);
   // The SVG namespace, read from the page rather than written here.
   const SVG = document.getElementById("plot-x").namespaceURI;
-  const encoder = new TextEncoder();
-  const decoder = new TextDecoder();
   const reducedMotion = window.matchMedia("(prefers-reduced-motion: reduce)");
 
   // What the tests read (tests/explorer.rs): the last evaluation as the engine wrote it, the
@@ -40,14 +38,18 @@
    *  (a bug: it refuses bad input with a message) is started afresh and the call refused. */
   function call(fn, request) {
     try {
-      return callEngine(fn, request);
+      return callEngine(engine, fn, request);
     } catch (e) {
       engine = new WebAssembly.Instance(compiled, {}).exports;
       return { ok: false, text: `the engine failed on these parameters (${e.message})`, data: new Float64Array(0) };
     }
   }
 
-  function callEngine(fn, request) {
+  /** Calls export `fn` of the instance `engine` (its exports) with `request` as JSON; also
+   *  the workers' (its source is theirs: it uses nothing outside it). */
+  function callEngine(engine, fn, request) {
+    const encoder = new TextEncoder();
+    const decoder = new TextDecoder();
     const bytes = encoder.encode(JSON.stringify(request));
     const ptr = engine.alloc(bytes.length);
     new Uint8Array(engine.memory.buffer, ptr, bytes.length).set(bytes);
@@ -918,27 +920,19 @@
 
   /** A worker's code (made into a Blob URL: nothing is fetched). It instantiates the module
    *  it is sent and answers map requests: {id, ok, text, data (categories)}. */
-  function workerMain() {
-    const encoder = new TextEncoder();
-    const decoder = new TextDecoder();
+  function workerMain(callEngine) {
     let module = null;
     let ready = null;
     self.onmessage = async (ev) => {
       const m = ev.data;
       if (m.module) { module = m.module; ready = WebAssembly.instantiate(module, {}); return; }
-      let engine = (await ready).exports;
+      const engine = (await ready).exports;
       try {
-        const bytes = encoder.encode(JSON.stringify(m.request));
-        const ptr = engine.alloc(bytes.length);
-        new Uint8Array(engine.memory.buffer, ptr, bytes.length).set(bytes);
-        const status = engine.map(ptr, bytes.length);
-        engine.free(ptr, bytes.length);
-        const text = decoder.decode(new Uint8Array(engine.memory.buffer, engine.text_ptr(), engine.text_len()));
-        const data = Uint8Array.from(new Float64Array(engine.memory.buffer, engine.data_ptr(), engine.data_len()));
-        self.postMessage({ id: m.id, ok: status === 0, text, data }, [data.buffer]);
+        const out = callEngine(engine, "map", m.request);
+        const data = Uint8Array.from(out.data);
+        self.postMessage({ id: m.id, ok: out.ok, text: out.text, data }, [data.buffer]);
       } catch (e) {
         ready = WebAssembly.instantiate(module, {});
-        engine = null;
         self.postMessage({ id: m.id, ok: false, text: `the engine failed on these parameters (${e.message})`, data: new Uint8Array(0) });
       }
     };
@@ -947,7 +941,7 @@
   function startWorkers() {
     if (typeof Worker === "undefined" || typeof Blob === "undefined") return;
     try {
-      const url = URL.createObjectURL(new Blob([`"use strict";(${workerMain.toString()})();`], { type: "text/javascript" }));
+      const url = URL.createObjectURL(new Blob([`"use strict";(${workerMain.toString()})(${callEngine.toString()});`], { type: "text/javascript" }));
       for (let i = 0; i < 2; i++) {
         const slot = { worker: new Worker(url), task: null };
         slot.worker.onmessage = (ev) => finished(slot, ev.data);
