@@ -161,10 +161,11 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
     });
 }
 
-/// A4 pages a page may print to: the lecture notes 30, a scene 3, the index 2.
+/// A4 pages a page may print to: the lecture notes 32, a scene 3, the index 2.
 fn page_budget(page: &str) -> u32 {
     match page {
-        "all-scenes.html" => 30,
+        // Charts on the column canvas, every word at 8 pt or more (issue 28).
+        "all-scenes.html" => 32,
         // With every printed word at 8 pt or more (issue 28) the index takes a third page, and
         // the two scenes that carry the paper's claims with their evidence tables a fourth.
         "index.html" => 3,

@@ -1,8 +1,8 @@
 //! Every printed word at 8 pt or more: the handouts, one student's worksheet and answer key of
 //! each model, in English and in Italian, and the lecture notes (`reports/all-scenes.html`) are
 //! printed by headless Chromium as `stickslip` prints them, and the height of every word that
-//! `pdftotext -bbox-layout` finds is compared with that of a known 8 pt text. (The lecture
-//! notes' test is ignored until their charts are redrawn: see its doc comment.)
+//! `pdftotext -bbox-layout` finds is compared with that of a known 8 pt text. The lecture notes
+//! are written in English only.
 //!
 //! pdftotext gives a word's box in PDF points (1/72 in), from the font's ascent to its
 //! descent: about 1.1–1.2 × the font size for the text fonts (DejaVu Serif 1.164, Liberation
@@ -221,12 +221,10 @@ fn every_printed_word_is_at_least_8_pt() {
     assert_legible(&pdfs, dir, &pdftotext, (text_8pt, math_8pt));
 }
 
-/// The lecture notes: their charts are drawn on the report's 900 px canvas and printed under a
-/// height limit (72 mm), so that tick labels and legends print at 3.6–4.7 pt; drawing them on
-/// the column canvas ([`stickslip::report::figures::style::Geometry::COLUMN`]) two to a row is
-/// the remaining work of issue 28.
+/// The lecture notes as `stickslip report` writes them: their charts are drawn on the column
+/// canvas ([`stickslip::report::figures::style::Geometry::COLUMN`]), two to a row or one beside
+/// its caption, and no table is wider than the page (Chromium would shrink the whole page).
 #[test]
-#[ignore = "issue 28: the lecture notes' charts still print at 3.6-4.7 pt"]
 fn every_word_of_the_lecture_notes_is_at_least_8_pt() {
     let Some((browser, pdftotext)) = tools() else {
         return;
