@@ -1,5 +1,5 @@
-//! Every printed word at 8 pt or more: the handouts, one student's worksheet and answer key of
-//! each model, in English and in Italian, and the lecture notes (`reports/all-scenes.html`) are
+//! Every printed word at 8 pt or more: the handouts, four students' worksheets (one A4 page
+//! each) and answer keys of each model, in English and in Italian, and the lecture notes (`reports/all-scenes.html`) are
 //! printed by headless Chromium as `stickslip` prints them, and the height of every word that
 //! `pdftotext -bbox-layout` finds is compared with that of a known 8 pt text. The lecture notes
 //! are written in English only.
@@ -27,6 +27,9 @@ use stickslip::handout::pdf::HEADLESS_FLAGS;
 
 /// The smallest printed size (pt).
 const MIN_PT: f64 = 8.0;
+
+/// Students of the printed class sets: each sheet's length varies with its parameters.
+const STUDENTS: usize = 4;
 
 fn tools() -> Option<(PathBuf, PathBuf)> {
     let tools = (
@@ -113,6 +116,20 @@ fn words(pdftotext: &Path, pdf: &Path) -> Vec<Word> {
         }
     }
     words
+}
+
+/// The pages of `pdf`.
+fn pages(pdftotext: &Path, pdf: &Path) -> usize {
+    let out = Command::new(pdftotext)
+        .arg("-bbox")
+        .arg(pdf)
+        .arg("-")
+        .output()
+        .expect("pdftotext runs");
+    String::from_utf8_lossy(&out.stdout)
+        .lines()
+        .filter(|l| l.trim_start().starts_with("<page "))
+        .count()
 }
 
 /// A word set in the math font: a mathematical alphanumeric (italic letters of MathML) or an
@@ -204,7 +221,7 @@ fn every_printed_word_is_at_least_8_pt() {
                     "--model",
                     model,
                     "--students",
-                    "1",
+                    &STUDENTS.to_string(),
                     "--pdf",
                     "--format",
                     "md",
@@ -214,7 +231,14 @@ fn every_printed_word_is_at_least_8_pt() {
                 &out,
                 &browser,
             );
-            pdfs.push(out.join("worksheets.pdf"));
+            // One A4 page per student: no question spills onto a second, mostly empty page.
+            let sheets = out.join("worksheets.pdf");
+            assert_eq!(
+                pages(&pdftotext, &sheets),
+                STUDENTS,
+                "{model} {lang}: pages of {STUDENTS} students' sheets"
+            );
+            pdfs.push(sheets);
             pdfs.push(out.join("answer-key.pdf"));
         }
     }
