@@ -188,9 +188,10 @@ fn print_pages(pdfinfo: &Path, pdf: &Path) -> u32 {
 /// explorer, handouts and worksheets with their keys in English and Italian, the bench page,
 /// the `check` page), at a 1280-px and a 390-px window: no serious or critical violation (figures
 /// without a text alternative, missing landmarks, contrast, scrollable boxes out of keyboard
-/// reach); nothing reaches past the window's right edge outside a scrolling box (the boxes that
-/// scroll sideways are printed, not asserted: at 1280 px the verification tables of the scenes
-/// still scroll by up to 40 %, issue 28). Needs Node
+/// reach); nothing reaches past the window's right edge outside a scrolling box; at 1280 px no
+/// table is wider than its box (every column of a verification table in view without scrolling;
+/// at 390 px tables scroll in their boxes, and the other boxes that scroll sideways at 1280 px,
+/// such as a long formula, are printed, not asserted). Needs Node
 /// with axe-core and playwright-core in `STICKSLIP_NODE_MODULES` (default
 /// `target/axe/node_modules`, where `.ci/run` installs them).
 #[test]
@@ -243,7 +244,9 @@ fn every_page_has_no_serious_accessibility_violation_and_fits_its_window() {
     let failures: Vec<String> = results
         .iter()
         .filter(|r| {
-            r["violations"] != serde_json::json!([]) || r["outside"] != serde_json::json!([])
+            r["violations"] != serde_json::json!([])
+                || r["outside"] != serde_json::json!([])
+                || (r["width"] == 1280 && r["tables"] != serde_json::json!([]))
         })
         .map(|r| r.to_string())
         .collect();
