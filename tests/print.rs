@@ -1,8 +1,8 @@
 //! Every printed word at 8 pt or more: the handouts, four students' worksheets (one A4 page
-//! each) and answer keys of each model, in English and in Italian, and the lecture notes (`reports/all-scenes.html`) are
-//! printed by headless Chromium as `stickslip` prints them, and the height of every word that
-//! `pdftotext -bbox-layout` finds is compared with that of a known 8 pt text. The lecture notes
-//! are written in English only.
+//! each) and answer keys of each model, in English and in Italian, and the lecture notes
+//! (`reports/all-scenes.html`, English only) are printed by headless Chromium as `stickslip`
+//! prints them, and the height of every word that `pdftotext -bbox-layout` finds is compared
+//! with that of a known 8 pt text.
 //!
 //! pdftotext gives a word's box in PDF points (1/72 in), from the font's ascent to its
 //! descent: about 1.1–1.2 × the font size for the text fonts (DejaVu Serif 1.164, Liberation
