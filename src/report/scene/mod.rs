@@ -150,7 +150,7 @@ pub struct Scene {
     /// Periods integrated for the results tables.
     pub periods: u32,
     pub figures: Vec<FigureKind>,
-    /// Claims of the paper (physics.md §6) that concern the scene.
+    /// Claims of the paper (guide §11) that concern the scene.
     pub claims: Vec<u8>,
 }
 
