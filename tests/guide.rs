@@ -138,8 +138,10 @@ fn every_citation_in_the_sources_names_a_section_of_the_guide() {
         for b in dangling(&text) {
             bad.push(format!("{}: {b}", path.display()));
         }
+        // Split so that this file does not hold the link it looks for.
+        let source = ["../", "docs/physics.md"].concat();
         assert!(
-            !text.contains("../docs/physics.md"),
+            !text.contains(&format!("\"{source}")) && !text.contains(&format!("({source}")),
             "{}: links the guide's source, not the page",
             path.display()
         );

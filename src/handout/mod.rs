@@ -54,7 +54,7 @@ pub struct StepCtx {
     pub equation: String,
     /// The anchor in the guide of a section the equation cites, or empty.
     pub guide: String,
-    /// That section's number, "§7.5", or empty.
+    /// That section's number (7.5), or empty.
     pub section: String,
     /// MathML of "symbol = formula", "= substituted" and "= result" (no result where the form
     /// does not apply), so that a long line wraps between them.

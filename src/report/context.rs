@@ -45,8 +45,8 @@ pub struct VerificationRow {
     /// The anchor in guide.html (guide.md) of the section that derives a formula the paper does
     /// not number (equation "guide §7.5"); empty for the paper's numbered equations.
     pub guide: String,
-    /// That section's number, "§7.5" (the link's text after the word "guide" of the page's
-    /// language); empty for the paper's numbered equations.
+    /// That section's number, 7.5 (the link reads "guide §7.5" in the page's language); empty
+    /// for the paper's numbered equations.
     pub section: String,
     pub tag: String,
     pub closed_form: String,
@@ -225,8 +225,8 @@ pub(crate) fn opt(x: Option<f64>) -> String {
 }
 
 /// The section of the physics guide that derives a formula the paper does not number, when
-/// `equation` cites one ("guide §7.5"): ("§7.5", its anchor in guide.html); empty strings for
-/// the paper's equation numbers.
+/// `equation` cites one ("guide §7.5"): its number and its anchor in guide.html (7.5,
+/// late-stick); empty strings for the paper's equation numbers.
 pub fn guide_link(equation: &str) -> (String, String) {
     super::guide::cite(equation).map_or_else(Default::default, |(section, anchor)| {
         (section.to_string(), anchor.to_string())
@@ -576,7 +576,7 @@ mod tests {
     fn an_unnumbered_equation_links_to_its_section_of_the_guide() {
         assert_eq!(
             guide_link("guide §7.5"),
-            ("§7.5".to_string(), "late-stick".to_string())
+            ("7.5".to_string(), "late-stick".to_string())
         );
         assert_eq!(guide_link("(13),(25)"), Default::default());
     }
