@@ -54,11 +54,7 @@ fn dangling(text: &str) -> Vec<String> {
         let named = NAMES.iter().any(|n| before.ends_with(n));
         let exists = sections().iter().any(|s| s.number == number);
         if !named || !exists {
-            let start = before
-                .char_indices()
-                .rev()
-                .nth(20)
-                .map_or(0, |(i, _)| i);
+            let start = before.char_indices().rev().nth(20).map_or(0, |(i, _)| i);
             bad.push(format!("…{}§{number}", &text[start..at]));
         }
     }
@@ -115,7 +111,10 @@ fn a_dangling_or_bare_citation_is_found() {
     assert_eq!(dangling(&format!("(§{})", "7.5")).len(), 1);
     assert_eq!(dangling(&format!("end of {}.", section("13"))).len(), 0);
     assert_eq!(cited_anchor(&section("7.5")), Some("late-stick"));
-    assert_eq!(cited_anchor(&format!("guida §{}", "4")), Some("stick-and-slip"));
+    assert_eq!(
+        cited_anchor(&format!("guida §{}", "4")),
+        Some("stick-and-slip")
+    );
 }
 
 /// Every "§" in the code, the templates, the tests, the Python package, the docs and the
@@ -224,7 +223,9 @@ fn every_citation_and_link_of_the_reports_reaches_a_heading_of_the_guide() {
                     break;
                 }
             }
-            let in_guide = resolved.file_name().is_some_and(|f| f == "guide.html" || f == "guide.md");
+            let in_guide = resolved
+                .file_name()
+                .is_some_and(|f| f == "guide.html" || f == "guide.md");
             if !in_guide {
                 continue;
             }

@@ -152,7 +152,11 @@ fn the_index_is_a_reading_path_through_the_paper() {
             last = at;
         }
         assert!(index.contains("all-scenes.html") || ext == "md");
-        assert!(index.contains(&format!("\"guide.{ext}\"")) || index.contains(&format!("(guide.{ext})")), "{ext}");
+        assert!(
+            index.contains(&format!("\"guide.{ext}\""))
+                || index.contains(&format!("(guide.{ext})")),
+            "{ext}"
+        );
     }
 }
 
@@ -291,13 +295,7 @@ fn every_link_of_the_committed_index_reaches_a_file() {
             .skip(1)
             .map(|rest| &rest[..rest.find(close).unwrap()])
             .collect();
-        for wanted in [
-            "handouts/",
-            "worksheets/",
-            "bench/",
-            "guide.",
-            "all-scenes",
-        ] {
+        for wanted in ["handouts/", "worksheets/", "bench/", "guide.", "all-scenes"] {
             assert!(
                 links.iter().any(|l| l.contains(wanted))
                     || (name == "index.md" && wanted == "all-scenes"),

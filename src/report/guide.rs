@@ -30,6 +30,8 @@ const TEMPLATE: (&str, &str) = (
     "guide.html",
     include_str!("../../templates/guide.html.tera"),
 );
+/// LaTeX longer than this (characters) may render wider than a 390-px phone's column.
+const LONG_TEX: usize = 40;
 /// How code and output cite a section: "guide §7.5".
 pub const PREFIX: &str = "guide §";
 /// The page's file name in `reports/` without its extension (`guide.html`, `guide.md`).
@@ -102,7 +104,9 @@ fn numbered(text: &str) -> Option<(&str, &str)> {
     let (number, title) = text.split_once(' ')?;
     let number = number.strip_suffix('.').unwrap_or(number);
     let ok = !number.is_empty()
-        && number.split('.').all(|p| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit()));
+        && number
+            .split('.')
+            .all(|p| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit()));
     ok.then_some((number, title))
 }
 
@@ -196,6 +200,14 @@ fn html_body() -> String {
                     attrs,
                 }));
             }
+            // A long formula can be wider than a phone: it scrolls in its own box, which a
+            // keyboard can reach (a short one wraps to the next line as a whole).
+            Event::InlineMath(tex) if tex.len() > LONG_TEX => {
+                events.push(Event::InlineHtml(CowStr::from(format!(
+                    "<span class=\"formula\" tabindex=\"0\">{}</span>",
+                    mathml(&tex)
+                ))))
+            }
             Event::InlineMath(tex) => events.push(Event::InlineHtml(CowStr::from(mathml(&tex)))),
             Event::DisplayMath(tex) => events.push(Event::InlineHtml(CowStr::from(format!(
                 "<span class=\"display\" tabindex=\"0\">{}</span>",
@@ -221,9 +233,8 @@ fn html_body() -> String {
                 events.push(event);
             }
             Event::Text(text) if !in_link && text.contains(PREFIX) => {
-                let linked = link_citations(&escape(&text), |c, a| {
-                    format!("<a href=\"#{a}\">{c}</a>")
-                });
+                let linked =
+                    link_citations(&escape(&text), |c, a| format!("<a href=\"#{a}\">{c}</a>"));
                 events.push(Event::InlineHtml(CowStr::from(linked)));
             }
             other => events.push(other),
@@ -277,7 +288,10 @@ fn markdown() -> String {
                 for s in sections {
                     let indent = "  ".repeat(s.level - 2);
                     let number = &s.number;
-                    out.push_str(&format!("{indent}- [{number} {}](#{})\n", s.title, s.anchor));
+                    out.push_str(&format!(
+                        "{indent}- [{number} {}](#{})\n",
+                        s.title, s.anchor
+                    ));
                 }
                 out.push('\n');
                 toc_done = true;
@@ -374,14 +388,24 @@ mod tests {
         );
         assert_eq!(cite(&format!("{PREFIX}17")), None);
         assert_eq!(cite("(13),(25)"), None);
-        assert_eq!(sections().iter().filter(|s| s.title == "Machine-readable output").map(|s| s.anchor.as_str()).collect::<Vec<_>>(), ["machine-readable-output", "machine-readable-output-1"]);
+        assert_eq!(
+            sections()
+                .iter()
+                .filter(|s| s.title == "Machine-readable output")
+                .map(|s| s.anchor.as_str())
+                .collect::<Vec<_>>(),
+            ["machine-readable-output", "machine-readable-output-1"]
+        );
     }
 
     #[test]
     fn a_citation_in_the_text_becomes_a_link_but_not_its_full_stop() {
         let text = format!("see {PREFIX}7.5. And {PREFIX}99.");
         let linked = link_citations(&text, |c, a| format!("<{c}|{a}>"));
-        assert_eq!(linked, format!("see <{PREFIX}7.5|late-stick>. And {PREFIX}99."));
+        assert_eq!(
+            linked,
+            format!("see <{PREFIX}7.5|late-stick>. And {PREFIX}99.")
+        );
         assert_eq!(
             link_markdown_citations("`guide §7.5` and guide §4"),
             "`guide §7.5` and [guide §4](#stick-and-slip)"
@@ -391,15 +415,24 @@ mod tests {
     #[test]
     fn every_formula_of_the_guide_is_mathml_and_every_section_has_its_id() {
         let html = html_body();
-        assert!(!html.contains("merror") && !html.contains("<code>\\"), "a formula left as TeX");
+        assert!(
+            !html.contains("merror") && !html.contains("<code>\\"),
+            "a formula left as TeX"
+        );
         assert!(html.matches("<math").count() > 250);
         for s in sections() {
             assert!(html.contains(&format!(" id=\"{}\">", s.anchor)), "{s:?}");
-            assert!(html.contains(&format!("<a href=\"#{}\">", s.anchor)), "{s:?}");
+            assert!(
+                html.contains(&format!("<a href=\"#{}\">", s.anchor)),
+                "{s:?}"
+            );
         }
         let md = markdown();
         for s in sections() {
-            assert!(md.contains(&format!("<a id=\"{}\"></a>", s.anchor)), "{s:?}");
+            assert!(
+                md.contains(&format!("<a id=\"{}\"></a>", s.anchor)),
+                "{s:?}"
+            );
         }
     }
 }
