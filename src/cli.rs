@@ -57,10 +57,14 @@ pub enum Command {
     /// the paper's claims (HTML for A4 print, Markdown; --pdf through headless Chromium).
     Handout(HandoutArgs),
     /// Vary one parameter on a uniform grid and integrate both laws at each point: v̄, slips
-    /// and sticks per period and the regime (sweep.csv, sweep.svg in --out).
+    /// and sticks per period and the regime (sweep.csv, sweep.svg in --out; without a model,
+    /// every model over its own grid, in sweep/MODEL/).
     Sweep {
+        /// The model swept; without one, every model that can sweep, at the paper's set over
+        /// its own grid (the pulled mass's pull F, the woodpecker's offset z0), written to
+        /// sweep/MODEL/.
         #[command(subcommand)]
-        model: ModelCommand<SweepArgs>,
+        model: Option<ModelCommand<SweepArgs>>,
     },
     /// Put your own formula against the exact integration: at the given parameters and on a
     /// seeded sample of the regimes where the quantity is measured (agreement, counterexamples,

@@ -29,7 +29,8 @@ pub fn run(cli: Cli, out: &mut dyn Write, err: &mut dyn Write) -> Result<()> {
         } => claims(seed, samples, &model, out),
         Command::Bench(args) => bench(&args, out),
         Command::Handout(args) => handout(&args, out, err),
-        Command::Sweep { model } => sweep(&model, out),
+        Command::Sweep { model: Some(model) } => sweep(&model, out),
+        Command::Sweep { model: None } => sweep_every_model(out),
         Command::Check { model } => check(&model, out),
         Command::Fit(args) => fit(&args, out),
         Command::Worksheet(args) => worksheet(&args, out),
@@ -410,15 +411,42 @@ fn sweep(model: &ModelCommand<SweepArgs>, out: &mut dyn Write) -> Result<()> {
         periods,
     };
     crate::sweep::validate(&base, &spec)?;
-    report::lock::claim_if_exists(&grid.out)?;
-    let progress = crate::output::progress::progress_bar(spec.steps, "sweep");
-    let result = crate::sweep::run(&base, &spec, &progress)?;
-    let files = dialect(common).apply(crate::sweep::render(&result)?);
+    let (files, summary) = run_sweep(&base, &spec, &grid.out, dialect(common))?;
     if let Some(path) = &common.scenario {
         refuse_overwriting_inputs(&grid.out, &files, &[("--scenario", path)])?;
     }
     report::write_all(&grid.out, &files)?;
-    print_stdout(out, &crate::sweep::summary_line(&result, &grid.out))
+    print_stdout(out, &summary)
+}
+
+/// `stickslip sweep` without a model: every model that can sweep, at its default set over its
+/// own grid ([`crate::sweep::default_spec`]), each into `sweep/MODEL/`.
+fn sweep_every_model(out: &mut dyn Write) -> Result<()> {
+    for base in Model::defaults() {
+        let Some(spec) = crate::sweep::default_spec(&base, DEFAULT_PERIODS) else {
+            continue;
+        };
+        let folder = std::path::Path::new("sweep").join(base.id());
+        let (files, summary) = run_sweep(&base, &spec, &folder, CsvDialect::default())?;
+        report::write_all(&folder, &files)?;
+        print_stdout(out, &summary)?;
+    }
+    Ok(())
+}
+
+/// Runs the sweep `spec` of `base` for the folder `folder` (claimed if it exists): its files
+/// and its summary line.
+fn run_sweep(
+    base: &Model,
+    spec: &crate::sweep::GridSpec,
+    folder: &std::path::Path,
+    dialect: CsvDialect,
+) -> Result<(Vec<report::OutFile>, String)> {
+    report::lock::claim_if_exists(folder)?;
+    let progress = crate::output::progress::progress_bar(spec.steps, "sweep");
+    let result = crate::sweep::run(base, spec, &progress)?;
+    let summary = crate::sweep::summary_line(&result, folder);
+    Ok((dialect.apply(crate::sweep::render(&result)?), summary))
 }
 
 /// `stickslip check MODEL FORMULA --quantity NAME` (or `--formulas FILE`): each report as text

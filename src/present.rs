@@ -20,6 +20,18 @@ pub struct StandardScene {
     pub caption: &'static str,
 }
 
+/// The grid `stickslip sweep` runs without a model: one parameter over the paper's set,
+/// across the regimes it shows.
+pub struct DefaultSweep {
+    /// A numeric parameter of the model (its flag's name).
+    pub param: &'static str,
+    /// First and last grid values (SI units, as the model flag).
+    pub from: f64,
+    pub to: f64,
+    /// Grid points, both ends included.
+    pub steps: u32,
+}
+
 /// The laws of an evaluation as a sweep or a table reads them.
 pub struct Laws<'a> {
     pub harmonic: &'a Summary,
@@ -33,6 +45,8 @@ pub struct Laws<'a> {
 pub trait Present: Physics {
     /// What the sketch of the apparatus shows, for its caption ("the block on the table …").
     const SKETCH_WHAT: &'static str;
+    /// The sweep of `stickslip sweep` without a model.
+    const SWEEP: DefaultSweep;
     /// The standard figures, claims and caption of a scenario of this model.
     fn standard_scene(&self) -> StandardScene;
     /// The figures of `kind` for the scene `scene_id`.

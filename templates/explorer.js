@@ -8,14 +8,14 @@
   const $ = (id) => document.getElementById(id);
   // The SVG namespace, read from the page rather than written here.
   const SVG = document.getElementById("plot-x").namespaceURI;
-  const encoder = new TextEncoder();
-  const decoder = new TextDecoder();
   const reducedMotion = window.matchMedia("(prefers-reduced-motion: reduce)");
 
-  // What the tests read (tests/explorer.rs): the last evaluation as the engine wrote it, and
-  // the timings of the first render and of every redraw (ms).
+  // What the tests read (tests/explorer.rs): the last evaluation as the engine wrote it, the
+  // timings of the first render, of every redraw and of every finished map (ms, from the
+  // request to the last cell), the woodpecker's drawn sizes; `mapAt()` (bench/) computes the
+  // map afresh and answers its time.
   const probe = { ready: false, evaluation: "", extras: null, request: null, curves: [],
-    error: "", timings: { firstRender: null, redraws: [] }, mapCells: 0 };
+    error: "", timings: { firstRender: null, redraws: [], maps: [] }, mapCells: 0, apparatus: null };
   window.stickslipExplorer = probe;
 
   // ---------------------------------------------------------------------------------------
@@ -38,14 +38,18 @@
    *  (a bug: it refuses bad input with a message) is started afresh and the call refused. */
   function call(fn, request) {
     try {
-      return callEngine(fn, request);
+      return callEngine(engine, fn, request);
     } catch (e) {
       engine = new WebAssembly.Instance(compiled, {}).exports;
       return { ok: false, text: `the engine failed on these parameters (${e.message})`, data: new Float64Array(0) };
     }
   }
 
-  function callEngine(fn, request) {
+  /** Calls export `fn` of the instance `engine` (its exports) with `request` as JSON; also
+   *  the workers' (its source is theirs: it uses nothing outside it). */
+  function callEngine(engine, fn, request) {
+    const encoder = new TextEncoder();
+    const decoder = new TextDecoder();
     const bytes = encoder.encode(JSON.stringify(request));
     const ptr = engine.alloc(bytes.length);
     new Uint8Array(engine.memory.buffer, ptr, bytes.length).set(bytes);
@@ -311,9 +315,12 @@
   }
 
   // ---------------------------------------------------------------------------------------
-  // Plots of position and speed (the report's colours and dashes)
+  // Plots of position and speed (the report's colours and dashes). Each plot's elements are
+  // made once; a new parameter set moves them (path data, attributes, texts), it does not
+  // make new ones (tests/explorer.rs counts them).
 
   const PLOT = { w: 640, h: 210, left: 64, right: 12, top: 10, bottom: 40 };
+  const FONT = "DejaVu Sans, Helvetica, Arial, sans-serif";
 
   function niceTicks(lo, hi, count) {
     const span = hi - lo || 1;
@@ -327,14 +334,80 @@
 
   function svgEl(tag, attrs, text) {
     const e = document.createElementNS(SVG, tag);
-    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+    set(e, attrs);
     if (text !== undefined) e.textContent = text;
     return e;
   }
 
+  /** Sets attributes of an existing element. */
+  function set(e, attrs) {
+    for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+    return e;
+  }
+
+  /** Sets the text of an element, reusing its text node. */
+  function setText(e, text) {
+    const t = e.firstChild;
+    if (t && t.nodeType === Node.TEXT_NODE && !t.nextSibling) {
+      if (t.data !== text) t.data = text;
+    } else {
+      e.textContent = text;
+    }
+  }
+
+  /** The first `n` items of `list` shown (made by `make` when missing), the others hidden. */
+  function pool(list, n, make) {
+    while (list.length < n) list.push(make());
+    list.forEach((item, i) => {
+      for (const e of Object.values(item)) {
+        if (i < n) e.removeAttribute("display");
+        else e.setAttribute("display", "none");
+      }
+    });
+    return list.slice(0, n);
+  }
+
+  /** The elements of a plot, made on first use. */
+  function plotParts(svg, yLabel) {
+    if (svg.parts) return svg.parts;
+    const x0 = PLOT.left;
+    const x1 = PLOT.w - PLOT.right;
+    const y0 = PLOT.h - PLOT.bottom;
+    const y1 = PLOT.top;
+    const grid = svgEl("g", { stroke: "#e3e3e3", "stroke-width": 1 });
+    const labels = svgEl("g", { "font-family": FONT, "font-size": 12, fill: "#000" });
+    const yTitle = svgEl("text", { x: 14, y: (y0 + y1) / 2, "text-anchor": "middle", "font-size": 13,
+      transform: `rotate(-90 14 ${(y0 + y1) / 2})` }, yLabel);
+    labels.append(svgEl("text", { x: (x0 + x1) / 2, y: PLOT.h - 6, "text-anchor": "middle", "font-size": 13 }, "t (s)"), yTitle);
+    const legend = svgEl("g", { "font-family": FONT, "font-size": 12 });
+    // Harmonic (solid) first, as in the report's legends.
+    const laws = [...DATA.laws].reverse().map((law) => {
+      const stroke = { stroke: law.color, "stroke-width": law.width, "stroke-dasharray": law.dash || "none" };
+      const key = svgEl("line", { x1: x0 + 10, x2: x0 + 40, ...stroke });
+      const label = svgEl("text", { x: x0 + 46 }, law.label);
+      legend.append(key, label);
+      return { law, key, label,
+        path: svgEl("path", { fill: "none", ...stroke, "stroke-linejoin": "round" }),
+        dot: svgEl("circle", { r: 4.5, fill: law.color, stroke: "#fff", "stroke-width": 1.5 }) };
+    });
+    const cursor = svgEl("line", { class: "cursor", y1: y0, y2: y1, stroke: "#606060", "stroke-width": 1, "stroke-dasharray": "5,4" });
+    svg.replaceChildren(svg.querySelector("title"),
+      svgEl("rect", { x: 0, y: 0, width: PLOT.w, height: PLOT.h, fill: "#fff" }), grid,
+      svgEl("rect", { x: x0, y: y1, width: x1 - x0, height: y0 - y1, fill: "none", stroke: "#000" }), labels,
+      ...laws.map((l) => l.path), legend, cursor, ...laws.map((l) => l.dot));
+    const tick = () => ({ line: grid.appendChild(svgEl("line", {})), text: labels.appendChild(svgEl("text", {})) });
+    const parts = { x0, x1, y0, y1, laws, cursor, yTitle, xTicks: [], yTicks: [], tick };
+    // As many ticks as niceTicks gives (count + 2 at most): none is made later.
+    pool(parts.xTicks, 10, tick);
+    pool(parts.yTicks, 7, tick);
+    svg.parts = parts;
+    return parts;
+  }
+
   function drawPlot(svg, column, yLabel, scale) {
-    const title = svg.querySelector("title");
-    svg.replaceChildren(title);
+    const parts = plotParts(svg, yLabel);
+    const { x0, x1, y0, y1 } = parts;
+    setText(parts.yTitle, yLabel);
     const end = DATA.shown * view.period;
     let lo = Infinity;
     let hi = -Infinity;
@@ -342,52 +415,37 @@
     if (!(hi > lo)) { lo = Math.min(lo, 0) - 1; hi = Math.max(hi, 0) + 1; }
     const pad = 0.05 * (hi - lo);
     lo -= pad; hi += pad;
-    const x0 = PLOT.left;
-    const x1 = PLOT.w - PLOT.right;
-    const y0 = PLOT.h - PLOT.bottom;
-    const y1 = PLOT.top;
     const px = (t) => x0 + ((x1 - x0) * t) / end;
     const py = (v) => y0 + ((y1 - y0) * (v - lo)) / (hi - lo);
-    svg.append(svgEl("rect", { x: 0, y: 0, width: PLOT.w, height: PLOT.h, fill: "#fff" }));
-    const grid = svgEl("g", { stroke: "#e3e3e3", "stroke-width": 1 });
-    const labels = svgEl("g", { "font-family": "DejaVu Sans, Helvetica, Arial, sans-serif", "font-size": 12, fill: "#000" });
-    for (const t of niceTicks(0, end, 8)) {
-      grid.append(svgEl("line", { x1: px(t), x2: px(t), y1: y0, y2: y1 }));
-      labels.append(svgEl("text", { x: px(t), y: y0 + 16, "text-anchor": "middle" }, fmt(t, 3)));
-    }
-    for (const v of niceTicks(lo, hi, 5)) {
-      grid.append(svgEl("line", { x1: x0, x2: x1, y1: py(v), y2: py(v) }));
-      labels.append(svgEl("text", { x: x0 - 6, y: py(v) + 4, "text-anchor": "end" }, fmt(v, 3)));
-    }
-    labels.append(svgEl("text", { x: (x0 + x1) / 2, y: PLOT.h - 6, "text-anchor": "middle", "font-size": 13 }, "t (s)"));
-    labels.append(svgEl("text", { x: 14, y: (y0 + y1) / 2, "text-anchor": "middle", "font-size": 13,
-      transform: `rotate(-90 14 ${(y0 + y1) / 2})` }, yLabel));
-    svg.append(grid, svgEl("rect", { x: x0, y: y1, width: x1 - x0, height: y0 - y1, fill: "none", stroke: "#000" }), labels);
-    const legend = svgEl("g", { "font-family": "DejaVu Sans, Helvetica, Arial, sans-serif", "font-size": 12 });
+    const xs = niceTicks(0, end, 8);
+    pool(parts.xTicks, xs.length, parts.tick).forEach(({ line, text }, i) => {
+      const x = px(xs[i]);
+      set(line, { x1: x, x2: x, y1: y0, y2: y1 });
+      set(text, { x, y: y0 + 16, "text-anchor": "middle" });
+      setText(text, fmt(xs[i], 3));
+    });
+    const ys = niceTicks(lo, hi, 5);
+    pool(parts.yTicks, ys.length, parts.tick).forEach(({ line, text }, i) => {
+      const y = py(ys[i]);
+      set(line, { x1: x0, x2: x1, y1: y, y2: y });
+      set(text, { x: x0 - 6, y: y + 4, "text-anchor": "end" });
+      setText(text, fmt(ys[i], 3));
+    });
     let ly = y1 + 16;
-    // Harmonic (solid) first, as in the report's legends.
-    for (const law of [...DATA.laws].reverse()) {
-      const points = view.curves[law.id];
-      if (!points.length) continue;
+    for (const part of parts.laws) {
+      const points = view.curves[part.law.id];
+      const shown = points.length > 0;
+      for (const e of [part.path, part.key, part.label, part.dot]) {
+        if (shown) e.removeAttribute("display"); else e.setAttribute("display", "none");
+      }
+      if (!shown) continue;
       let d = "";
       for (let i = 0; i < points.length; i++) d += `${i ? "L" : "M"}${px(points[i][0]).toFixed(1)} ${py(points[i][column] * scale).toFixed(1)}`;
-      svg.append(svgEl("path", { d, fill: "none", stroke: law.color, "stroke-width": law.width,
-        "stroke-dasharray": law.dash || "none", "stroke-linejoin": "round" }));
-      legend.append(svgEl("line", { x1: x0 + 10, x2: x0 + 40, y1: ly - 4, y2: ly - 4, stroke: law.color,
-        "stroke-width": law.width, "stroke-dasharray": law.dash || "none" }));
-      legend.append(svgEl("text", { x: x0 + 46, y: ly }, law.label));
+      part.path.setAttribute("d", d);
+      set(part.key, { y1: ly - 4, y2: ly - 4 });
+      part.label.setAttribute("y", ly);
       ly += 16;
     }
-    svg.append(legend);
-    const cursor = svgEl("line", { class: "cursor", x1: px(state.time), x2: px(state.time), y1: y0, y2: y1,
-      stroke: "#606060", "stroke-width": 1, "stroke-dasharray": "5,4" });
-    svg.append(cursor);
-    // A dot on each law's curve, moved with the animation's time.
-    svg.dots = [...DATA.laws].reverse().filter((law) => view.curves[law.id].length).map((law) => {
-      const dot = svgEl("circle", { r: 4.5, fill: law.color, stroke: "#fff", "stroke-width": 1.5 });
-      svg.append(dot);
-      return { dot, points: view.curves[law.id] };
-    });
     svg.cursorX = px;
     svg.cursorY = (v) => py(v * scale);
     svg.column = column;
@@ -409,24 +467,22 @@
     drawPlot($("plot-x"), 1, `${pos} (mm)`, 1e3);
     drawPlot($("plot-v"), 2, "v (mm/s)", 1e3);
     const e = view.evaluation;
-    $("plot-x-title").textContent = `Position ${pos} in mm against time over ${DATA.shown} periods, both force laws`;
-    $("plot-v-title").textContent = `Speed in mm/s against time over ${DATA.shown} periods, both force laws`;
-    $("plots-caption").textContent = `Exact integration from rest over ${DATA.shown} periods (T = ${fmt(e.params.T, 4)} s): `
+    setText($("plot-x-title"), `Position ${pos} in mm against time over ${DATA.shown} periods, both force laws`);
+    setText($("plot-v-title"), `Speed in mm/s against time over ${DATA.shown} periods, both force laws`);
+    setText($("plots-caption"), `Exact integration from rest over ${DATA.shown} periods (T = ${fmt(e.params.T, 4)} s): `
       + `harmonic law (solid) against the linearized law (dashed)${view.curves.linear.length ? "" : "; the linearized law does not exist for these parameters"}. `
-      + "The dashed vertical line and the dots follow the time of the animation.";
+      + "The dashed vertical line and the dots follow the time of the animation.");
   }
 
   function moveCursors() {
     for (const id of ["plot-x", "plot-v"]) {
       const svg = $(id);
-      const line = svg.querySelector("line.cursor");
-      if (!line || !svg.cursorX) continue;
+      if (!svg.parts || !svg.cursorX) continue;
       const x = svg.cursorX(state.time);
-      line.setAttribute("x1", x);
-      line.setAttribute("x2", x);
-      for (const { dot, points } of svg.dots) {
-        dot.setAttribute("cx", x);
-        dot.setAttribute("cy", svg.cursorY(valueAt(points, svg.column, state.time)));
+      set(svg.parts.cursor, { x1: x, x2: x });
+      for (const { law, dot } of svg.parts.laws) {
+        const points = view.curves[law.id];
+        if (points.length) set(dot, { cx: x, cy: svg.cursorY(valueAt(points, svg.column, state.time)) });
       }
     }
   }
@@ -447,6 +503,9 @@
     return `${r ? r.words : summary.regime}${counts.length ? ` (${counts.join("; ")})` : ""}; ${speed}`;
   }
 
+  /** The three lines of the regime, made once: [law, text] element pairs. */
+  let regimeLines = null;
+
   function drawRegime() {
     const e = view.evaluation;
     const c = view.extras.closed_form;
@@ -455,13 +514,20 @@
       ["Exact integration, linearized law", lawWords(e.linear)],
       ["Exact integration, harmonic law", lawWords(e.harmonic)],
     ];
-    const box = $("regime");
-    box.replaceChildren();
-    for (const [law, text] of lines) {
-      const p = el("p");
-      p.append(el("span", { class: "law" }, `${law}: `), text);
-      box.append(p);
+    if (!regimeLines) {
+      regimeLines = lines.map(() => {
+        const p = el("p");
+        const law = el("span", { class: "law" }, "");
+        const text = el("span", {}, "");
+        p.append(law, text);
+        $("regime").append(p);
+        return [law, text];
+      });
     }
+    lines.forEach(([law, text], i) => {
+      setText(regimeLines[i][0], `${law}: `);
+      setText(regimeLines[i][1], text);
+    });
     // The live region says the regimes in words only, and only when they change, so that a
     // screen reader announces a new regime, not every step of a slider.
     const words = (s) => (s ? (DATA.integration_regimes.find((q) => q.id === s.regime) || { words: s.regime }).words : "none");
@@ -481,30 +547,45 @@
     return r ? r.words : value;
   }
 
+  /** The table's rows by model and quantity, made once each and kept when not shown. */
+  const tableRows = new Map();
+
+  function tableRow(id) {
+    const key = `${state.model} ${id}`;
+    if (!tableRows.has(key)) {
+      const tr = el("tr", { "data-quantity": id });
+      const cells = ["", "", "num", "num", "", "num", "verdict", "note"].map((cls) => {
+        const td = el("td", cls ? { class: cls } : {}, "");
+        tr.append(td);
+        return td;
+      });
+      tableRows.set(key, { tr, cells });
+    }
+    return tableRows.get(key);
+  }
+
   function drawTable() {
     const e = view.evaluation;
     const applies = Object.fromEntries(view.extras.applicability.map((a) => [a.quantity, a]));
     const checks = Object.fromEntries(e.checks.map((c) => [c.quantity, c]));
-    const rows = $("check-rows");
-    rows.replaceChildren();
+    const shown = [];
     const row = (q, id, c) => {
       const a = applies[id];
       const na = a && !a.applies;
       const value = c ? c.closed_form : e.closed_form[id];
       const verdict = !c ? "—" : na ? "n/a" : c.pass === true ? "pass" : c.pass === false ? "FAIL" : "n/a";
       const cls = na ? "na" : !c ? "none" : c.pass === true ? "pass" : c.pass === false ? "fail" : "na";
-      const tr = el("tr", { class: cls, "data-quantity": id });
-      const cell = (text, extra = {}) => tr.append(el("td", extra, text));
-      cell(q ? q.symbol : id, { title: q ? q.words : id });
-      cell(q ? `${c ? c.equation : q.equation} ${q.tag}` : c.equation);
-      cell(inWords(value), { class: "num", "data-exact": String(value) });
-      cell(c ? inWords(c.numeric) : "—", { class: "num", "data-exact": c ? String(c.numeric) : "" });
-      cell(q ? q.unit : "");
-      cell(!c || c.rel_error === null ? "—" : c.rel_error.toExponential(1), { class: "num" });
-      cell(verdict, { class: "verdict" });
+      const { tr, cells } = tableRow(id);
+      if (tr.className !== cls) tr.className = cls;
       const notes = [na ? a.reason : "", c ? c.note || "" : "no counterpart in the integration"];
-      cell(notes.filter(Boolean).join("; "), { class: "note" });
-      rows.append(tr);
+      const texts = [q ? q.symbol : id, q ? `${c ? c.equation : q.equation} ${q.tag}` : c.equation,
+        inWords(value), c ? inWords(c.numeric) : "—", q ? q.unit : "",
+        !c || c.rel_error === null ? "—" : c.rel_error.toExponential(1), verdict, notes.filter(Boolean).join("; ")];
+      texts.forEach((t, i) => setText(cells[i], t));
+      cells[0].title = q ? q.words : id;
+      cells[2].dataset.exact = String(value);
+      cells[3].dataset.exact = c ? String(c.numeric) : "";
+      shown.push(tr);
     };
     // Every closed form of the registry in its order, with its check where it has one (as the
     // report's verification table), then the checks of the periodic orbit.
@@ -513,18 +594,26 @@
     }
     const known = new Set(model().quantities.map((q) => q.id));
     for (const c of e.checks) if (!known.has(c.quantity)) row(null, c.quantity, c);
-    $("periods").textContent = String(e.params.periods);
-    $("json").textContent = probe.evaluation;
+    // The rows in order: those already in place stay, others move in or out.
+    const rows = $("check-rows");
+    shown.forEach((tr, i) => { if (rows.children[i] !== tr) rows.insertBefore(tr, rows.children[i] || null); });
+    while (rows.children.length > shown.length) rows.lastElementChild.remove();
+    setText($("periods"), String(e.params.periods));
+    setText($("json"), probe.evaluation);
     const req = probe.request;
     const flags = Object.entries(req.params).map(([k, v]) => `--${k.replace(/_/g, "-")}=${v}`)
       .concat(Object.entries(req.choices).map(([k, v]) => `--${k}=${v}`));
-    $("cli-line").textContent = `stickslip eval ${req.model} ${flags.join(" ")} --json`;
+    setText($("cli-line"), `stickslip eval ${req.model} ${flags.join(" ")} --json`);
   }
 
   // ---------------------------------------------------------------------------------------
-  // The apparatus, moved by the computed motion
+  // The apparatus, moved by the computed motion: the report's sketch of each model (the same
+  // sizes, DATA.apparatus from the Rust sketches), its bodies moved. Its elements are made
+  // once per model and moved in place on each frame.
 
-  const APP = { w: 640, h: 240 };
+  const INK = "#000";
+  const PURPLE = "#cc79a7";
+  const BLUE = "#0072b2";
 
   /** (x, v, apparatus) of the animation's law at time t, between the nearest samples. */
   function stateAt(t) {
@@ -539,75 +628,235 @@
     return [lo, hi];
   }
 
-  function spring(x0, y0, x1, y1, turns) {
-    const dx = x1 - x0;
-    const dy = y1 - y0;
-    const len = Math.hypot(dx, dy) || 1;
-    const nx = -dy / len;
-    const ny = dx / len;
-    let d = `M${x0} ${y0}`;
-    for (let i = 1; i < 2 * turns; i++) {
-      const f = i / (2 * turns);
-      const s = i % 2 ? 7 : -7;
-      d += `L${(x0 + dx * f + nx * s).toFixed(1)} ${(y0 + dy * f + ny * s).toFixed(1)}`;
+  /** The sketch's vertical coil spring (src/report/sketch.rs, Svg::spring) from y1 down to
+   *  y2 at x: straight ends, `coils` zigzags of half-width `half`; polyline points. */
+  function springPoints(x, y1, y2, coils, half) {
+    const end = Math.min(10, (y2 - y1) / 4);
+    const a = y1 + end;
+    const b = y2 - end;
+    const n = 2 * Math.max(1, coils);
+    const step = (b - a) / n;
+    const pts = [[x, y1], [x, a]];
+    for (let i = 0; i < n; i++) pts.push([x + (i % 2 === 0 ? -half : half), a + step * (i + 0.5)]);
+    pts.push([x, b], [x, y2]);
+    return pts.map(([px, py]) => `${px.toFixed(1)},${py.toFixed(1)}`).join(" ");
+  }
+
+  const points = (pts) => pts.map(([x, y]) => `${x.toFixed(1)},${y.toFixed(1)}`).join(" ");
+
+  /** The woodpecker's drawn sizes for parameters `p` (SI), as the sketch's woodpecker_layout:
+   *  scale (px/mm), l and h (px), the sleeve's tilt θ (rad) and its hole's half-height b (px). */
+  function woodpeckerLayout(p) {
+    const g = DATA.apparatus.woodpecker;
+    const [l, h, z0, d0] = [p.l * 1e3, p.h * 1e3, p.z0 * 1e3, p.d0 * 1e3];
+    const zLo = Math.min(z0 - Math.abs(d0), 0);
+    const zHi = Math.max(z0 + Math.abs(d0), 0);
+    let scale = [g.max_scale, g.l_span / l, g.h_span / h, g.z_span / (zHi - zLo)]
+      .filter((v) => Number.isFinite(v) && v > 0).reduce((a, b) => Math.min(a, b), Infinity);
+    if (!Number.isFinite(scale)) scale = g.max_scale;
+    const hPx = Math.max(h * scale, g.h_min);
+    // The sketch's sleeve_tilt: the hole's top-left inner corner on the pole's left face, the
+    // contacts h apart vertically (a fixed point on b).
+    const a = g.pole_half + g.clearance;
+    let b = hPx / 2;
+    let theta = 0;
+    for (let i = 0; i < 50; i++) {
+      theta = Math.atan(a / b) - Math.asin(g.pole_half / Math.hypot(a, b));
+      b = (hPx / 2 - a * Math.sin(theta)) / Math.cos(theta);
     }
-    return `${d}L${x1} ${y1}`;
+    return { scale, l_px: Math.max(l * scale, g.l_min), h_px: hPx, theta, b, zLo, zHi };
+  }
+
+  let apparatus = null; // {model, parts}
+
+  function textEl(attrs, text) {
+    return svgEl("text", { "font-family": FONT, fill: INK, ...attrs }, text);
+  }
+
+  /** The pulled mass as its sketch draws it: the block on the table, the spring under it
+   *  through the slot (a groove along the motion, seen through the table's near edge), the
+   *  hanging mass m′ and the pull F. */
+  function pulledMassParts(svg) {
+    const g = DATA.apparatus["pulled-mass"];
+    const f = g.font;
+    const top = 140;
+    const body = { stroke: INK, "stroke-width": 1.6 };
+    const parts = {
+      top, width: g.width, height: top + g.hang + 18 + g.mass_height + 24,
+      left: svgEl("rect", { y: top, height: g.table, fill: INK, "fill-opacity": 0.18, stroke: INK, "stroke-width": 1.2 }),
+      right: svgEl("rect", { y: top, height: g.table, fill: INK, "fill-opacity": 0.18, stroke: INK, "stroke-width": 1.2 }),
+      rail: svgEl("rect", { y: top, height: g.table, fill: INK, "fill-opacity": 0.06, stroke: INK, "stroke-width": 1, "stroke-dasharray": "5 4" }),
+      spring: svgEl("polyline", { class: "spring", fill: "none", stroke: PURPLE, "stroke-width": 2.2, "stroke-linejoin": "round" }),
+      block: svgEl("rect", { class: "block", y: top - g.block_height, width: g.block_width, height: g.block_height, ...body }),
+      blockLabel: textEl({ y: top - g.block_height / 2 + 7, "text-anchor": "middle", "font-size": f }, "m"),
+      mass: svgEl("rect", { class: "hanging", width: g.mass_width, height: g.mass_height, fill: INK, "fill-opacity": 0.12, ...body }),
+      massLabel: textEl({ "font-size": f }, "m′ = m"),
+      stub: svgEl("line", { stroke: INK, "stroke-width": 1.5 }),
+      pull: svgEl("line", { stroke: BLUE, "stroke-width": 3 }),
+      head: svgEl("polygon", { fill: BLUE }),
+      pullLabel: textEl({ "text-anchor": "middle", "font-size": f }, "F"),
+      time: textEl({ x: 10, y: 28, "font-size": f }, ""),
+      words: textEl({ x: 10, y: 52, "font-size": f }, ""),
+    };
+    svg.append(parts.left, parts.right, parts.spring, parts.rail, parts.block, parts.blockLabel, parts.mass,
+      parts.massLabel, parts.stub, parts.pull, parts.head, parts.pullLabel, parts.time, parts.words);
+    return parts;
+  }
+
+  function drawPulledMass(parts, s, body, word, t) {
+    const g = DATA.apparatus["pulled-mass"];
+    const [xlo, xhi] = extent(s.points, 1);
+    const [zlo, zhi] = extent(s.points, 3);
+    // The block's centre travels from `start` over `travel` px (the sketch has no length
+    // scale along the table); the slot spans the spring's travel.
+    const start = 20 + g.block_width / 2;
+    const travel = g.width - start - g.block_width / 2 - g.pull_stub - g.pull_arrow - 30;
+    const cx = start + (xhi > xlo ? ((s.x - xlo) / (xhi - xlo)) * travel : 0);
+    const { top } = parts;
+    const slotL = start - g.slot_half;
+    const slotR = start + travel + g.slot_half;
+    set(parts.left, { x: 10, width: slotL - 10 });
+    set(parts.right, { x: slotR, width: g.width - 10 - slotR });
+    set(parts.rail, { x: slotL, width: slotR - slotL });
+    // The hanging mass, 18 px either side of its rest position (not to scale).
+    const amp = Math.max(Math.abs(zlo), Math.abs(zhi), 1e-12);
+    const hangY = top + g.hang + (s.z / amp) * 18;
+    parts.spring.setAttribute("points", springPoints(cx, top, hangY, g.coils, g.coil_half));
+    set(parts.block, { x: cx - g.block_width / 2, fill: body });
+    parts.blockLabel.setAttribute("x", cx);
+    set(parts.mass, { x: cx - g.mass_width / 2, y: hangY });
+    set(parts.massLabel, { x: cx + g.mass_width / 2 + 8, y: hangY + 22 });
+    const fy = top - g.block_height / 2;
+    const face = cx + g.block_width / 2;
+    const stub = face + g.pull_stub;
+    const tip = stub + g.pull_arrow;
+    set(parts.stub, { x1: face, x2: stub, y1: fy, y2: fy });
+    set(parts.pull, { x1: stub, x2: tip - 12, y1: fy, y2: fy });
+    parts.head.setAttribute("points", points([[tip, fy], [tip - 14, fy - 6], [tip - 14, fy + 6]]));
+    set(parts.pullLabel, { x: tip - g.pull_arrow / 2, y: fy - 12 });
+    setText(parts.time, t);
+    setText(parts.words, `block ${word}, x = ${fmt(s.x * 1e3, 4)} mm, v = ${fmt(s.v * 1e3, 4)} mm/s`);
+    return `The pulled mass at ${t}: the block is ${word} on the table, ${fmt(s.x * 1e3, 4)} mm from its start, pulled by F and pressed down by the spring of the mass m′ hanging under it through the slot.`;
+  }
+
+  /** The woodpecker as its sketch draws it: the pole, the sleeve tilted on it (contacts h
+   *  apart) with its arm l, the spring and the bird; the view follows the sleeve down the pole,
+   *  whose marks move up as it falls. */
+  function woodpeckerParts(svg) {
+    const f = DATA.apparatus.woodpecker.font;
+    const wall = { fill: INK, "fill-opacity": 0.25, stroke: INK, "stroke-width": 1.5 };
+    const bird = svgEl("g", { class: "bird" });
+    const r = DATA.apparatus.woodpecker.bird_r;
+    const [hx, hy] = [-r * 0.75, -r * 0.7];
+    bird.append(
+      svgEl("ellipse", { cx: 4, cy: 4, rx: r * 1.2, ry: r * 0.8, fill: DATA.palette[1], stroke: INK, "stroke-width": 1.6 }),
+      svgEl("circle", { cx: hx, cy: hy, r: r * 0.5, fill: DATA.palette[1], stroke: INK, "stroke-width": 1.6 }),
+      svgEl("polygon", { points: points([[hx - r * 0.45, hy - 3], [hx - r * 1.25, hy + 1], [hx - r * 0.45, hy + 4]]), fill: INK, "fill-opacity": 0.6, stroke: INK, "stroke-width": 1.2 }),
+      svgEl("circle", { cx: hx - 2, cy: hy - 2, r: 1.8, fill: INK }),
+      svgEl("path", { d: `M${hx - 2} ${hy - r * 0.5} q${r * 0.4} ${-r * 0.5} ${r * 0.8} ${r * 0.15}`, fill: "none", stroke: "#d55e00", "stroke-width": 3 }));
+    const parts = {
+      pole: svgEl("rect", { fill: INK, "fill-opacity": 0.1, stroke: INK, "stroke-width": 1.2 }),
+      marks: [],
+      marksGroup: svgEl("g", { stroke: INK, "stroke-width": 1.5 }),
+      ring: svgEl("polygon", { fill: INK, "fill-opacity": 0.08, stroke: INK, "stroke-width": 0.8 }),
+      leftWall: svgEl("polygon", { class: "sleeve", ...wall }),
+      rightWall: svgEl("polygon", { class: "sleeve", ...wall }),
+      c1: svgEl("circle", { r: 3.5, fill: INK }),
+      c2: svgEl("circle", { r: 3.5, fill: INK }),
+      band: svgEl("rect", { fill: PURPLE, "fill-opacity": 0.22 }),
+      spring: svgEl("polyline", { class: "spring", fill: "none", stroke: PURPLE, "stroke-width": 2.2, "stroke-linejoin": "round" }),
+      bird,
+      time: textEl({ x: 20, y: 36, "font-size": f }, ""),
+      words: textEl({ x: 20, y: 72, "font-size": f }, ""),
+      speed: textEl({ x: 20, y: 108, "font-size": f }, ""),
+    };
+    for (let i = 0; i < 24; i++) parts.marks.push(parts.marksGroup.appendChild(svgEl("line", {})));
+    svg.append(parts.ring, parts.pole, parts.marksGroup, parts.leftWall, parts.rightWall, parts.c1, parts.c2,
+      parts.band, parts.spring, bird, parts.time, parts.words, parts.speed);
+    return parts;
+  }
+
+  function drawWoodpecker(parts, s, body, word, t, svg) {
+    const g = DATA.apparatus.woodpecker;
+    const p = view.evaluation.params;
+    const L = woodpeckerLayout(p);
+    probe.apparatus = { scale: L.scale, l_px: L.l_px, h_px: L.h_px, theta: L.theta, b: L.b };
+    const { scale, b } = L;
+    // The sleeve tilts with the spring's pull: clockwise while it pulls down (z > 0).
+    const theta = s.z < 0 ? -L.theta : L.theta;
+    const px = 300;
+    const [cx, cy] = [px, 250];
+    const a = g.pole_half + g.clearance;
+    const [sn, cs] = [Math.sin(theta), Math.cos(theta)];
+    const rot = (dx, dy) => [cx + dx * cs - dy * sn, cy + dx * sn + dy * cs];
+    const armLen = L.l_px / Math.cos(L.theta);
+    const armEnd = rot(armLen, g.arm_half);
+    const springX = px + L.l_px;
+    const zLo = Math.min(L.zLo, extent(s.points, 3)[0] * 1e3);
+    const zHi = Math.max(L.zHi, extent(s.points, 3)[1] * 1e3);
+    // z = 0 sits the spring's natural length below the arm's end as the sketch draws it
+    // (tilted clockwise), whichever way the sleeve tilts now.
+    const armY = cy + armLen * Math.sin(L.theta) + g.arm_half * Math.cos(L.theta);
+    const zZero = armY + g.natural - Math.min(zLo, 0) * scale;
+    const yOf = (zmm) => zZero + zmm * scale;
+    const birdY = yOf(s.z * 1e3);
+    const height = yOf(zHi) + g.bird_r + 40;
+    // The sketch's canvas, cut right of the bird.
+    svg.setAttribute("viewBox", `0 0 ${Math.min(g.width, springX + 200).toFixed(1)} ${height.toFixed(1)}`);
+    const ring = [rot(-a - g.wall, -b), rot(a + g.wall, -b), rot(a + g.wall, b), rot(-a - g.wall, b)];
+    parts.ring.setAttribute("points", points(ring));
+    set(parts.pole, { x: px - g.pole_half, y: 130, width: 2 * g.pole_half, height: height - 130 });
+    // Marks on the pole every 1, 2 or 5 × 10^k mm, at least 40 px apart, moving up as the
+    // sleeve falls (y_S, downward positive).
+    const steps = [1, 2, 5].flatMap((m) => [0.1, 1, 10, 100].map((k) => m * k)).sort((u, v) => u - v);
+    const every = steps.find((m) => m * scale >= 40) || 1000;
+    const yS = s.x * 1e3;
+    const first = Math.ceil((yS + (130 - cy) / scale) / every);
+    parts.marks.forEach((line, i) => {
+      const y = cy + ((first + i) * every - yS) * scale;
+      if (y > height) { line.setAttribute("display", "none"); return; }
+      line.removeAttribute("display");
+      set(line, { x1: px - g.pole_half, x2: px + g.pole_half, y1: y.toFixed(1), y2: y.toFixed(1) });
+    });
+    parts.leftWall.setAttribute("points", points([rot(-a - g.wall, -b), rot(-a, -b), rot(-a, b), rot(-a - g.wall, b)]));
+    parts.rightWall.setAttribute("points", points([rot(a, -b), rot(a + g.wall, -b), rot(a + g.wall, -g.arm_half),
+      rot(armLen, -g.arm_half), rot(armLen, g.arm_half), rot(a + g.wall, g.arm_half), rot(a + g.wall, b), rot(a, b)]));
+    parts.leftWall.setAttribute("fill", body);
+    parts.rightWall.setAttribute("fill", body);
+    // The contacts: the hole's corners on the pole.
+    const [c1, c2] = theta >= 0 ? [rot(-a, -b), rot(a, b)] : [rot(-a, b), rot(a, -b)];
+    set(parts.c1, { cx: c1[0].toFixed(1), cy: c1[1].toFixed(1) });
+    set(parts.c2, { cx: c2[0].toFixed(1), cy: c2[1].toFixed(1) });
+    const [top, bot] = [yOf(p.z0 * 1e3 - Math.abs(p.d0 * 1e3)), yOf(p.z0 * 1e3 + Math.abs(p.d0 * 1e3))];
+    set(parts.band, { x: springX - g.bird_r - 8, y: top.toFixed(1), width: 2 * g.bird_r + 16, height: Math.max(0, bot - top).toFixed(1) });
+    parts.spring.setAttribute("points", springPoints(springX, armEnd[1], birdY - g.bird_r, g.coils, g.coil_half));
+    parts.bird.setAttribute("transform", `translate(${springX.toFixed(1)} ${birdY.toFixed(1)})`);
+    setText(parts.time, t);
+    setText(parts.words, `sleeve ${word}, y_S = ${fmt(yS, 4)} mm`);
+    setText(parts.speed, `v = ${fmt(s.v * 1e3, 4)} mm/s`);
+    return `The woodpecker toy at ${t}: the sleeve, tilted on the pole and touching it at two points ${fmt(p.h * 1e3, 3)} mm apart, is ${word}, ${fmt(yS, 4)} mm below its start; the bird swings on its spring at the end of the sleeve's arm, l = ${fmt(p.l * 1e3, 3)} mm from the pole's axis. The view follows the sleeve: the marks on the pole move up as it falls.`;
   }
 
   function drawApparatus() {
     if (!view) return;
     const svg = $("apparatus");
-    const desc = svg.querySelector("desc");
-    svg.replaceChildren(desc);
+    if (!apparatus || apparatus.model !== state.model) {
+      svg.replaceChildren(svg.querySelector("desc"));
+      const parts = state.model === "woodpecker" ? woodpeckerParts(svg) : pulledMassParts(svg);
+      apparatus = { model: state.model, parts };
+      if (parts.height) svg.setAttribute("viewBox", `0 0 ${parts.width} ${parts.height}`);
+    }
     const s = stateAt(state.time);
     const moving = Math.abs(s.v) > 1e-12;
     const body = moving ? DATA.palette[0] : "#8a8a8a";
     const word = moving ? "slipping" : "stuck";
-    const text = { "font-family": "DejaVu Sans, Helvetica, Arial, sans-serif", "font-size": 13, fill: "#000" };
-    svg.append(svgEl("rect", { x: 0, y: 0, width: APP.w, height: APP.h, fill: "#fff" }));
-    const [xlo, xhi] = extent(s.points, 1);
-    const [zlo, zhi] = extent(s.points, 3);
     const t = `t = ${fmt(state.time, 4)} s`;
-    if (state.model === "woodpecker") {
-      // Pole, sleeve sliding down, bird on its spring; one scale for both lengths.
-      // y_W = y_S + z (downward): the bird sits z beside the sleeve, both on one scale.
-      const scale = 180 / Math.max(xhi - xlo + Math.max(zhi, 0) - Math.min(zlo, 0), 1e-9);
-      const sy = 24 + (Math.max(0, -zlo) + s.x - xlo) * scale;
-      svg.append(svgEl("rect", { x: 310, y: 8, width: 12, height: 226, fill: "#c8c8c8", stroke: "#606060" }));
-      svg.append(svgEl("rect", { x: 300, y: sy - 12, width: 32, height: 24, rx: 3, fill: body, stroke: "#000" }));
-      const by = sy + s.z * scale;
-      svg.append(svgEl("path", { d: spring(332, sy, 392, by, 6), fill: "none", stroke: "#000", "stroke-width": 1.5 }));
-      const tilt = zhi > zlo ? 30 * ((s.z - zlo) / (zhi - zlo) - 0.5) : 0;
-      const bird = svgEl("g", { transform: `translate(410 ${by.toFixed(1)}) rotate(${tilt.toFixed(1)})` });
-      bird.append(svgEl("ellipse", { cx: 0, cy: 0, rx: 20, ry: 12, fill: DATA.palette[1], stroke: "#000" }));
-      bird.append(svgEl("circle", { cx: 22, cy: -10, r: 8, fill: DATA.palette[1], stroke: "#000" }));
-      bird.append(svgEl("path", { d: "M29 -12 L44 -8 L29 -6 Z", fill: DATA.palette[4], stroke: "#000" }));
-      svg.append(bird);
-      svg.append(svgEl("text", { ...text, x: 20, y: 30 }, t));
-      svg.append(svgEl("text", { ...text, x: 20, y: 50 }, `sleeve ${word}, y_S = ${fmt(s.x * 1e3, 4)} mm`));
-      svg.append(svgEl("text", { ...text, x: 20, y: 70 }, `v = ${fmt(s.v * 1e3, 4)} mm/s`));
-      desc.textContent = `The woodpecker toy at ${t}: the sleeve is ${word} on the pole, ${fmt(s.x * 1e3, 4)} mm below its start, and the bird swings on its spring beside it.`;
-    } else {
-      // Table, block pulled by F, the hanging mass on its spring pressing it.
-      const scale = 420 / Math.max(xhi - xlo, 1e-9);
-      const bx = 60 + (s.x - xlo) * scale;
-      svg.append(svgEl("line", { x1: 20, x2: 620, y1: 170, y2: 170, stroke: "#000", "stroke-width": 2 }));
-      svg.append(svgEl("rect", { x: 20, y: 170, width: 600, height: 10, fill: "#d8c6a0" }));
-      svg.append(svgEl("rect", { x: bx - 30, y: 132, width: 60, height: 38, fill: body, stroke: "#000" }));
-      const amp = Math.max(Math.abs(zlo), Math.abs(zhi), 1e-12);
-      const my = 62 + (s.z / amp) * 18;
-      svg.append(svgEl("path", { d: spring(bx, 132, bx, my + 14, 5), fill: "none", stroke: "#000", "stroke-width": 1.5 }));
-      svg.append(svgEl("rect", { x: bx - 18, y: my - 14, width: 36, height: 28, fill: DATA.palette[1], stroke: "#000" }));
-      svg.append(svgEl("text", { ...text, x: bx, y: my + 5, "text-anchor": "middle", fill: "#000" }, "m′"));
-      svg.append(svgEl("line", { x1: bx + 30, x2: bx + 80, y1: 151, y2: 151, stroke: "#000", "stroke-width": 2 }));
-      svg.append(svgEl("path", { d: `M${bx + 80} 145 L${bx + 92} 151 L${bx + 80} 157 Z`, fill: "#000" }));
-      svg.append(svgEl("text", { ...text, x: bx + 86, y: 140 }, "F"));
-      svg.append(svgEl("text", { ...text, x: 20, y: 210 }, `${t}; block ${word}, x = ${fmt(s.x * 1e3, 4)} mm, v = ${fmt(s.v * 1e3, 4)} mm/s`));
-      desc.textContent = `The pulled mass at ${t}: the block is ${word}, ${fmt(s.x * 1e3, 4)} mm from its start, pressed by the hanging mass m′ on its spring.`;
-    }
+    const desc = state.model === "woodpecker" ? drawWoodpecker(apparatus.parts, s, body, word, t, svg)
+      : drawPulledMass(apparatus.parts, s, body, word, t);
+    setText(svg.querySelector("desc"), desc);
     const end = DATA.shown * view.period;
     $("time").value = String(Math.round((state.time / end) * 1000));
-    $("time-out").textContent = t;
+    setText($("time-out"), t);
     $("time").setAttribute("aria-valuetext", t);
     moveCursors();
   }
@@ -649,69 +898,194 @@
   }
 
   // ---------------------------------------------------------------------------------------
-  // The regime map: computed a few rows at a time, so that sliders stay responsive
+  // The regime map: computed by two Web Workers (each with its own instance of the page's
+  // engine module), a coarse pass first, then one cell per pixel of the map; rows are drawn
+  // as they come, and the sliders never wait for it. Without workers, the coarse pass only,
+  // a few rows at a time in the page.
 
   // The canvas: the cells in a square of `size` px at (left, top), tick labels and axis
   // titles around it.
   const MAP = { w: 484, h: 456, left: 60, top: 10, size: 400 };
   let mapJob = 0;
   let mapTimer = null;
-  let map = null; // {info, cells, n}
+  // The map shown: its axes and legend, the grid of the cursor and of clicks (`n`, the coarse
+  // pass), and the finest finished pass (`best`: {n, cells}).
+  let map = null;
+  let mapImage = null; // the cells' pixels, MAP.size square
+  let mapLevel = null; // per pixel row, the cells per side of the pass drawn there
+  let mapDrawPending = false;
+  let mapWaiting = null; // {resolve, started} of stickslipExplorer.mapAt
+  const slots = []; // the workers: {worker, task}
+  let queue = [];
+
+  /** A worker's code (made into a Blob URL: nothing is fetched). It instantiates the module
+   *  it is sent and answers map requests: {id, ok, text, data (categories)}. */
+  function workerMain(callEngine) {
+    let module = null;
+    let ready = null;
+    self.onmessage = async (ev) => {
+      const m = ev.data;
+      if (m.module) { module = m.module; ready = WebAssembly.instantiate(module, {}); return; }
+      const engine = (await ready).exports;
+      try {
+        const out = callEngine(engine, "map", m.request);
+        const data = Uint8Array.from(out.data);
+        self.postMessage({ id: m.id, ok: out.ok, text: out.text, data }, [data.buffer]);
+      } catch (e) {
+        ready = WebAssembly.instantiate(module, {});
+        self.postMessage({ id: m.id, ok: false, text: `the engine failed on these parameters (${e.message})`, data: new Uint8Array(0) });
+      }
+    };
+  }
+
+  function startWorkers() {
+    if (typeof Worker === "undefined" || typeof Blob === "undefined") return;
+    try {
+      const url = URL.createObjectURL(new Blob([`"use strict";(${workerMain.toString()})(${callEngine.toString()});`], { type: "text/javascript" }));
+      for (let i = 0; i < 2; i++) {
+        const slot = { worker: new Worker(url), task: null };
+        slot.worker.onmessage = (ev) => finished(slot, ev.data);
+        slot.worker.onerror = (ev) => { ev.preventDefault(); stopWorkers(); };
+        slot.worker.postMessage({ module: compiled });
+        slots.push(slot);
+      }
+    } catch (e) {
+      stopWorkers();
+    }
+  }
+
+  /** Workers that fail (a browser that refuses them): the map is computed in the page. */
+  function stopWorkers() {
+    if (!slots.length) return;
+    for (const s of slots) s.worker.terminate();
+    slots.length = 0;
+    scheduleMap();
+  }
 
   function scheduleMap() {
     clearTimeout(mapTimer);
+    queue = [];
     const job = ++mapJob;
-    mapTimer = setTimeout(() => computeMap(job), 120);
+    // After a pause of the sliders: while one is dragged, the workers would take the cores
+    // the page draws with.
+    mapTimer = setTimeout(() => computeMap(job), 100);
   }
 
+  /** Queues the passes of map `job`: rows in tasks of about 4,000 cells, coarse pass first. */
   function computeMap(job) {
-    const n = DATA.map_cells;
-    const req = { ...request(), law: state.law, cells: n };
-    const cells = new Uint8Array(n * n);
-    let info = null;
-    let row = 0;
-    const chunk = () => {
-      if (job !== mapJob) return;
-      const rows = [row, Math.min(n, row + 5)];
-      const out = call("map", { ...req, rows });
-      if (!out.ok) { $("map-status").textContent = `No map: ${out.text}`; return; }
-      info = JSON.parse(out.text);
-      cells.set(Array.from(out.data), row * n);
-      row = rows[1];
-      if (row < n) { setTimeout(chunk, 0); return; }
-      map = { info, cells, n };
-      probe.mapCells += 1;
-      drawMap();
-    };
-    chunk();
+    const req = { ...request(), law: state.law };
+    const passes = slots.length ? [DATA.map_cells, MAP.size] : [DATA.map_cells];
+    mapLevel = new Uint16Array(MAP.size);
+    const run = { job, req, started: performance.now(), passes: passes.map((n) => ({ n, cells: new Uint8Array(n * n), left: n })) };
+    for (const pass of run.passes) {
+      const step = Math.max(1, Math.min(Math.ceil(pass.n / 2), Math.floor(4000 / pass.n)));
+      for (let r = 0; r < pass.n; r += step) queue.push({ run, pass, rows: [r, Math.min(pass.n, r + step)] });
+    }
+    dispatch();
+  }
+
+  let taskId = 0;
+
+  function dispatch() {
+    if (!slots.length) {
+      const task = queue.shift();
+      if (!task) return;
+      const out = call("map", { ...task.run.req, cells: task.pass.n, rows: task.rows });
+      received(task, { ok: out.ok, text: out.text, data: Uint8Array.from(out.data) });
+      setTimeout(dispatch, 0);
+      return;
+    }
+    for (const slot of slots) {
+      if (slot.task || !queue.length) continue;
+      slot.task = queue.shift();
+      slot.task.id = ++taskId;
+      slot.worker.postMessage({ id: slot.task.id, request: { ...slot.task.run.req, cells: slot.task.pass.n, rows: slot.task.rows } });
+    }
+  }
+
+  function finished(slot, answer) {
+    const task = slot.task;
+    slot.task = null;
+    if (task && task.id === answer.id) received(task, answer);
+    dispatch();
+  }
+
+  /** The fills as [r, g, b]. */
+  const fillRgb = DATA.fills.map((h) => [1, 3, 5].map((i) => parseInt(h.slice(i, i + 2), 16)));
+
+  /** Rows of a pass arrived: into the pass's cells and the map's pixels. */
+  function received(task, answer) {
+    const { run, pass, rows } = task;
+    if (run.job !== mapJob) return;
+    if (!answer.ok) { queue = []; setText($("map-status"), `No map: ${answer.text}`); return; }
+    const info = run.info || (run.info = JSON.parse(answer.text));
+    const n = pass.n;
+    pass.cells.set(answer.data, rows[0] * n);
+    paintRows(info, pass, rows);
+    pass.left -= rows[1] - rows[0];
+    if (!map || map.run !== run) map = { run, info, n: run.passes[0].n, best: null };
+    if (pass.left === 0) {
+      map.best = { n, cells: pass.cells };
+      if (pass === run.passes[run.passes.length - 1]) {
+        const ms = performance.now() - run.started;
+        probe.timings.maps.push(ms);
+        probe.mapCells += 1;
+        if (mapWaiting) { mapWaiting(ms); mapWaiting = null; }
+      }
+    }
+    if (!mapDrawPending) {
+      mapDrawPending = true;
+      requestAnimationFrame(() => { mapDrawPending = false; drawMap(); });
+    }
+  }
+
+  /** Paints cell rows `rows` of `pass` into the map's pixels (rows from the bottom), where no
+   *  finer pass has painted yet. */
+  function paintRows(info, pass, rows) {
+    const size = MAP.size;
+    if (!mapImage) mapImage = new ImageData(size, size);
+    const px = mapImage.data;
+    const n = pass.n;
+    const line = new Uint8ClampedArray(size * 4);
+    for (let j = rows[0]; j < rows[1]; j++) {
+      for (let x = 0; x < size; x++) {
+        const cat = info.categories[pass.cells[j * n + Math.floor((x * n) / size)]];
+        const [r, g, b] = cat ? fillRgb[cat[1] % fillRgb.length] : [221, 221, 221];
+        line[4 * x] = r; line[4 * x + 1] = g; line[4 * x + 2] = b; line[4 * x + 3] = 255;
+      }
+      const y0 = Math.ceil(size - ((j + 1) * size) / n);
+      const y1 = Math.ceil(size - (j * size) / n);
+      for (let y = y0; y < y1; y++) {
+        if (mapLevel[y] > n) continue;
+        mapLevel[y] = n;
+        px.set(line, y * size * 4);
+      }
+    }
   }
 
   function axisParam(key) {
     return model().params.find((p) => p.key === key);
   }
 
+  const legendItems = [];
+
   function drawMap() {
     if (!map || !view) return;
     const canvas = $("map");
     const ctx = canvas.getContext("2d");
-    const { info, cells, n } = map;
+    const { info, n } = map;
     const { left, top, size } = MAP;
     const cell = size / n;
     ctx.fillStyle = "#fff";
     ctx.fillRect(0, 0, MAP.w, MAP.h);
-    for (let j = 0; j < n; j++) {
-      for (let i = 0; i < n; i++) {
-        const cat = info.categories[cells[j * n + i]];
-        ctx.fillStyle = cat ? DATA.fills[cat[1] % DATA.fills.length] : "#dddddd";
-        ctx.fillRect(Math.floor(left + i * cell), Math.floor(top + size - (j + 1) * cell), Math.ceil(cell), Math.ceil(cell));
-      }
-    }
+    ctx.putImageData(mapImage, left, top);
     const fx = (x) => (x - info.x.range[0]) / (info.x.range[1] - info.x.range[0]);
     const fy = (y) => (y - info.y.range[0]) / (info.y.range[1] - info.y.range[0]);
     const px = (x) => left + fx(x) * size;
     const py = (y) => top + size - fy(y) * size;
     const xp = axisParam(info.x.key);
     const yp = axisParam(info.y.key);
+    if (!xp || !yp) return; // a map of the other model, replaced in a moment
     // Frame, ticks at the ends, quarters and middle, axis titles.
     ctx.strokeStyle = "#000";
     ctx.lineWidth = 1;
@@ -751,24 +1125,33 @@
       ctx.lineWidth = 2;
       ctx.strokeRect(left + i * cell, top + size - (j + 1) * cell, cell, cell);
     }
+    // The legend's items, made when more are needed and hidden when fewer are.
     const legend = $("map-legend");
-    legend.replaceChildren();
-    for (const [label, fill] of info.categories) {
+    while (legendItems.length < info.categories.length) {
       const li = el("li");
       const sw = el("span", { class: "swatch", "aria-hidden": "true" });
-      sw.style.background = DATA.fills[fill % DATA.fills.length];
+      const label = el("span", {}, "");
       li.append(sw, label);
       legend.append(li);
+      legendItems.push({ li, sw, label });
     }
+    legendItems.forEach(({ li, sw, label }, k) => {
+      const cat = info.categories[k];
+      li.hidden = !cat;
+      if (!cat) return;
+      sw.style.background = DATA.fills[cat[1] % DATA.fills.length];
+      setText(label, cat[0]);
+    });
     const range = (p, r) => `${p.symbol} from ${fmt(r[0] * p.factor, 3)} to ${fmt(r[1] * p.factor, 3)}${unitText(p.unit)}`;
+    const best = map.best || { n, cells: new Uint8Array(n * n).fill(255) };
     const here = (() => {
-      const i = Math.floor(fx(values[info.x.key]) * n);
-      const j = Math.floor(fy(values[info.y.key]) * n);
-      const cat = i >= 0 && i < n && j >= 0 && j < n ? info.categories[cells[j * n + i]] : null;
+      const i = Math.floor(fx(values[info.x.key]) * best.n);
+      const j = Math.floor(fy(values[info.y.key]) * best.n);
+      const cat = i >= 0 && i < best.n && j >= 0 && j < best.n ? info.categories[best.cells[j * best.n + i]] : null;
       return cat ? `; the current set lies in "${cat[0]}"` : "; the current set lies outside the map";
     })();
     const law = DATA.laws.find((l) => l.id === state.law).label;
-    $("map-status").textContent = `Regimes of the ${law}, ${n}×${n} cells: horizontally ${range(xp, info.x.range)}, vertically ${range(yp, info.y.range)}${here}.`;
+    setText($("map-status"), `Regimes of the ${law}, ${best.n}×${best.n} cells: horizontally ${range(xp, info.x.range)}, vertically ${range(yp, info.y.range)}${here}.`);
     canvas.setAttribute("aria-label", `Regime map of the ${law} over ${xp.symbol} and ${yp.symbol}`);
   }
 
@@ -838,6 +1221,8 @@
       $("status").textContent = `The engine could not start in this browser (${e}). The report's pages show the paper's figures.`;
       return;
     }
+    startWorkers();
+    probe.mapAt = () => new Promise((resolve) => { mapWaiting = resolve; scheduleMap(); });
     buildSwitches();
     setupPlayer();
     setupMap();

@@ -124,7 +124,7 @@ fn check_symbols_refuses_json_and_bare_commands_say_error() {
         &["check", "pulled-mass", "--symbols", "--json"],
         &["--json"],
     );
-    for args in [&[][..], &["eval"][..], &["sweep"][..]] {
+    for args in [&[][..], &["eval"][..], &["sweep", "woodpecker"][..]] {
         let out = run(args);
         assert_eq!(out.status.code(), Some(2), "{args:?}");
         let err = String::from_utf8_lossy(&out.stderr);
@@ -138,6 +138,27 @@ fn check_symbols_refuses_json_and_bare_commands_say_error() {
         text.contains("pulled") && text.contains("woodpecker"),
         "{text}"
     );
+    // `sweep` alone likewise sweeps every model that can, each over its own grid, into
+    // sweep/MODEL/ (issue 28).
+    let dir = tempfile::tempdir().unwrap();
+    let out = Command::cargo_bin("stickslip")
+        .unwrap()
+        .arg("sweep")
+        .current_dir(dir.path())
+        .timeout(Duration::from_secs(120))
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(0), "{out:?}");
+    let text = String::from_utf8_lossy(&out.stdout);
+    for model in ["pulled-mass", "woodpecker"] {
+        assert!(text.contains(&format!("sweep {model} ")), "{text}");
+        for file in ["sweep.csv", "sweep.svg"] {
+            let path = dir.path().join("sweep").join(model).join(file);
+            assert!(path.exists(), "{}", path.display());
+        }
+    }
+    // The belt cannot sweep yet: no folder for it.
+    assert!(!dir.path().join("sweep/belt").exists());
 }
 
 #[test]

@@ -167,16 +167,21 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
     });
 }
 
-/// A4 pages a page may print to: the lecture notes 30, the guide 14, a scene 3, the index 3.
+/// A4 pages a page may print to: the lecture notes 32, the guide 14, a scene 3, the index 3.
 fn page_budget(page: &str) -> u32 {
     match page {
-        "all-scenes.html" => 30,
+        // Charts on the column canvas, every word at 8 pt or more (issue 28).
+        "all-scenes.html" => 32,
         // 12 pages in November 2026 (16 sections, 270 formulas).
         "guide.html" => 14,
         // With every printed word at 8 pt or more (issue 28) the index takes a third page, and
         // the two scenes that carry the paper's claims with their evidence tables a fourth.
         "index.html" => 3,
-        "woodpecker-regime-map.html" | "lambda1-printed-formulas.html" => 4,
+        // Fig. 26's linearization table wraps its regimes in words at full size, where it used
+        // to shrink the whole page below 8 pt.
+        "woodpecker-regime-map.html"
+        | "lambda1-printed-formulas.html"
+        | "fig26-tracked-toy.html" => 4,
         _ => 3,
     }
 }
@@ -195,9 +200,10 @@ fn print_pages(pdfinfo: &Path, pdf: &Path) -> u32 {
 /// explorer, handouts and worksheets with their keys in English and Italian, the bench page,
 /// the `check` page), at a 1280-px and a 390-px window: no serious or critical violation (figures
 /// without a text alternative, missing landmarks, contrast, scrollable boxes out of keyboard
-/// reach); nothing reaches past the window's right edge outside a scrolling box (the boxes that
-/// scroll sideways are printed, not asserted: at 1280 px the verification tables of the scenes
-/// still scroll by up to 40 %, issue 28). Needs Node
+/// reach); nothing reaches past the window's right edge outside a scrolling box; at 1280 px no
+/// table is wider than its box (every column of a verification table in view without scrolling;
+/// at 390 px tables scroll in their boxes, and the other boxes that scroll sideways at 1280 px,
+/// such as a long formula, are printed, not asserted). Needs Node
 /// with axe-core and playwright-core in `STICKSLIP_NODE_MODULES` (default
 /// `target/axe/node_modules`, where `.ci/run` installs them).
 #[test]
@@ -250,7 +256,9 @@ fn every_page_has_no_serious_accessibility_violation_and_fits_its_window() {
     let failures: Vec<String> = results
         .iter()
         .filter(|r| {
-            r["violations"] != serde_json::json!([]) || r["outside"] != serde_json::json!([])
+            r["violations"] != serde_json::json!([])
+                || r["outside"] != serde_json::json!([])
+                || (r["width"] == 1280 && r["tables"] != serde_json::json!([]))
         })
         .map(|r| r.to_string())
         .collect();
@@ -382,16 +390,16 @@ fn first_plain_result(scene: &Scene) -> String {
         .expect("a plain decimal result")
 }
 
-/// `stickslip worksheet --pdf` prints a class set in one command: the pulled mass's sheet is one
-/// A4 page per student (its questions with it), the woodpecker's at most two, the answer key
-/// at least a page per student, and the sheet's text holds no answer of the key.
+/// `stickslip worksheet --pdf` prints a class set in one command: each model's sheet is one A4
+/// page per student (its questions with it), the answer key at least a page per student, and
+/// the sheet's text holds no answer of the key.
 #[test]
 fn worksheets_and_answer_keys_print_one_student_per_page() {
     let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    for (model, most) in [("pulled-mass", 1), ("woodpecker", 2)] {
+    for model in ["pulled-mass", "woodpecker"] {
         let out = dir.path().join(model);
         let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
             .args(["worksheet", "--model", model, "--students", "3", "--pdf"])
@@ -402,8 +410,7 @@ fn worksheets_and_answer_keys_print_one_student_per_page() {
             .unwrap();
         assert!(run.status.success(), "{model}: {run:?}");
         let sheets = print_pages(&pdfinfo, &out.join("worksheets.pdf"));
-        assert!((3..=3 * most).contains(&sheets), "{model}: {sheets} pages");
-        assert_eq!(sheets % 3, 0, "{model}: every student on whole pages");
+        assert_eq!(sheets, 3, "{model}: one page per student");
         assert!(
             print_pages(&pdfinfo, &out.join("answer-key.pdf")) >= 3,
             "{model}"

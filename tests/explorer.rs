@@ -189,6 +189,54 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
     assert_eq!(checks["phoneOverflow"], 0, "{checks}");
     assert_eq!(checks["phonePlotWithSlider"], true, "{checks}");
 
+    // A slider move moves the elements it finds, it makes none: no new SVG element, table
+    // row or cell, legend item (tests every element before 30 moves of F against after).
+    assert_eq!(checks["newNodes"], serde_json::json!([]), "{checks}");
+    assert_eq!(checks["rowsKept"], true, "{checks}");
+
+    // The apparatus animated is the sketch's (issue 28): the same sizes, the same layout.
+    let pm = stickslip::models::pulled_mass::sketch::APPARATUS;
+    let drawn = &checks["pulledApparatus"];
+    let size = |key: &str| -> Vec<f64> {
+        drawn[key]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_f64().unwrap())
+            .collect()
+    };
+    assert_eq!(size("block"), [pm.block_width, pm.block_height], "{drawn}");
+    assert_eq!(size("hanging"), [pm.mass_width, pm.mass_height], "{drawn}");
+    assert_eq!(drawn["springPoints"], 2 * pm.coils + 4, "{drawn}");
+    assert_eq!(drawn["springHalf"].as_f64(), Some(pm.coil_half), "{drawn}");
+    let layout = stickslip::report::sketch::woodpecker_layout(
+        &stickslip::models::woodpecker::WoodpeckerParams::default(),
+    );
+    let wood = &checks["woodApparatus"];
+    let near = |page: &serde_json::Value, rust: f64, tol: f64| {
+        (page.as_f64().unwrap() - rust).abs() <= tol * rust.abs().max(1.0)
+    };
+    for (key, rust) in [
+        ("scale", layout.scale),
+        ("l_px", layout.l_px),
+        ("h_px", layout.h_px),
+        ("theta", layout.theta),
+        ("b", layout.b),
+    ] {
+        assert!(
+            near(&wood["layout"][key], rust, 1e-12),
+            "{key}: {wood} against {layout:?}"
+        );
+    }
+    // Measured on the drawing (coordinates rounded to 0.1 px): the contacts h apart, the
+    // spring l from the pole's axis.
+    for (key, rust) in [("contacts", layout.h_px), ("arm", layout.l_px)] {
+        assert!(
+            (wood[key].as_f64().unwrap() - rust).abs() <= 0.15,
+            "{key}: {wood} against {layout:?}"
+        );
+    }
+
     // Every set the page visited: the same bytes as the command line.
     let visited = r["visited"].as_array().unwrap();
     assert!(visited.len() >= 8, "{}", visited.len());

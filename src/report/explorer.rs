@@ -22,10 +22,12 @@ use super::figures::spec::Stroke;
 use super::figures::style::{dash_pattern, CURVE_WIDTH, FILLS, PALETTE};
 use super::render::{page, templates, Material, CSS};
 use super::scene::Scene;
+use super::sketch;
 use super::writer::OutFile;
 use crate::error::Result;
 use crate::explore::{self, Explore, LawText};
 use crate::models::param::{ParamSpec, Rule};
+use crate::models::pulled_mass::sketch as sketch_pm;
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
 
@@ -36,7 +38,8 @@ const SCRIPT: &str = include_str!("../../templates/explorer.js");
 const STYLE: &str = include_str!("../../templates/explorer.css");
 /// The file name of the page.
 pub const FILE: &str = "explorer.html";
-/// Cells per side of the page's regime map: coarse enough to follow a slider within a second.
+/// Cells per side of the regime map's first, coarse pass (shown within a moment of a slider's
+/// pause); the page's workers then compute one cell per pixel of the map (400).
 const MAP_CELLS: u32 = 40;
 /// Friction coefficients on the sliders.
 const MU_RANGE: (f64, f64) = (0.01, 1.5);
@@ -90,6 +93,10 @@ pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
         samples: explore::SAMPLES,
         map_cells: MAP_CELLS,
         slider_steps: SLIDER_STEPS,
+        apparatus: ApparatusData {
+            pulled_mass: sketch_pm::APPARATUS,
+            woodpecker: sketch::WOODPECKER_APPARATUS,
+        },
     };
     let json = serde_json::to_string(&data).map_err(|e| crate::error::Error::Template {
         name: FILE.to_string(),
@@ -136,6 +143,16 @@ struct PageData {
     map_cells: u32,
     /// Slider positions between the ends of a range.
     slider_steps: f64,
+    /// The apparatus of each model as its sketch draws it: the animation draws the same.
+    apparatus: ApparatusData,
+}
+
+/// The sketches' geometry, by model id.
+#[derive(Serialize)]
+struct ApparatusData {
+    #[serde(rename = "pulled-mass")]
+    pulled_mass: sketch_pm::Apparatus,
+    woodpecker: sketch::WoodpeckerApparatus,
 }
 
 /// How a law is drawn: the report's figures' colours and dashes.

@@ -337,16 +337,17 @@ pub fn render_with(
         .par_iter()
         .map(|(p, w, given)| claims::evaluate_given(p, w, *given, &Sample::default()))
         .collect::<Result<_>>()?;
+    let figures: Vec<Vec<Figure>> = scenes
+        .par_iter()
+        .map(Scene::build_figures)
+        .collect::<Result<_>>()?;
     let contexts: Vec<SceneCtx> = scenes
         .par_iter()
-        .map(|s| {
+        .zip(&figures)
+        .map(|(s, f)| {
             let pair = claim_params(s);
             let i = pairs.iter().position(|p| *p == pair).unwrap_or(0);
-            scene_context(
-                s,
-                &all_claims[i],
-                figure_contexts(&s.build_figures()?, Geometry::REPORT)?,
-            )
+            scene_context(s, &all_claims[i], figure_contexts(f, Geometry::REPORT)?)
         })
         .collect::<Result<_>>()?;
     let version = env!("CARGO_PKG_VERSION");
@@ -406,10 +407,18 @@ pub fn render_with(
                 let mut shown: Vec<u8> = Vec::new();
                 // Only the rows that compare a closed form with the integration; the others
                 // (no counterpart, outside the regime) stay on the scene page.
+                // The notes' figures on the column canvas, two to a row (or one beside its
+                // caption): their words print at 8 pt or more (issue 28).
+                let columns: Vec<Vec<FigureCtx>> = figures
+                    .par_iter()
+                    .map(|f| figure_contexts(f, Geometry::COLUMN))
+                    .collect::<Result<_>>()?;
                 let notes: Vec<(SceneCtx, usize)> = contexts
                     .iter()
-                    .map(|c| {
+                    .zip(columns)
+                    .map(|(c, figures)| {
                         let mut c = c.clone();
+                        c.figures = figures;
                         c.claims.retain(|claim| !shown.contains(&claim.id));
                         shown.extend(c.claims.iter().map(|claim| claim.id));
                         let rows = c.verification.len();

@@ -15,6 +15,8 @@
 
 use std::fmt::Write as _;
 
+use serde::Serialize;
+
 use crate::models::woodpecker::WoodpeckerParams;
 
 /// What the body is doing in the sketch: it decides which friction law labels the friction
@@ -92,18 +94,110 @@ pub fn woodpecker_givens(p: &WoodpeckerParams) -> String {
     draw_woodpecker(p, Phase::Stuck, Labels::Givens)
 }
 
-fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String {
+/// The woodpecker's apparatus as the sketch draws it (px of the sketch's user space, [`WIDTH`]
+/// wide): the explorer's animation (src/report/explorer.rs serialises it) draws the same pole,
+/// tilted sleeve with its arm l, spring and bird, to the same scale ([`woodpecker_layout`]).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct WoodpeckerApparatus {
+    /// Canvas width and label size (px).
+    pub width: f64,
+    pub font: f64,
+    /// The largest scale (px/mm), and the px that l, h and the bird's range z0 ± d0 (with
+    /// z = 0) may take at most; the smallest drawn l and h (px).
+    pub max_scale: f64,
+    pub l_span: f64,
+    pub h_span: f64,
+    pub z_span: f64,
+    pub l_min: f64,
+    pub h_min: f64,
+    /// Pole half-width, the sleeve's clearance around it, its wall and the arm's half-thickness
+    /// (px).
+    pub pole_half: f64,
+    pub clearance: f64,
+    pub wall: f64,
+    pub arm_half: f64,
+    /// The bird's radius, the spring's length at z = 0, its zigzags and their half-width (px).
+    pub bird_r: f64,
+    pub natural: f64,
+    pub coils: usize,
+    pub coil_half: f64,
+}
+
+/// The woodpecker's apparatus, in the sketch and in the explorer.
+pub const WOODPECKER_APPARATUS: WoodpeckerApparatus = WoodpeckerApparatus {
+    width: WIDTH,
+    font: W_FONT,
+    max_scale: 14.0,
+    l_span: 250.0,
+    h_span: 130.0,
+    z_span: 260.0,
+    l_min: 70.0,
+    h_min: 24.0,
+    pole_half: 12.0,
+    clearance: 2.5,
+    wall: 14.0,
+    arm_half: 6.0,
+    bird_r: 19.0,
+    natural: 44.0,
+    coils: 8,
+    coil_half: 11.0,
+};
+
+/// The drawn sizes of one parameter set: scale (px/mm), l and h (px), the sleeve's tilt θ
+/// (rad, clockwise) and its hole's half-height b (px).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct WoodpeckerLayout {
+    pub scale: f64,
+    pub l_px: f64,
+    pub h_px: f64,
+    pub theta: f64,
+    pub b: f64,
+}
+
+/// The sizes [`woodpecker`] draws `p` at.
+pub fn woodpecker_layout(p: &WoodpeckerParams) -> WoodpeckerLayout {
+    let g = WOODPECKER_APPARATUS;
     let mm = 1e3;
     let (l_mm, h_mm, z0_mm, d0_mm) = (p.l * mm, p.h * mm, p.z0 * mm, p.d0 * mm);
     let z_lo = (z0_mm - d0_mm.abs()).min(0.0);
     let z_hi = (z0_mm + d0_mm.abs()).max(0.0);
-    let scale = [14.0, 250.0 / l_mm, 130.0 / h_mm, 260.0 / (z_hi - z_lo)]
-        .into_iter()
-        .filter(|v| v.is_finite() && *v > 0.0)
-        .fold(f64::INFINITY, f64::min);
-    let scale = if scale.is_finite() { scale } else { 14.0 };
-    let l_px = (l_mm * scale).max(70.0);
-    let h_px = (h_mm * scale).max(24.0);
+    let scale = [
+        g.max_scale,
+        g.l_span / l_mm,
+        g.h_span / h_mm,
+        g.z_span / (z_hi - z_lo),
+    ]
+    .into_iter()
+    .filter(|v| v.is_finite() && *v > 0.0)
+    .fold(f64::INFINITY, f64::min);
+    let scale = if scale.is_finite() {
+        scale
+    } else {
+        g.max_scale
+    };
+    let h_px = (h_mm * scale).max(g.h_min);
+    let (theta, b) = sleeve_tilt(g.pole_half + g.clearance, g.pole_half, h_px);
+    WoodpeckerLayout {
+        scale,
+        l_px: (l_mm * scale).max(g.l_min),
+        h_px,
+        theta,
+        b,
+    }
+}
+
+fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String {
+    let g = WOODPECKER_APPARATUS;
+    let mm = 1e3;
+    let (l_mm, h_mm, z0_mm, d0_mm) = (p.l * mm, p.h * mm, p.z0 * mm, p.d0 * mm);
+    let z_lo = (z0_mm - d0_mm.abs()).min(0.0);
+    let WoodpeckerLayout {
+        scale,
+        l_px,
+        theta,
+        b,
+        ..
+    } = woodpecker_layout(p);
 
     let lambda = p.lambda();
     let ws = p.sleeve_weight();
@@ -179,11 +273,9 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     // thickness `wall`, tilted clockwise by θ until the hole's top-left and bottom-right inner
     // corners touch the pole, with the contacts h apart vertically.
     let px = 300.0;
-    let pole_half = 12.0;
-    let clearance = 2.5;
-    let wall = 14.0;
-    let a = pole_half + clearance;
-    let (theta, b) = sleeve_tilt(a, pole_half, h_px);
+    let pole_half = g.pole_half;
+    let wall = g.wall;
+    let a = pole_half + g.clearance;
     let (cx, cy) = (px, 250.0);
     let rot = |dx: f64, dy: f64| {
         let (sn, cs) = theta.sin_cos();
@@ -191,7 +283,7 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
     };
     let c1 = rot(-a, -b);
     let c2 = rot(a, b);
-    let arm_half = 6.0;
+    let arm_half = g.arm_half;
     let arm_len = l_px / theta.cos();
     let arm_end = rot(arm_len, arm_half);
     // The line of action of F_e: l from the pole's axis.
@@ -199,9 +291,8 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
 
     // The spring's geometry first: the bird at z = z0 and the band its centre sweeps decide
     // where the lines of numbers below begin.
-    let bird_r = 19.0;
-    let natural = 44.0;
-    let z_zero = arm_end.1 + natural - z_lo.min(0.0) * scale;
+    let bird_r = g.bird_r;
+    let z_zero = arm_end.1 + g.natural - z_lo.min(0.0) * scale;
     let y_of = |z_mm: f64| z_zero + z_mm * scale;
     let bird_y = y_of(z0_mm);
     let (band_top, band_bot) = (y_of(z0_mm - d0_mm.abs()), y_of(z0_mm + d0_mm.abs()));
@@ -383,7 +474,14 @@ fn draw_woodpecker(p: &WoodpeckerParams, phase: Phase, labels: Labels) -> String
         band_bot - band_top,
         PURPLE,
     );
-    s.spring(spring_x, arm_end.1, bird_y - bird_r, 8, 11.0, PURPLE);
+    s.spring(
+        spring_x,
+        arm_end.1,
+        bird_y - bird_r,
+        g.coils,
+        g.coil_half,
+        PURPLE,
+    );
     bird(&mut s, spring_x, bird_y, bird_r);
     let left_of_band = spring_x - bird_r - 14.0;
     let below_friction = c2.1 + f_len + 64.0;

@@ -115,6 +115,21 @@ pub struct Sweep {
     pub points: Vec<Point>,
 }
 
+/// The grid `stickslip sweep` runs for `model` when no model is named ([`Present::SWEEP`]),
+/// integrating `periods` at each point; `None` for a model that cannot sweep yet.
+pub fn default_spec(model: &Model, periods: u32) -> Option<GridSpec> {
+    fn of<M: Present>(_: &M, periods: u32) -> GridSpec {
+        GridSpec {
+            param: M::SWEEP.param.to_string(),
+            from: M::SWEEP.from,
+            to: M::SWEEP.to,
+            steps: M::SWEEP.steps,
+            periods,
+        }
+    }
+    with_capability!(model, present, p => Some(of(p, periods)), else None)
+}
+
 /// Checks the grid request against the model: a known parameter, finite distinct ends, and
 /// [`MIN_STEPS`] ≤ steps ≤ [`MAX_STEPS`].
 pub fn validate(base: &Model, spec: &GridSpec) -> Result<Param> {

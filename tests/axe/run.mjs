@@ -1,9 +1,10 @@
 // Runs axe-core on HTML pages in headless Chromium (playwright-core, Debian's chromium) at a
 // 1280-px and a 390-px window and prints one JSON line per page and width: {"page", "width",
-// "violations": [{"id", "impact", "nodes"}], "outside": [...], "scrolled": [...]}: only the
-// serious and critical violations; the elements that reach past the window's right edge with no
-// scrolling box around them (`outside`), and the boxes that scroll sideways because their content
-// is wider (`scrolled`, e.g. a table wider than its column).
+// "violations": [{"id", "impact", "nodes"}], "outside": [...], "scrolled": [...], "tables":
+// [...]}: only the serious and critical violations; the elements that reach past the window's
+// right edge with no scrolling box around them (`outside`), the boxes that scroll sideways
+// because their content is wider (`scrolled`, e.g. a table wider than its column), and the
+// tables wider than the box that holds them (`tables`).
 // Usage: node run.mjs CHROMIUM NODE_MODULES PAGE...
 // Called by tests/browser.rs; .ci/run installs axe-core and playwright-core with npm.
 import { createRequire } from "node:module";
@@ -25,7 +26,7 @@ try {
       const violations = result.violations
         .filter((v) => v.impact === "serious" || v.impact === "critical")
         .map((v) => ({ id: v.id, impact: v.impact, nodes: v.nodes.length }));
-      const { outside, scrolled } = await page.evaluate(() => {
+      const { outside, scrolled, tables } = await page.evaluate(() => {
         const vw = document.documentElement.clientWidth;
         const name = (el) => el.tagName.toLowerCase() + (el.id ? "#" + el.id : "") +
           (el.className && typeof el.className === "string" ? "." + el.className.trim().split(/\s+/).join(".") : "");
@@ -45,10 +46,13 @@ try {
             if (!a || a === document.body) outside.push(`${name(el)} right ${Math.round(right)} > ${vw}`);
           }
         }
-        return { outside: outside.slice(0, 5), scrolled: scrolled.slice(0, 5) };
+        const tables = [...document.querySelectorAll("table")]
+          .filter((t) => getComputedStyle(t).display !== "none" && t.offsetWidth > t.parentElement.clientWidth + 1)
+          .map((t) => `${name(t)} ${t.offsetWidth} > ${t.parentElement.clientWidth}`);
+        return { outside: outside.slice(0, 5), scrolled: scrolled.slice(0, 5), tables: tables.slice(0, 5) };
       });
       const where = path.relative(process.cwd(), file);
-      console.log(JSON.stringify({ page: where, width, violations, outside, scrolled }));
+      console.log(JSON.stringify({ page: where, width, violations, outside, scrolled, tables }));
     }
     await page.close();
   }

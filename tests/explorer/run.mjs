@@ -46,6 +46,23 @@ try {
   const keyed = await visit("pulled mass, μd moved by keyboard");
   out.checks.keyboardChanged = keyed.evaluation !== first.evaluation && keyed.path > 0;
 
+  // The pulled mass's apparatus as drawn: the sizes of its block, hanging mass and spring.
+  out.checks.pulledApparatus = await page.evaluate(() => {
+    const size = (sel) => { const r = document.querySelector(`#apparatus ${sel}`); return [Number(r.getAttribute("width")), Number(r.getAttribute("height"))]; };
+    const pts = document.querySelector("#apparatus polyline.spring").getAttribute("points").trim().split(" ").map((p) => p.split(",").map(Number));
+    return { block: size("rect.block"), hanging: size("rect.hanging"), springPoints: pts.length,
+      springHalf: Math.max(...pts.map(([x]) => Math.abs(x - pts[0][0]))) };
+  });
+  // Every element of the plots, the apparatus, the regime, the table and the map's legend,
+  // marked before the drag below: a slider move must move them, not make new ones.
+  await page.evaluate(() => {
+    window.marked = new WeakSet();
+    for (const id of ["plot-x", "plot-v", "apparatus", "regime", "check-rows", "map-legend"]) {
+      for (const e of document.getElementById(id).querySelectorAll("*")) window.marked.add(e);
+    }
+  });
+  const rowsBefore = await page.evaluate(() => document.querySelectorAll("#check-rows tr").length);
+
   // A slider dragged: 30 moves of F, each timed from the input event to the page laid out
   // again (engine, both laws' curves, regime, apparatus, table; style and layout), and to the
   // next frame (which also waits for the display's refresh).
@@ -67,6 +84,15 @@ try {
   out.timings.layout = drag.layout;
   out.timings.frames = drag.frames;
   out.timings.redraws = await page.evaluate(() => window.stickslipExplorer.timings.redraws.slice(-30));
+  await mapDone(await page.evaluate(() => window.stickslipExplorer.mapCells));
+  out.checks.newNodes = await page.evaluate(() => {
+    const made = [];
+    for (const id of ["plot-x", "plot-v", "apparatus", "regime", "check-rows", "map-legend"]) {
+      for (const e of document.getElementById(id).querySelectorAll("*")) if (!window.marked.has(e)) made.push(`${id} ${e.tagName}`);
+    }
+    return made;
+  });
+  out.checks.rowsKept = rowsBefore === await page.evaluate(() => document.querySelectorAll("#check-rows tr").length);
   const dragged = await visit("pulled mass, F dragged");
   out.checks.dragChanged = dragged.evaluation !== keyed.evaluation
     && JSON.stringify(dragged.curves) !== JSON.stringify(keyed.curves);
@@ -111,6 +137,15 @@ try {
   out.checks.woodRegime = wood.regime;
   out.checks.woodTable = wood.table;
   out.checks.woodGreyed = wood.greyed;
+  // The woodpecker's apparatus as drawn: its layout (scale, l, h, tilt) and, measured on the
+  // drawing, the contacts' height difference and the spring's distance from the pole's axis.
+  out.checks.woodApparatus = await page.evaluate(() => {
+    const num = (sel, a) => Number(document.querySelector(`#apparatus ${sel}`).getAttribute(a));
+    const circles = [...document.querySelectorAll("#apparatus > circle")].map((c) => Number(c.getAttribute("cy")));
+    const pole = num("rect", "x") + num("rect", "width") / 2;
+    const spring = Number(document.querySelector("#apparatus polyline.spring").getAttribute("points").split(",")[0]);
+    return { layout: window.stickslipExplorer.apparatus, contacts: Math.abs(circles[1] - circles[0]), arm: spring - pole };
+  });
   await page.selectOption("#c-counterpart", "extremes");
   await page.focus("#s-z0");
   for (let i = 0; i < 20; i++) await page.keyboard.press("ArrowLeft");

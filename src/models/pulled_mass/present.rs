@@ -5,7 +5,7 @@ use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::Note;
-use crate::present::{Laws, Present, StandardScene};
+use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::sketch::Phase;
@@ -14,6 +14,14 @@ use crate::report::{OutFile, Scene};
 impl Present for PulledMassParams {
     const SKETCH_WHAT: &'static str =
         "the block on the table pulled by F, pressed by the spring and the hanging mass under it";
+    /// The pull F from 0.02 to 0.6 N in 0.01 N steps: slip-stick up to about 0.14 N, then
+    /// continuous slip (from t = 0 above 2μsW = 0.47 N).
+    const SWEEP: DefaultSweep = DefaultSweep {
+        param: "force",
+        from: 0.02,
+        to: 0.6,
+        steps: 59,
+    };
 
     fn standard_scene(&self) -> StandardScene {
         StandardScene {

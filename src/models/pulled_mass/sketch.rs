@@ -11,6 +11,8 @@
 //! Drawn for a printed width of one A4 column (90.5 mm): the canvas is [`WIDTH`] px wide and
 //! no glyph is smaller than [`SUB`] px, so every label prints at 8 pt or more.
 
+use serde::Serialize;
+
 use super::PulledMassParams;
 use crate::report::sketch::{
     grams, mn, ms, num, plain, Labels, Phase, Svg, BLUE, GREEN, HEAD_LEN, INK, ORANGE, PURPLE,
@@ -25,6 +27,49 @@ const FONT: f64 = 20.0;
 const SUB: f64 = 19.0;
 /// The longest force arrow (px).
 const LONGEST: f64 = 110.0;
+
+/// The apparatus as the sketch draws it (px of the sketch's user space, [`WIDTH`] wide): the
+/// explorer's animation (src/report/explorer.rs serialises it) draws the same block, table,
+/// slot, spring and hanging mass.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Apparatus {
+    /// Canvas width and label size (px).
+    pub width: f64,
+    pub font: f64,
+    /// The block (px).
+    pub block_width: f64,
+    pub block_height: f64,
+    /// The table's thickness and the slot's half-width (px).
+    pub table: f64,
+    pub slot_half: f64,
+    /// From the table's top to the hanging mass's top, and the hanging mass's size (px).
+    pub hang: f64,
+    pub mass_width: f64,
+    pub mass_height: f64,
+    /// The spring: zigzags and their half-width (px).
+    pub coils: usize,
+    pub coil_half: f64,
+    /// The pull: a stub from the block's right face, then the arrow (px).
+    pub pull_stub: f64,
+    pub pull_arrow: f64,
+}
+
+/// The pulled mass's apparatus, in the sketch and in the explorer.
+pub const APPARATUS: Apparatus = Apparatus {
+    width: WIDTH,
+    font: FONT,
+    block_width: 120.0,
+    block_height: 56.0,
+    table: 16.0,
+    slot_half: 16.0,
+    hang: 78.0,
+    mass_width: 60.0,
+    mass_height: 30.0,
+    coils: 6,
+    coil_half: 8.0,
+    pull_stub: 10.0,
+    pull_arrow: 35.0,
+};
 
 /// The pulled mass with the forces of `phase` and their values (reports, handouts).
 ///
@@ -160,14 +205,15 @@ fn draw(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
 
     // The apparatus, left: the block rests on both slabs of the table, level with the bottom
     // of the free-body diagram; the spring passes through the slot between them.
+    let a = APPARATUS;
     let cx = 100.0;
     let top = lower;
-    let slot = 16.0;
+    let slot = a.slot_half;
     s.text(10.0, 28.0, "start", FONT, &format!("{}:", phase.words()));
     s.text(10.0, 52.0, "start", FONT, &format!("drawn at {}", at.words));
-    s.rect(10.0, top, cx - slot - 10.0, 16.0, 0.18, 1.2);
-    s.rect(cx + slot, top, 170.0 - cx - slot, 16.0, 0.18, 1.2);
-    let (bw, bh) = (120.0, 56.0);
+    s.rect(10.0, top, cx - slot - 10.0, a.table, 0.18, 1.2);
+    s.rect(cx + slot, top, 170.0 - cx - slot, a.table, 0.18, 1.2);
+    let (bw, bh) = (a.block_width, a.block_height);
     s.rect(cx - bw / 2.0, top - bh, bw, bh, 0.12, 1.6);
     s.text(
         cx,
@@ -176,9 +222,16 @@ fn draw(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
         FONT,
         &format!("m = {}", grams(p.mass)),
     );
-    let hang_y = top + 78.0;
-    s.spring(cx, top, hang_y, 6, 8.0, PURPLE);
-    s.rect(cx - 30.0, hang_y, 60.0, 30.0, 0.12, 1.6);
+    let hang_y = top + a.hang;
+    s.spring(cx, top, hang_y, a.coils, a.coil_half, PURPLE);
+    s.rect(
+        cx - a.mass_width / 2.0,
+        hang_y,
+        a.mass_width,
+        a.mass_height,
+        0.12,
+        1.6,
+    );
     s.text(cx + 38.0, hang_y + 22.0, "start", FONT, "m' = m");
     s.text(
         cx + 16.0,
@@ -188,8 +241,9 @@ fn draw(p: &PulledMassParams, phase: Phase, labels: Labels) -> String {
         &format!("k = {}", plain(p.k, "N/m")),
     );
     let fy = top - bh / 2.0;
-    s.line(cx + bw / 2.0, fy, cx + bw / 2.0 + 10.0, fy, INK, 1.5);
-    s.arrow(None, (cx + bw / 2.0 + 10.0, fy), (205.0, fy), BLUE, 3.0);
+    let stub = cx + bw / 2.0 + a.pull_stub;
+    s.line(cx + bw / 2.0, fy, stub, fy, INK, 1.5);
+    s.arrow(None, (stub, fy), (stub + a.pull_arrow, fy), BLUE, 3.0);
     s.text(190.0, fy - 12.0, "middle", FONT, "F");
 
     // The free-body diagram of the block, right.

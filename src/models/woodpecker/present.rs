@@ -6,7 +6,7 @@ use crate::error::Result;
 use crate::export::law_files;
 use crate::handout::physics::Note;
 use crate::models::LawKind;
-use crate::present::{Laws, Present, StandardScene};
+use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 use crate::report::context::SceneCtx;
 use crate::report::scene::{Figure, FigureKind};
 use crate::report::sketch::{self, Phase};
@@ -15,6 +15,14 @@ use crate::report::{OutFile, Scene};
 impl Present for WoodpeckerParams {
     const SKETCH_WHAT: &'static str = "the sleeve on the pole, tilted by the spring that carries \
                                        the bird, gripping at two contacts";
+    /// The offset z0 from 0 to 12 mm in 0.2 mm steps: the double slip-stick, the slip that
+    /// slows down without stopping, one slip-stick, and no slip.
+    const SWEEP: DefaultSweep = DefaultSweep {
+        param: "z0",
+        from: 0.0,
+        to: 0.012,
+        steps: 61,
+    };
 
     fn standard_scene(&self) -> StandardScene {
         StandardScene {
