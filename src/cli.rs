@@ -36,7 +36,7 @@ pub enum Command {
     /// Render the report: the built-in scenes of the paper's figures, or the given scenario
     /// files, as HTML and Markdown.
     Report(ReportArgs),
-    /// Evaluate the claims of the paper (docs/physics.md, where the paper is wrong) on the given parameters (the other
+    /// Evaluate the claims of the paper (guide §11, where the paper is wrong) on the given parameters (the other
     /// model keeps the paper's default set) and on a seeded random sample.
     Claims {
         /// Seed of the random sample.
@@ -232,7 +232,7 @@ pub struct CheckArgs {
         required_unless_present_any = ["formulas", "symbols"]
     )]
     pub formula: Option<String>,
-    /// The measured quantity it gives: a §7 closed-form key (t_slip, t_stick, v_max, v_avg,
+    /// The measured quantity it gives: a guide §14 closed-form key (t_slip, t_stick, v_max, v_avg,
     /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker), or `sticks` for a
     /// condition; not needed when the formula's left side names it.
     #[arg(long, value_name = "NAME")]

@@ -100,7 +100,7 @@ pub fn model_params(args: &ModelArgs) -> Result<(Model, u32)> {
     Ok((model, periods))
 }
 
-/// `stickslip eval MODEL`: the §7 evaluation as tables or JSON, and the CSV files with --csv.
+/// `stickslip eval MODEL`: the evaluation (guide §14) as tables or JSON, and the CSV files with --csv.
 fn eval(args: &ModelArgs, out: &mut dyn Write) -> Result<()> {
     if args.common.csv.is_none() && args.common.csv_dialect.is_some() {
         anyhow::bail!("--csv-dialect applies to the files of --csv DIR: give --csv too");
@@ -368,7 +368,9 @@ fn handout(args: &HandoutArgs, out: &mut dyn Write, err: &mut dyn Write) -> Resu
     let browser = args.pdf.then(handout::pdf::locate).transpose()?;
     let scene = handout::find_scene(id)?;
     let words = crate::lang::phrases::Translator::new(args.lang)?;
-    let files = handout::render(&scene, &args.format, browser.as_deref(), &words)?;
+    let mut files = handout::render(&scene, &args.format, browser.as_deref(), &words)?;
+    // The physics guide the handout links, beside it.
+    files.extend(report::guide::files(&args.format, false)?);
     let written = report::write_all(&args.out, &files)?;
     let missing = words.missing();
     if !missing.is_empty() {

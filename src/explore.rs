@@ -3,7 +3,7 @@
 //!
 //! ```text
 //! request (JSON: model, parameters, options)  →  Model (the registry's setters, validate())
-//!     → evaluation: the same §7 JSON as `stickslip eval MODEL … --json` (same code, same bytes)
+//!     → evaluation: the same guide §14 JSON as `stickslip eval MODEL … --json` (same code, same bytes)
 //!       + extras: the regime sentences and which closed forms describe the motion
 //!     → curves: both laws sampled over a few periods (t, x, v, apparatus coordinate)
 //!     → map: the regime of each cell of a coarse grid around the current parameters
@@ -38,7 +38,7 @@ pub const SAMPLE_WIDTH: usize = 4;
 /// The closed forms' regime of an evaluation, for people.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct RegimeText {
-    /// The §7 id (`closed_form.regime`).
+    /// The JSON id (guide §14) (`closed_form.regime`).
     pub id: &'static str,
     /// In plain words.
     pub words: &'static str,
@@ -193,14 +193,14 @@ pub struct LawText {
     pub words: &'static str,
 }
 
-/// What the page shows besides the §7 evaluation.
+/// What the page shows besides the evaluation (guide §14).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Extras<'a> {
     pub closed_form: RegimeText,
     pub applicability: &'a [Applicability],
 }
 
-/// One parameter set explored: the §7 JSON, the extras (JSON) and the curves.
+/// One parameter set explored: the guide §14 JSON, the extras (JSON) and the curves.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Explored {
     /// Exactly what `stickslip eval MODEL … --json` prints, without the final newline.
@@ -273,7 +273,7 @@ fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Answer {
     pub status: u32,
-    /// Done: `explore`: the §7 evaluation JSON, a NUL byte, the extras JSON; `map`: the map's
+    /// Done: `explore`: the evaluation (guide §14) JSON, a NUL byte, the extras JSON; `map`: the map's
     /// [`MapInfo`] as JSON. Refused: the one-line error message.
     pub text: Vec<u8>,
     /// Done: `explore`: [`Explored::curves`]; `map`: the cells' categories. Refused: empty.

@@ -11,7 +11,7 @@
 //! ```
 //!
 //! Both models are the same system: one body of mass M with Coulomb friction under a prescribed
-//! driving force D(t) and friction-bearing normal force N_f(t) (physics.md §0). The engine in
+//! driving force D(t) and friction-bearing normal force N_f(t) (guide §4). The engine in
 //! [`engine`] integrates that system once for any [`engine::ForceLaw`]; a model only builds the
 //! force law.
 //!

@@ -13,7 +13,7 @@ use crate::models::Model;
 pub const G_STANDARD: f64 = 9.81;
 /// Largest number of periods a run may ask for.
 pub const MAX_PERIODS: u32 = 1_000_000;
-/// Periods integrated unless asked otherwise (physics.md §0: 8–12).
+/// Periods integrated unless asked otherwise (guide §4: 8–12).
 pub const DEFAULT_PERIODS: u32 = 8;
 
 /// Checks the number of periods to integrate: 1 ≤ periods ≤ 10⁶.

@@ -6,7 +6,7 @@
 //!                      (the `stickslip` console script of the wheel)
 //! call(argv)           the command line with its output captured → (code, stdout, stderr)
 //!                      (check, claims, sweep, fit, worksheet, handout, report in Python)
-//! evaluate(setup, n)   one parameter set (explore::Setup as JSON) over n periods → the §7 JSON
+//! evaluate(setup, n)   one parameter set (explore::Setup as JSON) over n periods → the guide §14 JSON
 //!                      of `eval --json`, the regime in words and the CSV files of `eval --csv`
 //! figure(setup)        the model's standard motion figure (SVG) for the rich display
 //! quantities(model)    the registry of closed forms: symbol, unit, equation, MathML
@@ -94,7 +94,7 @@ fn program(argv: Vec<String>) -> impl Iterator<Item = String> {
     std::iter::once("stickslip".to_string()).chain(argv)
 }
 
-/// What [`evaluate`] returns: the §7 JSON, the extras JSON (regime in words, applicability)
+/// What [`evaluate`] returns: the guide §14 JSON, the extras JSON (regime in words, applicability)
 /// and the CSV files of `eval --csv` as (name, text).
 type Evaluated = (String, String, Vec<(String, String)>);
 
@@ -180,7 +180,7 @@ fn figure_svg(setup: &str) -> Result<String> {
     })
 }
 
-/// A closed form of the registry for the rich display: (§7 key, plain symbol, unit, equation,
+/// A closed form of the registry for the rich display: (JSON key (guide §14), plain symbol, unit, equation,
 /// symbol in MathML, formula in MathML, formula in LaTeX, meaning).
 type QuantityRow = (
     &'static str,
@@ -224,7 +224,7 @@ fn quantities_of<M: Explore>(_: &M) -> Vec<&'static crate::results::quantity::Qu
     M::quantities()
 }
 
-/// The integration regimes of the laws: (§7 id, in words).
+/// The integration regimes of the laws: (JSON id (guide §14), in words).
 #[pyfunction]
 fn law_regimes() -> Vec<(&'static str, &'static str)> {
     crate::explore::integration_regimes()

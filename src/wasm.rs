@@ -11,7 +11,7 @@
 //! explore(ptr, len) -> status the request of explore::Request; 0 = done, 1 = refused
 //! map(ptr, len) -> status     the request of explore::MapRequest; 0 = done, 1 = refused
 //! text_ptr(), text_len()      the text out (UTF-8) of the last call:
-//!                               explore: the §7 evaluation JSON, a NUL byte, the extras JSON
+//!                               explore: the evaluation (guide §14) JSON, a NUL byte, the extras JSON
 //!                               map:     the map's axes and legend (explore::MapInfo, JSON)
 //!                               refused: the one-line error message
 //! data_ptr(), data_len()      the numbers out (f64) of the last call:

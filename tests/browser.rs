@@ -110,6 +110,12 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
         "Lecture notes".into(),
         scenes.last().unwrap().title.clone(),
     ));
+    // The physics guide: its title and the last section's title (the belt, section 16).
+    pages.push((
+        "guide.html".into(),
+        "The physics behind stickslip".into(),
+        "16. The textbook stick-slip oscillator".into(),
+    ));
     // Two pages at a time on this 2-core machine.
     std::thread::scope(|scope| {
         for chunk in pages.chunks(pages.len().div_ceil(2)) {
@@ -161,11 +167,13 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
     });
 }
 
-/// A4 pages a page may print to: the lecture notes 32, a scene 3, the index 2.
+/// A4 pages a page may print to: the lecture notes 32, the guide 14, a scene 3, the index 3.
 fn page_budget(page: &str) -> u32 {
     match page {
         // Charts on the column canvas, every word at 8 pt or more (issue 28).
         "all-scenes.html" => 32,
+        // 12 pages in November 2026 (16 sections, 270 formulas).
+        "guide.html" => 14,
         // With every printed word at 8 pt or more (issue 28) the index takes a third page, and
         // the two scenes that carry the paper's claims with their evidence tables a fourth.
         "index.html" => 3,

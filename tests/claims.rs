@@ -1,4 +1,4 @@
-//! The claims of physics.md §6 on the paper's default sets (Fig. 6 pulled mass, Fig. 15
+//! The claims of guide §11 on the paper's default sets (Fig. 6 pulled mass, Fig. 15
 //! woodpecker): the expected verdicts and numbers, determinism of the seeded sample, and the
 //! harmonic regimes of Figs. 15 and 16 around the z0 threshold.
 
@@ -11,7 +11,7 @@ use stickslip::models::woodpecker::results as woodpecker;
 use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::Model;
 
-/// The z0 (m) at which the Fig. 15 set loses its intermediate halt (physics.md §6, claim 8).
+/// The z0 (m) at which the Fig. 15 set loses its intermediate halt (guide §11, claim 8).
 const FIG16_THRESHOLD: f64 = 7.0746e-3;
 
 fn default_claims() -> Claims {
@@ -65,7 +65,7 @@ fn claim_1_late_stick_below_the_22_minimum() {
     let mu = number(c1, "mu = mu_s = mu_d tried");
     let phi = number(c1, "phi = F/W (given set)");
     assert!(phi < mu && mu < number(c1, "mu_MIN of (22)"));
-    // The stick comes in the next period, where the closed form of §1.4 puts it.
+    // The stick comes in the next period, where the closed form of guide §7.5 puts it.
     let tau = number(c1, "stick time / T, integration (mu_s = mu_d = mu)");
     let closed = number(c1, "tau_ST,late closed form (mu_s = mu_d = mu)");
     assert!(tau > 1.0, "{tau}");
@@ -82,7 +82,7 @@ fn claim_2_coefficient_one_agrees_and_two_does_not() {
     assert!(number(c2, "relative error, coefficient 1") <= 1e-9);
     assert!(number(c2, "relative error, coefficient 2") > 1e-2);
     assert_eq!(c2.verdict, Verdict::Confirmed);
-    // Fig. 6 is continuous slip, so set B of physics.md §5 is used: v̄ = 5.396971 mm/s.
+    // Fig. 6 is continuous slip, so set B of guide §13 is used: v̄ = 5.396971 mm/s.
     let v = number(c2, "v_avg, exact integration (linear law)");
     assert!((v - 5.396_970_576e-3).abs() < 1e-11, "{v}");
 }

@@ -1,5 +1,5 @@
-//! The `stickslip eval pulled-mass` command as a user runs it: the §7 JSON object, the worked
-//! sets B and C of physics.md §5 pinned through the CLI, the defaults, a snapshot of the text
+//! The `stickslip eval pulled-mass` command as a user runs it: the guide §14 JSON object, the worked
+//! sets B and C of guide §13 pinned through the CLI, the defaults, a snapshot of the text
 //! output, and every kind of bad input (exit code 2, one line on stderr, nothing on stdout).
 
 use std::path::Path;
@@ -12,7 +12,7 @@ use serde_json::Value;
 /// so their own rounding is at most 5e-10 relative.
 const REL: f64 = 1e-9;
 
-/// The §7 top-level keys.
+/// The guide §14 top-level keys.
 const TOP_KEYS: [&str; 6] = [
     "model",
     "params",
@@ -22,7 +22,7 @@ const TOP_KEYS: [&str; 6] = [
     "checks",
 ];
 
-/// Every pulled-mass `closed_form` key of §7.
+/// Every pulled-mass `closed_form` key of guide §14.
 const CLOSED_FORM_KEYS: [&str; 22] = [
     "phi",
     "tau_slip",
@@ -48,7 +48,7 @@ const CLOSED_FORM_KEYS: [&str; 22] = [
     "regime",
 ];
 
-/// The §7 integration summary keys of the pulled mass.
+/// The guide §14 integration summary keys of the pulled mass.
 const SUMMARY_KEYS: [&str; 11] = [
     "regime",
     "immediate_slip",
@@ -135,7 +135,7 @@ fn fig06_json_has_exactly_the_section_7_keys_and_every_check_passes() {
         .keys()
         .map(String::as_str)
         .collect();
-    // §7's keys and the added schema version.
+    // The JSON keys (guide §14) and the added schema version.
     let mut want = TOP_KEYS.to_vec();
     want.push("schema_version");
     got.sort_unstable();

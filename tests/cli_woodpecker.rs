@@ -1,11 +1,11 @@
-//! `stickslip eval woodpecker` and `stickslip claims` as a user runs them: the §7 JSON object,
-//! the worked numbers of physics.md §5 through the CLI, the harmonic regimes of the paper's
+//! `stickslip eval woodpecker` and `stickslip claims` as a user runs them: the guide §14 JSON object,
+//! the worked numbers of guide §13 through the CLI, the harmonic regimes of the paper's
 //! sets, closed forms outside their domain, and bad input.
 
 use assert_cmd::Command;
 use serde_json::Value;
 
-/// Every woodpecker `closed_form` key of §7, in order.
+/// Every woodpecker `closed_form` key of guide §14, in order.
 const CLOSED_FORM_KEYS: [&str; 42] = [
     "zeta0",
     "delta0",

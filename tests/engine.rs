@@ -150,7 +150,7 @@ fn slip_onset_exactly_at_a_triangle_vertex() {
 
 #[test]
 fn tangential_stick_where_v_touches_zero_with_zero_acceleration() {
-    // At φ = φ_c the late-stick speed minimum at τ = 1 + τ'_M is exactly zero (§1.4): the mass
+    // At φ = φ_c the late-stick speed minimum at τ = 1 + τ'_M is exactly zero (guide §7.5): the mass
     // sticks there, with a = 0, instead of sliding on.
     let (mu_s, mu_d) = (0.4, 0.35);
     let base = PulledMassParams {
@@ -261,7 +261,7 @@ fn events_are_never_repeated_nor_simultaneous() {
 
 #[test]
 fn friction_dissipation_equals_the_work_of_the_pulling_force() {
-    // Steady orbit: kinetic energy repeats, so ∫ μd N |v| dt = F Δx per period (§0 check).
+    // Steady orbit: kinetic energy repeats, so ∫ μd N |v| dt = F Δx per period (guide §4 check).
     for (mu_d, force) in [(0.35, 0.10), (0.35, 0.18)] {
         let p = PulledMassParams {
             mu_d,
@@ -328,7 +328,7 @@ fn a_sleeve_that_reverses_without_sticking_is_a_reversing_continuous_slip() {
             );
             assert_eq!((s.slips_per_period, s.sticks_per_period), (2, 0));
             assert_eq!(s.v_avg.is_some(), periods == 40, "settled only after 40");
-            // §7 knows no reversal regime: the JSON says what the motion is, a continuous slip.
+            // guide §14 knows no reversal regime: the JSON says what the motion is, a continuous slip.
             assert_eq!(serde_json::to_value(s.regime).unwrap(), "continuous_slip");
         }
     }

@@ -205,9 +205,11 @@ fn written_non_finite(dir: &Path) -> bool {
         if p.is_dir() {
             return written_non_finite(&p);
         }
+        // The physics guide written beside a report or handout is fixed prose ("never NaN").
         let text_file = p
             .extension()
-            .is_some_and(|x| x == "csv" || x == "json" || x == "md");
+            .is_some_and(|x| x == "csv" || x == "json" || x == "md")
+            && !p.ends_with("guide.md");
         text_file && non_finite(&fs::read_to_string(&p).unwrap_or_default())
     })
 }

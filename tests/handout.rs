@@ -15,20 +15,20 @@ use stickslip::worksheet::Lang;
 
 use common::rendered;
 
-/// The §7 object of the scene's evaluation and its checks, straight from the engine.
+/// The guide §14 object of the scene's evaluation and its checks, straight from the engine.
 fn engine(scene: &Scene) -> (serde_json::Value, Vec<serde_json::Value>) {
     let json = evaluate_model(&scene.setup, scene.periods).unwrap();
     let checks = json["checks"].as_array().unwrap().clone();
     (json, checks)
 }
 
-/// The value of a §7 key: `closed_form` first, then `params`.
+/// The value of a JSON key (guide §14): `closed_form` first, then `params`.
 fn section7(json: &serde_json::Value, key: &str) -> f64 {
     json["closed_form"]
         .get(key)
         .or_else(|| json["params"].get(key))
         .and_then(serde_json::Value::as_f64)
-        .unwrap_or_else(|| panic!("{key}: no §7 number"))
+        .unwrap_or_else(|| panic!("{key}: no guide §14 number"))
 }
 
 /// The result of a worked line as a number.

@@ -1,4 +1,4 @@
-//! Property test: for random valid pulled-mass sets spanning all four regimes of §1.5, every
+//! Property test: for random valid pulled-mass sets spanning all four regimes of guide §9, every
 //! check of the closed forms against the exact linear integration passes at 1e-9.
 
 use proptest::prelude::*;
@@ -71,7 +71,7 @@ proptest! {
             Regime::ContinuousSlip => prop_assert!(has("t_slip") && !has("t_stick")),
             Regime::ImmediateContinuousSlip => prop_assert!(e.linear.immediate_slip),
         }
-        // Keys of §7: nothing NaN anywhere in the JSON (serde_json would write null).
+        // Keys of guide §14: nothing NaN anywhere in the JSON (serde_json would write null).
         let json = serde_json::to_string(&e).unwrap();
         prop_assert!(!json.contains("NaN"));
     }

@@ -1,4 +1,4 @@
-//! Property test: for random valid woodpecker sets covering every regime of §3.6, every check of
+//! Property test: for random valid woodpecker sets covering every regime of guide §8.6, every check of
 //! the closed forms (and of the lobe-engine orbit) against the exact linear integration passes
 //! at 1e-9, and the closed-form regime is the integrated one.
 

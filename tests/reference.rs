@@ -1,7 +1,7 @@
 //! The engine against a 40-digit integration that shares nothing with it:
-//! tests/reference/mp_engine.py builds the forces from the parameters alone (physics.md §1, §2,
-//! §3.1 in exact arithmetic on the given doubles: W, ω, T, the triangle waves, F_e and its zeros,
-//! the counterparts, λ) and integrates the state machine of §0 at 40 digits or more; the engine's
+//! tests/reference/mp_engine.py builds the forces from the parameters alone (guide §5.1, guide §5.2,
+//! guide §5.2 in exact arithmetic on the given doubles: W, ω, T, the triangle waves, F_e and its zeros,
+//! the counterparts, λ) and integrates the state machine of guide §4 at 40 digits or more; the engine's
 //! numbers are those `stickslip eval … --json` prints (`evaluate`, both laws). The sets sample
 //! where double precision is hard pressed, each on both laws:
 //!

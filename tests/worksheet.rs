@@ -19,7 +19,7 @@ use stickslip::models::{pulled_mass::results as pulled_mass, woodpecker::results
 use stickslip::models::{woodpecker as wp_model, LawKind};
 use stickslip::results::{CheckValue, Summary};
 
-/// Closed forms and integration agree to this (physics.md §4).
+/// Closed forms and integration agree to this (guide §12).
 const REL: f64 = 1e-9;
 
 fn stickslip() -> Command {
@@ -103,7 +103,7 @@ fn sticks_by_half_period(p: &WoodpeckerParams) -> bool {
         .is_some_and(|e| e.t <= 0.5 * run.period)
 }
 
-/// Checks one answer against the §7 evaluation of the student's parameters.
+/// Checks one answer against the evaluation (guide §14) of the student's parameters.
 fn check_answer(
     answer: &Value,
     closed_form: &Value,
@@ -117,7 +117,7 @@ fn check_answer(
         assert_eq!(answer["value"].as_str().unwrap(), regime);
         let integrated = linear.regime.id();
         assert_eq!(answer["numeric"].as_str().unwrap(), integrated);
-        // The pulled mass's regimes of §1.5 are integrated under the names of §7.
+        // The pulled mass's regimes of guide §9 are integrated under the names of guide §14.
         let expected = match regime {
             "slip_stick" | "slip_stick_late" => "single_slip_stick",
             "continuous_slip" | "continuous_or_multiperiod" => "continuous_slip",

@@ -84,7 +84,7 @@ class Series:
 class Evaluation:
     """One parameter set of a model evaluated as ``stickslip eval MODEL … --json`` does.
 
-    ``data`` is exactly ``json.loads`` of that command's output (physics.md §7, SI units):
+    ``data`` is exactly ``json.loads`` of that command's output (guide §14, SI units):
     ``model``, ``params``, ``closed_form`` (the linear law's closed forms, ``regime``),
     ``linear`` and ``harmonic`` (the exact integration's summaries, ``None`` for a law that
     does not exist), ``checks`` (closed form against integration). ``regime`` says the closed
@@ -113,7 +113,7 @@ class Evaluation:
 
     @property
     def closed_form(self) -> dict[str, Any]:
-        """The linear law's closed forms by §7 key (SI; ``None`` where undefined)."""
+        """The linear law's closed forms by JSON key (guide §14) (SI; ``None`` where undefined)."""
         return self.data["closed_form"]
 
     @property

@@ -16,14 +16,14 @@ if TYPE_CHECKING:
 
 @lru_cache(maxsize=None)
 def quantities(model: str) -> dict[str, dict[str, str]]:
-    """The model's closed forms by §7 key: symbol, unit, equation, MathML, LaTeX, meaning."""
+    """The model's closed forms by JSON key (guide §14): symbol, unit, equation, MathML, LaTeX, meaning."""
     names = ("id", "symbol", "unit", "equation", "symbol_mathml", "mathml", "latex", "words")
     return {row[0]: dict(zip(names, row)) for row in _native.quantities(model)}
 
 
 @lru_cache(maxsize=None)
 def law_words() -> dict[str, str]:
-    """The integration regimes of the laws in words, by §7 id."""
+    """The integration regimes of the laws in words, by JSON id (guide §14)."""
     return dict(_native.law_regimes())
 
 

@@ -1,5 +1,5 @@
 //! Near-tangent sticks: the pulled mass (set B friction, linear law) at φ = φ_c (1 ± δ), where
-//! the speed touches zero tangentially at τ = 1 + τ'_M (physics.md §1.4), probed ever closer to
+//! the speed touches zero tangentially at τ = 1 + τ'_M (guide §7.5), probed ever closer to
 //! φ_c. Each method's slips and sticks are compared with the closed form's regime, not with
 //! the exact engine, so the exact engine is measured too.
 //!

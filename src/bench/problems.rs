@@ -1,5 +1,5 @@
 //! The benchmark problems and their exact references: the pulled mass of worked set B
-//! (physics.md §5) and the woodpecker of Fig. 15, each under both force laws, over
+//! (guide §13) and the woodpecker of Fig. 15, each under both force laws, over
 //! [`PERIODS`] periods; and the boundary cases of the regime-classification study.
 //!
 //! ```text
@@ -22,7 +22,7 @@ use crate::solver::{Method, MethodEvent, Problem, Setting};
 /// Periods integrated by every method on every problem.
 pub const PERIODS: u32 = 20;
 /// The intermediate halt of the harmonic woodpecker disappears above this z0 (m): the Fig. 16
-/// threshold found by bisection (physics.md §6, claim 8).
+/// threshold found by bisection (guide §11, claim 8).
 pub const HALT_THRESHOLD_Z0: f64 = 7.0746e-3;
 /// Offset of the two woodpecker boundary cases from the threshold (m).
 pub const HALT_OFFSET_Z0: f64 = 1e-5;
@@ -71,7 +71,7 @@ pub fn law_id(law: LawKind) -> &'static str {
     }
 }
 
-/// Worked set B of physics.md §5.
+/// Worked set B of guide §13.
 pub fn set_b() -> PulledMassParams {
     PulledMassParams {
         mu_s: 0.4,
@@ -250,7 +250,7 @@ mod tests {
             assert_eq!(r.events.len(), 2 * PERIODS as usize, "{}", bp.id);
             assert!(r.vbar_m_s > 0.0);
         }
-        // Set B, linear law: v̄ = 5.396971 mm/s (physics.md §5).
+        // Set B, linear law: v̄ = 5.396971 mm/s (guide §13).
         let r = reference(&problems[0]).unwrap();
         assert!((r.vbar_m_s - 5.396971e-3).abs() < 1e-8, "{}", r.vbar_m_s);
     }

@@ -51,7 +51,7 @@ pub struct Request {
     pub case: Model,
     /// The formula as typed.
     pub formula: String,
-    /// The §7 key of the measured quantity (`v_avg`, `t_stick` …); `None` when the formula's
+    /// The JSON key (guide §14) of the measured quantity (`v_avg`, `t_stick` …); `None` when the formula's
     /// left side names it.
     pub quantity: Option<String>,
     /// Only sets of this closed-form regime (the regime a formula is stated for); `None`: all.
@@ -70,7 +70,7 @@ pub struct Near {
 /// The formula and the integration on one parameter set.
 #[derive(Clone, Debug, Serialize)]
 pub struct Sample {
-    /// The parameters (§7 `params` keys, SI).
+    /// The parameters (guide §14 `params` keys, SI).
     pub params: Model,
     /// The regime of the closed forms.
     pub regime: &'static str,

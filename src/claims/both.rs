@@ -1,4 +1,4 @@
-//! Claims 3 and 7, about both models (physics.md §6): how well the linearized (triangle-wave)
+//! Claims 3 and 7, about both models (guide §11): how well the linearized (triangle-wave)
 //! law stands in for the harmonic one, and what the paper's powers measure.
 //!
 //! ```text
@@ -23,7 +23,7 @@ use crate::output::format::people;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
 const CLOSE: f64 = 0.10;
-/// Agreement of two exact results (physics.md §4).
+/// Agreement of two exact results (guide §12).
 const AGREE: f64 = 1e-9;
 
 /// A regime and a mean speed in words.

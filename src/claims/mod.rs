@@ -1,4 +1,4 @@
-//! The paper's claims checked on computed evidence (physics.md §6): for each of the eight
+//! The paper's claims checked on computed evidence (guide §11): for each of the eight
 //! statements, what the paper says, a verdict and the numbers behind it, computed on the given
 //! parameter sets, on variations of them (another μd, z0, m_S or λ) and, for statements about
 //! "sensible values" in general, on a seeded random sample of valid parameter sets.
@@ -143,10 +143,10 @@ pub struct SampleResult {
     pub example: Option<String>,
 }
 
-/// One claim of physics.md §6 with its verdict.
+/// One claim of guide §11 with its verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Claim {
-    /// 1..=8, the numbering of physics.md §6.
+    /// 1..=8, the numbering of guide §11.
     pub id: u8,
     /// The id of the model the claim is about, or [`BOTH_MODELS`].
     pub model: &'static str,
@@ -175,7 +175,7 @@ impl Claim {
     }
 }
 
-/// All eight claims, in the order of physics.md §6.
+/// All eight claims, in the order of guide §11.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Claims {
     pub claims: Vec<Claim>,

@@ -9,7 +9,7 @@
 //! Each step's `value` is the value of the pure function in [`crate::formula`], never derived
 //! again here; the expression tree only shows how that value comes about, and the tests assert
 //! that evaluating the tree gives the same number. A step whose formula does not describe the
-//! motion for the parameters (its regime, physics.md §1.5 and §3.6) has `value: None` and the
+//! motion for the parameters (its regime, guide §9 and guide §8.6) has `value: None` and the
 //! reason, taken from the applicability logic of [`crate::results`].
 
 pub mod expr;
@@ -19,7 +19,7 @@ pub use expr::Expr;
 use crate::results::quantity::{AnyKey, Registry};
 use crate::results::Applicability;
 
-/// A derived parameter with a step of its own (W, ω, T, λ): its §7 `params` key, LaTeX symbol,
+/// A derived parameter with a step of its own (W, ω, T, λ): its guide §14 `params` key, LaTeX symbol,
 /// equation and unit.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Param {
@@ -37,7 +37,7 @@ pub enum StepKey {
 }
 
 impl StepKey {
-    /// The §7 key (`closed_form`, or `params` for a derived parameter).
+    /// The JSON key (guide §14) (`closed_form`, or `params` for a derived parameter).
     pub fn id(self) -> &'static str {
         match self {
             StepKey::Param(p) => p.id,

@@ -1,6 +1,6 @@
 //! The worked substitutions are the closed forms: on random valid parameter sets of every
 //! regime, each expression tree evaluates to the formula function's value and to the
-//! `closed_form` (or `params`) value of the §7 evaluation, a step has a value exactly when its
+//! `closed_form` (or `params`) value of the evaluation (guide §14), a step has a value exactly when its
 //! form applies, and every LaTeX string renders to MathML.
 
 use proptest::prelude::*;
@@ -23,7 +23,7 @@ use crate::report::math::mathml;
 /// Evaluating a tree repeats the formula's arithmetic in another order: a few ulps apart.
 const REL: f64 = 1e-12;
 
-/// The §7 value of a step's key: `closed_form` first, then `params`.
+/// The guide §14 value of a step's key: `closed_form` first, then `params`.
 fn section7_value(json: &Value, key: &str) -> Option<Value> {
     json["closed_form"]
         .get(key)
@@ -35,13 +35,13 @@ fn close(a: f64, b: f64) -> bool {
     a == b || (a - b).abs() <= REL * a.abs().max(b.abs())
 }
 
-/// Every step against the §7 object `json` and the applicability list of the evaluation.
+/// Every step against the guide §14 object `json` and the applicability list of the evaluation.
 fn check_steps(steps: &[Step], json: &Value, applies: impl Fn(&str) -> bool) {
     assert!(!steps.is_empty());
     for step in steps {
         let key = step.key.id();
         let Some(expected) = section7_value(json, key) else {
-            panic!("{key}: not a §7 key");
+            panic!("{key}: not a JSON key (guide §14)");
         };
         let evaluated = step.expr.eval();
         match expected.as_f64() {
@@ -54,7 +54,7 @@ fn check_steps(steps: &[Step], json: &Value, applies: impl Fn(&str) -> bool) {
                 };
                 assert!(
                     close(evaluated, x) || (evaluated - x).abs() <= REL * scale,
-                    "{key}: tree {evaluated} vs §7 {x}"
+                    "{key}: tree {evaluated} vs guide §14 {x}"
                 );
                 if applies(key) {
                     assert_eq!(step.value, Some(x), "{key}: value is the formula's");
@@ -83,7 +83,7 @@ fn renders(tex: &str) {
     assert!(!m.contains("&amp;"), "{tex}\n{m}");
 }
 
-/// φ inside the interval of regime `which` (§1.5), as the property test of the results.
+/// φ inside the interval of regime `which` (guide §9), as the property test of the results.
 fn phi_in_regime(which: u8, frac: f64, mu_s: f64, mu_d: f64) -> f64 {
     let (stick, cont) = (
         pm::phi_stick_max(mu_s, mu_d),

@@ -12,7 +12,7 @@
 //!                 R = ∫P = −sin θc (δ − sin δ) − cos θc (δ²/2 − 1 + cos δ)
 //! ```
 //! with w = t − t_c the time since the start (t_c in two parts, see [`Arc::w`]), δ = ωw and
-//! θc = ωt_c (physics.md §0). Every term is a product of factors that keep their relative
+//! θc = ωt_c (guide §4). Every term is a product of factors that keep their relative
 //! accuracy on a short arc (δ − sin δ and δ²/2 − 1 + cos δ by their series below |δ| = 1.5),
 //! so a slip of duration φT with accelerations O(φ g) loses nothing to the O(μd g) terms that
 //! make up A0 and A1 b: the old form A0 w + (A1/ω)(sin ωt − sin ωt_c) lost eps·μd/φ.

@@ -1,5 +1,5 @@
 //! The dry-friction engine: one body of mass M under a prescribed driving force D(t) and a
-//! friction-bearing normal force N_f(t), with Coulomb friction (physics.md §0).
+//! friction-bearing normal force N_f(t), with Coulomb friction (guide §4).
 //!
 //! ```text
 //! STUCK (v = 0)     leaves when |D| > μs N_f (strict)        → SLIP, s = sgn D

@@ -347,7 +347,7 @@ fn next_step_is_sub_ulp(last: f64, step: f64, newton: f64, t: f64) -> bool {
 }
 
 /// Roots of α w² + β w + γ = 0 without cancellation: q = −½(β + sgn β √(β² − 4αγ)), roots
-/// q/α and γ/q (physics.md §0). Returns none when the discriminant is negative.
+/// q/α and γ/q (guide §4). Returns none when the discriminant is negative.
 pub fn quadratic_roots(alpha: f64, beta: f64, gamma: f64) -> Vec<f64> {
     if alpha == 0.0 {
         return if beta != 0.0 {

@@ -1,5 +1,5 @@
 //! Steady state of a run: the period multiplicity of the orbit, and what happens per period
-//! once it has settled (physics.md §0, §7 integration summary).
+//! once it has settled (guide §4, guide §14 integration summary).
 
 use serde::Serialize;
 
@@ -23,7 +23,7 @@ pub enum OrbitKind {
     NotPeriodic,
 }
 
-/// Regime of an integrated law (physics.md §7 `regime`), serialized as its [`id`].
+/// Regime of an integrated law (guide §14 `regime`), serialized as its [`id`].
 ///
 /// [`id`]: IntegrationRegime::id
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,7 +87,7 @@ impl IntegrationRegime {
 }
 
 impl IntegrationRegime {
-    /// The value of §7's `regime` key. The contract knows no reversal regime: a motion that
+    /// The value of JSON `regime` key (guide §14). The contract knows no reversal regime: a motion that
     /// never sticks is `continuous_slip` whether or not it reverses; [`Self::id`] keeps the two
     /// apart for the words and the maps.
     pub const fn json_id(self) -> &'static str {
@@ -124,7 +124,7 @@ pub struct Steady {
 }
 
 impl Steady {
-    /// The regime of §7 for this orbit.
+    /// The regime of guide §14 for this orbit.
     pub fn regime(&self) -> IntegrationRegime {
         // Reversals only, no stick, in the last period: the body slipped throughout it, whether
         // or not the orbit has settled within the periods integrated.

@@ -1,4 +1,4 @@
-//! `stickslip fit`: the harmonic woodpecker (physics.md §2) fitted to the tracked positions of
+//! `stickslip fit`: the harmonic woodpecker (guide §5.2) fitted to the tracked positions of
 //! a real toy, as the paper does by hand for Figs. 26–27 ("the friction coefficients and the
 //! initial spring conditions (z0 and d0) have to be varied to a small (a few percent) extent").
 //!

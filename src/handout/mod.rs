@@ -48,10 +48,14 @@ const HANDOUT_PAGES: u32 = 4;
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
 pub struct StepCtx {
-    /// The §7 key of the quantity ([`crate::derivation::StepKey::id`]).
+    /// The JSON key (guide §14) of the quantity ([`crate::derivation::StepKey::id`]).
     pub key: String,
-    /// "(13)", "§1.4" …
+    /// "(13)", "guide §7.5" …
     pub equation: String,
+    /// The anchor in the guide of a section the equation cites, or empty.
+    pub guide: String,
+    /// That section's number (7.5), or empty.
+    pub section: String,
     /// MathML of "symbol = formula", "= substituted" and "= result" (no result where the form
     /// does not apply), so that a long line wraps between them.
     pub pieces: Vec<String>,
@@ -273,9 +277,12 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
                 .collect(),
             _ => step.worked_pieces(),
         };
+        let (section, guide) = crate::report::guide::cite(step.equation).unwrap_or_default();
         shown.push(StepCtx {
             key: step.key.id().to_string(),
             equation: step.equation.to_string(),
+            guide: guide.to_string(),
+            section: section.to_string(),
             pieces: pieces.iter().map(|p| lang.mathml(p)).collect(),
             tex: lang.tex(&pieces.join(" ")),
             reason: words.text(step.reason.as_deref().unwrap_or_default()),

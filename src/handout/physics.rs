@@ -1,5 +1,5 @@
-//! The words of the handout: the equation of motion of each model in symbols (physics.md §1,
-//! §2–3), and for each step of the chain of formulas (by its key) what it means: a label for
+//! The words of the handout: the equation of motion of each model in symbols (guide §5.1,
+//! guide §5.2 and guide §8), and for each step of the chain of formulas (by its key) what it means: a label for
 //! a definition, a sentence of physics for a step of the motion. Keys not named here stay out of
 //! the handout's chain (thresholds such as μd,MIN; the report shows them).
 

@@ -55,7 +55,7 @@ pub trait Physics:
     const PARAMS: &'static [ParamSpec<Self>];
     /// The parameters that take one of a few named values.
     const CHOICES: &'static [ChoiceSpec<Self>] = &[];
-    /// The evaluation of §7: closed forms, both laws integrated, checks.
+    /// The evaluation of guide §14: closed forms, both laws integrated, checks.
     type Evaluation: Serialize;
 
     /// These parameters as a [`Model`].
@@ -72,7 +72,7 @@ pub trait Physics:
     fn evaluate(&self, periods: u32) -> Result<Self::Evaluation>;
     /// The id of the regime of the linearized law's closed forms.
     fn closed_form_regime(&self) -> &'static str;
-    /// The `params` object of `eval --json` (physics.md §7): the inputs with their derived
+    /// The `params` object of `eval --json` (guide §14): the inputs with their derived
     /// quantities; by default the inputs alone.
     fn params_json(&self) -> serde_json::Value {
         serde_json::to_value(self).unwrap_or_default()
@@ -374,7 +374,7 @@ impl Model {
 
 impl Model {
     /// The inputs with their derived quantities, as the `params` object of `eval --json`
-    /// (physics.md §7), without `periods`.
+    /// (guide §14), without `periods`.
     pub fn derived_params(&self) -> serde_json::Map<String, serde_json::Value> {
         let mut map = match with_model!(self, p => p.params_json()) {
             serde_json::Value::Object(map) => map,

@@ -36,9 +36,12 @@ pub struct VerificationRow {
     pub formula_mathml: String,
     pub formula_tex: String,
     pub equation: String,
-    /// Where the guide derives a formula the paper does not number (equation "§…"), relative to
-    /// `reports/`; empty for the paper's numbered equations.
+    /// The anchor in guide.html (guide.md) of the section that derives a formula the paper does
+    /// not number (equation "guide §7.5"); empty for the paper's numbered equations.
     pub guide: String,
+    /// That section's number, 7.5 (the link reads "guide §7.5" in the page's language); empty
+    /// for the paper's numbered equations.
+    pub section: String,
     pub tag: String,
     pub closed_form: String,
     pub numeric: String,
@@ -268,7 +271,7 @@ pub struct Scene {
     /// Periods integrated for the results tables.
     pub periods: u32,
     pub figures: Vec<FigureKind>,
-    /// Claims of the paper (physics.md §6) that concern the scene.
+    /// Claims of the paper (guide §11) that concern the scene.
     pub claims: Vec<u8>,
 }
 
@@ -301,7 +304,7 @@ pub enum Note {
     /// A step of the motion with a sentence of physics: the step takes a whole row.
     Sentence(&'static str),
     /// Only the numbers (symbol = substituted = result), half a row: the woodpecker's phase
-    /// II, whose formulas are those of phase I with u^(−) ↔ u^(+), η ↔ η' (physics.md §3.4).
+    /// II, whose formulas are those of phase I with u^(−) ↔ u^(+), η ↔ η' (guide §8.4).
     Numbers,
 }
 

@@ -116,22 +116,20 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
 }
 
 /// `files` moved into `folder` (one or two levels below `reports/`), their links to the
-/// physics guide (written for pages in `reports/`) made relative to the new depth.
+/// physics guide (written for pages beside `reports/guide.html`) made relative to the new depth.
 fn under(folder: &str, files: Vec<OutFile>) -> Vec<OutFile> {
     let up = "../".repeat(Path::new(folder).components().count());
+    let stem = super::guide::STEM;
     files
         .into_iter()
         .map(|f| {
-            // HTML attributes hold the path with `/` escaped as `&#x2F;`.
-            let escaped = up.replace('/', "&#x2F;");
             let bytes = match String::from_utf8(f.bytes) {
                 Ok(text) => text
-                    .replace("\"../docs/physics.md", &format!("\"{up}../docs/physics.md"))
                     .replace(
-                        "\"..&#x2F;docs&#x2F;physics.md",
-                        &format!("\"{escaped}..&#x2F;docs&#x2F;physics.md"),
+                        &format!("href=\"{stem}.html"),
+                        &format!("href=\"{up}{stem}.html"),
                     )
-                    .replace("](../docs/physics.md", &format!("]({up}../docs/physics.md"))
+                    .replace(&format!("]({stem}.md"), &format!("]({up}{stem}.md"))
                     .into_bytes(),
                 Err(e) => e.into_bytes(),
             };

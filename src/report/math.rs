@@ -16,8 +16,17 @@ fn converter() -> Option<&'static LatexToMathML> {
 
 /// MathML of an inline LaTeX formula; the escaped source in a `<code>` when it does not parse.
 pub fn mathml(latex: &str) -> String {
+    convert(latex, MathDisplay::Inline)
+}
+
+/// MathML of a displayed LaTeX formula (`display="block"`), or its escaped source in a `<code>`.
+pub fn mathml_block(latex: &str) -> String {
+    convert(latex, MathDisplay::Block)
+}
+
+fn convert(latex: &str, display: MathDisplay) -> String {
     converter()
-        .and_then(|c| c.convert_with_local_state(latex, MathDisplay::Inline).ok())
+        .and_then(|c| c.convert_with_local_state(latex, display).ok())
         .map_or_else(|| format!("<code>{}</code>", escape(latex)), |r| r.mathml)
 }
 

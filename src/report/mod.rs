@@ -10,6 +10,7 @@ pub mod classroom;
 pub mod context;
 pub mod explorer;
 pub mod figures;
+pub mod guide;
 pub mod lock;
 pub mod math;
 pub mod render;

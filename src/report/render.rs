@@ -349,7 +349,8 @@ pub fn render_with(
         })
         .collect::<Result<_>>()?;
     let version = env!("CARGO_PKG_VERSION");
-    let mut files = Vec::new();
+    // The physics guide the pages link, beside them.
+    let mut files = super::guide::files(formats, true)?;
     let page = |name: &str, ctx: &tera::Context| page(&tera, name, ctx).map(String::into_bytes);
     let parts: Vec<IndexPart> = Part::ALL
         .iter()

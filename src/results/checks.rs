@@ -11,7 +11,7 @@ use crate::params::DEFAULT_PERIODS;
 use crate::results::quantity::{AnyKey, Quantity, Registry};
 use crate::results::summary::Summary;
 
-/// Relative tolerance of every numeric check (physics.md §4: observed ≤ 4e-13).
+/// Relative tolerance of every numeric check (guide §12: observed ≤ 4e-13).
 pub const TOLERANCE: f64 = 1e-9;
 
 /// Relative width of the band around a regime boundary in which the closed form and the
@@ -62,7 +62,7 @@ pub enum Checked {
 }
 
 impl Checked {
-    /// The name in the §7 `checks` array: the §7 key, or the orbit quantity's name.
+    /// The name in the guide §14 `checks` array: the JSON key (guide §14), or the orbit quantity's name.
     pub fn id(self) -> Cow<'static, str> {
         match self {
             Checked::Key(k) => Cow::Borrowed(k.id()),
@@ -70,7 +70,7 @@ impl Checked {
         }
     }
 
-    /// The paper's equation of the quantity, or the physics.md section of a derived result:
+    /// The paper's equation of the quantity, or the section of the guide that derives it ("guide §7.5"):
     /// the registry's.
     pub fn equation(self) -> &'static str {
         match self {
@@ -118,12 +118,12 @@ impl Serialize for Checked {
     }
 }
 
-/// One entry of the §7 `checks` array.
+/// One entry of the guide §14 `checks` array.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Check {
-    /// The quantity checked (serialized as its §7 key).
+    /// The quantity checked (serialized as its JSON key (guide §14)).
     pub quantity: Checked,
-    /// Equation number in the paper, or the physics.md section of a derived result (from the
+    /// Equation number in the paper, or the section of the guide that derives the result (from the
     /// registry: [`Checked::equation`]).
     pub equation: &'static str,
     pub closed_form: CheckValue,

@@ -1,5 +1,5 @@
 //! Results: the integration summaries, the checks of closed forms against the integration, and
-//! the evaluation of a whole model (physics.md §7), as plain serde data.
+//! the evaluation of a whole model (guide §14), as plain serde data.
 
 pub mod checks;
 pub mod quantity;
@@ -36,7 +36,7 @@ pub fn ensure_in_range<'a>(
 /// Whether a paper formula describes the computed motion, and why not.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Applicability {
-    /// The quantity (serialized as its §7 key).
+    /// The quantity (serialized as its JSON key (guide §14)).
     pub quantity: quantity::AnyKey,
     pub applies: bool,
     /// Why not (empty when it applies).

@@ -6,7 +6,7 @@
 //! [`AnyKey`], a key of any model, for the data both models share (checks, applicability,
 //! derivation steps, worksheet questions).
 //!
-//! The §7 JSON key of a quantity is written in its entry only: the `closed_form` object is
+//! The guide §14 JSON key of a quantity is written in its entry only: the `closed_form` object is
 //! serialized through the registry, and every other place names the quantity by its typed key.
 
 use serde::Serialize;
@@ -14,7 +14,7 @@ use serde::Serialize;
 /// How a closed-form quantity is shown, and what it means.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Quantity {
-    /// The §7 key (JSON).
+    /// The JSON key (guide §14) (JSON).
     pub id: &'static str,
     /// Plain-text symbol.
     pub symbol: &'static str,
@@ -22,9 +22,9 @@ pub struct Quantity {
     pub tex: &'static str,
     /// SI unit ("" for dimensionless).
     pub unit: &'static str,
-    /// Paper's equation number, or the physics.md section of a derived result.
+    /// Paper's equation number, or the section of the guide that derives a result ("guide §7.5").
     pub equation: &'static str,
-    /// \[P\], \[P*\], \[G\] or \[D\] (physics.md tags).
+    /// \[P\], \[P*\], \[G\] or \[D\] (guide §6).
     pub tag: &'static str,
     /// The formula in LaTeX.
     pub latex: &'static str,
@@ -35,11 +35,11 @@ pub struct Quantity {
 /// What kind of value a quantity has, and where it appears.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
-    /// A number of the §7 `closed_form` object, shown in the closed-form tables.
+    /// A number of the guide §14 `closed_form` object, shown in the closed-form tables.
     Number,
-    /// A flag or the regime id of the §7 `closed_form` object (checked as a label).
+    /// A flag or the regime id of the guide §14 `closed_form` object (checked as a label).
     Label,
-    /// A number checked against the integration that is not a key of the §7 `closed_form`
+    /// A number checked against the integration that is not a key of the guide §14 `closed_form`
     /// object.
     Checked,
 }
@@ -59,7 +59,7 @@ pub struct Entry<K: 'static, R: 'static> {
 pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
     /// Where a quantity of this model describes the motion.
     type Regimes: Copy + 'static;
-    /// Every quantity of the model, in the order of the §7 `closed_form` object and of the
+    /// Every quantity of the model, in the order of the guide §14 `closed_form` object and of the
     /// tables; the entry of a key is at the key's [`Registry::index`].
     const ENTRIES: &'static [Entry<Self, Self::Regimes>];
 
@@ -81,12 +81,12 @@ pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
         &self.entry().quantity
     }
 
-    /// The §7 key.
+    /// The JSON key (guide §14).
     fn id(self) -> &'static str {
         self.quantity().id
     }
 
-    /// The key whose §7 key is `id`.
+    /// The key whose JSON key (guide §14) is `id`.
     fn from_id(id: &str) -> Option<Self> {
         Self::ENTRIES
             .iter()
@@ -94,7 +94,7 @@ pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
             .map(|e| e.key)
     }
 
-    /// The numbers of the §7 `closed_form` object, in the order of the tables.
+    /// The numbers of the guide §14 `closed_form` object, in the order of the tables.
     fn numbers() -> impl Iterator<Item = &'static Entry<Self, Self::Regimes>> {
         Self::ENTRIES.iter().filter(|e| e.kind == Kind::Number)
     }
@@ -103,7 +103,7 @@ pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
 /// A closed-form quantity of any model: a reference to its registry entry's [`Quantity`].
 /// Keys compare by the whole entry (symbol, equation, formula …), not by address: registry
 /// tables are constants, which have no unique address; two models' quantities that share a
-/// §7 key differ in their equation and formula.
+/// JSON key (guide §14) differ in their equation and formula.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct AnyKey(&'static Quantity);
 
@@ -119,7 +119,7 @@ impl AnyKey {
         self.0
     }
 
-    /// The §7 key.
+    /// The JSON key (guide §14).
     pub fn id(self) -> &'static str {
         self.0.id
     }
@@ -137,7 +137,7 @@ impl Serialize for AnyKey {
     }
 }
 
-/// The value of a quantity of the §7 `closed_form` object, as serialized.
+/// The value of a quantity of the guide §14 `closed_form` object, as serialized.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Value {
     /// A number; `None` (null) where the expression is undefined.
@@ -194,7 +194,7 @@ impl Serialize for Value {
     }
 }
 
-/// Serializes the §7 `closed_form` object of a model: every entry of its registry that is a key
+/// Serializes the guide §14 `closed_form` object of a model: every entry of its registry that is a key
 /// of the object, in registry order, with `value` of it.
 pub fn serialize_closed_form<K: Registry, S: serde::Serializer>(
     s: S,
@@ -244,7 +244,7 @@ pub(crate) mod tests {
         }
     }
 
-    /// The §7 `closed_form` object has exactly the registry's keys of the object, in order.
+    /// The guide §14 `closed_form` object has exactly the registry's keys of the object, in order.
     pub(crate) fn serialized_keys_are_the_registry<K: Registry>(object: &serde_json::Value) {
         let keys: Vec<&str> = object
             .as_object()

@@ -1,4 +1,4 @@
-//! The integration summary of one law (physics.md §7 `linear` / `harmonic`).
+//! The integration summary of one law (guide §14 `linear` / `harmonic`).
 
 use serde::Serialize;
 
@@ -28,7 +28,7 @@ pub struct MaximumOut {
 /// on the run (W); serialized as `{key: driving, "power_friction": friction}`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Power {
-    /// The §7 key of the driving power: `power` (pulled mass, F v̄) or `power_weight`
+    /// The JSON key (guide §14) of the driving power: `power` (pulled mass, F v̄) or `power_weight`
     /// (woodpecker, W_S v̄).
     pub key: &'static str,
     /// The driving power as a product ("F v̄", "W_S v̄").
@@ -47,7 +47,7 @@ impl Serialize for Power {
     }
 }
 
-/// Summary of an exact integration of one law; keys as physics.md §7.
+/// Summary of an exact integration of one law; keys as guide §14.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Summary {
     pub regime: IntegrationRegime,
@@ -65,7 +65,7 @@ pub struct Summary {
 }
 
 impl Summary {
-    /// Every number of the summary, named as in §7 (for [`super::ensure_in_range`]).
+    /// Every number of the summary, named as in guide §14 (for [`super::ensure_in_range`]).
     pub fn numbers(&self) -> Vec<(&'static str, f64)> {
         let mut out: Vec<(&'static str, f64)> = [
             ("first_slip_time", self.first_slip_time),
@@ -127,7 +127,7 @@ impl Summary {
     }
 }
 
-/// The §7 name of an event kind.
+/// The guide §14 name of an event kind.
 pub fn kind_name(kind: EventKind) -> &'static str {
     match kind {
         EventKind::Slip { .. } => "slip",

@@ -1,5 +1,5 @@
 //! The schema version of every JSON document the tool writes: one added top-level key,
-//! `"schema_version"`, first in the object, beside the keys of physics.md §7 (which it never
+//! `"schema_version"`, first in the object, beside the keys of guide §14 (which it never
 //! renames or removes). Raised when a key is renamed, removed or changes meaning.
 
 use serde::Serialize;

@@ -325,7 +325,7 @@ mod tests {
         // Measured: ≤ 2.6e-10 s.
         assert!(event_error(&got, &want) < 1e-8, "{:?}", got.events);
         assert!((got.x_end - want.x_end).abs() < 1e-9);
-        // F > 2 μs W: slips at t = 0 and never sticks (physics.md §1.5).
+        // F > 2 μs W: slips at t = 0 and never sticks (guide §9).
         let problem = pulled(0.5, LawKind::Harmonic, 3.0);
         let want = exact(&problem);
         let got = DiffsolTsit45

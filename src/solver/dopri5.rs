@@ -22,7 +22,7 @@
 //!   not missed (SciPy issue 9228); the first crossing is located by Illinois regula falsi on
 //!   the interpolant to a few ulps of t. [`Dopri5EndpointsOnly`] checks the step ends only, to
 //!   show that failure.
-//! * Transitions (physics.md §0): at a stick time v := 0; STUCK if |D| ≤ μs N_f, otherwise a
+//! * Transitions (guide §4): at a stick time v := 0; STUCK if |D| ≤ μs N_f, otherwise a
 //!   reversal to direction sgn D. The integration restarts from the event in the new mode
 //!   (new first step, new FSAL stage).
 //! * Stuck: nothing to integrate. G is sampled at 4 points per T/16 (and its sampled local
@@ -1299,7 +1299,7 @@ mod tests {
         assert_eq!(first_stick(&dense, 1.0, 1), None, "step ends only: missed");
     }
 
-    /// F = 0.185 N (harmonic): the late-stick band (physics.md §1.4): the slip ends just
+    /// F = 0.185 N (harmonic): the late-stick band (guide §7.5): the slip ends just
     /// after the period boundary with a brief stick (≈ 0.05 s) before the next slip. Continued
     /// past the stick, the slip-mode v goes below 0 and back inside one step at loose
     /// tolerances, so the stick and the next slip are both missed when only step ends are
@@ -1456,7 +1456,7 @@ mod tests {
 
     #[test]
     fn immediate_slip_starts_at_zero_and_never_sticks() {
-        // F > 2 μs W: slips at t = 0 and keeps slipping (physics.md §1.5).
+        // F > 2 μs W: slips at t = 0 and keeps slipping (guide §9).
         let problem = pulled(0.5, LawKind::Harmonic, 3.0);
         let want = exact(&problem);
         let got = Dopri5.solve(&problem, Setting::Tolerance(1e-10)).unwrap();

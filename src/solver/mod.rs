@@ -229,7 +229,7 @@ pub(crate) mod test_support {
         }
     }
 
-    /// Set B (physics.md §5): F = 0.10 N: one slip and one stick per period.
+    /// Set B (guide §13): F = 0.10 N: one slip and one stick per period.
     pub fn set_b(law: LawKind, periods: f64) -> Problem {
         pulled(0.10, law, periods)
     }

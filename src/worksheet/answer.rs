@@ -178,7 +178,7 @@ pub(crate) fn confirmed(question: &'static Question, step: &Step, numeric: f64) 
     })
 }
 
-/// The regime of the closed forms (the id of physics.md §1.5 or §3.6), confirmed by the check of
+/// The regime of the closed forms (the id of guide §9 or guide §8.6), confirmed by the check of
 /// the integrated regime (whose id may differ: `slip_stick` is integrated as
 /// `single_slip_stick`), and the values its inequalities compare.
 fn regime(

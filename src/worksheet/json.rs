@@ -21,7 +21,7 @@ struct KeyJson<'a> {
 #[derive(Serialize)]
 struct StudentJson<'a> {
     student: u32,
-    /// Regime of the closed forms (§1.5, §3.6).
+    /// Regime of the closed forms (guide §9, guide §8.6).
     regime: &'static str,
     /// The scenario keys of the `[params]` table (SI).
     params: serde_json::Value,

@@ -63,7 +63,7 @@ pub struct Question {
 }
 
 impl Question {
-    /// Key used by `--questions` and in answer-key.json: the §7 key of the quantity, `read_`
+    /// Key used by `--questions` and in answer-key.json: the JSON key (guide §14) of the quantity, `read_`
     /// before it for the figure.
     pub fn key(&self) -> String {
         match self.kind {
@@ -105,7 +105,7 @@ pub fn regimes(model: Model) -> &'static [Regime] {
 }
 
 /// The rules that decide the regime, as (regime, condition in LaTeX), shown with the regime
-/// question (physics.md §1.5, §3.2, §3.6).
+/// question (guide §9, guide §8.2, guide §8.6).
 pub fn regime_rules(model: Model) -> &'static [(Regime, &'static str)] {
     fn of<M: Exercise>(_: &M) -> &'static [(Regime, &'static str)] {
         M::regime_rules()

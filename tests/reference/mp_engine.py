@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""High-precision reference for the engine (src/engine): the state machine of physics.md §0
+"""High-precision reference for the engine (src/engine): the state machine of guide §4
 integrated with mpmath at 40 significant digits or more.
 
 Reads a JSON list of cases on stdin and writes a JSON list of results, one per case. A case is
 either
 
 * {"model": "pulled-mass" | "woodpecker", "law": "linear" | "harmonic", "params": {...},
-  "periods": N}: the forces are built here from the parameters alone (physics.md §1, §2, §3.1:
+  "periods": N}: the forces are built here from the parameters alone (guide §5.1, guide §5.2:
   W, ω, T, the triangle waves, F_e, its zeros, the linear counterparts, λ), in exact arithmetic
   on the doubles given, sharing nothing with the engine's serialized force law; the working
   precision grows with the small parameter of short slips (φ = F/W, ε = W_S/(k ζ0)) so that
@@ -20,7 +20,7 @@ advance of each period (formed at full precision) and the friction dissipation �
 of each period. Numbers are written as decimal strings with
 30 digits.
 
-The motion on a piece is the closed form of physics.md §0 (a = A0 + A1 b(t), b = t − t_ref or
+The motion on a piece is the closed form of guide §4 (a = A0 + A1 b(t), b = t − t_ref or
 cos ωt) evaluated at high precision, so the cancellations that the engine must avoid in double
 precision cost nothing here; events are bracketed roots on intervals where v is monotone (split
 at the zeros of a), refined to 1e-36 of the period.
@@ -198,7 +198,7 @@ def first_onset(body, piece, frm):
 
 
 def pulled_mass(law, p):
-    """Physics.md §1: M = 2m, W = m g, ω = √(k/m), D = F; N = W(1 + cos ωt) or the triangle
+    """guide §5.1: M = 2m, W = m g, ω = √(k/m), D = F; N = W(1 + cos ωt) or the triangle
     wave 2W|1 − 2t/T| (vertex 0 at T/2). Returns (period, pieces, body, φ)."""
     mu_s, mu_d, m, k, F, g = (mpf(p[key]) for key in ("mu_s", "mu_d", "mass", "k", "force", "g"))
     W = m * g
@@ -215,7 +215,7 @@ def pulled_mass(law, p):
 
 
 def woodpecker(law, p):
-    """Physics.md §2–3.1: M = m_S, D = W_S + F_e, N_f = 2λ|F_e|, F_e = k(z0 + d0 cos ωt) or
+    """guide §5.2: M = m_S, D = W_S + F_e, N_f = 2λ|F_e|, F_e = k(z0 + d0 cos ωt) or
     k(δ0 + ζ(t)) with the triangle ζ of amplitude ζ0 and the counterpart's (ζ0, δ0); pieces cut
     at the zeros of F_e. Returns (period, pieces, body, ε = W_S/(k ζ0))."""
     num = lambda key: mpf(p[key])

@@ -100,7 +100,7 @@ pub enum Regime {
 }
 
 impl Regime {
-    /// The §7-style id.
+    /// The id, in the style of guide §14.
     pub fn id(self) -> &'static str {
         match self {
             Regime::StickSlip => "stick_slip",

@@ -1,4 +1,4 @@
-//! The pulled-pushed mass (physics.md §1): mass m pulled by F, pressed by N(t) = W(1 + cos ωt)
+//! The pulled-pushed mass (guide §5.1): mass m pulled by F, pressed by N(t) = W(1 + cos ωt)
 //! through a hanging mass m' = m on a spring; inertial mass M = 2m (eqs. 5, 14).
 //!
 //! ```text

@@ -1,4 +1,4 @@
-//! Claims 1 and 2 about the pulled mass (physics.md §1.3–1.4, §6): the stick condition (20)/(22)
+//! Claims 1 and 2 about the pulled mass (guide §7, guide §11): the stick condition (20)/(22)
 //! against the late stick, and the coefficient of D^{3/2} in Γ (28). Also picks the periodic
 //! set that claims 3 and 7 compare the two force laws on.
 //!
@@ -19,10 +19,10 @@ use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
 use crate::models::Physics;
 
-/// Agreement of a closed form with the exact integration (physics.md §4).
+/// Agreement of a closed form with the exact integration (guide §12).
 const AGREE: f64 = 1e-9;
 
-/// Set B of physics.md §5: μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m (slip-stick).
+/// Set B of guide §13: μs 0.4, μd 0.35, F 0.10 N, m 0.06 kg, k 45 N/m (slip-stick).
 pub(crate) fn set_b() -> PulledMassParams {
     PulledMassParams {
         mu_s: 0.4,

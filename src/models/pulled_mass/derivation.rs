@@ -1,4 +1,4 @@
-//! Worked substitutions of the pulled mass (physics.md §1.1, §1.3–1.4): W, ω, T, φ, then every
+//! Worked substitutions of the pulled mass (guide §5.1, guide §7): W, ω, T, φ, then every
 //! closed form of the linearized law in the order of a derivation. Values come from
 //! [`crate::models::pulled_mass::formula`]; which forms apply, from [`crate::models::pulled_mass::results`].
 
@@ -9,7 +9,7 @@ use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::applicability;
 use crate::models::pulled_mass::PulledMassParams;
 
-/// The derived parameters with a step (§7 `params` keys).
+/// The derived parameters with a step (guide §14 `params` keys).
 pub mod param {
     use crate::derivation::Param;
 
@@ -36,7 +36,7 @@ pub mod param {
     };
 }
 
-/// D ≡ μs² + 2μsμd − μd² (§1.3), written out wherever it appears.
+/// D ≡ μs² + 2μsμd − μd² (guide §7), written out wherever it appears.
 fn big_d(mu_s: &Expr, mu_d: &Expr) -> Expr {
     pow(mu_s.clone(), 2) + int(2) * mu_s.clone() * mu_d.clone() - pow(mu_d.clone(), 2)
 }
@@ -135,7 +135,7 @@ pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
         Some(c.advance_per_period),
     );
     s.push(Key::Power, f * v_avg, Some(c.power));
-    // 1 + τ'_M − √(2τ'_M² − v_M/(gTμd)) with τ'_M = 1 − τ_M, the other zero of a (§1.4).
+    // 1 + τ'_M − √(2τ'_M² − v_M/(gTμd)) with τ'_M = 1 − τ_M, the other zero of a (guide §7.5).
     s.push(
         Key::TauStickLate,
         int(2) - tau_m.clone() - sqrt(int(2) * pow(int(1) - tau_m, 2) - v_m / (g * t * mu_d)),

@@ -38,7 +38,7 @@ const fn p(k: P) -> AnyKey {
     any(k)
 }
 
-/// The pulled-mass questions (physics.md §1.3, §1.5), in sheet order.
+/// The pulled-mass questions (guide §7, guide §9), in sheet order.
 pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(p(P::TSlip)),
@@ -192,13 +192,13 @@ impl Exercise for PulledMassParams {
     }
 }
 
-/// The regime boundaries of §1.5 on φ, in the order of [`Exercise::onto_boundary`].
+/// The regime boundaries of guide §9 on φ, in the order of [`Exercise::onto_boundary`].
 const BOUNDARIES: [&str; 3] = ["φ = 1/Θ", "φ = φ_c", "φ = 2μs"];
 
 /// A set anywhere in the valid domain, for `check`: μs mostly 0.05–1.5 and a quarter
 /// log-uniform over its whole range; μd/μs uniform, or close to 1, or exactly 1, or small; m
 /// and k log-uniform over twelve decades, g 0.1–100 m/s²; φ log-uniform from its lower limit
-/// in one of the four regimes of §1.5, chosen in turn at random.
+/// in one of the four regimes of guide §9, chosen in turn at random.
 fn probe_set(rng: &mut Draws) -> PulledMassParams {
     let mu_s = if rng.unit() < 0.75 {
         rng.between(0.05, 1.5)
@@ -236,7 +236,7 @@ fn probe_set(rng: &mut Draws) -> PulledMassParams {
 }
 
 /// μs 0.25–0.8, μd/μs 0.5–1, m 20–200 g, k 10–100 N/m, and F = φW with φ inside the interval of
-/// the regime (§1.5), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
+/// the regime (guide §9), away from its ends; the same period's slip-stick keeps φ ≥ 0.3/Θ so that
 /// the motion is large enough to see.
 fn draw_set(regime: Regime, rng: &mut Draws) -> PulledMassParams {
     let mu_s = rng.between(0.25, 0.8);

@@ -1,4 +1,4 @@
-//! What the explorer page asks of the pulled mass: the regime sentence with the §1.5 inequality
+//! What the explorer page asks of the pulled mass: the regime sentence with the guide §9 inequality
 //! that decides it, the apparatus' second coordinate (the hanging mass) and the (μd, μs) map.
 
 use crate::engine::ForceLaw;
@@ -18,7 +18,7 @@ use crate::results::Applicability;
 /// Significant digits of the numbers in the regime sentence (those of the report's tables).
 const DIGITS: usize = 8;
 
-/// The §1.5 inequality that decides the pulled-mass regime, with numbers (the report's and the
+/// The guide §9 inequality that decides the pulled-mass regime, with numbers (the report's and the
 /// explorer's "why").
 pub fn regime_reason(c: &ClosedForm, mu_s: f64) -> String {
     let num = |x: f64| people(Some(x), DIGITS);

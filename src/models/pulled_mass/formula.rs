@@ -1,4 +1,4 @@
-//! Closed forms of the linearized pulled mass (physics.md §1.3–1.5), valid for 0 < φ < 2μs,
+//! Closed forms of the linearized pulled mass (guide §7 and guide §9), valid for 0 < φ < 2μs,
 //! μd ≤ μs. φ = F/W; τ is a time fraction t/T here; g in m/s², T in s.
 //!
 //! ```text
@@ -11,12 +11,12 @@ use super::quantity::Key;
 use crate::engine::IntegrationRegime;
 use crate::results::quantity::{serialize_closed_form, Value};
 
-/// D ≡ μs² + 2μsμd − μd² (dimensionless), §1.3.
+/// D ≡ μs² + 2μsμd − μd² (dimensionless), guide §7.
 pub fn big_d(mu_s: f64, mu_d: f64) -> f64 {
     mu_s * mu_s + 2.0 * mu_s * mu_d - mu_d * mu_d
 }
 
-/// Θ ≡ (μs + √D)/(2μsμd), §1.3 \[P\] (18).
+/// Θ ≡ (μs + √D)/(2μsμd), guide §7 \[P\] (18).
 pub fn theta(mu_s: f64, mu_d: f64) -> f64 {
     (mu_s + big_d(mu_s, mu_d).sqrt()) / (2.0 * mu_s * mu_d)
 }
@@ -108,7 +108,7 @@ pub fn mu_min_equal(phi: f64) -> f64 {
 
 /// Largest φ for any stick (late stick included):
 /// ```text
-/// φ_c = 4 μs μd / (2 μs + √(2D))                           [D] §1.4
+/// φ_c = 4 μs μd / (2 μs + √(2D))                           [D] guide §7.5
 /// ```
 pub fn phi_continuous(mu_s: f64, mu_d: f64) -> f64 {
     4.0 * mu_s * mu_d / (2.0 * mu_s + (2.0 * big_d(mu_s, mu_d)).sqrt())
@@ -142,7 +142,7 @@ pub fn power(force: f64, v_avg: f64) -> f64 {
 /// Late-stick time (fraction of T, in the next period), defined for 1/Θ < φ ≤ φ_c (`None`
 /// elsewhere, serialized as null):
 /// ```text
-/// τ_ST,late = 1 + τ'_M − √(2 τ'_M² − v_M/(gT μd))          [D] §1.4
+/// τ_ST,late = 1 + τ'_M − √(2 τ'_M² − v_M/(gT μd))          [D] guide §7.5
 /// ```
 pub fn tau_stick_late(phi: f64, mu_s: f64, mu_d: f64) -> Option<f64> {
     // Only where it describes the motion: beyond φ_c the root of the same expression (it comes
@@ -165,7 +165,7 @@ pub(crate) fn v_max_reduced(phi: f64, mu_s: f64, mu_d: f64) -> f64 {
 /// x_T,late = gT² [F1(½) − F1(τ_SL) + F2(1) − F2(½) + F3(τ_ST,late) − F3(1)]
 /// F1(t) = μd (t−τ'_M)³/3 − c t,   c = φ²(μs−μd)²/(16μs²μd)
 /// F2(t) = (v_M/gT) t − μd (t−τ_M)³/3
-/// F3(t) = (v_M/gT − 2μdτ'_M²) t + μd (t−1−τ'_M)³/3          [D] §1.4
+/// F3(t) = (v_M/gT − 2μdτ'_M²) t + μd (t−1−τ'_M)³/3          [D] guide §7.5
 /// ```
 pub fn advance_per_period_late(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f64) -> Option<f64> {
     let t_late = tau_stick_late(phi, mu_s, mu_d)?;
@@ -181,7 +181,7 @@ pub fn advance_per_period_late(g: f64, period: f64, phi: f64, mu_s: f64, mu_d: f
     Some(g * period * period * sum)
 }
 
-/// Regime of the linearized pulled mass (§1.5), serialized as its [`id`].
+/// Regime of the linearized pulled mass (guide §9), serialized as its [`id`].
 ///
 /// [`id`]: Regime::id
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -245,7 +245,7 @@ impl Serialize for Regime {
     }
 }
 
-/// The regime from φ, μs, μd (§1.5).
+/// The regime from φ, μs, μd (guide §9).
 pub fn regime(phi: f64, mu_s: f64, mu_d: f64) -> Regime {
     if phi > 2.0 * mu_s {
         Regime::ImmediateContinuousSlip
@@ -258,7 +258,7 @@ pub fn regime(phi: f64, mu_s: f64, mu_d: f64) -> Regime {
     }
 }
 
-/// Every closed form of §1.3–1.5 for one parameter set. Serialized as the §7 `closed_form`
+/// Every closed form of guide §7 and guide §9 for one parameter set. Serialized as the guide §14 `closed_form`
 /// object through the registry ([`super::quantity`]), which names every field.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ClosedForm {
@@ -288,7 +288,7 @@ pub struct ClosedForm {
     pub immediate_slip: bool,
     /// The same-period formulas (18)–(30) describe the motion (regime slip_stick).
     pub same_period_valid: bool,
-    /// P_late = F v̄_late, the power of the late-stick orbit (checked; not a §7 key).
+    /// P_late = F v̄_late, the power of the late-stick orbit (checked; not a JSON key (guide §14)).
     pub power_late: Option<f64>,
 }
 
@@ -471,7 +471,7 @@ mod tests {
         }
     }
 
-    /// The §7 `closed_form` keys, in order.
+    /// The guide §14 `closed_form` keys, in order.
     const SECTION_7_KEYS: &str = "phi, tau_slip, t_slip, a_slip, tau_max_speed, t_max_speed, v_max, tau_stick, t_stick, slip_duration, theta, phi_stick_max, phi_continuous, mu_min_equal, gamma, v_avg, advance_per_period, power, tau_stick_late, advance_per_period_late, v_avg_late, regime, immediate_slip, same_period_valid";
 
     #[test]

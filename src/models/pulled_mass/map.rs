@@ -10,7 +10,7 @@ use crate::models::{pulled_mass, LawKind};
 /// Periods integrated per map cell: enough to see a late stick and a settled orbit.
 pub const MAP_PERIODS: u32 = 6;
 
-/// The categories of the linearized law's map (closed forms, §1.5), in the order of
+/// The categories of the linearized law's map (closed forms, guide §9), in the order of
 /// [`linear_category`]: legend label and fill.
 pub const LINEAR_CATEGORIES: [(&str, usize); 5] = [
     ("μd > μs (not allowed)", 7),
@@ -35,7 +35,7 @@ pub fn top(phi: f64) -> f64 {
     (2.2 * phi).max(0.1)
 }
 
-/// Category of a (μd, μs) cell for the linearized law (closed form, §1.5).
+/// Category of a (μd, μs) cell for the linearized law (closed form, guide §9).
 pub fn linear_category(phi: f64, mu_s: f64, mu_d: f64) -> u8 {
     if mu_d > mu_s {
         return 0;

@@ -1,10 +1,10 @@
-//! The pulled mass of the paper's Sec. 2 (physics.md §1): a block pulled by a constant force
+//! The pulled mass of the paper's Sec. 2 (guide §5.1): a block pulled by a constant force
 //! across a table while a hanging mass on a spring presses it down with N(t) = W(1 + cos ωt).
 //! Everything about this model lives in this folder:
 //!
 //! ```text
 //! body.rs        the body and the force laws (harmonic, linearized) for the engine
-//! formula.rs     the closed forms of §1.3–1.5, one pure function per quantity
+//! formula.rs     the closed forms of guide §7 and guide §9, one pure function per quantity
 //! quantity.rs    the registry of the quantities: key, symbol, unit, equation, regimes
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! map.rs         the (μd, μs) domain maps, cell by cell (report and explorer)

@@ -9,7 +9,7 @@ use crate::models::param::{
 };
 use crate::params::G_STANDARD;
 
-/// The pulled mass of Sec. 2 (physics.md §1). Defaults: the paper's Fig. 6 set.
+/// The pulled mass of Sec. 2 (guide §5.1). Defaults: the paper's Fig. 6 set.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct PulledMassParams {

@@ -1,11 +1,11 @@
-//! The registry of the pulled mass's quantities (physics.md §1.3–1.5, §7): for each, the §7 key,
+//! The registry of the pulled mass's quantities (guide §7 and guide §9, guide §14): for each, the JSON key (guide §14),
 //! symbol, unit, equation, tag, formula, a plain line of what it is, and the regimes in which it
-//! describes the motion. The §7 keys are written here and nowhere else.
+//! describes the motion. The JSON keys (guide §14) are written here and nowhere else.
 
 use crate::models::pulled_mass::formula::Regime;
 use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
 
-/// A quantity of the pulled mass, in the order of the §7 `closed_form` object.
+/// A quantity of the pulled mass, in the order of the guide §14 `closed_form` object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Key {
     Phi,
@@ -79,7 +79,7 @@ const SLIPS: &[Regime] = &[
 ];
 /// The stick within the same period (20): (18)–(30).
 const SAME_PERIOD: &[Regime] = &[Regime::SlipStick];
-/// The stick early in the next period (§1.4).
+/// The stick early in the next period (guide §7.5).
 const LATE: &[Regime] = &[Regime::SlipStickLate];
 
 /// An entry of the table.
@@ -165,7 +165,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "a_SL",
         r"a_{SL}",
         "m/s²",
-        "§1.3",
+        "guide §7.1",
         "[D]",
         r"a_{SL} = \frac{g\varphi}{2}\left(1 - \frac{\mu_d}{\mu_s}\right)",
         "the acceleration just after the slip starts",
@@ -282,7 +282,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "φ_c",
         r"\varphi_c",
         "",
-        "§1.4",
+        "guide §7.5",
         "[D]",
         r"\varphi_c = \frac{4\mu_s\mu_d}{2\mu_s + \sqrt{2D}}",
         "the largest pull (in units of the weight) for any stick; above it the block never stops",
@@ -360,7 +360,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "τ_ST,late",
         r"\tau_{ST,late}",
         "",
-        "§1.4",
+        "guide §7.5",
         "[D]",
         r"\tau_{ST,late} = 1 + \tau'_M - \sqrt{2\tau_M'^2 - \frac{v_M}{gT\mu_d}}",
         "when the block sticks early in the next period, as a fraction of the period",
@@ -373,7 +373,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "x_T,late",
         r"x_{T,late}",
         "m",
-        "§1.4",
+        "guide §7.5",
         "[D]",
         r"x_{T,late} = gT^2\,[F_1]_{\tau_{SL}}^{1/2} + [F_2]_{1/2}^{1} + [F_3]_{1}^{\tau_{ST,late}}",
         "how far the block moves in one period when it sticks late",
@@ -386,7 +386,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "v̄_late",
         r"\bar v_{late}",
         "m/s",
-        "§1.4",
+        "guide §7.5",
         "[D]",
         r"\bar v_{late} = x_{T,late}/T",
         "the mean speed when the block sticks late",
@@ -399,7 +399,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         "regime",
         r"\text{regime}",
         "",
-        "§1.5",
+        "guide §9",
         "[D]",
         r"\text{regime}",
         "which motion the closed forms give: when, if ever, the block sticks",

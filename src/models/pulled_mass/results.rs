@@ -1,5 +1,5 @@
 //! The whole evaluation of the pulled mass: closed forms, both laws integrated exactly, and the
-//! checks of every closed form against the linearized integration (physics.md §1, §7).
+//! checks of every closed form against the linearized integration (guide §5.1, guide §14).
 
 use serde::Serialize;
 
@@ -15,7 +15,7 @@ use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::{ensure_in_range, Applicability};
 
-/// Input parameters and the derived W, T, ω, φ (keys of §7 `params`).
+/// Input parameters and the derived W, T, ω, φ (keys of guide §14 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ParamsOut {
     #[serde(flatten)]
@@ -43,7 +43,7 @@ impl ParamsOut {
     }
 }
 
-/// The §7 object for the pulled mass.
+/// The guide §14 object for the pulled mass.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Evaluation {
     pub model: &'static str,
@@ -186,7 +186,7 @@ fn in_range<const N: usize>(
     )
 }
 
-/// Which closed forms of §1.3–1.4 describe the motion in the regime of `c`: those whose
+/// Which closed forms of guide §7 describe the motion in the regime of `c`: those whose
 /// registry entry names the regime, less the speed maximum of (17) when it falls outside the
 /// first period.
 pub fn applicability(c: &ClosedForm) -> Vec<Applicability> {
@@ -323,7 +323,7 @@ fn checks(p: &PulledMassParams, c: &ClosedForm, run: &Run, summary: &Summary) ->
     out
 }
 
-/// Why the regime is undecidable: φ within [`BOUNDARY_BAND`] of a boundary of §1.5.
+/// Why the regime is undecidable: φ within [`BOUNDARY_BAND`] of a boundary of guide §9.
 fn on_boundary(p: &PulledMassParams, regime: Regime) -> Option<String> {
     let phi = p.phi();
     [1.0 - BOUNDARY_BAND, 1.0 + BOUNDARY_BAND]
@@ -363,7 +363,7 @@ fn push_steady(
         (power.0, power.1, dissipated),
     ] {
         // No widened tolerance: with the force law written about its vertex, a slip of
-        // relative length φ/μs is measured to rounding of its own size (physics.md §4).
+        // relative length φ/μs is measured to rounding of its own size (guide §12).
         out.push(Check::measured(key, closed, numeric).unobservable_if(unsettled.clone()));
     }
 }

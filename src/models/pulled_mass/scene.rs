@@ -1,4 +1,4 @@
-//! Figures of the pulled mass (physics.md §1): motion under both laws, the competing forces,
+//! Figures of the pulled mass (guide §5.1): motion under both laws, the competing forces,
 //! the (μd, μs) domain of Fig. 9, the long run of Fig. 11 and the comparison of Fig. 12.
 
 use rayon::prelude::*;

@@ -92,7 +92,7 @@ pub(crate) fn text(e: &Evaluation) -> String {
     out
 }
 
-/// The inequality of §1.5 that decides the regime, with its numbers.
+/// The inequality of guide §9 that decides the regime, with its numbers.
 fn regime_reason(e: &Evaluation) -> String {
     let c = &e.closed_form;
     let (phi, two_mu_s) = (

@@ -6,7 +6,7 @@ use super::quantity::Key as P;
 use crate::derivation::StepKey;
 use crate::handout::physics::Note::{self, Label, Sentence};
 
-/// (LaTeX, sentence) lines of the pulled mass: physics.md §1.1–1.2.
+/// (LaTeX, sentence) lines of the pulled mass: guide §5.1.
 pub(crate) const EQUATION_OF_MOTION: &[(&str, &str)] = &[
     (
         r"(m + m')\,\ddot x = 2m\,\ddot x = F - \mu_d\,N(t) \quad (\dot x > 0)",

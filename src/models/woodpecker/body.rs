@@ -1,8 +1,8 @@
-//! The falling woodpecker's sleeve (physics.md §2–3): y positive downward, M = m_S,
+//! The falling woodpecker's sleeve (guide §5.2 and guide §8): y positive downward, M = m_S,
 //! D = W_S + F_e(t), N_f = 2λ|F_e(t)|, with the spring force F_e = k z(t) on the sleeve.
 //!
 //! ```text
-//! harmonic:  z(t) = z0 + d0 cos ωt                                           §2
+//! harmonic:  z(t) = z0 + d0 cos ωt                                           guide §5.2
 //! linear:    z(t) = δ0 + ζ(t),  ζ = ζ0 (1 − t/τ) on [0, 2τ], ζ0 (t/τ − 3) on [2τ, 4τ]  (37)
 //! ```
 //! The zero crossings of F_e, where |F_e| has a kink, are breakpoints of the force law.

@@ -1,4 +1,4 @@
-//! Claims 4 and 6 about the linearized woodpecker (physics.md §3.3–3.5, §6): the order of the
+//! Claims 4 and 6 about the linearized woodpecker (guide §8.3 to guide §8.5, guide §11): the order of the
 //! critical coefficients (51)/(65), and the independence of Γ from η.
 //!
 //! ```text

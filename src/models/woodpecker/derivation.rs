@@ -1,4 +1,4 @@
-//! Worked substitutions of the linearized woodpecker (physics.md §2, §3.1–3.6): W_S, ω, T, λ,
+//! Worked substitutions of the linearized woodpecker (guide §5.2 and guide §8): W_S, ω, T, λ,
 //! the linear amplitudes, the dimensionless groups, phases I and II (one function for both,
 //! by the swap u^(−) ↔ u^(+), η ↔ η'), and the whole period. Values come from
 //! [`crate::models::woodpecker::formula`]; which forms apply, from [`crate::models::woodpecker::results`].
@@ -10,7 +10,7 @@ use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
 use crate::models::woodpecker::{OmegaMode, WoodpeckerParams};
 
-/// The derived parameters with a step (§7 `params` keys).
+/// The derived parameters with a step (guide §14 `params` keys).
 pub mod param {
     use crate::derivation::Param;
 
@@ -18,28 +18,28 @@ pub mod param {
     pub const W_S: Param = Param {
         id: "W_S",
         tex: "W_S",
-        equation: "§2",
+        equation: "guide §5.2",
         unit: "N",
     };
     /// ω of the `--omega` mode.
     pub const OMEGA: Param = Param {
         id: "omega",
         tex: r"\omega",
-        equation: "§2",
+        equation: "guide §5.2",
         unit: "rad/s",
     };
     /// T = 2π/ω.
     pub const T: Param = Param {
         id: "T",
         tex: "T",
-        equation: "§2",
+        equation: "guide §5.2",
         unit: "s",
     };
     /// λ = l/h.
     pub const LAMBDA: Param = Param {
         id: "lambda",
         tex: r"\lambda",
-        equation: "§2",
+        equation: "guide §5.2",
         unit: "",
     };
 }
@@ -227,7 +227,7 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
     s.steps
 }
 
-/// The steps of one phase (§3.3, or §3.4 by the swap); returns the leaf of its Γ.
+/// The steps of one phase (guide §8.3, or guide §8.4 by the swap); returns the leaf of its Γ.
 fn phase(
     s: &mut Steps<Key>,
     names: &PhaseNames,
@@ -288,7 +288,7 @@ fn phase(
         int(1) / two_lambda() * (numerator / (pow(u.clone(), 2) * pow(h.clone(), 2) + int(1))),
         v.mu_d_min,
     );
-    // §3.6: x₊ = [B + √(B² − A U²)]/A with A = 1 + 2h²U², B = U ± 1 + 2hU²; when the root is
+    // guide §8.6: x₊ = [B + √(B² − A U²)]/A with A = 1 + 2h²U², B = U ± 1 + 2hU²; when the root is
     // imaginary the threshold is 1/h alone.
     let a = int(1) + int(2) * pow(h.clone(), 2) * pow(u.clone(), 2);
     let b = sigma(u.clone()) + int(2) * h.clone() * pow(u.clone(), 2);

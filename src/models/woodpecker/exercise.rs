@@ -49,7 +49,7 @@ const fn w(k: W) -> AnyKey {
     any(k)
 }
 
-/// The woodpecker questions (physics.md §3.3–3.6), in sheet order.
+/// The woodpecker questions (guide §8.3 to guide §8.6), in sheet order.
 pub const QUESTIONS: &[Question] = &[
     Question {
         kind: Kind::ClosedForm(w(W::TSlip1)),

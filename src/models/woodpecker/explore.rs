@@ -27,7 +27,7 @@ const CATEGORIES: [(&str, usize); REGIMES.len()] = {
     out
 };
 
-/// The inequalities that decide the regime of the closed forms (§3.6, (38), (39)), with numbers.
+/// The inequalities that decide the regime of the closed forms (guide §8.6, (38), (39)), with numbers.
 fn regime_reason(e: &Evaluation) -> String {
     let c = &e.closed_form;
     let num = |x: Option<f64>| people(x, DIGITS);

@@ -1,4 +1,4 @@
-//! Closed forms of the linearized falling woodpecker (physics.md §3): the counterpart (ζ0, δ0) of the
+//! Closed forms of the linearized falling woodpecker (guide §8): the counterpart (ζ0, δ0) of the
 //! harmonic spring coordinate, the slip conditions (38)–(39), one pure function per quantity of
 //! phases I and II (40)–(71), the exact halt boundaries and the periodic orbit from the lobe
 //! engine ([`super::lobe`]). SI units: s, m, m/s, m/s², N, N/m, W.
@@ -34,7 +34,7 @@ use super::quantity::Key;
 use crate::results::quantity::{serialize_closed_form, Value};
 
 // ---------------------------------------------------------------------------------------------
-// Counterpart of the harmonic law (§3.1)
+// Counterpart of the harmonic law (guide §5.2)
 
 /// How the triangle wave (ζ0, δ0) is matched to the harmonic spring coordinate z0 + d0 cos ωt.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -67,7 +67,7 @@ impl Counterpart {
     }
 }
 
-/// (ζ0, δ0) in m of the linear counterpart of z(t) = z0 + d0 cos ωt (§3.1):
+/// (ζ0, δ0) in m of the linear counterpart of z(t) = z0 + d0 cos ωt (guide §5.2):
 ///
 /// ```text
 /// extremes:  ζ0 = d0,                  δ0 = z0
@@ -111,9 +111,9 @@ fn finite(x: f64) -> Option<f64> {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Inputs and dimensionless groups (§3.1)
+// Inputs and dimensionless groups (guide §8.1)
 
-/// Parameters of the linearized woodpecker (§3.1). The friction coefficients enter only as λμ.
+/// Parameters of the linearized woodpecker (guide §5.2). The friction coefficients enter only as λμ.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LinearWoodpecker {
     /// Static friction coefficient μs.
@@ -155,7 +155,7 @@ pub fn u_plus(lambda: f64, mu: f64) -> f64 {
 
 /// Height of the negative F_e lobe in units of W_S (dimensionless):
 /// ```text
-/// η = k (ζ0 − δ0)/W_S = (1 − r)/ε                                                   [P] §3.1
+/// η = k (ζ0 − δ0)/W_S = (1 − r)/ε                                                   [P] guide §8.1
 /// ```
 pub fn eta(k: f64, zeta0: f64, delta0: f64, w_s: f64) -> Option<f64> {
     div(k * (zeta0 - delta0), w_s)
@@ -163,7 +163,7 @@ pub fn eta(k: f64, zeta0: f64, delta0: f64, w_s: f64) -> Option<f64> {
 
 /// Height of the positive F_e lobe in units of W_S (dimensionless):
 /// ```text
-/// η' = k (ζ0 + δ0)/W_S = (1 + r)/ε                                                  [P] §3.1
+/// η' = k (ζ0 + δ0)/W_S = (1 + r)/ε                                                  [P] guide §8.1
 /// ```
 pub fn eta_prime(k: f64, zeta0: f64, delta0: f64, w_s: f64) -> Option<f64> {
     div(k * (zeta0 + delta0), w_s)
@@ -171,13 +171,13 @@ pub fn eta_prime(k: f64, zeta0: f64, delta0: f64, w_s: f64) -> Option<f64> {
 
 /// Time for |F_e| to change by W_S, the lobe engine's time unit (s):
 /// ```text
-/// τε = τ W_S/(k ζ0)                                                                  [D] §3.6
+/// τε = τ W_S/(k ζ0)                                                                  [D] guide §8.6
 /// ```
 pub fn time_unit(tau: f64, w_s: f64, k: f64, zeta0: f64) -> Option<f64> {
     div(tau * w_s, k * zeta0)
 }
 
-/// The friction factors and lobe heights of §3.1, oriented for phase I. [`Groups::swapped`]
+/// The friction factors and lobe heights of guide §8.1, oriented for phase I. [`Groups::swapped`]
 /// gives the orientation of phase II (u^(−) ↔ u^(+), η ↔ η').
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Groups {
@@ -207,7 +207,7 @@ impl Groups {
         }
     }
 
-    /// The paper's rule "phase II = phase I with u^(−) ↔ u^(+), η ↔ η'" (§3.4).
+    /// The paper's rule "phase II = phase I with u^(−) ↔ u^(+), η ↔ η'" (guide §8.4).
     pub fn swapped(&self) -> Self {
         Groups {
             u_s_minus: self.u_s_plus,
@@ -222,7 +222,7 @@ impl Groups {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Slip conditions (§3.2)
+// Slip conditions (guide §8.2)
 
 /// Immediate slip at t = 0 (the top of the positive lobe), dimensionless test:
 /// ```text
@@ -241,13 +241,13 @@ pub fn never_slips(u_s_minus: f64, k: f64, zeta0: f64, delta0: f64, w_s: f64) ->
     delta0 > zeta0 && u_s_minus * k * (delta0 - zeta0) >= w_s
 }
 
-/// The sleeve can be held somewhere in the negative lobe:  u_s^(+) η ≥ 1            \[D\] §3.2
+/// The sleeve can be held somewhere in the negative lobe:  u_s^(+) η ≥ 1            \[D\] guide §8.2
 pub fn held_in_negative_lobe(u_s_plus: f64, eta: f64) -> bool {
     u_s_plus * eta >= 1.0
 }
 
 // ---------------------------------------------------------------------------------------------
-// One phase (§3.3; §3.4 by the swap)
+// One phase (guide §8.3; guide §8.4 by the swap)
 
 /// Zero of F_e in phase I (s):   t0^(I) = τ (1 + δ0/ζ0)                             \[P\] (40)
 pub fn t_zero_1(tau: f64, zeta0: f64, delta0: f64) -> Option<f64> {
@@ -356,7 +356,7 @@ pub fn distance(g: f64, tau: f64, w_s: f64, k: f64, zeta0: f64, gamma: f64) -> O
 /// ```text
 /// v̄^(I) = y^(I)/(Δ^(I)(S^(I) + 1)) = g τ W_S u_s^(−) Γ^(I)/(6 k ζ0 (S^(I)+1))      [P] (53)
 /// ```
-/// (normalization of the printed form uncertain, physics.md; phase II by the swap \[D\]).
+/// (normalization of the printed form uncertain, guide §8.3; phase II by the swap \[D\]).
 pub fn v_avg_slip(distance: f64, delta: f64, s: f64) -> Option<f64> {
     div(distance, delta * (s + 1.0))
 }
@@ -480,7 +480,7 @@ impl SlipKinematics {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Evaluation of every closed form (§7 keys)
+// Evaluation of every closed form (JSON keys (guide §14))
 
 /// All closed forms of one phase (SI; dimensionless for s, mu_*, gamma). `None` where the
 /// expression is undefined.
@@ -535,7 +535,7 @@ pub fn phase_closed_form(p: &LinearWoodpecker, gr: &Groups, t0: Option<f64>) -> 
     }
 }
 
-/// The closed forms of the linearized woodpecker, serialized as the §7 `closed_form` object
+/// The closed forms of the linearized woodpecker, serialized as the guide §14 `closed_form` object
 /// through the registry ([`super::quantity`]), which names every field. Suffix `_1` = phase I,
 /// `_2` = phase II. `None` (JSON null) where the expression is undefined; formulas are evaluated
 /// even outside the regime in which they describe the motion.
@@ -584,14 +584,14 @@ pub struct WoodpeckerClosedForm {
     pub regime: OrbitRegime,
     pub orbit_v_avg: Option<f64>,
     pub orbit_distance_per_period: Option<f64>,
-    /// Mean speed of slip I (53) and its phase-II analogue (m/s); not a §7 key.
+    /// Mean speed of slip I (53) and its phase-II analogue (m/s); not a JSON key (guide §14).
     pub v_avg_slip_1: Option<f64>,
     pub v_avg_slip_2: Option<f64>,
     /// Where the lobe engine of each phase halts (`None`: no halt, or the slip cannot start from
-    /// rest in that phase); not a §7 key.
+    /// rest in that phase); not a JSON key (guide §14).
     pub halt_1: Option<HaltKind>,
     pub halt_2: Option<HaltKind>,
-    /// The periodic orbit (SI) for checks against the integrator; not a §7 key.
+    /// The periodic orbit (SI) for checks against the integrator; not a JSON key (guide §14).
     pub orbit: Option<Orbit>,
 }
 
@@ -656,7 +656,7 @@ impl Serialize for WoodpeckerClosedForm {
     }
 }
 
-/// Evaluates every closed form of §3.2–3.6 for `p`.
+/// Evaluates every closed form of guide §8 for `p`.
 pub fn evaluate(p: &LinearWoodpecker) -> WoodpeckerClosedForm {
     let gr = Groups::new(p);
     let t0_1 = t_zero_1(p.tau_quarter, p.zeta0, p.delta0);
@@ -724,7 +724,7 @@ pub fn evaluate(p: &LinearWoodpecker) -> WoodpeckerClosedForm {
     }
 }
 
-/// Closed-form domain (§3.1): 0 ≤ δ0 < ζ0, u_s^(−) > 0, μd ≤ μs; plus k, W_S, ζ0, τ > 0 so that
+/// Closed-form domain (guide §8): 0 ≤ δ0 < ζ0, u_s^(−) > 0, μd ≤ μs; plus k, W_S, ζ0, τ > 0 so that
 /// the lobes and the time unit exist.
 pub fn in_closed_form_domain(p: &LinearWoodpecker) -> bool {
     let positive = [p.k, p.w_s, p.zeta0, p.tau_quarter, p.lambda, p.g]
@@ -736,7 +736,7 @@ pub fn in_closed_form_domain(p: &LinearWoodpecker) -> bool {
         && p.mu_d <= p.mu_s
 }
 
-/// The paper's standard regime (§3.5): 0 ≤ δ0 < ζ0, u_s^(−) > 0, μd ≤ μs, not immediate,
+/// The paper's standard regime (guide §8.5): 0 ≤ δ0 < ζ0, u_s^(−) > 0, μd ≤ μs, not immediate,
 /// t_SL^(I) ≥ 0, t_ST^(I) ≤ 2τ, u_d^(−) > 0, t_ST^(II) ≤ 4τ.
 fn paper_regime_valid(
     p: &LinearWoodpecker,
@@ -755,7 +755,7 @@ fn paper_regime_valid(
 }
 
 // ---------------------------------------------------------------------------------------------
-// Periodic orbit (§3.6)
+// Periodic orbit (guide §8.6)
 
 /// The lobes met by the slip of a phase, from its oriented groups (phase II: `gr.swapped()`).
 fn phase_lobes(
@@ -777,7 +777,7 @@ fn phase_lobes(
     })
 }
 
-/// Orbit selection from the initial state (stuck at t = 0), §3.6. Immediate slip (38) makes the
+/// Orbit selection from the initial state (stuck at t = 0), guide §8.6. Immediate slip (38) makes the
 /// first period a transient: it slips at t = 0 with less speed than the phase-II orbit slip at
 /// the same instant (same acceleration while both slip), so it ends stuck in the negative lobe if
 /// that slip does, and the steady orbit starts from the ordinary phase-II slip.
@@ -810,7 +810,7 @@ mod tests {
     use std::f64::consts::PI;
 
     const G: f64 = 9.81;
-    /// λ = l/h of the paper's toy (§2).
+    /// λ = l/h of the paper's toy (guide §5.2).
     const LEVER: f64 = 16.0 / 7.0;
     /// Worked numbers are printed with 10 significant digits.
     const REL: f64 = 1e-9;
@@ -890,7 +890,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         Regime(OrbitRegime),
     }
 
-    /// The computed value for a key of worked-numbers.txt: a §7 key through the registry, the
+    /// The computed value for a key of worked-numbers.txt: a JSON key (guide §14) through the registry, the
     /// file's own names directly; panics on an unknown key so that no worked number is skipped
     /// silently.
     fn computed(cf: &WoodpeckerClosedForm, p: &LinearWoodpecker, key: &str) -> Pair {
@@ -1150,7 +1150,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
 
     #[test]
     fn spec_table_values_of_section_5_hold() {
-        // §5: (71) does not depend on δ0, so `extremes` reproduces the `zeros` v̄ though it is
+        // guide §13: (71) does not depend on δ0, so `extremes` reproduces the `zeros` v̄ though it is
         // not valid there (t_ST^(I) = 0.08928014 > T/2 = 0.08311873).
         let p = linear(&FIG15, LEVER, Counterpart::Extremes);
         let cf = evaluate(&p);
@@ -1390,7 +1390,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         assert!(slip.t_halt > p.period());
     }
 
-    /// The §7 `closed_form` keys, in order.
+    /// The guide §14 `closed_form` keys, in order.
     const SECTION_7_KEYS: &str = "zeta0, delta0, tau_quarter, u_s_minus, u_s_plus, u_d_minus, u_d_plus, eta, eta_prime, immediate_slip, t0_1, delta_1, t_slip_1, a_slip_1, t_max_speed_1, v_max_1, s_1, t_stick_1, mu_d_min_1, mu_d_halt_1, gamma_1, distance_1, t0_2, delta_2, t_slip_2, a_slip_2, t_max_speed_2, v_max_2, s_2, t_stick_2, mu_d_min_2, mu_d_halt_2, gamma_2, distance_2, gamma, distance_per_period, v_avg, power_weight, paper_regime_valid, regime, orbit_v_avg, orbit_distance_per_period";
 
     #[test]
@@ -1407,7 +1407,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         assert!(object["v_max_2"].is_null() && object["orbit_v_avg"].is_null());
         assert_eq!(object["regime"], "continuous_or_multiperiod");
         assert_eq!(object["immediate_slip"], false);
-        // The object is written in the registry's order, which is the order of §7.
+        // The object is written in the registry's order, which is the order of guide §14.
         serialized_keys_are_the_registry::<Key>(&json);
         let registry: Vec<&str> = Key::ENTRIES
             .iter()
@@ -1423,7 +1423,7 @@ u_s_minus=0.3 | u_s_plus=2.3 | u_d_minus=-0.336 | u_d_plus=1.664 | eta=0.8622154
         assert!(positions.windows(2).all(|w| w[0] < w[1]), "{text}");
     }
 
-    /// Every numeric §7 value (for the no-NaN check).
+    /// Every numeric guide §14 value (for the no-NaN check).
     fn numbers(cf: &WoodpeckerClosedForm) -> [Option<f64>; 39] {
         [
             cf.zeta0,

@@ -1,10 +1,10 @@
-//! Claim 5 (physics.md §3.6, §6): μd ≥ μd,MIN^(I) is sufficient, not necessary, for the
+//! Claim 5 (guide §8.6, guide §11): μd ≥ μd,MIN^(I) is sufficient, not necessary, for the
 //! intermediate halt. (51) asks the phase-I slip to stop before T/2; the sleeve may still stop
 //! after T/2, on the falling flank of the negative F_e lobe, before the phase-II slip starts.
 //!
 //! ```text
 //! (51)  t_ST^(I) ≤ T/2  ⇔  μd ≥ μd,MIN^(I)          (for u_d^(+) ≥ 1/η)
-//! §3.6  stop before t_SL^(II)  ⇔  μd ≥ μd,HALT^(I) = (max(x₊, 1/η) − 1)/(2λ) ≤ μd,MIN^(I)
+//! guide §8.6  stop before t_SL^(II)  ⇔  μd ≥ μd,HALT^(I) = (max(x₊, 1/η) − 1)/(2λ) ≤ μd,MIN^(I)
 //! ```
 //! A μd between the two is integrated exactly and its first slip is followed to its stop.
 

@@ -1,4 +1,4 @@
-//! Claim 8: which woodpecker force law reproduces the paper's figures (physics.md §2, §6). The
+//! Claim 8: which woodpecker force law reproduces the paper's figures (guide §5.2, guide §11). The
 //! printed contact force N = |F_e| (lever ratio λ = 1) against λ = l/h, the z0 at which the
 //! intermediate halt of Fig. 15 disappears (Fig. 16), and the mean speed of the Fig. 26 set.
 //!

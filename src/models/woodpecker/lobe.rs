@@ -1,4 +1,4 @@
-//! The lobe engine of physics.md §3.6 \[D\]: one slip of the linearized woodpecker sleeve, from rest,
+//! The lobe engine of guide §8.6 \[D\]: one slip of the linearized woodpecker sleeve, from rest,
 //! through the chain of triangular lobes of |F_e|, in closed form and in dimensionless units.
 //!
 //! ```text
@@ -22,7 +22,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::engine::IntegrationRegime;
 
-/// The flank on which a slip of the lobe engine halts (§3.6 steps 2–5).
+/// The flank on which a slip of the lobe engine halts (guide §8.6 steps 2–5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum HaltKind {
     /// Rising flank of lobe B: the paper's stick, (49)/(60).
@@ -88,7 +88,7 @@ enum Slope {
     Falling,
 }
 
-/// Runs one slip from rest through the lobes (§3.6, steps 1–5).
+/// Runs one slip from rest through the lobes (guide §8.6, steps 1–5).
 ///
 /// ```text
 /// θ_SL = −1/U,   V0 = v(0) = (2U − u_A)/(2U²),   Y0 = y(0) = (3U − 2u_A)/(6U³)
@@ -212,7 +212,7 @@ fn falling_flank(s: State, u: f64, h: f64) -> FlankEnd {
 /// ```
 /// with σ the ±1 of u_B = 2λμd + σ (phase I: +1, phase II: −1). Equivalent to
 /// 2 v_ext(end of the rising flank) ≤ v_M. When B² < A U² the quadratic has no real root and every
-/// u_B ≥ 1/h_B halts (x₋ < 1/h_B always, so the halt set is the one interval).      \[D\] §3.6
+/// u_B ≥ 1/h_B halts (x₋ < 1/h_B always, so the halt set is the one interval).      \[D\] guide §8.6
 pub fn halt_threshold(u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
     let a = 1.0 + 2.0 * h_b * h_b * u_s * u_s;
     let b = u_s + sigma + 2.0 * h_b * u_s * u_s;
@@ -230,8 +230,8 @@ pub fn halt_threshold(u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
 /// Exact least μd for a halt in lobe B (dimensionless):
 /// ```text
 /// μd,HALT = (max(x₊, 1/h_B) − σ)/(2λ)
-///   phase I:  halt before the phase-II slip,      (max(x₊, 1/η) − 1)/(2λ)            [D] §3.6
-///   phase II: halt before the next phase-I slip,  (max(x'₊, 1/η') + 1)/(2λ)          [D] §3.6
+///   phase I:  halt before the phase-II slip,      (max(x₊, 1/η) − 1)/(2λ)            [D] guide §8.6
+///   phase II: halt before the next phase-I slip,  (max(x'₊, 1/η') + 1)/(2λ)          [D] guide §8.6
 /// ```
 pub fn mu_d_halt(lambda: f64, u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
     let mu = (halt_threshold(u_s, h_b, sigma)? - sigma) / (2.0 * lambda);
@@ -239,7 +239,7 @@ pub fn mu_d_halt(lambda: f64, u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
 }
 
 // ---------------------------------------------------------------------------------------------
-// The periodic orbit in SI units (§3.6, orbit selection)
+// The periodic orbit in SI units (guide §8.6, orbit selection)
 
 /// Half period in which a slip starts: I (F_e decreasing) or II (F_e increasing).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -268,7 +268,7 @@ impl Phase {
     }
 }
 
-/// Regime of the periodic orbit of the linear model (§3.6, orbit selection), serialized as its
+/// Regime of the periodic orbit of the linear model (guide §8.6, orbit selection), serialized as its
 /// [`id`].
 ///
 /// [`id`]: OrbitRegime::id
@@ -311,7 +311,7 @@ impl OrbitRegime {
         }
     }
 
-    /// The identifier used in JSON and reports (physics.md §3.6): that of the integrated
+    /// The identifier used in JSON and reports (guide §8.6): that of the integrated
     /// regime when the orbit is one.
     pub const fn id(self) -> &'static str {
         match (self, self.integrated()) {
@@ -356,7 +356,7 @@ pub struct OrbitSlip {
     pub distance: f64,
 }
 
-/// The period-T orbit of the linear model (§3.6), SI.
+/// The period-T orbit of the linear model (guide §8.6), SI.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Orbit {
     /// Slips in order of their slip time within the period (empty for `no_slip`).
@@ -428,7 +428,7 @@ impl PhaseLobes {
     }
 }
 
-/// Orbit selection (§3.6) from the halting slips of the two phases, `[phase I, phase II]`
+/// Orbit selection (guide §8.6) from the halting slips of the two phases, `[phase I, phase II]`
 /// (`None`: that slip cannot start from rest or never halts), starting with the slip of `first`.
 ///
 /// After a halt in lobe B the next slip is the ordinary slip of the other phase (at a halt a < 0,

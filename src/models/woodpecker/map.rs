@@ -102,7 +102,7 @@ pub fn regime_index(category: Category) -> u8 {
     i as u8
 }
 
-/// Regime of the linear orbit from the closed forms (§3.6); outside their domain, from the exact
+/// Regime of the linear orbit from the closed forms (guide §8.6); outside their domain, from the exact
 /// integration of the linear law, so that no part of the map is left without a regime.
 pub fn linear_cell(p: &WoodpeckerParams, mu_d: f64, z0: f64) -> u8 {
     let q = WoodpeckerParams { mu_d, z0, ..*p };

@@ -1,10 +1,10 @@
-//! The falling woodpecker of the paper's Sec. 3 (physics.md §2–3): a sleeve that slides and
+//! The falling woodpecker of the paper's Sec. 3 (guide §5.2 and guide §8): a sleeve that slides and
 //! sticks down a pole while the bird oscillates on its spring. Everything about this model
 //! lives in this folder:
 //!
 //! ```text
 //! body.rs        the sleeve as a body and the force laws (harmonic, linearized) for the engine
-//! formula.rs     the closed forms of §3, one pure function per quantity
+//! formula.rs     the closed forms of guide §8, one pure function per quantity
 //! lobe.rs        the lobe engine: the periodic orbit of the linearized law in every regime
 //! map.rs         the regime maps in the (μd, z0) plane, cell by cell (report and explorer)
 //! explore.rs     what the explorer page asks of the model (regime sentence, apparatus)

@@ -11,7 +11,7 @@ use crate::models::param::{
 use crate::models::woodpecker::formula::Counterpart;
 use crate::params::G_STANDARD;
 
-/// How ω of the harmonic woodpecker is defined (physics.md §2; regimes do not depend on it).
+/// How ω of the harmonic woodpecker is defined (guide §5.2; regimes do not depend on it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum OmegaMode {
@@ -40,7 +40,7 @@ impl OmegaMode {
     }
 }
 
-/// The falling woodpecker of Sec. 3 (physics.md §2–3). Defaults: the paper's Fig. 15 set.
+/// The falling woodpecker of Sec. 3 (guide §5.2 and guide §8). Defaults: the paper's Fig. 15 set.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
 pub struct WoodpeckerParams {
@@ -70,7 +70,7 @@ pub struct WoodpeckerParams {
     /// `omega` is the value in rad/s).
     #[serde(rename(serialize = "omega_mode", deserialize = "omega"))]
     pub omega: OmegaMode,
-    /// Linear counterpart of the harmonic spring coordinate (§3.1).
+    /// Linear counterpart of the harmonic spring coordinate (guide §5.2).
     pub counterpart: Counterpart,
 }
 
@@ -258,7 +258,7 @@ pub const CHOICES: &[ChoiceSpec<WoodpeckerParams>] = &[
     ChoiceSpec {
         key: "counterpart",
         help: "Linear counterpart of the harmonic spring coordinate: extremes, zeros or tangent \
-               (§3.1)",
+               (guide §5.2)",
         values: &["extremes", "zeros", "tangent"],
         get: |p| p.counterpart.id(),
         set: |p, id| {

@@ -1,15 +1,15 @@
-//! The registry of the woodpecker's quantities (physics.md §3, §7): for each, the §7 key,
+//! The registry of the woodpecker's quantities (guide §8, guide §14): for each, the JSON key (guide §14),
 //! symbol, unit, equation, tag, formula, a plain line of what it is, and where it describes the
-//! motion ([`Scope`]). The §7 keys are written here and nowhere else; the orbit checks of the
+//! motion ([`Scope`]). The JSON keys (guide §14) are written here and nowhere else; the orbit checks of the
 //! lobe engine, numbered by slip at run time, are named by [`OrbitQuantity`].
 
 use crate::models::woodpecker::lobe::Phase;
 use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
 
-/// The section of the lobe engine (§3.6): the equation of its orbit quantities and regimes.
-pub const ORBIT: &str = "§3.6";
+/// The section of the lobe engine (guide §8.6): the equation of its orbit quantities.
+pub const ORBIT: &str = "guide §8.6";
 
-/// A quantity of the woodpecker, in the order of the §7 `closed_form` object (suffix 1: phase I,
+/// A quantity of the woodpecker, in the order of the guide §14 `closed_form` object (suffix 1: phase I,
 /// 2: phase II).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Key {
@@ -109,12 +109,12 @@ pub enum Scope {
     /// Set by the parameters alone (amplitudes, friction factors, thresholds, times of the
     /// force, flags): no feature of the motion to compare with.
     Parameters,
-    /// The slip of this phase that starts from rest on the periodic orbit (§3.3, §3.4), as far
+    /// The slip of this phase that starts from rest on the periodic orbit (guide §8.3, guide §8.4), as far
     /// as it runs as the paper assumes (speed maximum and stick in the next lobe).
     Slip(Phase),
-    /// The paper's standard regime, both sticks within their half periods (§3.5).
+    /// The paper's standard regime, both sticks within their half periods (guide §8.5).
     PaperRegime,
-    /// The periodic orbit of the lobe engine, in every regime that has one (§3.6).
+    /// The periodic orbit of the lobe engine, in every regime that has one (guide §8.6).
     Orbit,
 }
 
@@ -175,7 +175,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "ζ0",
         r"\zeta_0",
         "m",
-        "§3.1",
+        "guide §5.2",
         "[D]",
         r"\zeta_0 \quad \text{(counterpart of } d_0)",
         "the amplitude of the linear law's spring coordinate",
@@ -188,7 +188,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "δ0",
         r"\delta_0",
         "m",
-        "§3.1",
+        "guide §5.2",
         "[D]",
         r"\delta_0 \quad \text{(counterpart of } z_0)",
         "the offset of the linear law's spring coordinate",
@@ -201,7 +201,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "τ = T/4",
         r"\tau",
         "s",
-        "§3.1",
+        "guide §5.2",
         "[P]",
         r"\tau = T/4",
         "a quarter of the period",
@@ -266,7 +266,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "η",
         r"\eta",
         "",
-        "§3.1",
+        "guide §8.1",
         "[D]",
         r"\eta = k(\zeta_0 - \delta_0)/W_S",
         "the height of the negative lobe of the spring force, in sleeve weights",
@@ -279,7 +279,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "η'",
         r"\eta'",
         "",
-        "§3.1",
+        "guide §8.1",
         "[D]",
         r"\eta' = k(\zeta_0 + \delta_0)/W_S",
         "the height of the positive lobe of the spring force, in sleeve weights",
@@ -656,7 +656,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "P_W",
         r"P_W",
         "W",
-        "§3.5",
+        "guide §8.5",
         "[P]",
         r"P_W = W_S\,\bar v",
         "the mean power of the sleeve's weight (not the friction dissipation)",
@@ -669,7 +669,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "paper's regime",
         r"\text{paper's regime}",
         "",
-        "§3.5",
+        "guide §8.5",
         "[D]",
         r"t_{ST}^{(I)} \le T/2,\quad t_{ST}^{(II)} \le T",
         "whether both sticks fall within their half periods, so that (68)–(71) describe the motion",
@@ -682,7 +682,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         "regime",
         r"\text{regime}",
         "",
-        ORBIT,
+        "guide §10",
         "[D]",
         r"\text{regime}",
         "which periodic motion the closed forms give: how many slips and sticks per period",
@@ -724,7 +724,7 @@ impl Registry for Key {
     }
 }
 
-/// A quantity of the lobe-engine orbit checked against the integration (§3.6) that no closed
+/// A quantity of the lobe-engine orbit checked against the integration (guide §8.6) that no closed
 /// form of the paper gives, numbered by the slip of the orbit (from 1) and its speed maximum
 /// (from 1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -1,5 +1,5 @@
 //! The whole evaluation of the woodpecker: closed forms of the linearized law, both laws
-//! integrated exactly, which formulas describe the motion, and the checks (physics.md §3, §7).
+//! integrated exactly, which formulas describe the motion, and the checks (guide §8, guide §14).
 
 use serde::Serialize;
 
@@ -21,7 +21,7 @@ use crate::results::quantity::Registry;
 use crate::results::summary::{Power, Summary};
 use crate::results::{ensure_in_range, Applicability};
 
-/// Input parameters and the derived quantities (keys of §7 `params`).
+/// Input parameters and the derived quantities (keys of guide §14 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ParamsOut {
     #[serde(flatten)]
@@ -54,7 +54,7 @@ impl ParamsOut {
     }
 }
 
-/// The §7 object for the woodpecker.
+/// The guide §14 object for the woodpecker.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Evaluation {
     pub model: &'static str,
@@ -312,7 +312,7 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
             None if first_slip_only(c) && phase == Phase::One => Some(None),
             None => None,
         };
-        // The speed peaks in lobe B, where (46)/(62) put it, iff u_B h_B ≥ 1 (§3.6 step 2).
+        // The speed peaks in lobe B, where (46)/(62) put it, iff u_B h_B ≥ 1 (guide §8.6 step 2).
         let (u_b, h_b) = if i == 0 {
             (c.u_d_plus, c.eta)
         } else {
@@ -335,7 +335,7 @@ pub fn applicability(c: &WoodpeckerClosedForm, domain_note: Option<&str>) -> Vec
                     )),
                     (_, Some(HaltKind::B)) => None,
                     (_, Some(h)) => Some(format!(
-                        "the phase-{name} slip halts on flank {} (§3.6), not on the rising flank \
+                        "the phase-{name} slip halts on flank {} (guide §8.6), not on the rising flank \
                          of the next lobe that (49)/(60) assume",
                         halt_name(h)
                     )),
@@ -601,7 +601,7 @@ fn phase_values(c: &WoodpeckerClosedForm, phase: Phase) -> [Option<f64>; 8] {
     }
 }
 
-/// Orbit checks of one slip: its halt time, every speed maximum and its distance (§3.6), less
+/// Orbit checks of one slip: its halt time, every speed maximum and its distance (guide §8.6), less
 /// those a paper formula already checks (`covered`: stick, first maximum, distance).
 fn push_orbit_checks(
     out: &mut Vec<Check>,

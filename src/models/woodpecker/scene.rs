@@ -1,4 +1,4 @@
-//! Figures of the falling woodpecker (physics.md §2–3): the sleeve's motion under both laws,
+//! Figures of the falling woodpecker (guide §5.2 and guide §8): the sleeve's motion under both laws,
 //! the spring coordinate against its linear counterparts, the forces that decide the slip, the
 //! two phases of the linear law with their characteristic times, the μd sweep around μd,MIN,
 //! the positions of sleeve and bird, and the regime maps in the (μd, z0) plane.
@@ -1263,7 +1263,7 @@ mod tests {
 
     #[test]
     fn mu_sweep_above_mu_s_draws_distinct_admissible_values_and_says_why() {
-        // λ = 1, extremes: μd,MIN(I) = 0.807 > μs = 0.65 (physics.md §5).
+        // λ = 1, extremes: μd,MIN(I) = 0.807 > μs = 0.65 (guide §13).
         let p = WoodpeckerParams {
             lever: Some(1.0),
             counterpart: Counterpart::Extremes,

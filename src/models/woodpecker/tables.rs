@@ -133,7 +133,7 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     );
     let _ = writeln!(
         out,
-        "\nregime (linearized law, §3.6): {} ({}); paper's standard regime valid: {}; immediate slip (38): {}",
+        "\nregime (linearized law, guide §10): {} ({}); paper's standard regime valid: {}; immediate slip (38): {}",
         c.regime.words(),
         c.regime.id(),
         c.paper_regime_valid,

@@ -6,7 +6,7 @@ use super::quantity::Key as W;
 use crate::derivation::StepKey;
 use crate::handout::physics::Note::{self, Label, Numbers, Sentence};
 
-/// (LaTeX, sentence) lines of the woodpecker: physics.md §2–3.1.
+/// (LaTeX, sentence) lines of the woodpecker: guide §5.2.
 pub(crate) const EQUATION_OF_MOTION: &[(&str, &str)] = &[
     (
         r"m_S\,\ddot y = W_S + F_e(t) - 2\lambda\mu_d\,|F_e(t)| \quad (\dot y > 0)",
