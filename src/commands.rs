@@ -317,6 +317,8 @@ fn report(args: &ReportArgs, out: &mut dyn Write) -> Result<()> {
         let scenes = report::builtin_scenes()?;
         let (mut files, links) = report::classroom::material(&scenes, &args.format)?;
         files.extend(report::render_with(&scenes, &args.format, &links)?);
+        // The JSON Schemas of the tool's outputs, beside the built-in report (reports/schema/).
+        files.extend(crate::schema::files()?);
         (scenes, files)
     } else {
         let scenes = report::Scene::from_files(&args.scenarios)?;
