@@ -154,7 +154,7 @@ pub struct WorksheetArgs {
     #[arg(long, short = 'o', default_value = "worksheets")]
     pub out: PathBuf,
     /// Formats, comma-separated (answer-key.json is always written): html, md, moodle (Moodle
-    /// XML question bank), gift (Moodle GIFT).
+    /// XML question bank), gift (Moodle GIFT), qti (QTI 1.2 package for Canvas).
     #[arg(long, value_enum, value_delimiter = ',',
           default_values_t = [SheetFormat::Html, SheetFormat::Md])]
     pub format: Vec<SheetFormat>,
@@ -179,6 +179,9 @@ pub enum SheetFormat {
     Moodle,
     /// worksheets.gift.txt: the same in Moodle's GIFT format (without the figure question).
     Gift,
+    /// worksheets.qti.zip: the same as a QTI 1.2 package for Canvas, one question group per
+    /// question.
+    Qti,
 }
 
 impl SheetFormat {
@@ -187,7 +190,7 @@ impl SheetFormat {
         match self {
             SheetFormat::Html => Some(Format::Html),
             SheetFormat::Md => Some(Format::Md),
-            SheetFormat::Moodle | SheetFormat::Gift => None,
+            SheetFormat::Moodle | SheetFormat::Gift | SheetFormat::Qti => None,
         }
     }
 }

@@ -257,6 +257,9 @@ fn worksheet(args: &WorksheetArgs, out: &mut dyn Write) -> Result<()> {
         args.format.contains(&SheetFormat::Gift),
         args.lang,
     )?);
+    if args.format.contains(&SheetFormat::Qti) {
+        files.push(crate::worksheet::qti::render(&sheets, args.lang)?);
+    }
     let written = report::write_all(&args.out, &files)?;
     // The regimes in words, with their counts when the class is mixed.
     let mut counts: Vec<(&str, usize)> = Vec::new();
