@@ -159,8 +159,9 @@ pub struct WorksheetArgs {
           default_values_t = [SheetFormat::Html, SheetFormat::Md])]
     pub format: Vec<SheetFormat>,
     /// Also print the worksheets and the answer key to worksheets.pdf and answer-key.pdf (A4,
-    /// one student per page) with headless Chromium ($STICKSLIP_CHROMIUM, else Chromium,
-    /// Chrome or Edge on PATH or in their install folders).
+    /// one student per page; above 100 students one pair per 100, answer-key-001-100.pdf …)
+    /// with headless Chromium ($STICKSLIP_CHROMIUM, else Chromium, Chrome or Edge on PATH or
+    /// in their install folders).
     #[arg(long)]
     pub pdf: bool,
     /// Language of the worksheets, answer keys and question banks (words and decimal sign).
