@@ -158,13 +158,14 @@ pub struct WorksheetArgs {
     #[arg(long, short = 'o', default_value = "worksheets")]
     pub out: PathBuf,
     /// Formats, comma-separated (answer-key.json is always written): html, md, moodle (Moodle
-    /// XML question bank), gift (Moodle GIFT).
+    /// XML question bank), gift (Moodle GIFT), qti (QTI 1.2 package for Canvas).
     #[arg(long, value_enum, value_delimiter = ',',
           default_values_t = [SheetFormat::Html, SheetFormat::Md])]
     pub format: Vec<SheetFormat>,
     /// Also print the worksheets and the answer key to worksheets.pdf and answer-key.pdf (A4,
-    /// one student per page) with headless Chromium ($STICKSLIP_CHROMIUM, else Chromium,
-    /// Chrome or Edge on PATH or in their install folders).
+    /// one student per page; above 100 students one pair per 100, answer-key-001-100.pdf …)
+    /// with headless Chromium ($STICKSLIP_CHROMIUM, else Chromium, Chrome or Edge on PATH or
+    /// in their install folders).
     #[arg(long)]
     pub pdf: bool,
     /// Language of the worksheets, answer keys and question banks (words and decimal sign).
@@ -183,6 +184,9 @@ pub enum SheetFormat {
     Moodle,
     /// worksheets.gift.txt: the same in Moodle's GIFT format (without the figure question).
     Gift,
+    /// worksheets.qti.zip: the same as a QTI 1.2 package for Canvas, one question group per
+    /// question.
+    Qti,
 }
 
 impl SheetFormat {
@@ -191,7 +195,7 @@ impl SheetFormat {
         match self {
             SheetFormat::Html => Some(Format::Html),
             SheetFormat::Md => Some(Format::Md),
-            SheetFormat::Moodle | SheetFormat::Gift => None,
+            SheetFormat::Moodle | SheetFormat::Gift | SheetFormat::Qti => None,
         }
     }
 }

@@ -258,6 +258,9 @@ fn worksheet(args: &WorksheetArgs, out: &mut dyn Write) -> Result<()> {
         args.format.contains(&SheetFormat::Gift),
         args.lang,
     )?);
+    if args.format.contains(&SheetFormat::Qti) {
+        files.push(crate::worksheet::qti::render(&sheets, args.lang)?);
+    }
     let written = report::write_all(&args.out, &files)?;
     // The regimes in words, with their counts when the class is mixed.
     let mut counts: Vec<(&str, usize)> = Vec::new();
@@ -318,6 +321,8 @@ fn report(args: &ReportArgs, out: &mut dyn Write) -> Result<()> {
         let scenes = report::builtin_scenes()?;
         let (mut files, links) = report::classroom::material(&scenes, &args.format)?;
         files.extend(report::render_with(&scenes, &args.format, &links)?);
+        // The JSON Schemas of the tool's outputs, beside the built-in report (reports/schema/).
+        files.extend(crate::schema::files()?);
         (scenes, files)
     } else {
         let scenes = report::Scene::from_files(&args.scenarios)?;

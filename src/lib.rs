@@ -59,6 +59,8 @@ pub mod python;
 pub mod report;
 pub mod results;
 #[cfg(feature = "cli")]
+pub mod schema;
+#[cfg(feature = "cli")]
 pub mod shell;
 pub mod solver;
 #[cfg(feature = "cli")]

@@ -22,6 +22,7 @@ pub const LEVELS: [f64; 4] = [1e-4, 1e-6, 1e-8, 1e-10];
 
 /// The error metrics of the sweep.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Metric {
     /// Max event-time error (s).
@@ -70,6 +71,7 @@ impl Metric {
 
 /// Cost needed to reach an error level, and whether the cheapest point already beat it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CostAt {
     pub cost: f64,
     /// The curve's cheapest point is already below the level (the cost is an upper bound).
@@ -112,6 +114,7 @@ pub fn cost_at(points: &[(f64, f64)], level: f64) -> Option<CostAt> {
 
 /// A fitted convergence order of a fixed-step method on one problem and metric.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct OrderFit {
     pub problem: String,
     pub method: String,
@@ -172,6 +175,7 @@ pub fn fit_order(
 
 /// Time and work of one method to reach one error level on one problem.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CostRow {
     pub problem: String,
     pub method: String,

@@ -19,6 +19,7 @@ use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::LineChart;
 
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 struct Kv {
     name: String,
     value: String,
@@ -26,6 +27,7 @@ struct Kv {
 
 /// A drawn figure: its SVG, caption and file name under the output folder.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct FigureCtx {
     pub id: String,
     pub caption: String,
@@ -35,6 +37,7 @@ pub struct FigureCtx {
 
 /// Everything the templates show.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Ctx {
     title: String,
     css: &'static str,

@@ -133,6 +133,7 @@ pub fn cases() -> Result<Vec<CrowdCase>> {
 
 /// What one method found at one setting on one probe.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CrowdPoint {
     pub law: LawKind,
     pub phi: f64,
@@ -264,6 +265,7 @@ pub fn crowd_table(points: &[CrowdPoint], law: LawKind) -> Table {
 
 /// A law's table with its heading.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CrowdTable {
     pub heading: String,
     pub table: Table,

@@ -24,6 +24,7 @@ pub const STIFF_GROWTH: f64 = 10.0;
 
 /// One row: a method, a failure mode, what was measured and the verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct FailureRow {
     pub method: String,
     pub failure: String,

@@ -34,6 +34,7 @@ pub const CREEP_MARGIN: f64 = 0.1;
 
 /// Velocity reversals per period of a fixed-step method at one step.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ReversalPoint {
     pub problem: String,
     pub method: String,
@@ -75,6 +76,7 @@ pub fn reversal_slope(points: &[ReversalPoint], problem: &str, method: &str) -> 
 
 /// Creep during one exact stick phase, with the work of reaching its end.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CreepPoint {
     pub problem: String,
     pub method: String,
@@ -174,6 +176,7 @@ pub fn creep_epsilon_sweep(
 
 /// Exact events found or missed by a method, against tolerance.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct MissedPoint {
     pub problem: String,
     pub method: String,
@@ -242,6 +245,7 @@ pub fn missed_events(
 
 /// Slips and sticks of a method in the last period near a regime boundary.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct RegimePoint {
     pub case: String,
     pub method: String,

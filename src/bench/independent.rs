@@ -27,6 +27,7 @@ const NO_MPMATH: i32 = 3;
 
 /// The check of one problem.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct CheckRow {
     pub problem: String,
     /// Slips and sticks of the exact engine and of the 40-digit integration.
@@ -42,6 +43,7 @@ pub struct CheckRow {
 
 /// The check of every problem, or why it did not run.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ReferenceCheck {
     /// "ok" or "skipped".
     pub status: String,

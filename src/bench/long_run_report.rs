@@ -20,6 +20,7 @@ const FLOOR: f64 = 1e-16;
 
 /// One case of the study as the templates show it.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct LongRunCtx {
     pub title: String,
     pub text: String,

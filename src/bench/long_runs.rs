@@ -108,6 +108,7 @@ pub fn cases() -> Result<Vec<LongCase>> {
 
 /// The exact motion of a case over the longest run.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct LongCaseInfo {
     pub id: String,
     pub title: String,
@@ -123,6 +124,7 @@ pub struct LongCaseInfo {
 
 /// One method at one setting over one run length.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct LongPoint {
     pub case: String,
     pub method: String,
@@ -151,6 +153,7 @@ impl LongPoint {
 
 /// The study: run lengths, the cases' exact motion and every point.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct LongRuns {
     pub checkpoints: Vec<u32>,
     pub cases: Vec<LongCaseInfo>,

@@ -8,6 +8,7 @@ use serde::Serialize;
 
 /// Where the benchmark ran.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Machine {
     /// stickslip's version (Cargo.toml).
     pub crate_version: String,

@@ -74,6 +74,7 @@ pub struct Config {
 
 /// A method of the benchmark.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct MethodInfo {
     pub name: String,
     pub kind: MethodKind,
@@ -84,6 +85,7 @@ pub struct MethodInfo {
 
 /// A method of the benchmark that this build leaves out, and how to build it in.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct NotBuiltIn {
     pub name: &'static str,
     /// One line for people: what is missing and the build that has it.
@@ -92,6 +94,7 @@ pub struct NotBuiltIn {
 
 /// A problem of the sweep with its exact reference.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ProblemInfo {
     pub id: String,
     pub model: &'static str,
@@ -106,6 +109,7 @@ pub struct ProblemInfo {
 
 /// The failures: the table and the studies behind it.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Failures {
     pub table: Vec<FailureRow>,
     #[serde(flatten)]
@@ -114,6 +118,7 @@ pub struct Failures {
 
 /// Everything `stickslip bench` measured (results.json).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct BenchResults {
     pub quick: bool,
     pub repeats: u32,

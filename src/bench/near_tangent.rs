@@ -121,6 +121,7 @@ fn side_char(side: i8) -> char {
 
 /// What one method found at one setting on one probe.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct TangentPoint {
     /// "below" or "above" φ_c.
     pub side: String,

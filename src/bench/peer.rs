@@ -54,6 +54,7 @@ pub enum PeerChoice {
 
 /// One SciPy run as the script reports it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct PeerPoint {
     pub problem: String,
     pub method: String,
@@ -113,6 +114,7 @@ struct ScriptOutput {
 
 /// Our time against SciPy's at one error level.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct RatioRow {
     pub problem: String,
     pub metric: Metric,
@@ -129,6 +131,7 @@ pub struct RatioRow {
 
 /// A target of the issue, measured.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct TargetRow {
     pub target: String,
     pub problem: String,
@@ -139,6 +142,7 @@ pub struct TargetRow {
 
 /// Everything about the peer for the report.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct PeerReport {
     pub requested: bool,
     /// "not requested", "absent", "error" or "ok".

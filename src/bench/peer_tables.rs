@@ -21,6 +21,7 @@ pub const TABLE_LEVELS: [f64; 2] = [1e-8, 1e-10];
 
 /// Everything the SciPy section shows, formatted.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct PeerSection {
     pub status: String,
     pub message: String,

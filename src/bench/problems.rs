@@ -189,6 +189,7 @@ fn sign_char(sign: f64) -> char {
 
 /// What the exact engine gives on a problem: the reference of every error.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Reference {
     /// Slip and stick events over the whole run.
     pub events: Vec<MethodEvent>,

@@ -101,6 +101,7 @@ pub fn cases() -> Result<Vec<BoundaryCase>> {
 
 /// What one fixed-step method reported on one case.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct BoundaryPoint {
     pub problem: String,
     pub title: String,

@@ -19,6 +19,7 @@ use crate::solver::{Method, Setting};
 
 /// The failure studies.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Studies {
     pub reversals: Vec<ReversalPoint>,
     /// Every method at its creep setting (tolerance 1e-8 or T/10^4).

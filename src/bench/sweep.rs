@@ -25,6 +25,7 @@ pub const LONG_RUN: Duration = Duration::from_secs(1);
 
 /// How a method is driven: by a tolerance, a step, or not at all (the exact reference).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum MethodKind {
     Reference,
@@ -65,6 +66,7 @@ pub fn is_compiled_peer(name: &str) -> bool {
 
 /// The accuracy settings of a sweep.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Grid {
     /// Tolerances of the adaptive methods.
     pub tolerances: Vec<f64>,
@@ -113,6 +115,7 @@ impl Grid {
 /// One point of the sweep: a method on a problem at one setting (SI units; `None` where a
 /// quantity does not exist, e.g. every error of a method that returned an error).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct SweepPoint {
     pub problem: String,
     pub method: String,

@@ -8,6 +8,7 @@ use crate::output::format::sig;
 
 /// One table row: formatted cells and a CSS class ("pass", "fail", "na" or "").
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Row {
     pub cells: Vec<String>,
     pub class: String,
@@ -15,6 +16,7 @@ pub struct Row {
 
 /// A table: header and rows.
 #[derive(Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Table {
     pub header: Vec<String>,
     pub rows: Vec<Row>,

@@ -62,6 +62,7 @@ pub struct Request {
 
 /// A boundary a set was drawn against: its words and the set's relative offset from it.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Near {
     pub boundary: &'static str,
     pub offset: f64,
@@ -69,6 +70,7 @@ pub struct Near {
 
 /// The formula and the integration on one parameter set.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Sample {
     /// The parameters (guide §14 `params` keys, SI).
     pub params: Model,
@@ -93,6 +95,7 @@ pub struct Sample {
 
 /// Agreement in one regime.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct RegimeRow {
     pub regime: &'static str,
     pub sets: usize,
@@ -103,6 +106,7 @@ pub struct RegimeRow {
 
 /// Why sets were not compared, with their count.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Skipped {
     pub reason: String,
     pub sets: usize,
@@ -110,6 +114,7 @@ pub struct Skipped {
 
 /// How the formula was read.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ReadAs {
     pub plain: String,
     pub latex: String,
@@ -117,6 +122,7 @@ pub struct ReadAs {
 
 /// The verdict.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     /// Every compared set agrees within its tolerance.
@@ -129,6 +135,7 @@ pub enum Verdict {
 
 /// The outcome of `stickslip check`, serialised as its JSON.
 #[derive(Clone, Debug, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Report {
     pub model: &'static str,
     pub quantity: String,

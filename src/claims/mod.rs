@@ -46,6 +46,7 @@ pub const MAX_SAMPLE: usize = 1_000_000;
 
 /// The seeded random sample used for statements about many parameter sets.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Sample {
     /// Seed of the generator (`StdRng::seed_from_u64`): the same seed gives the same claims.
     pub seed: u64,
@@ -65,6 +66,7 @@ impl Default for Sample {
 
 /// How a claim fares against the computed evidence.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Verdict {
     Confirmed,
@@ -124,6 +126,7 @@ pub const BOTH_MODELS: &str = "both";
 
 /// One number behind a verdict (SI units; `unit` is "" for a pure number).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ClaimNumber {
     pub label: String,
     pub value: f64,
@@ -132,6 +135,7 @@ pub struct ClaimNumber {
 
 /// The outcome of a claim on the random sample.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct SampleResult {
     /// Number of valid random sets examined.
     pub size: usize,
@@ -145,6 +149,7 @@ pub struct SampleResult {
 
 /// One claim of guide §11 with its verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Claim {
     /// 1..=8, the numbering of guide §11.
     pub id: u8,
@@ -177,6 +182,7 @@ impl Claim {
 
 /// All eight claims, in the order of guide §11.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Claims {
     pub claims: Vec<Claim>,
 }

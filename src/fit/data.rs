@@ -39,6 +39,7 @@ pub const MAX_POSITION_M: f64 = 1e3;
 
 /// Unit of the position column.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Unit {
     /// Metres.
@@ -127,6 +128,7 @@ pub struct ReadOptions {
 
 /// The tracked positions, in time order.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Tracked {
     /// The file as given on the command line.
     pub file: String,

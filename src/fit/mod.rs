@@ -47,6 +47,7 @@ const CURVE_SAMPLES: usize = 4000;
 
 /// One fitted value.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Estimate {
     pub name: &'static str,
     /// SI unit ("" when dimensionless).
@@ -75,6 +76,7 @@ pub struct Series {
 
 /// The outcome of `stickslip fit`, serialised as fit.json (SI units).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Fit {
     pub data: Tracked,
     /// Direction of the tracked y (from the data: the toy falls).

@@ -33,6 +33,7 @@ const FIRST_PERIODS: f64 = 16.0;
 
 /// Which way the tracked y points.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Axis {
     /// y grows as the toy falls (the paper's y_S).

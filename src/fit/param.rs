@@ -17,6 +17,7 @@ use crate::models::param::{MU_MAX, MU_MIN};
 
 /// A woodpecker parameter the fit can adjust.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Serialize, clap::ValueEnum)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub enum FitParam {
     #[value(name = "mu_d")]
     MuD,

@@ -59,6 +59,7 @@ const SLIP_TOLERANCE: f64 = 2.0;
 
 /// The verdict on a fit (fit.json's `verdict`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Verdict {
     /// The residual is the tracking noise: the model describes the data.
     pub describes: bool,
@@ -79,6 +80,7 @@ pub struct Verdict {
 
 /// The data fall `factor` times as fast as the model at the given parameters.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ScaleSlip {
     /// The power of ten nearest the speed ratio, and the ratio itself.
     pub factor: f64,

@@ -27,6 +27,8 @@ use crate::report::{builtin_scenes, Format, OutFile, Scene};
 use crate::worksheet::Lang;
 use physics::Note;
 
+#[cfg(unix)]
+pub mod cdp;
 mod layout;
 pub mod pdf;
 pub(crate) mod physics;
@@ -323,7 +325,9 @@ pub fn render(
         let html = page(&tera, "handout.html", &ctx)?;
         if let Some(browser) = browser {
             let name = format!("{id}.html");
-            let pdf = pdf::print(browser, &name, &html, HANDOUT_PAGES)?;
+            let mut printer = pdf::Printer::new(browser)?;
+            let pdf = printer.print(&name, &html, HANDOUT_PAGES)?;
+            printer.close();
             files.push(OutFile::new(format!("{id}.pdf"), pdf));
         }
         if html_requested {

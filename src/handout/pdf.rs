@@ -1,6 +1,7 @@
-//! Printing the handout to PDF with headless Chromium: find the browser, print a page from a
-//! private temporary folder (its own profile, no network, no first-run work), and hand back the
-//! bytes; the caller writes them with the report's atomic writer, so a failure leaves no PDF.
+//! Printing to PDF with headless Chromium: find the browser, print pages from a private
+//! temporary folder (its own profile, no network, no first-run work; [`Printer`]: one browser
+//! for every PDF of a run), and hand back the bytes; the caller writes them with the report's
+//! atomic writer, so a failure leaves no PDF.
 
 use std::ffi::OsString;
 use std::fs;
@@ -236,6 +237,16 @@ fn owned_by_me(_meta: &fs::Metadata) -> bool {
     false
 }
 
+/// A fresh private work folder, locked while in use: a run killed mid-print leaves the folder
+/// (and Chromium's profile, some MB) unlocked, and the next `--pdf` removes it.
+fn work_folder() -> std::io::Result<(tempfile::TempDir, fs::File)> {
+    remove_stale_work_folders(&std::env::temp_dir());
+    let work = tempfile::Builder::new().prefix(WORK_PREFIX).tempdir()?;
+    let lock = fs::File::open(work.path())?;
+    crate::report::lock::hold(&lock);
+    Ok((work, lock))
+}
+
 /// Prints `html` (a self-contained page of about `pages` A4 pages, saved as `name` in a temporary
 /// folder) with `browser` and returns the PDF's bytes; the time allowed grows with `pages`.
 pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u8>> {
@@ -245,16 +256,7 @@ pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u
         browser: browser.display().to_string(),
         reason,
     };
-    remove_stale_work_folders(&std::env::temp_dir());
-    let work = tempfile::Builder::new()
-        .prefix(WORK_PREFIX)
-        .tempdir()
-        .map_err(|e| fail(format!("temporary folder: {e}")))?;
-    // Locked while in use: a run killed mid-print leaves the folder (and Chromium's profile,
-    // some MB) unlocked, and the next `--pdf` removes it.
-    let work_lock =
-        fs::File::open(work.path()).map_err(|e| fail(format!("temporary folder: {e}")))?;
-    crate::report::lock::hold(&work_lock);
+    let (work, _work_lock) = work_folder().map_err(|e| fail(format!("temporary folder: {e}")))?;
     let page = work.path().join(name);
     let pdf = work.path().join("out.pdf");
     let log = work.path().join("chromium.log");
@@ -301,6 +303,106 @@ pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u
         .find(|l| !l.trim().is_empty())
         .map_or(String::new(), |l| format!("; last message: {}", l.trim()));
     Err(fail(format!("{status}, no PDF written{last_line}")))
+}
+
+/// One browser for every PDF of a run. On Unix one Chromium process prints them all over the
+/// DevTools pipe ([`super::cdp`]), each page in its own tab closed after it, with a time limit
+/// that follows progress; elsewhere each PDF starts its own browser ([`print`]).
+pub struct Printer {
+    browser: PathBuf,
+    /// Private folder of the pages and the profile, locked while in use.
+    work: tempfile::TempDir,
+    _lock: fs::File,
+    #[cfg(unix)]
+    session: Option<super::cdp::Session>,
+    /// Browser processes started so far.
+    starts: u32,
+}
+
+impl Printer {
+    /// A printer with `browser`, started at its first page.
+    pub fn new(browser: &Path) -> Result<Self> {
+        let (work, lock) = work_folder().map_err(|e| Error::Pdf {
+            path: String::new(),
+            browser: browser.display().to_string(),
+            reason: format!("temporary folder: {e}"),
+        })?;
+        Ok(Self {
+            browser: browser.to_path_buf(),
+            work,
+            _lock: lock,
+            #[cfg(unix)]
+            session: None,
+            starts: 0,
+        })
+    }
+
+    /// Browser processes this printer has started.
+    pub fn starts(&self) -> u32 {
+        self.starts
+    }
+
+    /// Prints `html` (saved as `name`, about `pages` A4 pages) and returns the PDF's bytes. The
+    /// time allowed follows the browser's progress ([`super::cdp::STALL`] of silence at most),
+    /// whatever the number of pages.
+    #[cfg(unix)]
+    pub fn print(&mut self, name: &str, html: &str, _pages: u32) -> Result<Vec<u8>> {
+        let fail = |reason: String| Error::Pdf {
+            path: name.to_string(),
+            browser: self.browser.display().to_string(),
+            reason,
+        };
+        let page = self.work.path().join(name);
+        fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
+        if self.session.is_none() {
+            let log = self.work.path().join("chromium.log");
+            let log_file =
+                fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
+            // `--no-pdf-header-footer` puts the browser in its one-shot print mode, which ends
+            // the DevTools session; the print command says `displayHeaderFooter: false`.
+            let mut flags: Vec<String> = HEADLESS_FLAGS
+                .iter()
+                .filter(|f| **f != "--no-pdf-header-footer")
+                .map(|f| f.to_string())
+                .collect();
+            flags.push(format!(
+                "--user-data-dir={}",
+                self.work.path().join("profile").display()
+            ));
+            self.starts += 1;
+            self.session =
+                Some(super::cdp::Session::start(&self.browser, &flags, log_file).map_err(&fail)?);
+        }
+        let printed = match self.session.as_mut() {
+            Some(session) => session.print(&file_url(&page)),
+            None => Err("not started".to_string()),
+        };
+        let _ = fs::remove_file(&page);
+        match printed {
+            Ok(bytes) if bytes.starts_with(b"%PDF") => Ok(bytes),
+            Ok(_) => Err(fail("no PDF written".to_string())),
+            Err(reason) => {
+                // A browser that failed once is not trusted with the next page.
+                self.session = None;
+                Err(fail(reason))
+            }
+        }
+    }
+
+    /// Prints `html` (saved as `name`, about `pages` A4 pages) and returns the PDF's bytes.
+    #[cfg(not(unix))]
+    pub fn print(&mut self, name: &str, html: &str, pages: u32) -> Result<Vec<u8>> {
+        self.starts += 1;
+        print(&self.browser, name, html, pages)
+    }
+
+    /// Quits the browser.
+    pub fn close(self) {
+        #[cfg(unix)]
+        if let Some(session) = self.session {
+            session.close();
+        }
+    }
 }
 
 /// The `file:` URL of an absolute path: `file:///tmp/x.html`, `file:///C:/Users/x.html`.
@@ -451,5 +553,33 @@ mod tests {
         let err = print(&fake, "x.html", "<p>x</p>", 1).unwrap_err();
         assert!(matches!(err, Error::Pdf { .. }), "{err}");
         assert!(err.to_string().contains("no PDF written"), "{err}");
+    }
+
+    #[test]
+    fn a_browser_that_quits_is_an_error_of_the_printer() {
+        let dir = tempfile::tempdir().unwrap();
+        let fake = executable(dir.path(), "fake-chromium");
+        let mut printer = Printer::new(&fake).unwrap();
+        let err = printer.print("x.html", "<p>x</p>", 1).unwrap_err();
+        assert!(matches!(err, Error::Pdf { .. }), "{err}");
+        assert!(err.to_string().contains("fake-chromium"), "{err}");
+    }
+
+    /// Needs Chromium, as the PDF tests of tests/handout.rs and tests/worksheet.rs do.
+    #[test]
+    fn one_browser_prints_every_pdf_of_a_run() {
+        let browser = locate().expect("Chromium for the PDF tests");
+        let mut printer = Printer::new(&browser).unwrap();
+        let one = printer
+            .print("a.html", "<!doctype html><title>a</title><p>one</p>", 1)
+            .unwrap();
+        let two = printer
+            .print("b.html", "<!doctype html><title>b</title><p>two</p>", 2)
+            .unwrap();
+        assert!(one.starts_with(b"%PDF") && two.starts_with(b"%PDF"));
+        // Each tab prints its own page, not the first one's.
+        assert_ne!(one, two);
+        assert_eq!(printer.starts(), 1);
+        printer.close();
     }
 }

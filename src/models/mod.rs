@@ -33,6 +33,7 @@ pub mod woodpecker;
 
 /// Which force law drives the model.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum LawKind {
     /// The real, harmonic oscillation (cos ωt).
@@ -144,6 +145,7 @@ macro_rules! registry {
     ($d:tt $($(#[$meta:meta])* $variant:ident($params:ty) [$($cap:ident)*]),+ $(,)?) => {
         /// A model with its parameters: the value the rest of the program passes around.
         #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+        #[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
         #[serde(untagged)]
         pub enum Model {
             $($(#[$meta])* $variant($params)),+

@@ -47,6 +47,7 @@ pub fn rel_diff_on_scale(a: f64, b: f64, scale: f64) -> f64 {
 
 /// A checked value: a number, or a label such as a regime name.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(untagged)]
 pub enum CheckValue {
     Number(f64),
@@ -120,6 +121,7 @@ impl Serialize for Checked {
 
 /// One entry of the guide §14 `checks` array.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Check {
     /// The quantity checked (serialized as its JSON key (guide §14)).
     pub quantity: Checked,

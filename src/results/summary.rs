@@ -6,6 +6,7 @@ use crate::engine::{Event, EventKind, IntegrationRegime, Run, Steady};
 
 /// One slip/stick event of the steady period.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct EventOut {
     /// Absolute time (s).
     pub t: f64,
@@ -17,6 +18,7 @@ pub struct EventOut {
 
 /// One speed maximum of the steady period.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct MaximumOut {
     /// Absolute time (s), velocity (m/s), phase (t mod T)/T.
     pub t: f64,
@@ -49,6 +51,7 @@ impl Serialize for Power {
 
 /// Summary of an exact integration of one law; keys as guide §14.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Summary {
     pub regime: IntegrationRegime,
     pub immediate_slip: bool,

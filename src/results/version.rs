@@ -29,6 +29,41 @@ impl<'a, T: Serialize> Versioned<'a, T> {
     }
 }
 
+/// The schema of `inner`'s object with `"schema_version"` added as a required constant.
+#[cfg(feature = "cli")]
+impl<T: Serialize + schemars::JsonSchema> schemars::JsonSchema for Versioned<'_, T> {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        T::schema_name()
+    }
+
+    fn json_schema(generator: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let mut schema = T::json_schema(generator);
+        if let Some(properties) = schema
+            .ensure_object()
+            .entry("properties")
+            .or_insert_with(|| serde_json::Value::Object(Default::default()))
+            .as_object_mut()
+        {
+            properties.insert(
+                SCHEMA_KEY.to_string(),
+                serde_json::json!({
+                    "description": "Version of the JSON layout (raised when a key is renamed, removed or changes meaning).",
+                    "const": SCHEMA_VERSION,
+                }),
+            );
+        }
+        if let Some(required) = schema
+            .ensure_object()
+            .entry("required")
+            .or_insert_with(|| serde_json::Value::Array(Vec::new()))
+            .as_array_mut()
+        {
+            required.insert(0, SCHEMA_KEY.into());
+        }
+        schema
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -58,6 +58,7 @@ pub fn methods() -> Vec<Box<dyn Method>> {
 
 /// Work counters every method fills (the work-precision chart reads only these and the result).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Stats {
     /// Evaluations of the right-hand side a(t, v) (for `exact`: closed-form piece evaluations).
     pub rhs_evals: u64,
@@ -71,6 +72,7 @@ pub struct Stats {
 
 /// A slip or stick event found by a method (absolute time, s).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct MethodEvent {
     pub t: f64,
     /// "slip", "stick" or "reversal" (a velocity sign change without a stick).
@@ -79,6 +81,7 @@ pub struct MethodEvent {
 
 /// What a method returns: its events, the final state and its work.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Solution {
     pub events: Vec<MethodEvent>,
     /// Position (m) and velocity (m/s) at `t_end`.
@@ -131,6 +134,7 @@ impl Problem {
 
 /// The accuracy knob of a method: a tolerance (adaptive) or a step size (fixed-step).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Setting {
     /// Relative = absolute tolerance of an adaptive method.

@@ -623,6 +623,7 @@ impl TanhImplicit {
 
 /// The regularized body's displacement during one stick phase of the exact engine.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Creep {
     /// The exact stick phase [t_stick, t_slip] (s); the first starts at 0, the last may be cut
     /// by t_end.

@@ -24,6 +24,7 @@ const READABLE: f64 = 0.25;
 
 /// A value of an answer: a number (SI) or a name (the regime).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(untagged)]
 pub enum Value {
     Number(f64),
@@ -32,6 +33,7 @@ pub enum Value {
 
 /// A value a regime inequality compares: its LaTeX symbol and value.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Comparison {
     pub symbol: &'static str,
     pub value: f64,

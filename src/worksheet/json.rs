@@ -10,7 +10,8 @@ use crate::error::{Error, Result};
 use crate::models::Model;
 
 #[derive(Serialize)]
-struct KeyJson<'a> {
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
+pub(crate) struct KeyJson<'a> {
     model: &'static str,
     seed: u64,
     regime: &'static str,
@@ -19,17 +20,21 @@ struct KeyJson<'a> {
 }
 
 #[derive(Serialize)]
-struct StudentJson<'a> {
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
+pub(crate) struct StudentJson<'a> {
     student: u32,
     /// Regime of the closed forms (guide §9, guide §8.6).
     regime: &'static str,
-    /// The scenario keys of the `[params]` table (SI).
+    /// The scenario keys of the `[params]` table (SI). A map built from the model's parameter
+    /// struct (the woodpecker's `omega_mode` renamed `omega`, as a scenario spells it).
+    #[cfg_attr(feature = "cli", schemars(schema_with = "params_schema"))]
     params: serde_json::Value,
     answers: Vec<AnswerJson<'a>>,
 }
 
 #[derive(Serialize)]
-struct AnswerJson<'a> {
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
+pub(crate) struct AnswerJson<'a> {
     key: String,
     /// Closed-form value (SI) or regime id.
     value: &'a Value,
@@ -44,6 +49,19 @@ struct AnswerJson<'a> {
     substituted: Option<String>,
     /// The values the regime inequalities compare.
     comparisons: &'a [Comparison],
+}
+
+/// The schema of answer-key.json (src/schema.rs).
+pub(crate) type KeySchema = crate::results::Versioned<'static, KeyJson<'static>>;
+
+/// A scenario's `[params]` table: numbers (SI) and the woodpecker's ω mode.
+#[cfg(feature = "cli")]
+fn params_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+    schemars::json_schema!({
+        "type": "object",
+        "description": "The scenario keys of the `[params]` table (SI)",
+        "additionalProperties": {"type": ["number", "string", "null"]}
+    })
 }
 
 /// The parameters as a scenario's `[params]` table (the woodpecker's ω mode under `omega`).

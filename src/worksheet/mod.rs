@@ -16,6 +16,7 @@ pub mod exercise;
 pub mod figure;
 pub mod json;
 pub mod moodle;
+pub mod qti;
 pub mod question;
 pub mod render;
 pub mod sample;

@@ -39,7 +39,7 @@ const TEMPLATES: &[(&str, &str)] = &[
 ];
 
 /// The file name of the forces figure embedded in its question.
-const FIGURE_FILE: &str = "forces.svg";
+pub(super) const FIGURE_FILE: &str = "forces.svg";
 /// Significant figures a student is asked to give; the tolerance is one unit in the last.
 pub const ANSWER_FIGURES: i32 = 3;
 
@@ -54,33 +54,38 @@ pub fn tolerance(x: f64) -> f64 {
 
 /// One question variant (a student's) in a category (a question of the sheet).
 #[derive(Serialize)]
-struct Variant {
-    name: String,
+pub(super) struct Variant {
+    pub(super) name: String,
+    /// The student whose variant it is.
+    pub(super) student: u32,
     /// Question text, HTML.
-    html: String,
+    pub(super) html: String,
     /// The worked step, HTML.
-    feedback: String,
+    pub(super) feedback: String,
     /// Numerical: the answer, its tolerance and SI unit.
-    answer: String,
-    tolerance: String,
-    unit: &'static str,
+    pub(super) answer: String,
+    pub(super) tolerance: String,
+    pub(super) unit: &'static str,
+    /// Numerical: the answer and its tolerance as numbers (SI).
+    #[serde(skip)]
+    pub(super) number: Option<(f64, f64)>,
     /// Multiple choice: the options.
-    choices: Vec<Choice>,
+    pub(super) choices: Vec<Choice>,
     /// The v(t) figure (file name, base64), XML only.
-    file: Option<(String, String)>,
+    pub(super) file: Option<(String, String)>,
 }
 
 #[derive(Serialize)]
-struct Choice {
-    html: String,
-    right: bool,
+pub(super) struct Choice {
+    pub(super) html: String,
+    pub(super) right: bool,
 }
 
 #[derive(Serialize)]
-struct Category {
-    path: String,
-    numerical: bool,
-    variants: Vec<Variant>,
+pub(super) struct Category {
+    pub(super) path: String,
+    pub(super) numerical: bool,
+    pub(super) variants: Vec<Variant>,
 }
 
 /// A number as Moodle reads it: plain or with an exponent, shortest round trip.
@@ -91,7 +96,7 @@ fn moodle_number(x: f64) -> String {
 /// An answer or tolerance as GIFT and Moodle XML read it: the shortest decimal that reads
 /// back the same, never in e-notation (which GIFT editors and previewers reject: `gift-pegjs`
 /// parses `5.397e-3` as an error).
-fn answer_number(x: f64) -> String {
+pub(super) fn answer_number(x: f64) -> String {
     format!("{x}")
 }
 
@@ -153,11 +158,13 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
     );
     let mut v = Variant {
         name,
+        student: s.number,
         html,
         feedback: feedback(a, words)?,
         answer: String::new(),
         tolerance: String::new(),
         unit: q.unit(),
+        number: None,
         choices: Vec::new(),
         file: None,
     };
@@ -184,6 +191,7 @@ fn variant(w: &Worksheets, words: &Words, s: &Student, i: usize, a: &Answer) -> 
                 _ => tolerance(*x),
             };
             v.tolerance = answer_number(tol);
+            v.number = Some((*x, tol));
             if let Kind::ReadFigure(_) = kind {
                 let svg = super::figure::force_figure(&s.case, words.lang)?;
                 let data = base64::engine::general_purpose::STANDARD.encode(svg);
@@ -235,7 +243,9 @@ fn feedback(a: &Answer, words: &Words) -> Result<String> {
     ))
 }
 
-fn categories(w: &Worksheets, words: &Words) -> Result<Vec<Category>> {
+/// One category per question of the sheet, each with every student's variant (the QTI
+/// package's question groups too).
+pub(super) fn categories(w: &Worksheets, words: &Words) -> Result<Vec<Category>> {
     let title = words.model_text("title")?;
     w.questions
         .iter()

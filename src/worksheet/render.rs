@@ -429,21 +429,48 @@ fn key_ctx(s: &Student, words: &Words) -> Result<KeyCtx> {
     })
 }
 
-/// worksheets.pdf and answer-key.pdf: the HTML pages printed with headless Chromium at
-/// `browser` (A4, one student per page). Nothing is written here.
+/// Students per printed part. A class of up to this many gets worksheets.pdf and
+/// answer-key.pdf; a larger one gets one pair per part (worksheets-001-100.pdf,
+/// answer-key-001-100.pdf, …): the browser holds one part at a time (a 500-student key is
+/// 13 MB of HTML and took 1.3-2.1 GB printed at once), and a part opens and prints quickly
+/// where a 500-page PDF does not, and can be handed to one grader each.
+pub const PDF_PART: usize = 100;
+
+/// worksheets.pdf and answer-key.pdf (A4, one student per page), printed by one browser, in
+/// parts of [`PDF_PART`] students.
 pub fn pdf(w: &Worksheets, lang: Lang, browser: &std::path::Path) -> Result<Vec<OutFile>> {
-    render(w, &[Format::Html], lang)?
-        .into_iter()
-        .filter(|f| f.path.extension().is_some_and(|e| e == "html"))
-        .map(|f| {
+    let mut printer = crate::handout::pdf::Printer::new(browser)?;
+    let parts: Vec<&[super::Student]> = w.students.chunks(PDF_PART).collect();
+    let mut files = Vec::new();
+    for part in &parts {
+        let sheets = Worksheets {
+            model: w.model,
+            seed: w.seed,
+            regime: w.regime,
+            questions: w.questions.clone(),
+            students: part.to_vec(),
+        };
+        let html = render(&sheets, &[Format::Html], lang)?
+            .into_iter()
+            .filter(|f| f.path.extension().is_some_and(|e| e == "html"));
+        for f in html {
             let name = f.path.display().to_string();
-            let html = String::from_utf8_lossy(&f.bytes);
-            // One student per page (a key's page can run over: the time per page has room).
-            let pages = u32::try_from(w.students.len()).unwrap_or(u32::MAX);
-            let bytes = crate::handout::pdf::print(browser, &name, &html, pages)?;
-            Ok(OutFile::new(f.path.with_extension("pdf"), bytes))
-        })
-        .collect()
+            let text = String::from_utf8_lossy(&f.bytes);
+            // One student per page (a key's page can run over).
+            let pages = u32::try_from(part.len()).unwrap_or(u32::MAX);
+            let bytes = printer.print(&name, &text, pages)?;
+            let path = match (parts.len(), part.first(), part.last()) {
+                (2.., Some(first), Some(last)) => {
+                    let stem = f.path.file_stem().unwrap_or_default().to_string_lossy();
+                    format!("{stem}-{:03}-{:03}.pdf", first.number, last.number).into()
+                }
+                _ => f.path.with_extension("pdf"),
+            };
+            files.push(OutFile::new(path, bytes));
+        }
+    }
+    printer.close();
+    Ok(files)
 }
 
 /// The worksheet files in `formats` (HTML: worksheets.html, answer-key.html; Markdown:

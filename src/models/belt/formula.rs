@@ -91,6 +91,7 @@ pub fn mean_power(energy: f64, period: f64) -> f64 {
 
 /// The closed forms' regime (docs/belt.md, "Limits and edge cases").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "snake_case")]
 pub enum Regime {
     /// Δ > 0: a stick of 2Δ/v_b and one harmonic slip per cycle.

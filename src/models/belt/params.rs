@@ -9,6 +9,7 @@ use crate::params::G_STANDARD;
 
 /// The block on a moving belt held by a spring (docs/belt.md). Defaults: a lab set-up.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct BeltParams {
     /// Mass m of the block (kg).

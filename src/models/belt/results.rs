@@ -24,6 +24,7 @@ const TOUCH: f64 = 64.0 * f64::EPSILON;
 
 /// Input parameters, the number of cycles integrated, and the scales ω, x_s, x_d, Δ (B1)–(B4).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ParamsOut {
     #[serde(flatten)]
     pub input: BeltParams,
@@ -37,6 +38,7 @@ pub struct ParamsOut {
 /// The closed forms' quantities measured on the exact integration's last cycle; `null` where
 /// the run has no complete cycle.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Integration {
     pub cycles: u32,
     pub first_slip_time: Option<f64>,
@@ -85,6 +87,7 @@ impl Integration {
 
 /// The belt's evaluation object.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Evaluation {
     pub model: &'static str,
     pub params: ParamsOut,

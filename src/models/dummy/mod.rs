@@ -20,6 +20,7 @@ use crate::results::checks::rel_diff;
 
 /// The frictionless block on a spring and a belt.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct DummyParams {
     /// Mass m (kg).
@@ -94,6 +95,7 @@ const PARAMS: &[ParamSpec<DummyParams>] = &[
 
 /// The period, closed form and measured, and their agreement.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Evaluation {
     pub model: &'static str,
     pub params: DummyParams,

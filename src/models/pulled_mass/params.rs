@@ -11,6 +11,7 @@ use crate::params::G_STANDARD;
 
 /// The pulled mass of Sec. 2 (guide §5.1). Defaults: the paper's Fig. 6 set.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct PulledMassParams {
     /// Static friction coefficient μs.

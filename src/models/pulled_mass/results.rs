@@ -17,6 +17,7 @@ use crate::results::{ensure_in_range, Applicability};
 
 /// Input parameters and the derived W, T, ω, φ (keys of guide §14 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ParamsOut {
     #[serde(flatten)]
     pub input: PulledMassParams,
@@ -45,6 +46,7 @@ impl ParamsOut {
 
 /// The guide §14 object for the pulled mass.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Evaluation {
     pub model: &'static str,
     pub params: ParamsOut,

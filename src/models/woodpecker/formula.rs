@@ -38,6 +38,7 @@ use crate::results::quantity::{serialize_closed_form, Value};
 
 /// How the triangle wave (ζ0, δ0) is matched to the harmonic spring coordinate z0 + d0 cos ωt.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum Counterpart {
     /// Same maximum and minimum spring coordinate: ζ0 = d0, δ0 = z0.
@@ -115,6 +116,7 @@ fn finite(x: f64) -> Option<f64> {
 
 /// Parameters of the linearized woodpecker (guide §5.2). The friction coefficients enter only as λμ.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct LinearWoodpecker {
     /// Static friction coefficient μs.
     pub mu_s: f64,
@@ -485,6 +487,7 @@ impl SlipKinematics {
 /// All closed forms of one phase (SI; dimensionless for s, mu_*, gamma). `None` where the
 /// expression is undefined.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct PhaseClosedForm {
     pub t0: Option<f64>,
     pub delta: Option<f64>,

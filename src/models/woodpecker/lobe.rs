@@ -24,6 +24,7 @@ use crate::engine::IntegrationRegime;
 
 /// The flank on which a slip of the lobe engine halts (guide §8.6 steps 2–5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub enum HaltKind {
     /// Rising flank of lobe B: the paper's stick, (49)/(60).
     #[serde(rename = "B")]
@@ -243,6 +244,7 @@ pub fn mu_d_halt(lambda: f64, u_s: f64, h_b: f64, sigma: f64) -> Option<f64> {
 
 /// Half period in which a slip starts: I (F_e decreasing) or II (F_e increasing).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub enum Phase {
     #[serde(rename = "I")]
     One,
@@ -343,6 +345,7 @@ impl Serialize for OrbitRegime {
 /// the slip starts (0 ≤ t_slip < T) and are not reduced mod T: a halt may come after T (every
 /// phase-II slip that halts in A/A_late or B_late, and phase-I slips that halt in A_late).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct OrbitSlip {
     /// Half period in which the slip starts.
     pub phase: Phase,
@@ -358,6 +361,7 @@ pub struct OrbitSlip {
 
 /// The period-T orbit of the linear model (guide §8.6), SI.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Orbit {
     /// Slips in order of their slip time within the period (empty for `no_slip`).
     pub slips: Vec<OrbitSlip>,

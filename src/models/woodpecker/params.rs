@@ -13,6 +13,7 @@ use crate::params::G_STANDARD;
 
 /// How ω of the harmonic woodpecker is defined (guide §5.2; regimes do not depend on it).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(rename_all = "lowercase")]
 pub enum OmegaMode {
     /// ω = √(k/m_W) (default: reproduces the paper's figures).
@@ -42,6 +43,7 @@ impl OmegaMode {
 
 /// The falling woodpecker of Sec. 3 (guide §5.2 and guide §8). Defaults: the paper's Fig. 15 set.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 #[serde(default, deny_unknown_fields)]
 pub struct WoodpeckerParams {
     /// Static friction coefficient μs.

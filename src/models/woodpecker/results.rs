@@ -23,6 +23,7 @@ use crate::results::{ensure_in_range, Applicability};
 
 /// Input parameters and the derived quantities (keys of guide §14 `params`).
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct ParamsOut {
     #[serde(flatten)]
     pub input: WoodpeckerParams,
@@ -56,6 +57,7 @@ impl ParamsOut {
 
 /// The guide §14 object for the woodpecker.
 #[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Evaluation {
     pub model: &'static str,
     pub params: ParamsOut,

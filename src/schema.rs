@@ -1,0 +1,305 @@
+//! JSON Schemas (draft 2020-12) of every JSON document the tool writes, generated from the
+//! serde types with schemars: `eval --json` of each model, `claims MODEL --json`, `check --json`
+//! (and check.json), `fit --json` (and fit.json), a worksheet's answer-key.json and the bench's
+//! results.json. `stickslip report` writes them to `schema/` beside the pages (reports/schema/
+//! in the repository); tests/schema.rs checks that the committed files are what this module
+//! generates and that real outputs of the command line validate against them.
+//!
+//! Most types derive `JsonSchema` next to their `Serialize` (under the `cli` feature, so the
+//! core builds without schemars). The types that serialize by hand are described here, from the
+//! same data their `Serialize` reads: the §7 `closed_form` objects from each model's registry
+//! (one property per key, numbers with their unit and meaning), the regime ids from the enums'
+//! `ALL` lists.
+
+use std::borrow::Cow;
+
+use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
+use serde_json::{json, Value};
+
+use crate::error::{Error, Result};
+use crate::results::quantity::{Kind, Registry};
+use crate::results::Versioned;
+
+/// One JSON document of the tool and its schema.
+pub struct Document {
+    /// File stem under `schema/` (`eval-pulled-mass` → `schema/eval-pulled-mass.schema.json`).
+    pub name: &'static str,
+    /// The commands and files that write it.
+    pub written_by: &'static str,
+    pub schema: Schema,
+}
+
+/// The folder of the schema files in a report's output.
+pub const FOLDER: &str = "schema";
+
+/// The schema of `T` as written (with `schema_version` first), titled and described.
+fn document<T: JsonSchema>(name: &'static str, written_by: &'static str) -> Document {
+    // The serialize contract: outputs, so `rename(serialize = …)` names and every field written.
+    let mut schema = schemars::generate::SchemaSettings::draft2020_12()
+        .for_serialize()
+        .into_generator()
+        .into_root_schema_for::<T>();
+    schema.insert("title".to_string(), json!(name));
+    schema.insert(
+        "description".to_string(),
+        json!(format!("Written by {written_by}.")),
+    );
+    Document {
+        name,
+        written_by,
+        schema,
+    }
+}
+
+/// `check --json` prints one report for one formula and an array of them for a `--formulas` file.
+struct CheckOutput;
+
+impl JsonSchema for CheckOutput {
+    fn schema_name() -> Cow<'static, str> {
+        "CheckOutput".into()
+    }
+
+    fn json_schema(generator: &mut SchemaGenerator) -> Schema {
+        let one = generator.subschema_for::<Versioned<crate::check::Report>>();
+        json_schema!({
+            "anyOf": [one, {"type": "array", "items": one}]
+        })
+    }
+}
+
+/// Every JSON document of the tool, in a fixed order.
+pub fn documents() -> Vec<Document> {
+    use crate::models::{belt, pulled_mass, woodpecker};
+    vec![
+        document::<Versioned<pulled_mass::results::Evaluation>>(
+            "eval-pulled-mass",
+            "`stickslip eval pulled-mass --json` (physics.md §7)",
+        ),
+        document::<Versioned<woodpecker::results::Evaluation>>(
+            "eval-woodpecker",
+            "`stickslip eval woodpecker --json` (physics.md §7)",
+        ),
+        document::<Versioned<belt::results::Evaluation>>(
+            "eval-belt",
+            "`stickslip eval belt --json`",
+        ),
+        document::<Versioned<crate::claims::Claims>>(
+            "claims",
+            "`stickslip claims MODEL --json`",
+        ),
+        document::<CheckOutput>(
+            "check",
+            "`stickslip check … --json` (one object for one formula, an array for --formulas) and check.json of `check --out`",
+        ),
+        document::<Versioned<crate::fit::Fit>>(
+            "fit",
+            "`stickslip fit … --json` and fit.json of `fit --out`",
+        ),
+        document::<crate::worksheet::json::KeySchema>(
+            "answer-key",
+            "answer-key.json of `stickslip worksheet`",
+        ),
+        document::<Versioned<crate::bench::BenchResults>>(
+            "bench-results",
+            "results.json of `stickslip bench`",
+        ),
+    ]
+}
+
+/// The schema files, `schema/NAME.schema.json`, pretty-printed with a final newline.
+pub fn files() -> Result<Vec<crate::report::OutFile>> {
+    documents()
+        .into_iter()
+        .map(|d| {
+            let path = format!("{FOLDER}/{}.schema.json", d.name);
+            let text = serde_json::to_string_pretty(&d.schema).map_err(|e| Error::Template {
+                name: path.clone(),
+                reason: e.to_string(),
+            })?;
+            Ok(crate::report::OutFile::new(
+                path,
+                (text + "\n").into_bytes(),
+            ))
+        })
+        .collect()
+}
+
+/// A string that is one of `ids` (deduplicated, in their order).
+fn one_of<'a>(description: &str, ids: impl IntoIterator<Item = &'a str>) -> Schema {
+    let mut list: Vec<&str> = Vec::new();
+    for id in ids {
+        if !list.contains(&id) {
+            list.push(id);
+        }
+    }
+    json_schema!({"type": "string", "description": description, "enum": list})
+}
+
+/// A number or null, described by `words` and `unit`.
+fn number(words: &str, unit: &str) -> Value {
+    let description = if unit.is_empty() {
+        words.to_string()
+    } else {
+        format!("{words} ({unit})")
+    };
+    json!({"type": ["number", "null"], "description": description})
+}
+
+/// The §7 `closed_form` object of a registry: every key of the object required, numbers as
+/// number-or-null, the `regime` key one of `regimes`, the other labels flags.
+fn closed_form<K: Registry>(regimes: &[&str]) -> Schema {
+    let mut properties = serde_json::Map::new();
+    let mut required = Vec::new();
+    for e in K::ENTRIES.iter().filter(|e| e.kind != Kind::Checked) {
+        let q = &e.quantity;
+        let value = match e.kind {
+            Kind::Number => number(q.words, q.unit),
+            _ if q.id == "regime" => {
+                json!({"type": "string", "description": q.words, "enum": regimes})
+            }
+            _ => json!({"type": "boolean", "description": q.words}),
+        };
+        properties.insert(q.id.to_string(), value);
+        required.push(q.id);
+    }
+    json_schema!({
+        "type": "object",
+        "properties": properties,
+        "required": required,
+        "additionalProperties": false,
+    })
+}
+
+impl JsonSchema for crate::models::pulled_mass::formula::Regime {
+    fn schema_name() -> Cow<'static, str> {
+        "PulledMassRegime".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        one_of(
+            "Regime of the pulled mass's closed forms (§1.5)",
+            Self::ALL.iter().map(|r| r.id()),
+        )
+    }
+}
+
+impl JsonSchema for crate::models::pulled_mass::formula::ClosedForm {
+    fn schema_name() -> Cow<'static, str> {
+        "PulledMassClosedForm".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        use crate::models::pulled_mass::formula::Regime;
+        let ids: Vec<&str> = Regime::ALL.iter().map(|r| r.id()).collect();
+        closed_form::<crate::models::pulled_mass::quantity::Key>(&ids)
+    }
+}
+
+impl JsonSchema for crate::models::woodpecker::formula::WoodpeckerClosedForm {
+    fn schema_name() -> Cow<'static, str> {
+        "WoodpeckerClosedForm".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        use crate::models::woodpecker::lobe::OrbitRegime;
+        let mut ids: Vec<&str> = Vec::new();
+        for id in OrbitRegime::ALL.iter().map(|r| r.id()) {
+            if !ids.contains(&id) {
+                ids.push(id);
+            }
+        }
+        closed_form::<crate::models::woodpecker::quantity::Key>(&ids)
+    }
+}
+
+impl JsonSchema for crate::models::belt::formula::ClosedForm {
+    fn schema_name() -> Cow<'static, str> {
+        "BeltClosedForm".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        use crate::models::belt::formula::Regime;
+        let ids = [Regime::StickSlip.id(), Regime::TouchingOscillation.id()];
+        closed_form::<crate::models::belt::quantity::Key>(&ids)
+    }
+}
+
+impl JsonSchema for crate::models::woodpecker::lobe::OrbitRegime {
+    fn schema_name() -> Cow<'static, str> {
+        "OrbitRegime".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        one_of(
+            "Regime of the woodpecker's periodic orbit (§3.6)",
+            Self::ALL.iter().map(|r| r.id()),
+        )
+    }
+}
+
+impl JsonSchema for crate::engine::IntegrationRegime {
+    fn schema_name() -> Cow<'static, str> {
+        "IntegrationRegime".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        one_of(
+            "Regime the exact integration shows (§7)",
+            Self::ALL.iter().map(|r| r.json_id()),
+        )
+    }
+}
+
+impl JsonSchema for crate::results::quantity::AnyKey {
+    fn schema_name() -> Cow<'static, str> {
+        "QuantityKey".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({"type": "string", "description": "A §7 closed-form key"})
+    }
+}
+
+impl JsonSchema for crate::results::checks::Checked {
+    fn schema_name() -> Cow<'static, str> {
+        "CheckedQuantity".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "type": "string",
+            "description": "The quantity checked: a §7 closed-form key, or a quantity of the woodpecker's periodic orbit"
+        })
+    }
+}
+
+impl JsonSchema for crate::results::quantity::Value {
+    fn schema_name() -> Cow<'static, str> {
+        "QuantityValue".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "description": "A number (SI; null where the expression is undefined), a flag or a regime id",
+            "type": ["number", "null", "boolean", "string"]
+        })
+    }
+}
+
+impl JsonSchema for crate::results::summary::Power {
+    fn schema_name() -> Cow<'static, str> {
+        "Power".into()
+    }
+
+    fn json_schema(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({
+            "type": "object",
+            "properties": {
+                "power": number("Pulled mass: driving power F v̄ on the settled orbit", "W"),
+                "power_weight": number("Woodpecker: power of the weight W_S v̄ on the settled orbit", "W"),
+                "power_friction": number("Friction dissipation measured on the run", "W"),
+            },
+            "required": ["power_friction"],
+        })
+    }
+}
