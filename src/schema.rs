@@ -7,7 +7,7 @@
 //!
 //! Most types derive `JsonSchema` next to their `Serialize` (under the `cli` feature, so the
 //! core builds without schemars). The types that serialize by hand are described here, from the
-//! same data their `Serialize` reads: the §7 `closed_form` objects from each model's registry
+//! same data their `Serialize` reads: the guide §14 `closed_form` objects from each model's registry
 //! (one property per key, numbers with their unit and meaning), the regime ids from the enums'
 //! `ALL` lists.
 
@@ -73,11 +73,11 @@ pub fn documents() -> Vec<Document> {
     vec![
         document::<Versioned<pulled_mass::results::Evaluation>>(
             "eval-pulled-mass",
-            "`stickslip eval pulled-mass --json` (physics.md §7)",
+            "`stickslip eval pulled-mass --json` (guide §14)",
         ),
         document::<Versioned<woodpecker::results::Evaluation>>(
             "eval-woodpecker",
-            "`stickslip eval woodpecker --json` (physics.md §7)",
+            "`stickslip eval woodpecker --json` (guide §14)",
         ),
         document::<Versioned<belt::results::Evaluation>>(
             "eval-belt",
@@ -145,7 +145,7 @@ fn number(words: &str, unit: &str) -> Value {
     json!({"type": ["number", "null"], "description": description})
 }
 
-/// The §7 `closed_form` object of a registry: every key of the object required, numbers as
+/// The guide §14 `closed_form` object of a registry: every key of the object required, numbers as
 /// number-or-null, the `regime` key one of `regimes`, the other labels flags.
 fn closed_form<K: Registry>(regimes: &[&str]) -> Schema {
     let mut properties = serde_json::Map::new();
@@ -177,7 +177,7 @@ impl JsonSchema for crate::models::pulled_mass::formula::Regime {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         one_of(
-            "Regime of the pulled mass's closed forms (§1.5)",
+            "Regime of the pulled mass's closed forms (guide §9)",
             Self::ALL.iter().map(|r| r.id()),
         )
     }
@@ -231,7 +231,7 @@ impl JsonSchema for crate::models::woodpecker::lobe::OrbitRegime {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         one_of(
-            "Regime of the woodpecker's periodic orbit (§3.6)",
+            "Regime of the woodpecker's periodic orbit (guide §10)",
             Self::ALL.iter().map(|r| r.id()),
         )
     }
@@ -244,7 +244,7 @@ impl JsonSchema for crate::engine::IntegrationRegime {
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         one_of(
-            "Regime the exact integration shows (§7)",
+            "Regime the exact integration shows (guide §14)",
             Self::ALL.iter().map(|r| r.json_id()),
         )
     }
@@ -256,7 +256,7 @@ impl JsonSchema for crate::results::quantity::AnyKey {
     }
 
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({"type": "string", "description": "A §7 closed-form key"})
+        json_schema!({"type": "string", "description": "A guide §14 closed-form key"})
     }
 }
 
@@ -268,7 +268,7 @@ impl JsonSchema for crate::results::checks::Checked {
     fn json_schema(_: &mut SchemaGenerator) -> Schema {
         json_schema!({
             "type": "string",
-            "description": "The quantity checked: a §7 closed-form key, or a quantity of the woodpecker's periodic orbit"
+            "description": "The quantity checked: a guide §14 closed-form key, or a quantity of the woodpecker's periodic orbit"
         })
     }
 }
