@@ -622,23 +622,13 @@ mod tests {
     }
 
     /// Length of the first arrow shaft in `<g class="{class}">`, plus its head.
-    fn arrow_length(svg: &str, class: &str) -> f64 {
-        let doc = roxmltree::Document::parse(svg).unwrap();
-        let g = doc
-            .descendants()
-            .find(|n| n.attribute("class") == Some(class))
-            .unwrap_or_else(|| panic!("no {class}"));
-        let line = g.children().find(|n| n.has_tag_name("line")).unwrap();
-        let head = g.children().find(|n| n.has_tag_name("polygon")).unwrap();
-        let num = |n: roxmltree::Node, a: &str| n.attribute(a).unwrap().parse::<f64>().unwrap();
-        let tip: Vec<f64> = head
-            .attribute("points")
-            .unwrap()
-            .split([' ', ','])
-            .take(2)
-            .map(|v| v.parse().unwrap())
-            .collect();
-        (tip[0] - num(line, "x1")).hypot(tip[1] - num(line, "y1"))
+    /// The length (px) of the force arrow of class `force-{force}`.
+    fn arrow_length(svg: &str, force: &str) -> f64 {
+        crate::report::sketch::force_arrows(svg)
+            .into_iter()
+            .find(|(class, _, _)| class == force)
+            .map(|(_, dx, dy)| dx.hypot(dy))
+            .unwrap_or_else(|| panic!("no force-{force}"))
     }
 
     fn dimension_length(svg: &str, class: &str) -> f64 {
@@ -887,9 +877,9 @@ mod tests {
             ..Default::default()
         };
         let harder = pulled_mass(&harder, Phase::Stuck);
-        let f = |svg: &str| arrow_length(svg, "force-f");
+        let f = |svg: &str| arrow_length(svg, "f");
         assert!((f(&harder) / f(&pulled) - 2.0).abs() < 0.02);
-        let ratio = arrow_length(&pulled, "force-n") / arrow_length(&pulled, "force-w");
+        let ratio = arrow_length(&pulled, "n") / arrow_length(&pulled, "w");
         assert!((ratio - 2.0).abs() < 0.01, "{ratio}");
     }
 
