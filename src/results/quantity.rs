@@ -55,6 +55,41 @@ pub struct Entry<K: 'static, R: 'static> {
     pub regimes: R,
 }
 
+impl<K, R> Entry<K, R> {
+    /// An entry of a model's table from its parts, in the columns' order (a `const` table reads
+    /// one call per quantity).
+    #[allow(clippy::too_many_arguments)]
+    pub const fn new(
+        key: K,
+        kind: Kind,
+        regimes: R,
+        id: &'static str,
+        symbol: &'static str,
+        tex: &'static str,
+        unit: &'static str,
+        equation: &'static str,
+        tag: &'static str,
+        latex: &'static str,
+        words: &'static str,
+    ) -> Self {
+        Entry {
+            key,
+            kind,
+            quantity: Quantity {
+                id,
+                symbol,
+                tex,
+                unit,
+                equation,
+                tag,
+                latex,
+                words,
+            },
+            regimes,
+        }
+    }
+}
+
 /// The typed key of a model's quantities, and the model's registry.
 pub trait Registry: Copy + Eq + std::fmt::Debug + 'static {
     /// Where a quantity of this model describes the motion.

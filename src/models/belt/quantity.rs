@@ -3,7 +3,7 @@
 //! keys are written here and nowhere else.
 
 use super::formula::Regime;
-use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
+use crate::results::quantity::{AnyKey, Entry, Kind, Registry};
 
 /// A quantity of the belt, in the order of the `closed_form` object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -63,21 +63,9 @@ const fn e(
     latex: &'static str,
     words: &'static str,
 ) -> Entry<Key, &'static [Regime]> {
-    Entry {
-        key,
-        kind,
-        quantity: Quantity {
-            id,
-            symbol,
-            tex,
-            unit,
-            equation,
-            tag: "[D]",
-            latex,
-            words,
-        },
-        regimes: ALWAYS,
-    }
+    Entry::new(
+        key, kind, ALWAYS, id, symbol, tex, unit, equation, "[D]", latex, words,
+    )
 }
 
 /// The belt's quantities, in the order they are shown.

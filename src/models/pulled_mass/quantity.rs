@@ -3,7 +3,7 @@
 //! describes the motion. The JSON keys (guide §14) are written here and nowhere else.
 
 use crate::models::pulled_mass::formula::Regime;
-use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
+use crate::results::quantity::{AnyKey, Entry, Kind, Registry};
 
 /// A quantity of the pulled mass, in the order of the guide §14 `closed_form` object.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -82,43 +82,11 @@ const SAME_PERIOD: &[Regime] = &[Regime::SlipStick];
 /// The stick early in the next period (guide §7.5).
 const LATE: &[Regime] = &[Regime::SlipStickLate];
 
-/// An entry of the table.
-#[allow(clippy::too_many_arguments)]
-const fn e(
-    key: Key,
-    kind: Kind,
-    regimes: &'static [Regime],
-    id: &'static str,
-    symbol: &'static str,
-    tex: &'static str,
-    unit: &'static str,
-    equation: &'static str,
-    tag: &'static str,
-    latex: &'static str,
-    words: &'static str,
-) -> Entry<Key, &'static [Regime]> {
-    Entry {
-        key,
-        kind,
-        quantity: Quantity {
-            id,
-            symbol,
-            tex,
-            unit,
-            equation,
-            tag,
-            latex,
-            words,
-        },
-        regimes,
-    }
-}
-
 use Kind::{Checked, Label, Number};
 
 /// The pulled mass's quantities; the numbers in the order they are shown.
 const ENTRIES: &[Entry<Key, &[Regime]>] = &[
-    e(
+    Entry::new(
         Key::Phi,
         Number,
         ALWAYS,
@@ -131,7 +99,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\varphi = F/W",
         "the pull in units of the weight",
     ),
-    e(
+    Entry::new(
         Key::TauSlip,
         Number,
         SLIPS,
@@ -144,7 +112,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\tau_{SL} = \tfrac12\left(1 - \frac{\varphi}{2\mu_s}\right)",
         "when the block starts to slip, as a fraction of the period",
     ),
-    e(
+    Entry::new(
         Key::TSlip,
         Number,
         SLIPS,
@@ -157,7 +125,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"t_{SL} = T\,\tau_{SL}",
         "when the block starts to slip",
     ),
-    e(
+    Entry::new(
         Key::ASlip,
         Number,
         SLIPS,
@@ -170,7 +138,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"a_{SL} = \frac{g\varphi}{2}\left(1 - \frac{\mu_d}{\mu_s}\right)",
         "the acceleration just after the slip starts",
     ),
-    e(
+    Entry::new(
         Key::TauMaxSpeed,
         Number,
         SLIPS,
@@ -183,7 +151,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\tau_M = \tfrac12\left(1 + \frac{\varphi}{2\mu_d}\right)",
         "when the block is fastest, as a fraction of the period",
     ),
-    e(
+    Entry::new(
         Key::TMaxSpeed,
         Number,
         SLIPS,
@@ -196,7 +164,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"t_M = T\,\tau_M",
         "when the block is fastest",
     ),
-    e(
+    Entry::new(
         Key::VMax,
         Number,
         SLIPS,
@@ -209,7 +177,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"v_M = \frac{g T \varphi^2 D}{16 \mu_s^2 \mu_d}",
         "the largest speed of the slip",
     ),
-    e(
+    Entry::new(
         Key::TauStick,
         Number,
         SAME_PERIOD,
@@ -222,7 +190,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\tau_{ST} = \tfrac12 (1 + \varphi\Theta)",
         "when the block sticks again, as a fraction of the period",
     ),
-    e(
+    Entry::new(
         Key::TStick,
         Number,
         SAME_PERIOD,
@@ -235,7 +203,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"t_{ST} = T\,\tau_{ST}",
         "when the block sticks again",
     ),
-    e(
+    Entry::new(
         Key::SlipDuration,
         Number,
         SAME_PERIOD,
@@ -248,7 +216,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"t_{ST} - t_{SL} = \frac{T\varphi}{2}\,\frac{\mu_s + \mu_d + \sqrt{D}}{2\mu_s\mu_d}",
         "how long the slip lasts",
     ),
-    e(
+    Entry::new(
         Key::Theta,
         Number,
         ALWAYS,
@@ -261,7 +229,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\Theta = \frac{\mu_s + \sqrt{D}}{2\mu_s\mu_d},\quad D = \mu_s^2 + 2\mu_s\mu_d - \mu_d^2",
         "a number set by the two friction coefficients that fixes the stick time",
     ),
-    e(
+    Entry::new(
         Key::PhiStickMax,
         Number,
         ALWAYS,
@@ -274,7 +242,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\varphi \le 1/\Theta = \frac{2\mu_s\mu_d}{\mu_s + \sqrt{D}}",
         "the largest pull (in units of the weight) for a stick within the same period",
     ),
-    e(
+    Entry::new(
         Key::PhiContinuous,
         Number,
         ALWAYS,
@@ -287,7 +255,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\varphi_c = \frac{4\mu_s\mu_d}{2\mu_s + \sqrt{2D}}",
         "the largest pull (in units of the weight) for any stick; above it the block never stops",
     ),
-    e(
+    Entry::new(
         Key::MuMinEqual,
         Number,
         ALWAYS,
@@ -300,7 +268,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\mu_{MIN} = \frac{(1+\sqrt2)\,\varphi}{2}",
         "the least friction coefficient, with μs = μd, for a stick within the same period",
     ),
-    e(
+    Entry::new(
         Key::Gamma,
         Number,
         ALWAYS,
@@ -313,7 +281,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\Gamma = \frac{D^{3/2} + \mu_s^3 + 3\mu_s^2\mu_d - \mu_d^3}{96\,\mu_s^3\mu_d^2}",
         "a number set by the two friction coefficients that fixes the mean speed",
     ),
-    e(
+    Entry::new(
         Key::VAvg,
         Number,
         SAME_PERIOD,
@@ -326,7 +294,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\bar v = g T \varphi^3 \Gamma",
         "the mean speed over a period",
     ),
-    e(
+    Entry::new(
         Key::AdvancePerPeriod,
         Number,
         SAME_PERIOD,
@@ -339,7 +307,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"x_T = g T^2 \varphi^3 \Gamma",
         "how far the block moves in one period",
     ),
-    e(
+    Entry::new(
         Key::Power,
         Number,
         SAME_PERIOD,
@@ -352,7 +320,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"P = F\bar v = \frac{gT}{W^3}\,\Gamma F^4",
         "the mean power of the pull, all of it dissipated by friction",
     ),
-    e(
+    Entry::new(
         Key::TauStickLate,
         Number,
         LATE,
@@ -365,7 +333,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\tau_{ST,late} = 1 + \tau'_M - \sqrt{2\tau_M'^2 - \frac{v_M}{gT\mu_d}}",
         "when the block sticks early in the next period, as a fraction of the period",
     ),
-    e(
+    Entry::new(
         Key::AdvancePerPeriodLate,
         Number,
         LATE,
@@ -378,7 +346,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"x_{T,late} = gT^2\,[F_1]_{\tau_{SL}}^{1/2} + [F_2]_{1/2}^{1} + [F_3]_{1}^{\tau_{ST,late}}",
         "how far the block moves in one period when it sticks late",
     ),
-    e(
+    Entry::new(
         Key::VAvgLate,
         Number,
         LATE,
@@ -391,7 +359,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\bar v_{late} = x_{T,late}/T",
         "the mean speed when the block sticks late",
     ),
-    e(
+    Entry::new(
         Key::Regime,
         Label,
         ALWAYS,
@@ -404,7 +372,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\text{regime}",
         "which motion the closed forms give: when, if ever, the block sticks",
     ),
-    e(
+    Entry::new(
         Key::ImmediateSlip,
         Label,
         ALWAYS,
@@ -417,7 +385,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\text{immediate slip}",
         "whether the block slips at once, at t = 0",
     ),
-    e(
+    Entry::new(
         Key::SamePeriodValid,
         Label,
         ALWAYS,
@@ -430,7 +398,7 @@ const ENTRIES: &[Entry<Key, &[Regime]>] = &[
         r"\varphi \le 1/\Theta",
         "whether the block sticks within the period, so that (18)–(30) describe it",
     ),
-    e(
+    Entry::new(
         Key::PowerLate,
         Checked,
         LATE,

@@ -4,7 +4,7 @@
 //! lobe engine, numbered by slip at run time, are named by [`OrbitQuantity`].
 
 use crate::models::woodpecker::lobe::Phase;
-use crate::results::quantity::{AnyKey, Entry, Kind, Quantity, Registry};
+use crate::results::quantity::{AnyKey, Entry, Kind, Registry};
 
 /// The section of the lobe engine (guide §8.6): the equation of its orbit quantities.
 pub const ORBIT: &str = "guide §8.6";
@@ -131,43 +131,11 @@ impl Scope {
     }
 }
 
-/// An entry of the table.
-#[allow(clippy::too_many_arguments)]
-const fn e(
-    key: Key,
-    kind: Kind,
-    regimes: Scope,
-    id: &'static str,
-    symbol: &'static str,
-    tex: &'static str,
-    unit: &'static str,
-    equation: &'static str,
-    tag: &'static str,
-    latex: &'static str,
-    words: &'static str,
-) -> Entry<Key, Scope> {
-    Entry {
-        key,
-        kind,
-        quantity: Quantity {
-            id,
-            symbol,
-            tex,
-            unit,
-            equation,
-            tag,
-            latex,
-            words,
-        },
-        regimes,
-    }
-}
-
 use Kind::{Label, Number};
 
 /// The woodpecker's quantities; the numbers in the order they are shown.
 const ENTRIES: &[Entry<Key, Scope>] = &[
-    e(
+    Entry::new(
         Key::Zeta0,
         Number,
         Scope::Parameters,
@@ -180,7 +148,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\zeta_0 \quad \text{(counterpart of } d_0)",
         "the amplitude of the linear law's spring coordinate",
     ),
-    e(
+    Entry::new(
         Key::Delta0,
         Number,
         Scope::Parameters,
@@ -193,7 +161,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\delta_0 \quad \text{(counterpart of } z_0)",
         "the offset of the linear law's spring coordinate",
     ),
-    e(
+    Entry::new(
         Key::TauQuarter,
         Number,
         Scope::Parameters,
@@ -206,7 +174,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\tau = T/4",
         "a quarter of the period",
     ),
-    e(
+    Entry::new(
         Key::USMinus,
         Number,
         Scope::Parameters,
@@ -219,7 +187,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"u_s^{(-)} = 2\lambda\mu_s - 1",
         "the static friction factor while the spring force is positive",
     ),
-    e(
+    Entry::new(
         Key::USPlus,
         Number,
         Scope::Parameters,
@@ -232,7 +200,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"u_s^{(+)} = 2\lambda\mu_s + 1",
         "the static friction factor while the spring force is negative",
     ),
-    e(
+    Entry::new(
         Key::UDMinus,
         Number,
         Scope::Parameters,
@@ -245,7 +213,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"u_d^{(-)} = 2\lambda\mu_d - 1",
         "the dynamic friction factor while the spring force is positive",
     ),
-    e(
+    Entry::new(
         Key::UDPlus,
         Number,
         Scope::Parameters,
@@ -258,7 +226,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"u_d^{(+)} = 2\lambda\mu_d + 1",
         "the dynamic friction factor while the spring force is negative",
     ),
-    e(
+    Entry::new(
         Key::Eta,
         Number,
         Scope::Parameters,
@@ -271,7 +239,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\eta = k(\zeta_0 - \delta_0)/W_S",
         "the height of the negative lobe of the spring force, in sleeve weights",
     ),
-    e(
+    Entry::new(
         Key::EtaPrime,
         Number,
         Scope::Parameters,
@@ -284,7 +252,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\eta' = k(\zeta_0 + \delta_0)/W_S",
         "the height of the positive lobe of the spring force, in sleeve weights",
     ),
-    e(
+    Entry::new(
         Key::ImmediateSlip,
         Label,
         Scope::Parameters,
@@ -297,7 +265,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\text{immediate slip}",
         "whether the sleeve slips at once, at t = 0",
     ),
-    e(
+    Entry::new(
         Key::T01,
         Number,
         Scope::Parameters,
@@ -310,7 +278,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_0^{(I)} = \tau\,(1 + \delta_0/\zeta_0)",
         "when the spring force falls through zero",
     ),
-    e(
+    Entry::new(
         Key::Delta1,
         Number,
         Scope::Parameters,
@@ -323,7 +291,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\Delta^{(I)} = \frac{\tau W_S}{k\zeta_0 u_s^{(-)}}",
         "how long before that zero the phase-I slip starts",
     ),
-    e(
+    Entry::new(
         Key::TSlip1,
         Number,
         Scope::Slip(Phase::One),
@@ -336,7 +304,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_{SL}^{(I)} = t_0^{(I)} - \Delta^{(I)}",
         "when the sleeve starts to slip in phase I",
     ),
-    e(
+    Entry::new(
         Key::ASlip1,
         Number,
         Scope::Slip(Phase::One),
@@ -349,7 +317,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"a_{SL}^{(I)} = g\,\frac{u_s^{(-)} - u_d^{(-)}}{u_s^{(-)}}",
         "the acceleration just after the phase-I slip starts",
     ),
-    e(
+    Entry::new(
         Key::TMaxSpeed1,
         Number,
         Scope::Slip(Phase::One),
@@ -362,7 +330,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_M^{(I)} = t_0^{(I)} + \Delta^{(I)} u_s^{(-)}/u_d^{(+)}",
         "when the sleeve is fastest in the phase-I slip",
     ),
-    e(
+    Entry::new(
         Key::VMax1,
         Number,
         Scope::Slip(Phase::One),
@@ -375,7 +343,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"v_M^{(I)} = \frac{g\Delta^{(I)}}{2}\,\frac{u_d^{(+)}(2u_s^{(-)} - u_d^{(-)}) + u_s^{(-)2}}{u_s^{(-)} u_d^{(+)}}",
         "the largest speed of the phase-I slip",
     ),
-    e(
+    Entry::new(
         Key::S1,
         Number,
         Scope::Slip(Phase::One),
@@ -388,7 +356,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"S^{(I)} = \frac{u_s^{(-)} + \sqrt{u_s^{(-)2} + 2u_s^{(-)}u_d^{(+)} - u_d^{(-)}u_d^{(+)}}}{u_d^{(+)}}",
         "a number set by the friction factors that fixes the phase-I stick time",
     ),
-    e(
+    Entry::new(
         Key::TStick1,
         Number,
         Scope::Slip(Phase::One),
@@ -401,7 +369,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_{ST}^{(I)} = t_0^{(I)} + \Delta^{(I)} S^{(I)}",
         "when the sleeve sticks again after the phase-I slip",
     ),
-    e(
+    Entry::new(
         Key::MuDMin1,
         Number,
         Scope::Parameters,
@@ -414,7 +382,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\mu_{d,MIN}^{(I)} = \frac{1}{2\lambda}\,\frac{u_s^{(-)2}\eta(2-\eta) + 2u_s^{(-)} + 1}{u_s^{(-)2}\eta^2 + 1}",
         "the least μd for which the phase-I slip stops within its half period",
     ),
-    e(
+    Entry::new(
         Key::MuDHalt1,
         Number,
         Scope::Parameters,
@@ -427,7 +395,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\mu_{d,HALT}^{(I)} = \frac{\max(x_+, 1/\eta) - 1}{2\lambda}",
         "the least μd for which the phase-I slip stops before the next slip",
     ),
-    e(
+    Entry::new(
         Key::Gamma1,
         Number,
         Scope::Slip(Phase::One),
@@ -440,7 +408,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\Gamma^{(I)} = \frac{3u_s^{(-)}(S+1)^2 - u_d^{(+)}S^3 - 3u_d^{(-)}S - 2u_d^{(-)}}{u_s^{(-)3}}",
         "a number set by the friction factors that fixes the phase-I distance",
     ),
-    e(
+    Entry::new(
         Key::Distance1,
         Number,
         Scope::Slip(Phase::One),
@@ -453,7 +421,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"y^{(I)} = \frac{g\tau^2 W_S^2\,\Gamma^{(I)}}{6\zeta_0^2 k^2}",
         "how far the sleeve slides in the phase-I slip",
     ),
-    e(
+    Entry::new(
         Key::T02,
         Number,
         Scope::Parameters,
@@ -466,7 +434,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_0^{(II)} = \tau\,(3 - \delta_0/\zeta_0)",
         "when the spring force rises through zero",
     ),
-    e(
+    Entry::new(
         Key::Delta2,
         Number,
         Scope::Parameters,
@@ -479,7 +447,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\Delta^{(II)} = \frac{\tau W_S}{k\zeta_0 u_s^{(+)}}",
         "how long before that zero the phase-II slip starts",
     ),
-    e(
+    Entry::new(
         Key::TSlip2,
         Number,
         Scope::Slip(Phase::Two),
@@ -492,7 +460,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_{SL}^{(II)} = t_0^{(II)} - \Delta^{(II)}",
         "when the sleeve starts to slip in phase II",
     ),
-    e(
+    Entry::new(
         Key::ASlip2,
         Number,
         Scope::Slip(Phase::Two),
@@ -505,7 +473,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"a_{SL}^{(II)} = g\,\frac{u_s^{(+)} - u_d^{(+)}}{u_s^{(+)}}",
         "the acceleration just after the phase-II slip starts",
     ),
-    e(
+    Entry::new(
         Key::TMaxSpeed2,
         Number,
         Scope::Slip(Phase::Two),
@@ -518,7 +486,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_M^{(II)} = t_0^{(II)} + \Delta^{(II)} u_s^{(+)}/u_d^{(-)}",
         "when the sleeve is fastest in the phase-II slip",
     ),
-    e(
+    Entry::new(
         Key::VMax2,
         Number,
         Scope::Slip(Phase::Two),
@@ -531,7 +499,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"v_M^{(II)} = \frac{g\Delta^{(II)}}{2}\,\frac{u_d^{(-)}(2u_s^{(+)} - u_d^{(+)}) + u_s^{(+)2}}{u_s^{(+)} u_d^{(-)}}",
         "the largest speed of the phase-II slip",
     ),
-    e(
+    Entry::new(
         Key::S2,
         Number,
         Scope::Slip(Phase::Two),
@@ -544,7 +512,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"S^{(II)} = \frac{u_s^{(+)} + \sqrt{u_s^{(+)2} + 2u_s^{(+)}u_d^{(-)} - u_d^{(+)}u_d^{(-)}}}{u_d^{(-)}}",
         "a number set by the friction factors that fixes the phase-II stick time",
     ),
-    e(
+    Entry::new(
         Key::TStick2,
         Number,
         Scope::Slip(Phase::Two),
@@ -557,7 +525,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_{ST}^{(II)} = t_0^{(II)} + \Delta^{(II)} S^{(II)}",
         "when the sleeve sticks again after the phase-II slip",
     ),
-    e(
+    Entry::new(
         Key::MuDMin2,
         Number,
         Scope::Parameters,
@@ -570,7 +538,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\mu_{d,MIN}^{(II)} = \frac{1}{2\lambda}\,\frac{u_s^{(+)2}\eta'(\eta'+2) + 2u_s^{(+)} - 1}{u_s^{(+)2}\eta'^2 + 1}",
         "the least μd for which the phase-II slip stops within its half period",
     ),
-    e(
+    Entry::new(
         Key::MuDHalt2,
         Number,
         Scope::Parameters,
@@ -583,7 +551,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\mu_{d,HALT}^{(II)} = \frac{\max(x'_+, 1/\eta') + 1}{2\lambda}",
         "the least μd for which the phase-II slip stops before the next slip",
     ),
-    e(
+    Entry::new(
         Key::Gamma2,
         Number,
         Scope::Slip(Phase::Two),
@@ -596,7 +564,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\Gamma^{(II)} = \frac{3u_s^{(+)}(S+1)^2 - u_d^{(-)}S^3 - 3u_d^{(+)}S - 2u_d^{(+)}}{u_s^{(+)3}}",
         "a number set by the friction factors that fixes the phase-II distance",
     ),
-    e(
+    Entry::new(
         Key::Distance2,
         Number,
         Scope::Slip(Phase::Two),
@@ -609,7 +577,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"y^{(II)} = \frac{g\tau^2 W_S^2\,\Gamma^{(II)}}{6\zeta_0^2 k^2}",
         "how far the sleeve slides in the phase-II slip",
     ),
-    e(
+    Entry::new(
         Key::Gamma,
         Number,
         Scope::PaperRegime,
@@ -622,7 +590,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\Gamma = \Gamma^{(I)} + \Gamma^{(II)}",
         "a number set by the friction factors that fixes the advance per period",
     ),
-    e(
+    Entry::new(
         Key::DistancePerPeriod,
         Number,
         Scope::PaperRegime,
@@ -635,7 +603,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"y_S(T) = \frac{g\tau^2 W_S^2\,\Gamma}{6\zeta_0^2 k^2}",
         "how far the sleeve falls in one period",
     ),
-    e(
+    Entry::new(
         Key::VAvg,
         Number,
         Scope::PaperRegime,
@@ -648,7 +616,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\bar v = \frac{g\tau W_S^2\,\Gamma}{24\zeta_0^2 k^2}",
         "the mean speed of the sleeve",
     ),
-    e(
+    Entry::new(
         Key::PowerWeight,
         Number,
         Scope::PaperRegime,
@@ -661,7 +629,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"P_W = W_S\,\bar v",
         "the mean power of the sleeve's weight (not the friction dissipation)",
     ),
-    e(
+    Entry::new(
         Key::PaperRegimeValid,
         Label,
         Scope::Parameters,
@@ -674,7 +642,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"t_{ST}^{(I)} \le T/2,\quad t_{ST}^{(II)} \le T",
         "whether both sticks fall within their half periods, so that (68)–(71) describe the motion",
     ),
-    e(
+    Entry::new(
         Key::Regime,
         Label,
         Scope::Parameters,
@@ -687,7 +655,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\text{regime}",
         "which periodic motion the closed forms give: how many slips and sticks per period",
     ),
-    e(
+    Entry::new(
         Key::OrbitVAvg,
         Number,
         Scope::Orbit,
@@ -700,7 +668,7 @@ const ENTRIES: &[Entry<Key, Scope>] = &[
         r"\bar v = y_{orbit}/T",
         "the mean speed on the periodic orbit, in every regime that has one",
     ),
-    e(
+    Entry::new(
         Key::OrbitDistancePerPeriod,
         Number,
         Scope::Orbit,
