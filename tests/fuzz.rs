@@ -22,6 +22,7 @@ use stickslip::error::Error;
 use stickslip::fit::data::{parse, ReadOptions};
 use stickslip::fit::{fit, FitParam};
 use stickslip::models::woodpecker::WoodpeckerParams;
+use stickslip::models::Model;
 use stickslip::params::Scenario;
 
 /// Longest message the command line prints (main adds "error: ").
@@ -101,39 +102,30 @@ fn value() -> impl Strategy<Value = String> {
     ]
 }
 
-fn flag(model: &str) -> impl Strategy<Value = &'static str> {
-    const PULLED: &[&str] = &["--mu-s", "--mu-d", "--mass", "--k", "--force", "--g"];
-    const WOODPECKER: &[&str] = &[
-        "--mu-s",
-        "--mu-d",
-        "--k",
-        "--m-sleeve",
-        "--m-bird",
-        "--l",
-        "--h",
-        "--z0",
-        "--d0",
-        "--g",
-        "--lever",
-        "--omega",
-        "--counterpart",
-    ];
+/// The flags of a model as the command line spells them (`--mu-s`), from its registry.
+fn model_flags(model: &str) -> Vec<String> {
+    Model::from_id(model).map_or_else(Vec::new, |m| {
+        m.flags()
+            .iter()
+            .map(|f| format!("--{}", f.key.replace('_', "-")))
+            .collect()
+    })
+}
+
+fn flag(model: &str) -> impl Strategy<Value = String> {
     const SHARED: &[&str] = &["--periods", "--scenario", "--json", "--nope", "-x", "--"];
-    let own = if model == "woodpecker" {
-        WOODPECKER
-    } else {
-        PULLED
-    };
-    prop_oneof![
-        4 => proptest::sample::select(own),
-        1 => proptest::sample::select(SHARED),
-    ]
+    let shared = proptest::sample::select(SHARED).prop_map(str::to_string);
+    let own = model_flags(model);
+    if own.is_empty() {
+        return shared.boxed();
+    }
+    prop_oneof![4 => proptest::sample::select(own), 1 => shared].boxed()
 }
 
 /// `stickslip eval MODEL` with flags and values in any order.
 fn eval_line() -> impl Strategy<Value = Vec<String>> {
-    proptest::sample::select(&["pulled-mass", "woodpecker", "pendulum", ""][..]).prop_flat_map(
-        |model| {
+    proptest::sample::select(&["pulled-mass", "woodpecker", "belt", "pendulum", ""][..])
+        .prop_flat_map(|model| {
             proptest::collection::vec((flag(model), value()), 0..6).prop_map(move |pairs| {
                 let mut argv = vec!["stickslip".to_string(), "eval".to_string(), model.into()];
                 for (f, v) in pairs {
@@ -152,8 +144,7 @@ fn eval_line() -> impl Strategy<Value = Vec<String>> {
                 }
                 argv
             })
-        },
-    )
+        })
 }
 
 /// Parses and evaluates an `eval` command line as main does, without printing.
@@ -224,7 +215,7 @@ fn scenario_text() -> impl Strategy<Value = String> {
     ];
     let param_line = (key, toml_value).prop_map(|(k, v)| format!("{k} = {v}"));
     (
-        proptest::sample::select(&["pulled-mass", "woodpecker", "pendulum", ""][..]),
+        proptest::sample::select(&["pulled-mass", "woodpecker", "belt", "pendulum", ""][..]),
         value(),
         value(),
         proptest::collection::vec(param_line, 0..8),

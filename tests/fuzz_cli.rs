@@ -22,25 +22,11 @@ use std::time::{Duration, Instant};
 use assert_cmd::cargo::cargo_bin;
 use rand::rngs::StdRng;
 use rand::{Rng, SeedableRng};
+use stickslip::models::Model;
 
 /// A call still running after this is a hang.
 const HANG: Duration = Duration::from_secs(60);
 
-const PULLED: &[&str] = &["--mu-s", "--mu-d", "--mass", "--k", "--force", "--g"];
-const WOOD: &[&str] = &[
-    "--mu-s",
-    "--mu-d",
-    "--k",
-    "--m-sleeve",
-    "--m-bird",
-    "--l",
-    "--h",
-    "--z0",
-    "--d0",
-    "--g",
-    "--lever",
-    "--omega",
-];
 const SPECIAL: &[&str] = &[
     "0", "-0", "1", "-1", "0.4", "0.35", "0.1", "1e-300", "1e308", "1.79e308", "-1e308", "nan",
     "inf", "-inf", "5e-324", "abc", "", "1e-8", "2.2e-16", "0.47088", "143.4", "1e13", "1e20",
@@ -62,7 +48,12 @@ fn call(rng: &mut StdRng, out: &Path) -> Vec<String> {
     } else {
         "woodpecker"
     };
-    let flags = if model == "pulled-mass" { PULLED } else { WOOD };
+    let flags: Vec<String> = Model::from_id(model)
+        .expect("a registered model")
+        .flags()
+        .iter()
+        .map(|f| format!("--{}", f.key.replace('_', "-")))
+        .collect();
     let out = out.display().to_string();
     // Weighted to the cheap calls (eval, claims: milliseconds) over the ones that write
     // folders (report, handout, worksheet: about 0.1 s).
@@ -166,9 +157,9 @@ fn call(rng: &mut StdRng, out: &Path) -> Vec<String> {
     if matches!(args[0].as_str(), "eval" | "sweep" | "check" | "claims") {
         let i = args.iter().position(|a| a == model).unwrap() + 1;
         for _ in 0..rng.gen_range(0..4) {
-            let f = flags[rng.gen_range(0..flags.len())];
+            let f = flags[rng.gen_range(0..flags.len())].clone();
             args.insert(i, value(rng));
-            args.insert(i, f.to_string());
+            args.insert(i, f);
         }
         // 10^6 periods (seconds a call) in one call of about 250.
         let mut long = false;
