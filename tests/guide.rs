@@ -7,29 +7,11 @@ use std::path::{Path, PathBuf};
 
 use stickslip::report::guide::{cite, sections, PREFIX};
 
+mod common;
+use common::files;
+
 /// The words that may stand before "§n": the guide's name in English and in Italian.
 const NAMES: [&str; 2] = ["guide ", "guida "];
-
-/// Every text file below `dir` (recursively) whose name ends in one of `exts`.
-fn files(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in std::fs::read_dir(&d).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                stack.push(path);
-            } else if exts
-                .iter()
-                .any(|e| path.extension().is_some_and(|x| x == *e))
-            {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    out
-}
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).to_path_buf()

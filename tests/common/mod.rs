@@ -169,18 +169,26 @@ pub fn write_every_page(dir: &Path) -> Vec<PathBuf> {
             "{args:?}: {out:?}"
         );
     }
-    let mut pages = Vec::new();
+    files(dir, &["html"])
+}
+
+/// Every text file below `dir` (recursively) whose name ends in one of `exts`.
+pub fn files(dir: &Path, exts: &[&str]) -> Vec<PathBuf> {
+    let mut out = Vec::new();
     let mut stack = vec![dir.to_path_buf()];
     while let Some(d) = stack.pop() {
         for entry in std::fs::read_dir(&d).unwrap() {
             let path = entry.unwrap().path();
             if path.is_dir() {
                 stack.push(path);
-            } else if path.extension().is_some_and(|e| e == "html") {
-                pages.push(path);
+            } else if exts
+                .iter()
+                .any(|e| path.extension().is_some_and(|x| x == *e))
+            {
+                out.push(path);
             }
         }
     }
-    pages.sort();
-    pages
+    out.sort();
+    out
 }
