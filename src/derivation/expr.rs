@@ -22,6 +22,7 @@ pub const DIGITS: usize = 4;
 pub enum Func {
     Sqrt,
     Arcsin,
+    Arctan,
 }
 
 /// A closed form as a tree. Leaves are exact integers, named constants (π) and quantities
@@ -96,6 +97,11 @@ pub fn sqrt(e: Expr) -> Expr {
 /// arcsin e.
 pub fn arcsin(e: Expr) -> Expr {
     Expr::Apply(Func::Arcsin, Box::new(e))
+}
+
+/// arctan e (the crate's [`crate::fmath::atan`], that of the closed forms).
+pub fn arctan(e: Expr) -> Expr {
+    Expr::Apply(Func::Arctan, Box::new(e))
 }
 
 /// max(a, b).
@@ -205,6 +211,7 @@ impl Expr {
             Expr::Pow(e, n, d) => e.eval().powf(f64::from(*n) / f64::from(*d)),
             Expr::Apply(Func::Sqrt, e) => e.eval().sqrt(),
             Expr::Apply(Func::Arcsin, e) => e.eval().asin(),
+            Expr::Apply(Func::Arctan, e) => crate::fmath::atan(e.eval()),
             Expr::Max(a, b) => a.eval().max(b.eval()),
         }
     }
@@ -284,6 +291,9 @@ impl Expr {
             Expr::Apply(Func::Arcsin, e) => {
                 (format!(r"\arcsin{}", paren(&e.child(mode, 0))), prec::ATOM)
             }
+            Expr::Apply(Func::Arctan, e) => {
+                (format!(r"\arctan{}", paren(&e.child(mode, 0))), prec::ATOM)
+            }
             Expr::Max(a, b) => (
                 format!(
                     r"\max{}",
@@ -347,6 +357,24 @@ pub fn number_tex(x: f64) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn arctan_renders_in_both_modes_and_evaluates_as_the_closed_forms() {
+        let e = int(2) / var(r"\omega", 10.0)
+            * (pi() - arctan(var(r"\omega", 10.0) * var(r"\Delta", 0.01962) / given("v_b", 0.05)));
+        assert_eq!(
+            e.symbols(),
+            r"\frac{2}{\omega} \left(\pi - \arctan\left(\frac{\omega \Delta}{v_b}\right)\right)"
+        );
+        assert_eq!(
+            e.numbers(),
+            r"\frac{2}{10.00} \times \left(\pi - \arctan\left(\frac{10.00 \times 0.01962}{0.05}\right)\right)"
+        );
+        assert_eq!(
+            e.eval(),
+            2.0 / 10.0 * (std::f64::consts::PI - crate::fmath::atan(10.0 * 0.01962 / 0.05))
+        );
+    }
 
     #[test]
     fn renders_symbols_numbers_and_evaluates() {

@@ -14,6 +14,7 @@
 //! scene.rs     the figures: x(t) and v(t) with the belt's speed, the phase portrait
 //! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase, and its
 //!              geometry for the explorer's animation
+//! derivation.rs the worked substitutions of every closed form (handout, answer keys)
 //! explore.rs   what the explorer page asks (`Explore`): regime sentence, curves, map
 //! map.rs       the (μd, v_b) regime map from the closed forms
 //! ```
@@ -21,6 +22,8 @@
 //! The belt offers the explorer; the commands that need a capability it lacks refuse it.
 
 pub mod body;
+#[cfg(feature = "cli")]
+pub mod derivation;
 pub mod explore;
 pub mod formula;
 pub mod map;
