@@ -17,6 +17,7 @@
 //! derivation.rs the worked substitutions of every closed form (handout, answer keys)
 //! explore.rs   what the explorer page asks (`Explore`): regime sentence, curves, map
 //! map.rs       the (μd, v_b) regime map from the closed forms
+//! teaching.rs  how a handout explains the equation of motion and each derivation step
 //! ```
 //!
 //! The belt offers the explorer; the commands that need a capability it lacks refuse it.
@@ -34,6 +35,8 @@ pub mod results;
 pub mod scene;
 #[cfg(feature = "cli")]
 pub mod sketch;
+#[cfg(feature = "cli")]
+pub mod teaching;
 
 pub use params::BeltParams;
 
