@@ -26,10 +26,9 @@ use super::writer::OutFile;
 use crate::error::Result;
 use crate::explore::{self, Explore, LawText};
 use crate::models::param::{ParamSpec, Rule};
-use crate::models::pulled_mass::sketch as sketch_pm;
-use crate::models::woodpecker::sketch as sketch_wp;
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
+use crate::present::Present;
 
 /// The engine, built by `.ci/wasm` (CI rebuilds it and fails if it differs).
 const ENGINE: &[u8] = include_bytes!("../explorer/engine.wasm");
@@ -93,10 +92,7 @@ pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
         samples: explore::SAMPLES,
         map_cells: MAP_CELLS,
         slider_steps: SLIDER_STEPS,
-        apparatus: ApparatusData {
-            pulled_mass: sketch_pm::APPARATUS,
-            woodpecker: sketch_wp::WOODPECKER_APPARATUS,
-        },
+        apparatus: ApparatusData,
     };
     let json = serde_json::to_string(&data).map_err(|e| crate::error::Error::Template {
         name: FILE.to_string(),
@@ -147,12 +143,28 @@ struct PageData {
     apparatus: ApparatusData,
 }
 
-/// The sketches' geometry, by model id.
-#[derive(Serialize)]
-struct ApparatusData {
-    #[serde(rename = "pulled-mass")]
-    pulled_mass: sketch_pm::Apparatus,
-    woodpecker: sketch_wp::WoodpeckerApparatus,
+/// The sketches' geometry, by model id: each model on the page ([`Capability::Explore`]) with
+/// its [`Present::apparatus`], in the order of the registry.
+struct ApparatusData;
+
+impl Serialize for ApparatusData {
+    fn serialize<S: serde::Serializer>(
+        &self,
+        serializer: S,
+    ) -> std::result::Result<S::Ok, S::Error> {
+        use serde::ser::SerializeMap;
+        fn entry<M: Present, S: SerializeMap>(
+            _: &M,
+            map: &mut S,
+        ) -> std::result::Result<(), S::Error> {
+            map.serialize_entry(M::ID, &M::apparatus())
+        }
+        let mut map = serializer.serialize_map(None)?;
+        for m in Model::offering(Capability::Explore) {
+            with_capability!(&m, present, p => entry(p, &mut map)?, else {});
+        }
+        map.end()
+    }
 }
 
 /// How a law is drawn: the report's figures' colours and dashes.

@@ -13,10 +13,22 @@ use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
+use crate::present::vocab::{Comparison, LawWords};
+use crate::present::Present;
 use crate::report::context::{
     blank, count, fill_checks, input, integration_regime, laws_table, row, RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
+
+/// How the pages and tables name what the closed forms are checked against.
+pub(crate) const LAW_WORDS: LawWords = LawWords {
+    closed_form_law: "linearized law",
+    checked_against: "exact integration of the linearized law",
+    numeric_from: "exact event-driven integration of the same (triangle-wave) law",
+};
+
+/// The heading of the table of both laws side by side.
+const LINEARIZATION: &str = "Linearization: harmonic law against the linearized law";
 
 pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
     let e = pulled_mass::evaluate(p, scene.periods)?;
@@ -47,13 +59,16 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
         integration_regime("harmonic law, exact integration", &e.harmonic),
     ];
     fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
-    ctx.linearization = laws_table(
-        &[
-            ("harmonic", Some(&e.harmonic)),
-            ("linearized", Some(&e.linear)),
-        ],
-        pp.period,
-    );
+    ctx.linearization = Some(Comparison {
+        heading: LINEARIZATION.to_string(),
+        table: laws_table(
+            &[
+                ("harmonic", Some(&e.harmonic)),
+                ("linearized", Some(&e.linear)),
+            ],
+            pp.period,
+        ),
+    });
     Ok(ctx)
 }
 
@@ -85,10 +100,15 @@ pub(crate) fn text(e: &Evaluation) -> String {
         c.regime.id(),
         regime_reason(e)
     );
-    closed_form_table(&mut out, |k: pm::Key| c.get(k));
+    closed_form_table(&mut out, &LAW_WORDS, |k: pm::Key| c.get(k));
     not_describing(&mut out, &e.applicability);
-    checks_table(&mut out, &e.checks);
-    text_laws(&mut out, &e.harmonic, Some(&e.linear));
+    checks_table(&mut out, &LAW_WORDS, &e.checks);
+    text_laws(
+        &mut out,
+        <PulledMassParams as Present>::LAWS,
+        &[Some(&e.harmonic), Some(&e.linear)],
+        "",
+    );
     out
 }
 

@@ -12,11 +12,23 @@ use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
+use crate::present::vocab::{Comparison, LawWords};
+use crate::present::Present;
 use crate::report::context::{
     blank, count, fill_checks, input, integration_regime, laws_table, opt, row, ParamRow,
     RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
+
+/// How the pages and tables name what the closed forms are checked against.
+pub(crate) const LAW_WORDS: LawWords = LawWords {
+    closed_form_law: "linearized law",
+    checked_against: "exact integration of the linearized law",
+    numeric_from: "exact event-driven integration of the same (triangle-wave) law",
+};
+
+/// The heading of the table of both laws side by side.
+const LINEARIZATION: &str = "Linearization: harmonic law against the linearized law";
 use crate::results::Summary;
 
 pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneCtx> {
@@ -95,7 +107,10 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
         .iter()
         .map(|(n, s)| (n.as_str(), s.as_ref()))
         .collect();
-    ctx.linearization = laws_table(&cols, pp.period);
+    ctx.linearization = Some(Comparison {
+        heading: LINEARIZATION.to_string(),
+        table: laws_table(&cols, pp.period),
+    });
     Ok(ctx)
 }
 
@@ -142,11 +157,16 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     if let Some(note) = &e.domain_note {
         let _ = writeln!(out, "closed forms do not apply: {note}");
     }
-    closed_form_table(&mut out, |k: wp::Key| c.get(k));
+    closed_form_table(&mut out, &LAW_WORDS, |k: wp::Key| c.get(k));
     if e.domain_note.is_none() {
         not_describing(&mut out, &e.applicability);
     }
-    checks_table(&mut out, &e.checks);
-    text_laws(&mut out, &e.harmonic, e.linear.as_ref());
+    checks_table(&mut out, &LAW_WORDS, &e.checks);
+    text_laws(
+        &mut out,
+        <WoodpeckerParams as Present>::LAWS,
+        &[Some(&e.harmonic), e.linear.as_ref()],
+        "its counterpart is undefined",
+    );
     out
 }
