@@ -27,6 +27,8 @@ use param::{ChoiceSpec, ParamSpec};
 pub mod belt;
 #[cfg(test)]
 pub mod dummy;
+#[cfg(feature = "cli")]
+pub mod paper;
 pub mod param;
 pub mod pulled_mass;
 pub mod woodpecker;

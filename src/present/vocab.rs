@@ -322,6 +322,30 @@ pub struct Builtin {
     pub claims: &'static [u8],
 }
 
+impl Builtin {
+    /// A built-in scene `id` with its `(title, why)`, its scenario `(file name, text)`, the
+    /// caption, the model's figure kinds and the claims of the paper it concerns.
+    pub fn new<F: FigureKinds>(
+        id: &'static str,
+        (title, why): (&'static str, &'static str),
+        (file, text): (&'static str, &'static str),
+        caption: &'static str,
+        figures: &[F],
+        claims: &'static [u8],
+    ) -> Self {
+        Builtin {
+            id,
+            title,
+            why,
+            file,
+            text,
+            caption,
+            figures: figures.iter().map(|f| f.kind()).collect(),
+            claims,
+        }
+    }
+}
+
 /// A scene of the report.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {

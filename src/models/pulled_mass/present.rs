@@ -5,6 +5,7 @@ use super::{derivation, results, scene, scenes, sketch, tables, teaching, Pulled
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
+use crate::models::paper;
 use crate::present::vocab::{
     Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
     SceneCtx,
@@ -30,22 +31,13 @@ impl Present for PulledMassParams {
                 the pull against the friction limits, then each kind of motion, then the price \
                 of the linearized law that makes every result a closed formula.",
     };
-    const LAWS: &'static [LawName] = &[
-        LawName {
-            id: "harmonic",
-            name: "harmonic law",
-        },
-        LawName {
-            id: "linear",
-            name: "linearized law",
-        },
-    ];
+    const LAWS: &'static [LawName] = paper::LAWS;
     const HANDOUT: Option<(&'static str, &'static str)> = Some((
         "fig10-linear-slip-stick",
         "the pulled mass from its equation of motion to every characteristic time, with the \
          numbers substituted; two A4 pages",
     ));
-    const LAW_WORDS: LawWords = tables::LAW_WORDS;
+    const LAW_WORDS: LawWords = paper::LAW_WORDS;
     type Figure = PulledFigure;
     type Apparatus = sketch::Apparatus;
 

@@ -2,7 +2,7 @@
 //! compiled into the binary, what to draw, and why it matters in the model's part.
 
 use super::scene::PulledFigure;
-use crate::present::vocab::{Builtin, FigureKinds};
+use crate::present::vocab::Builtin;
 
 macro_rules! scenario_file {
     ($name:literal) => {
@@ -15,42 +15,12 @@ const FIG06: (&str, &str) = scenario_file!("fig06-continuous-slip.toml");
 const SET_B: (&str, &str) = scenario_file!("set-b-slip-stick.toml");
 const SET_C: (&str, &str) = scenario_file!("set-c-late-stick.toml");
 
-/// The title and why of a built-in scene.
-struct Story {
-    title: &'static str,
-    why: &'static str,
-}
-
-const fn story(title: &'static str, why: &'static str) -> Story {
-    Story { title, why }
-}
-
-fn builtin(
-    id: &'static str,
-    story: Story,
-    scenario: (&'static str, &'static str),
-    caption: &'static str,
-    figures: &[PulledFigure],
-    claims: &'static [u8],
-) -> Builtin {
-    Builtin {
-        id,
-        title: story.title,
-        why: story.why,
-        file: scenario.0,
-        text: scenario.1,
-        caption,
-        figures: figures.iter().map(|f| f.kind()).collect(),
-        claims,
-    }
-}
-
 /// The built-in scenes, in reading order.
 pub fn builtins() -> Vec<Builtin> {
     vec![
-            builtin(
+            Builtin::new(
             "fig05-immediate-slip",
-            story(
+            (
                 "Fig. 5: immediate slip",
                 "The simplest case sets the scale: a pull stronger than friction can ever hold, φ = F/W > 2μs.",
             ),
@@ -60,9 +30,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Motion { periods: 2.0 }],
             &[],
             ),
-            builtin(
+            Builtin::new(
             "fig06-continuous-slip",
-            story(
+            (
                 "Fig. 6: continuous slip",
                 "Friction brakes the block every period but never stops it: its speed oscillates about a steady drift.",
             ),
@@ -72,9 +42,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Motion { periods: 2.0 }],
             &[1],
             ),
-            builtin(
+            Builtin::new(
             "pulled-forces",
-            story(
+            (
                 "The pull against the friction limits",
                 "One picture decides the motion: where F crosses μs N the slip starts, where it crosses μd N the speed peaks.",
             ),
@@ -85,9 +55,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Forces],
             &[1],
             ),
-            builtin(
+            Builtin::new(
             "fig09-domain",
-            story(
+            (
                 "Fig. 9: where the block sticks, in the (μd, μs) plane",
                 "Which friction pairs give stick-slip, and the band where the paper's condition (20) misses a late stick.",
             ),
@@ -99,9 +69,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Domain],
             &[1],
             ),
-            builtin(
+            Builtin::new(
             "fig10-linear-slip-stick",
-            story(
+            (
                 "Fig. 10: slip-stick within one period",
                 "Textbook stick-slip: every characteristic time has a closed formula, each checked here against the integration.",
             ),
@@ -111,9 +81,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Motion { periods: 1.5 }],
             &[2],
             ),
-            builtin(
+            Builtin::new(
             "late-stick",
-            story(
+            (
                 "Late stick: the block stops in the next period",
                 "A motion the paper's Fig. 9 calls non-stick: the block halts early in the following period.",
             ),
@@ -123,9 +93,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::Motion { periods: 2.0 }],
             &[1],
             ),
-            builtin(
+            Builtin::new(
             "fig11-position",
-            story(
+            (
                 "Fig. 11: ten periods of position and the mean speed",
                 "The staircase motion and its mean speed v̄, the number an experiment measures.",
             ),
@@ -134,9 +104,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[PulledFigure::LongRun],
             &[2, 7],
             ),
-            builtin(
+            Builtin::new(
             "fig12-harmonic-vs-linear",
-            story(
+            (
                 "Fig. 12: the harmonic law against its linearization",
                 "What the triangle-wave approximation changes in the motion: the price of closed formulas.",
             ),

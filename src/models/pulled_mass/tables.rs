@@ -8,27 +8,18 @@ use super::formula::Regime;
 use super::results::{self as pulled_mass, Evaluation};
 use super::{quantity as pm, PulledMassParams};
 use crate::error::Result;
+use crate::models::paper::{LAW_WORDS, LINEARIZATION};
 use crate::models::param::num as pnum;
 use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
-use crate::present::vocab::{Comparison, LawWords};
+use crate::present::vocab::Comparison;
 use crate::present::Present;
 use crate::report::context::{
     blank, count, fill_checks, input, integration_regime, laws_table, row, RegimeRow, SceneCtx,
 };
 use crate::report::scene::Scene;
-
-/// How the pages and tables name what the closed forms are checked against.
-pub(crate) const LAW_WORDS: LawWords = LawWords {
-    closed_form_law: "linearized law",
-    checked_against: "exact integration of the linearized law",
-    numeric_from: "exact event-driven integration of the same (triangle-wave) law",
-};
-
-/// The heading of the table of both laws side by side.
-const LINEARIZATION: &str = "Linearization: harmonic law against the linearized law";
 
 pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneCtx> {
     let e = pulled_mass::evaluate(p, scene.periods)?;

@@ -8,6 +8,7 @@ use super::{
 use crate::derivation::{Step, StepKey};
 use crate::error::Result;
 use crate::export::law_files;
+use crate::models::paper;
 use crate::models::LawKind;
 use crate::present::vocab::{
     Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
@@ -33,21 +34,12 @@ impl Present for WoodpeckerParams {
                 same stick-slip rule as in Part 1, with the grip set by the lever l/h; the pages \
                 follow one period phase by phase, then the regimes and the real toy.",
     };
-    const LAWS: &'static [LawName] = &[
-        LawName {
-            id: "harmonic",
-            name: "harmonic law",
-        },
-        LawName {
-            id: "linear",
-            name: "linearized law",
-        },
-    ];
+    const LAWS: &'static [LawName] = paper::LAWS;
     const HANDOUT: Option<(&'static str, &'static str)> = Some((
         "fig15-double-slip-stick",
         "the woodpecker's two phases from the equation of motion to the mean speed; two A4 pages",
     ));
-    const LAW_WORDS: LawWords = tables::LAW_WORDS;
+    const LAW_WORDS: LawWords = paper::LAW_WORDS;
     type Figure = WoodFigure;
     type Apparatus = sketch::WoodpeckerApparatus;
 

@@ -2,7 +2,7 @@
 //! compiled into the binary, what to draw, and why it matters in the model's part.
 
 use super::scene::WoodFigure;
-use crate::present::vocab::{Builtin, FigureKinds};
+use crate::present::vocab::Builtin;
 
 macro_rules! scenario_file {
     ($name:literal) => {
@@ -15,42 +15,12 @@ const FIG16: (&str, &str) = scenario_file!("fig16-no-intermediate-halt.toml");
 const FIG26: (&str, &str) = scenario_file!("fig26-tracked-toy.toml");
 const LAMBDA1: (&str, &str) = scenario_file!("lambda1-printed-formulas.toml");
 
-/// The title and why of a built-in scene.
-struct Story {
-    title: &'static str,
-    why: &'static str,
-}
-
-const fn story(title: &'static str, why: &'static str) -> Story {
-    Story { title, why }
-}
-
-fn builtin(
-    id: &'static str,
-    story: Story,
-    scenario: (&'static str, &'static str),
-    caption: &'static str,
-    figures: &[WoodFigure],
-    claims: &'static [u8],
-) -> Builtin {
-    Builtin {
-        id,
-        title: story.title,
-        why: story.why,
-        file: scenario.0,
-        text: scenario.1,
-        caption,
-        figures: figures.iter().map(|f| f.kind()).collect(),
-        claims,
-    }
-}
-
 /// The built-in scenes, in reading order.
 pub fn builtins() -> Vec<Builtin> {
     vec![
-            builtin(
+            Builtin::new(
             "fig15-double-slip-stick",
-            story(
+            (
                 "Fig. 15: double slip-stick of the falling woodpecker",
                 "The toy as it works: two slips and two halts per swing of the bird.",
             ),
@@ -60,9 +30,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Motion { periods: 2.0 }],
             &[8],
             ),
-            builtin(
+            Builtin::new(
             "fig16-no-intermediate-halt",
-            story(
+            (
                 "Fig. 16: no intermediate halt under the harmonic law (z0 = 7.1 mm)",
                 "Regime boundaries are sharp: 0.1 mm of spring set-up changes the motion.",
             ),
@@ -72,9 +42,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Motion { periods: 2.0 }],
             &[8],
             ),
-            builtin(
+            Builtin::new(
             "fig17-spring-coordinate",
-            story(
+            (
                 "Fig. 17: the spring coordinate and its linear counterparts",
                 "Three ways to replace the bird's harmonic swing by a triangle wave, and how far each is off.",
             ),
@@ -84,9 +54,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Spring],
             &[3],
             ),
-            builtin(
+            Builtin::new(
             "fig18-forces",
-            story(
+            (
                 "Fig. 18: the driving force against the grip",
                 "Why the sleeve slips: its weight and the spring force against the friction the lever can hold.",
             ),
@@ -96,9 +66,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Forces],
             &[],
             ),
-            builtin(
+            Builtin::new(
             "fig19-phase-one",
-            story(
+            (
                 "Fig. 19: phase I step by step",
                 "The first slip of each period, with each of its characteristic times.",
             ),
@@ -107,9 +77,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Phase { phase: 1 }],
             &[5],
             ),
-            builtin(
+            Builtin::new(
             "fig20-mu-d-min-one",
-            story(
+            (
                 "Fig. 20: the critical dynamic friction of phase I",
                 "The friction μd,MIN at which the sleeve stops exactly at half a period.",
             ),
@@ -119,9 +89,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::MuSweep { phase: 1 }],
             &[4, 5],
             ),
-            builtin(
+            Builtin::new(
             "phase-two",
-            story(
+            (
                 "Phase II and its critical dynamic friction",
                 "The second slip of the period, and the friction μd,MIN at which it ends at the period's end.",
             ),
@@ -134,9 +104,9 @@ pub fn builtins() -> Vec<Builtin> {
             ],
             &[4],
             ),
-            builtin(
+            Builtin::new(
             "fig23-positions",
-            story(
+            (
                 "Fig. 23: sleeve and bird positions",
                 "The bird swings about the falling sleeve: the motion the eye follows on the real toy.",
             ),
@@ -146,9 +116,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Positions],
             &[7],
             ),
-            builtin(
+            Builtin::new(
             "fig26-tracked-toy",
-            story(
+            (
                 "Figs. 26-27: the parameters of the tracked toy",
                 "The model with the parameters of a real, video-tracked toy.",
             ),
@@ -159,9 +129,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::Motion { periods: 3.0 }, WoodFigure::Tracked],
             &[3, 8],
             ),
-            builtin(
+            Builtin::new(
             "woodpecker-regime-map",
-            story(
+            (
                 "The woodpecker's regimes in the (μd, z0) plane",
                 "Where the toy halts twice, once or never, and how well the closed-form boundaries find it.",
             ),
@@ -171,9 +141,9 @@ pub fn builtins() -> Vec<Builtin> {
             &[WoodFigure::RegimeMap],
             &[4, 5, 6],
             ),
-            builtin(
+            Builtin::new(
             "lambda1-printed-formulas",
-            story(
+            (
                 "The printed formulas (λ = 1): a sleeve that never halts",
                 "The paper's formulas as printed leave out the lever: with them the toy would not work.",
             ),
