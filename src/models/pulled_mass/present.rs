@@ -1,7 +1,7 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
 use super::{derivation, results, scene, sketch, tables, teaching, PulledMassParams};
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Step, StepKey, Value};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::present::vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
@@ -42,6 +42,10 @@ impl Present for PulledMassParams {
 
     fn derivation(&self) -> Vec<Step> {
         derivation::pulled_mass(self)
+    }
+
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        derivation::pulled_mass_values(self)
     }
 
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
