@@ -4,7 +4,7 @@
 //! handout, worksheet, sweep and command line reach it through [`crate::models::with_model!`].
 //! The types of its signatures live in [`vocab`], a leaf that names no model.
 
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Expr, Step, StepKey, Value};
 use crate::error::Result;
 use crate::models::Physics;
 use crate::results::Summary;
@@ -92,6 +92,22 @@ pub trait Present: Physics {
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx>;
     /// The worked substitutions of every closed form.
     fn derivation(&self) -> Vec<Step>;
+    /// [`Present::derivation`] as values only (no expression tree), the same numbers bit for bit:
+    /// what a caller that reads only the steps' values uses (`stickslip check` per set).
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        self.derivation()
+            .into_iter()
+            .map(|s| Step {
+                expr: Value(Expr::eval(&s.expr)),
+                key: s.key,
+                symbol: s.symbol,
+                equation: s.equation,
+                value: s.value,
+                unit: s.unit,
+                reason: s.reason,
+            })
+            .collect()
+    }
     /// How the handout explains the step of `key`, and the heading before it.
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)>;
     /// The equation of motion, line by line: (formula, its physics).

@@ -2,7 +2,7 @@
 
 use super::scene::PulledFigure;
 use super::{derivation, results, scene, scenes, sketch, tables, teaching, PulledMassParams};
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Step, StepKey, Value};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::models::paper;
@@ -80,6 +80,10 @@ impl Present for PulledMassParams {
 
     fn derivation(&self) -> Vec<Step> {
         derivation::pulled_mass(self)
+    }
+
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        derivation::pulled_mass_values(self)
     }
 
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {

@@ -5,7 +5,7 @@ use super::{
     derivation, results, scene, scenes, sketch, spring_coordinate, tables, teaching,
     WoodpeckerParams,
 };
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Step, StepKey, Value};
 use crate::error::Result;
 use crate::export::law_files;
 use crate::models::paper;
@@ -82,6 +82,10 @@ impl Present for WoodpeckerParams {
 
     fn derivation(&self) -> Vec<Step> {
         derivation::woodpecker(self)
+    }
+
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        derivation::woodpecker_values(self)
     }
 
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
