@@ -44,6 +44,19 @@ pub enum LawKind {
     Linear,
 }
 
+/// What the JSON Schema of an evaluation needs (`schemars::JsonSchema` with the `cli` feature,
+/// which writes the schemas; nothing without it): every model's `eval --json` gets its schema
+/// from the registry, with no list of models in `crate::schema`.
+#[cfg(feature = "cli")]
+pub trait EvaluationSchema: schemars::JsonSchema {}
+#[cfg(feature = "cli")]
+impl<T: schemars::JsonSchema> EvaluationSchema for T {}
+/// What the JSON Schema of an evaluation needs: nothing without the `cli` feature.
+#[cfg(not(feature = "cli"))]
+pub trait EvaluationSchema {}
+#[cfg(not(feature = "cli"))]
+impl<T> EvaluationSchema for T {}
+
 /// What the engine and the command line need of a model; implemented by its params struct.
 pub trait Physics:
     Copy + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static
@@ -59,7 +72,7 @@ pub trait Physics:
     /// The parameters that take one of a few named values.
     const CHOICES: &'static [ChoiceSpec<Self>] = &[];
     /// The evaluation of guide §14: closed forms, both laws integrated, checks.
-    type Evaluation: Serialize;
+    type Evaluation: Serialize + EvaluationSchema;
 
     /// These parameters as a [`Model`].
     fn into_model(self) -> Model;
