@@ -3,7 +3,7 @@
 //! asked for) friction dissipation.
 
 use super::accel::SignChanges;
-use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, PolyArc, Start, TrigArc};
+use super::arc::{phase, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::replay::{Compact, Outputs, Replay, StartState, Tape};
@@ -685,7 +685,7 @@ impl PreparedPiece<'_> {
             for end in std::iter::once(piece.end).chain(zeros) {
                 for t_c in starts.into_iter().flatten() {
                     if t_c.hi < end && end > piece.start && end <= piece.end {
-                        known.push(HalfAngle::between(omega, t_c, end));
+                        known.push_between(omega, t_c, end);
                     }
                 }
             }
@@ -888,7 +888,7 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
-    let known = prepared.known.as_slice();
+    let known = &prepared.known;
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
