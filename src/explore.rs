@@ -19,7 +19,7 @@ use serde::{Deserialize, Serialize};
 use crate::engine::{integrate, ForceLaw, IntegrationRegime, RunOptions};
 use crate::error::{Error, Result};
 use crate::models::param::invalid;
-use crate::models::{with_capability, with_model, Capability, LawKind, Model, Physics};
+use crate::models::{with_capability, with_model, LawKind, Model, Physics};
 use crate::params::{validate_periods, DEFAULT_PERIODS};
 use crate::results::quantity::Quantity;
 use crate::results::{Applicability, Versioned};
@@ -34,6 +34,36 @@ const MAX_SAMPLES: usize = 20_000;
 const MAX_CELLS: u32 = 400;
 /// Numbers per curve sample: t (s), x (m), v (m/s), the apparatus coordinate (m).
 pub const SAMPLE_WIDTH: usize = 4;
+
+/// One sample of a curve: t (s), x (m), v (m/s), the apparatus coordinate (m).
+pub type Sample = [f64; SAMPLE_WIDTH];
+
+/// [`Explore::curve`] of a model with a time-periodic force law: `law` integrated over
+/// `shown` forcing periods, sampled, with the apparatus coordinate `apparatus(force law, t)`.
+pub fn periodic_curve<M: Physics>(
+    p: &M,
+    law: LawKind,
+    shown: u32,
+    samples: usize,
+    apparatus: impl Fn(&ForceLaw, f64) -> f64,
+) -> Result<Option<Vec<Sample>>> {
+    let Ok(force_law) = p.force_law(law) else {
+        return Ok(None);
+    };
+    let opts = RunOptions {
+        periods: shown,
+        record_segments: true,
+        dissipation: false,
+    };
+    let run = integrate(&p.body(), &force_law, &opts)?;
+    let end = f64::from(shown) * run.period;
+    Ok(Some(
+        crate::engine::run::sample(&run, 0.0, end, samples)
+            .into_iter()
+            .map(|[t, x, v, _]| [t, x, v, apparatus(&force_law, t)])
+            .collect(),
+    ))
+}
 
 /// The closed forms' regime of an evaluation, for people.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -53,21 +83,80 @@ pub struct MapAxis {
     pub range: (f64, f64),
 }
 
+/// A force law the page shows for a model: the slot of the curves it fills, its label, and
+/// the member of the evaluation (guide §14) that summarises its exact integration.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct ExploredLaw {
+    /// The slot: "linear" or "harmonic" (the [`LawKind`] of the curve).
+    pub id: &'static str,
+    /// For people ("harmonic law").
+    pub label: &'static str,
+    /// The evaluation's member with the integration's summary ("harmonic", "integration").
+    pub summary: &'static str,
+}
+
+/// The two force laws of a model whose closed forms are those of its linearized law, with its
+/// harmonic law beside them (the pulled mass and the woodpecker): [`Explore::LAWS`].
+pub const LINEARIZED_AND_HARMONIC: &[ExploredLaw] = &[
+    ExploredLaw {
+        id: "linear",
+        label: "linearized law",
+        summary: "linear",
+    },
+    ExploredLaw {
+        id: "harmonic",
+        label: "harmonic law",
+        summary: "harmonic",
+    },
+];
+
+/// What the page's animation draws for a model: the kind of drawing (one routine of the page
+/// each) and the geometry of the model's sketch it draws with (px).
+#[cfg(feature = "cli")]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Apparatus {
+    pub kind: &'static str,
+    pub geometry: serde_json::Value,
+}
+
+#[cfg(feature = "cli")]
+impl Apparatus {
+    /// The drawing `kind` with the sketch's `geometry` (a struct of numbers).
+    pub fn new(kind: &'static str, geometry: &impl Serialize) -> Self {
+        Self {
+            kind,
+            geometry: serde_json::to_value(geometry).unwrap_or_default(),
+        }
+    }
+}
+
 /// What the explorer asks of a model beyond [`Physics`].
 pub trait Explore: Physics {
     /// The model in a few words ("pulled mass").
     const NAME: &'static str;
     /// The symbol of the body's position in the figures ("x", "y_S").
     const POSITION: &'static str;
+    /// The force laws the page shows, in the order of the curves' slots (linear, harmonic).
+    const LAWS: &'static [ExploredLaw];
+    /// What the closed forms describe, for the page's headings ("linearized law").
+    const CLOSED_FORMS: &'static str;
+    /// The regime ids the integration summaries name beyond the engine's
+    /// [`IntegrationRegime`]s (their words are [`Physics::regime_words`]).
+    const SUMMARY_REGIMES: &'static [&'static str];
     /// The closed-form quantities of the model's registry, in its order.
     fn quantities() -> Vec<&'static Quantity>;
     /// The closed forms' regime in words with the inequality that decides it.
     fn regime(e: &Self::Evaluation) -> RegimeText;
     /// Which closed forms describe the motion (the others are greyed).
     fn applicability(e: &Self::Evaluation) -> &[Applicability];
-    /// The apparatus' second coordinate at time t (m) under `law` (whose force law is
-    /// `force_law`): what the animation moves besides the body.
-    fn apparatus(&self, law: LawKind, force_law: &ForceLaw, t: f64) -> f64;
+    /// The exact motion under `law` from the start over `shown` periods, sampled at
+    /// `samples` uniform times and at its events: [t (s), x (m), v (m/s), the apparatus'
+    /// second coordinate (m), what the animation moves besides the body] each; `None` when
+    /// the model has no such law or it does not exist for these parameters.
+    fn curve(&self, law: LawKind, shown: u32, samples: usize) -> Result<Option<Vec<Sample>>>;
+    /// What the animation draws.
+    #[cfg(feature = "cli")]
+    fn apparatus() -> Apparatus;
     /// The two parameters of the regime map (x, y) and their ranges around `self`.
     fn map_axes(&self) -> [MapAxis; 2];
     /// The map's categories under `law`, in the order of [`Explore::map_cell`]'s values:
@@ -198,6 +287,10 @@ pub struct LawText {
 pub struct Extras<'a> {
     pub closed_form: RegimeText,
     pub applicability: &'a [Applicability],
+    /// The period of the curves (s): the forcing's, or the cycle's of an autonomous model.
+    pub period: f64,
+    /// Periods (cycles) of the evaluation's integration.
+    pub periods: u32,
 }
 
 /// One parameter set explored: the guide §14 JSON, the extras (JSON) and the curves.
@@ -225,7 +318,7 @@ pub fn parse<'a, T: Deserialize<'a>>(bytes: &'a [u8]) -> Result<T> {
 pub fn explore(request: &Request) -> Result<Explored> {
     let model = request.setup.model()?;
     with_capability!(&model, explore, p => explore_model(p, request),
-        else Err(model.missing(Capability::Explore)))
+        else Err(model.missing(crate::models::Capability::Explore)))
 }
 
 fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
@@ -242,24 +335,16 @@ fn explore_model<M: Explore>(p: &M, request: &Request) -> Result<Explored> {
     let extras = Extras {
         closed_form: M::regime(&evaluation),
         applicability: M::applicability(&evaluation),
+        period: p.period(),
+        periods: request.periods,
     };
     let mut curves = vec![0.0; 2];
     for (i, law) in [LawKind::Linear, LawKind::Harmonic].into_iter().enumerate() {
-        let Ok(force_law) = p.force_law(law) else {
+        let Some(samples) = p.curve(law, request.shown, request.samples)? else {
             continue;
         };
-        let opts = RunOptions {
-            periods: request.shown,
-            record_segments: true,
-            dissipation: false,
-        };
-        let run = integrate(&p.body(), &force_law, &opts)?;
-        let end = f64::from(request.shown) * run.period;
-        let samples = crate::engine::run::sample(&run, 0.0, end, request.samples);
         curves[i] = samples.len() as f64;
-        for [t, x, v, _] in samples {
-            curves.extend([t, x, v, p.apparatus(law, &force_law, t)]);
-        }
+        curves.extend(samples.into_iter().flatten());
     }
     Ok(Explored {
         evaluation: serde_json::to_string_pretty(&Versioned::new(&evaluation)).map_err(json)?,
@@ -354,7 +439,7 @@ pub fn map(request: &MapRequest) -> Result<(MapInfo, Vec<u8>)> {
         ));
     }
     with_capability!(&model, explore, p => Ok(map_rows(p, law, n, (r0, r1))),
-        else Err(model.missing(Capability::Explore)))
+        else Err(model.missing(crate::models::Capability::Explore)))
 }
 
 fn map_rows<M: Explore>(p: &M, law: LawKind, n: u32, (r0, r1): (u32, u32)) -> (MapInfo, Vec<u8>) {
@@ -473,6 +558,46 @@ mod tests {
     }
 
     #[test]
+    fn the_belts_answer_is_eval_belt_json_with_its_motion_in_one_slot() {
+        let done = answer_explore(br#"{"model": "belt", "params": {"mu_d": 0.3}}"#);
+        assert_eq!(done.status, 0, "{}", String::from_utf8_lossy(&done.text));
+        let text = String::from_utf8(done.text).unwrap();
+        let (evaluation, extras) = text.split_once('\0').unwrap();
+        let mut model = Model::from_id("belt").unwrap();
+        assert!(model.set("mu_d", 0.3));
+        // What `stickslip eval belt --mu-d 0.3 --json` prints, without its final newline.
+        assert_eq!(evaluation, evaluate_json(&model, DEFAULT_PERIODS).unwrap());
+        let extras: serde_json::Value = serde_json::from_str(extras).unwrap();
+        let p = crate::models::belt::BeltParams {
+            mu_d: 0.3,
+            ..Default::default()
+        };
+        let c = crate::models::belt::formula::evaluate(&p);
+        assert_eq!(extras["period"], c.period);
+        assert_eq!(extras["closed_form"]["id"], "stick_slip");
+        // No linear law; the spring's law in the harmonic slot over the shown cycles.
+        let d = &done.data;
+        let n = d[1] as usize;
+        assert_eq!((d[0], d.len()), (0.0, 2 + SAMPLE_WIDTH * n));
+        let samples: Vec<&[f64]> = d[2..].chunks(SAMPLE_WIDTH).collect();
+        let last = samples[n - 1];
+        assert!((last[0] - f64::from(SHOWN_PERIODS) * c.period).abs() < 1e-12);
+        for s in &samples {
+            let (t, x, v, belt) = (s[0], s[1], s[2], s[3]);
+            assert_eq!(belt, p.v_b * t);
+            // Carried from x = 0 until x_s, then between the cycle's extremes.
+            if t <= c.first_slip_time {
+                assert!((x - p.v_b * t).abs() <= 1e-15 && v == p.v_b, "{s:?}");
+            }
+            assert!(
+                x <= c.x_max * (1.0 + 1e-12) && x >= c.x_min - 1e-12 * c.x_max,
+                "{s:?}"
+            );
+            assert!(v <= p.v_b * (1.0 + 1e-12) && v >= c.v_min - 1e-12, "{s:?}");
+        }
+    }
+
+    #[test]
     fn a_missing_linear_law_has_no_curve_but_the_harmonic_one_does() {
         // z0 ≤ −d0: the spring never changes sign, the zeros counterpart is undefined.
         let r = request(r#"{"model": "woodpecker", "params": {"z0": -0.012}}"#);
@@ -489,6 +614,8 @@ mod tests {
             ("pulled-mass", "harmonic"),
             ("woodpecker", "linear"),
             ("woodpecker", "harmonic"),
+            ("belt", "linear"),
+            ("belt", "harmonic"),
         ] {
             let json =
                 format!(r#"{{"model": "{model}", "law": "{law}", "cells": 6, "rows": [2, 5]}}"#);
@@ -499,6 +626,9 @@ mod tests {
                 .all(|&c| usize::from(c) < info.categories.len()));
             assert!(info.x.range.0 < info.x.range.1 && info.y.range.0 < info.y.range.1);
             assert_eq!(info.x.key, "mu_d");
+            if model == "belt" {
+                assert_eq!(info.y.key, "v_b");
+            }
         }
     }
 
@@ -523,7 +653,7 @@ mod tests {
             Ok(_) => panic!("{json} accepted"),
         };
         assert!(refused("not json").starts_with("invalid value 'not json' for request"));
-        assert!(refused(r#"{"model": "seesaw"}"#).contains("pulled-mass, woodpecker"));
+        assert!(refused(r#"{"model": "seesaw"}"#).contains("pulled-mass, woodpecker, belt"));
         assert!(refused(r#"{"model": "woodpecker", "params": {"F": 1}}"#).contains("for parameter"));
         assert!(
             refused(r#"{"model": "woodpecker", "choices": {"omega": "x"}}"#).contains("for option")

@@ -147,8 +147,8 @@
       const input = el("input", { type: "radio", name: "law", id, value: law.id });
       input.checked = law.id === state.law;
       input.addEventListener("change", () => { state.law = law.id; drawApparatus(); scheduleMap(); });
-      const label = el("label", { for: id });
-      label.append(input, ` ${law.label}`);
+      const label = el("label", { for: id, id: `law-label-${law.id}` });
+      label.append(input, el("span", {}, ` ${law.label}`));
       $("laws").append(label);
     }
     const preset = $("preset");
@@ -262,8 +262,25 @@
     slider.setAttribute("aria-valuetext", unset ? p.unset : `${fmt(display)}${unitText(p.unit)}`);
   }
 
+  /** The model's law of slot `id` ({id, label, summary}), or undefined. */
+  function modelLaw(id) { return model().laws.find((l) => l.id === id); }
+
+  /** The law switches of the model: its laws' labels, the others hidden; the animation's
+   *  and the map's law one of them. */
+  function syncLaws() {
+    if (!modelLaw(state.law)) state.law = model().laws[model().laws.length - 1].id;
+    for (const law of DATA.laws) {
+      const label = $(`law-label-${law.id}`);
+      const mine = modelLaw(law.id);
+      label.hidden = !mine;
+      if (mine) setText(label.lastChild, ` ${mine.label}`);
+      $(`law-${law.id}`).checked = law.id === state.law;
+    }
+  }
+
   function rebuild() {
     buildParams();
+    syncLaws();
     state.mapCursor = null;
     update();
   }
@@ -289,7 +306,7 @@
     const evaluationText = out.text.slice(0, cut);
     const evaluation = JSON.parse(evaluationText);
     const extras = JSON.parse(out.text.slice(cut + 1));
-    view = { evaluation, extras, curves: splitCurves(out.data), period: evaluation.params.T };
+    view = { evaluation, extras, curves: splitCurves(out.data), period: extras.period };
     probe.evaluation = evaluationText;
     probe.extras = extras;
     probe.curves = [out.data[0], out.data[1], out.data.reduce((a, b) => a + b, 0)];
@@ -439,6 +456,7 @@
         if (shown) e.removeAttribute("display"); else e.setAttribute("display", "none");
       }
       if (!shown) continue;
+      setText(part.label, modelLaw(part.law.id).label);
       let d = "";
       for (let i = 0; i < points.length; i++) d += `${i ? "L" : "M"}${px(points[i][0]).toFixed(1)} ${py(points[i][column] * scale).toFixed(1)}`;
       part.path.setAttribute("d", d);
@@ -467,10 +485,15 @@
     drawPlot($("plot-x"), 1, `${pos} (mm)`, 1e3);
     drawPlot($("plot-v"), 2, "v (mm/s)", 1e3);
     const e = view.evaluation;
-    setText($("plot-x-title"), `Position ${pos} in mm against time over ${DATA.shown} periods, both force laws`);
-    setText($("plot-v-title"), `Speed in mm/s against time over ${DATA.shown} periods, both force laws`);
-    setText($("plots-caption"), `Exact integration from rest over ${DATA.shown} periods (T = ${fmt(e.params.T, 4)} s): `
-      + `harmonic law (solid) against the linearized law (dashed)${view.curves.linear.length ? "" : "; the linearized law does not exist for these parameters"}. `
+    const laws = model().laws;
+    const which = laws.length > 1 ? "both force laws" : `the ${laws[0].label}`;
+    setText($("plot-x-title"), `Position ${pos} in mm against time over ${DATA.shown} periods, ${which}`);
+    setText($("plot-v-title"), `Speed in mm/s against time over ${DATA.shown} periods, ${which}`);
+    // The solid law (the last slot) against the dashed one, as the report's legends.
+    const [solid, dashed] = [laws[laws.length - 1], laws.length > 1 ? laws[0] : null];
+    const against = dashed ? ` (solid) against the ${dashed.label} (dashed)${view.curves[dashed.id].length ? "" : `; the ${dashed.label} does not exist for these parameters`}` : "";
+    setText($("plots-caption"), `Exact integration from rest over ${DATA.shown} periods (T = ${fmt(view.period, 4)} s): `
+      + `${solid.label}${against}. `
       + "The dashed vertical line and the dots follow the time of the animation.");
   }
 
@@ -493,15 +516,27 @@
   /** "1 slip", "2 slips". */
   function plural(n, one, many) { return `${n} ${n === 1 ? one : many}`; }
 
+  /** The regime `id` of an integration in words: the engine's, or the model's own. */
+  function regimeText(id) {
+    const r = DATA.integration_regimes.find((q) => q.id === id) || model().regimes.find((q) => q.id === id);
+    return r ? r.words : id;
+  }
+
+  /** An integration's summary in words: its regime, its slips and sticks per period and its
+   *  mean speed where it counts them, its period where it measures one. */
   function lawWords(summary) {
     if (!summary) return "does not exist for these parameters";
-    const r = DATA.integration_regimes.find((q) => q.id === summary.regime);
+    if (!summary.regime) return "no complete cycle";
     const counts = summary.slips_per_period + summary.sticks_per_period > 0
       ? [`${plural(summary.slips_per_period, "slip", "slips")} and ${plural(summary.sticks_per_period, "stick", "sticks")} per period`] : [];
     if (summary.immediate_slip) counts.push("slips at t = 0");
-    const speed = summary.v_avg === null ? "no steady mean speed" : `mean speed ${fmt(summary.v_avg * 1e3, 4)} mm/s`;
-    return `${r ? r.words : summary.regime}${counts.length ? ` (${counts.join("; ")})` : ""}; ${speed}`;
+    const speed = "v_avg" in summary
+      ? (summary.v_avg === null ? "no steady mean speed" : `mean speed ${fmt(summary.v_avg * 1e3, 4)} mm/s`)
+      : `period ${fmt(summary.period, 4)} s`;
+    return `${regimeText(summary.regime)}${counts.length ? ` (${counts.join("; ")})` : ""}; ${speed}`;
   }
+
+  const capital = (s) => s.charAt(0).toUpperCase() + s.slice(1);
 
   /** The three lines of the regime, made once: [law, text] element pairs. */
   let regimeLines = null;
@@ -509,29 +544,30 @@
   function drawRegime() {
     const e = view.evaluation;
     const c = view.extras.closed_form;
+    const laws = model().laws;
     const lines = [
-      ["Closed forms (linearized law)", `${c.words}, because ${c.why}.`],
-      ["Exact integration, linearized law", lawWords(e.linear)],
-      ["Exact integration, harmonic law", lawWords(e.harmonic)],
+      [`Closed forms (${model().closed_forms})`, `${c.words}, because ${c.why}.`],
+      ...laws.map((l) => [`Exact integration, ${l.label}`, lawWords(e[l.summary])]),
     ];
-    if (!regimeLines) {
-      regimeLines = lines.map(() => {
-        const p = el("p");
-        const law = el("span", { class: "law" }, "");
-        const text = el("span", {}, "");
-        p.append(law, text);
-        $("regime").append(p);
-        return [law, text];
-      });
+    // One line per law, made when more are needed and hidden when fewer are.
+    if (!regimeLines) regimeLines = [];
+    while (regimeLines.length < lines.length) {
+      const p = el("p");
+      const law = el("span", { class: "law" }, "");
+      const text = el("span", {}, "");
+      p.append(law, text);
+      $("regime").append(p);
+      regimeLines.push([law, text, p]);
     }
-    lines.forEach(([law, text], i) => {
-      setText(regimeLines[i][0], `${law}: `);
-      setText(regimeLines[i][1], text);
+    regimeLines.forEach(([law, text, p], i) => {
+      p.hidden = i >= lines.length;
+      setText(law, p.hidden ? "" : `${lines[i][0]}: `);
+      setText(text, p.hidden ? "" : lines[i][1]);
     });
     // The live region says the regimes in words only, and only when they change, so that a
     // screen reader announces a new regime, not every step of a slider.
-    const words = (s) => (s ? (DATA.integration_regimes.find((q) => q.id === s.regime) || { words: s.regime }).words : "none");
-    const live = `Regime of the closed forms: ${c.words}. Linearized law: ${words(e.linear)}. Harmonic law: ${words(e.harmonic)}.`;
+    const words = (s) => (s && s.regime ? regimeText(s.regime) : "none");
+    const live = `Regime of the closed forms: ${c.words}. ${laws.map((l) => `${capital(l.label)}: ${words(e[l.summary])}.`).join(" ")}`;
     if ($("regime-live").textContent !== live) $("regime-live").textContent = live;
   }
 
@@ -543,8 +579,7 @@
     if (typeof value !== "string") return fmt(value);
     const closed = view.extras.closed_form;
     if (value === closed.id) return closed.words;
-    const r = DATA.integration_regimes.find((q) => q.id === value);
-    return r ? r.words : value;
+    return regimeText(value);
   }
 
   /** The table's rows by model and quantity, made once each and kept when not shown. */
@@ -598,7 +633,9 @@
     const rows = $("check-rows");
     shown.forEach((tr, i) => { if (rows.children[i] !== tr) rows.insertBefore(tr, rows.children[i] || null); });
     while (rows.children.length > shown.length) rows.lastElementChild.remove();
-    setText($("periods"), String(e.params.periods));
+    // The checks compare the closed forms with the integration of the first law.
+    setText($("table-law"), capital(model().laws[0].label));
+    setText($("periods"), String(view.extras.periods));
     setText($("json"), probe.evaluation);
     const req = probe.request;
     const flags = Object.entries(req.params).map(([k, v]) => `--${k.replace(/_/g, "-")}=${v}`)
@@ -608,7 +645,7 @@
 
   // ---------------------------------------------------------------------------------------
   // The apparatus, moved by the computed motion: the report's sketch of each model (the same
-  // sizes, DATA.apparatus from the Rust sketches), its bodies moved. Its elements are made
+  // sizes: each model's apparatus data, its kind and its sketch's geometry), its bodies moved. Its elements are made
   // once per model and moved in place on each frame.
 
   const INK = "#000";
@@ -647,7 +684,7 @@
   /** The woodpecker's drawn sizes for parameters `p` (SI), as the sketch's woodpecker_layout:
    *  scale (px/mm), l and h (px), the sleeve's tilt θ (rad) and its hole's half-height b (px). */
   function woodpeckerLayout(p) {
-    const g = DATA.apparatus.woodpecker;
+    const g = geometry();
     const [l, h, z0, d0] = [p.l * 1e3, p.h * 1e3, p.z0 * 1e3, p.d0 * 1e3];
     const zLo = Math.min(z0 - Math.abs(d0), 0);
     const zHi = Math.max(z0 + Math.abs(d0), 0);
@@ -669,6 +706,9 @@
 
   let apparatus = null; // {model, parts}
 
+  /** The sketch's geometry of the current model's apparatus (px, src/models/<name>/sketch.rs). */
+  function geometry() { return model().apparatus.geometry; }
+
   function textEl(attrs, text) {
     return svgEl("text", { "font-family": FONT, fill: INK, ...attrs }, text);
   }
@@ -677,7 +717,7 @@
    *  through the slot (a groove along the motion, seen through the table's near edge), the
    *  hanging mass m′ and the pull F. */
   function pulledMassParts(svg) {
-    const g = DATA.apparatus["pulled-mass"];
+    const g = geometry();
     const f = g.font;
     const top = 140;
     const body = { stroke: INK, "stroke-width": 1.6 };
@@ -704,7 +744,7 @@
   }
 
   function drawPulledMass(parts, s, body, word, t) {
-    const g = DATA.apparatus["pulled-mass"];
+    const g = geometry();
     const [xlo, xhi] = extent(s.points, 1);
     const [zlo, zhi] = extent(s.points, 3);
     // The block's centre travels from `start` over `travel` px (the sketch has no length
@@ -743,10 +783,10 @@
    *  apart) with its arm l, the spring and the bird; the view follows the sleeve down the pole,
    *  whose marks move up as it falls. */
   function woodpeckerParts(svg) {
-    const f = DATA.apparatus.woodpecker.font;
+    const f = geometry().font;
     const wall = { fill: INK, "fill-opacity": 0.25, stroke: INK, "stroke-width": 1.5 };
     const bird = svgEl("g", { class: "bird" });
-    const r = DATA.apparatus.woodpecker.bird_r;
+    const r = geometry().bird_r;
     const [hx, hy] = [-r * 0.75, -r * 0.7];
     bird.append(
       svgEl("ellipse", { cx: 4, cy: 4, rx: r * 1.2, ry: r * 0.8, fill: DATA.palette[1], stroke: INK, "stroke-width": 1.6 }),
@@ -777,7 +817,7 @@
   }
 
   function drawWoodpecker(parts, s, body, word, t, svg) {
-    const g = DATA.apparatus.woodpecker;
+    const g = geometry();
     const p = view.evaluation.params;
     const L = woodpeckerLayout(p);
     probe.apparatus = { scale: L.scale, l_px: L.l_px, h_px: L.h_px, theta: L.theta, b: L.b };
@@ -837,22 +877,108 @@
     return `The woodpecker toy at ${t}: the sleeve, tilted on the pole and touching it at two points ${fmt(p.h * 1e3, 3)} mm apart, is ${word}, ${fmt(yS, 4)} mm below its start; the bird swings on its spring at the end of the sleeve's arm, l = ${fmt(p.l * 1e3, 3)} mm from the pole's axis. The view follows the sleeve: the marks on the pole move up as it falls.`;
   }
 
+  /** The block on a belt as its sketch draws it: the wall, the spring k, the block on the belt
+   *  that runs right at v_b (its marks move with it, to the block's scale), the belt's speed. */
+  function beltParts(svg) {
+    const g = geometry();
+    const f = g.font;
+    // The belt's top: the wall stands on it, below the two lines of text.
+    const top = 76 + g.wall_height;
+    const right = g.width - 20;
+    const marks = svgEl("g", { class: "belt-marks", stroke: INK, "stroke-width": 1.5 });
+    const parts = {
+      top, right, width: g.width, height: top + g.belt_height + 64, marks: [],
+      wall: svgEl("rect", { class: "wall", x: g.wall_x, y: top - g.wall_height, width: g.wall_width, height: g.wall_height, fill: INK, "fill-opacity": 0.3, stroke: INK, "stroke-width": 1.4 }),
+      spring: svgEl("polyline", { class: "spring", fill: "none", stroke: PURPLE, "stroke-width": 2.2, "stroke-linejoin": "round" }),
+      block: svgEl("rect", { class: "block", y: top - g.block_height, width: g.block_width, height: g.block_height, stroke: INK, "stroke-width": 1.6 }),
+      blockLabel: textEl({ y: top - g.block_height / 2 + 7, "text-anchor": "middle", "font-size": f }, "m"),
+      belt: svgEl("rect", { class: "belt", x: g.belt_left, y: top, width: right - g.belt_left, height: g.belt_height, fill: INK, "fill-opacity": 0.18, stroke: INK, "stroke-width": 1.2 }),
+      rollers: [g.belt_left + g.roller_r, right - g.roller_r].map((cx) => svgEl("circle", { cx, cy: top + g.roller_r, r: g.roller_r, fill: INK, "fill-opacity": 0.15, stroke: INK, "stroke-width": 1.2 })),
+      speed: svgEl("line", { x1: g.belt_left + 20, x2: g.belt_left + 98, y1: top + g.belt_height + 22, y2: top + g.belt_height + 22, stroke: "#e69f00", "stroke-width": 3 }),
+      head: svgEl("polygon", { fill: "#e69f00", points: points([[g.belt_left + 110, top + g.belt_height + 22], [g.belt_left + 96, top + g.belt_height + 16], [g.belt_left + 96, top + g.belt_height + 28]]) }),
+      speedLabel: textEl({ x: g.belt_left + 118, y: top + g.belt_height + 29, "font-size": f }, ""),
+      time: textEl({ x: 10, y: 28, "font-size": f }, ""),
+      words: textEl({ x: 10, y: 52, "font-size": f }, ""),
+    };
+    for (let i = 0; i * BELT_MARKS < right - g.belt_left + BELT_MARKS; i++) parts.marks.push(marks.appendChild(svgEl("line", {})));
+    svg.append(parts.belt, marks, ...parts.rollers, parts.wall, parts.spring, parts.block, parts.blockLabel,
+      parts.speed, parts.head, parts.speedLabel, parts.time, parts.words);
+    return parts;
+  }
+
+  /** The belt's marks: this far apart (px). */
+  const BELT_MARKS = 40;
+
+  /** The belt: the block's left face at the sketch's position plus x to scale (the spring is
+   *  relaxed at x = 0), the belt's marks moved by its travel v_b t to the same scale. */
+  function drawBelt(parts, s, body, word, t) {
+    const g = geometry();
+    const p = view.evaluation.params;
+    const [xlo, xhi] = extent(s.points, 1);
+    const wallFace = g.wall_x + g.wall_width;
+    // The block's travel to the right of its drawn position, and to the left down to a spring
+    // of 30 px.
+    const room = [parts.right - g.block_width - g.block_x, g.block_x - wallFace - 30];
+    const scale = Math.min(xhi > 0 ? room[0] / xhi : Infinity, xlo < 0 ? room[1] / -xlo : Infinity);
+    const k = Number.isFinite(scale) ? scale : 1;
+    const left = g.block_x + s.x * k;
+    const y = parts.top - g.block_height / 2;
+    parts.spring.setAttribute("points", points(zigzag(wallFace, left, y, g.coils, g.coil_half)));
+    set(parts.block, { x: left.toFixed(1), fill: body });
+    parts.blockLabel.setAttribute("x", (left + g.block_width / 2).toFixed(1));
+    const shift = (s.z * k) % BELT_MARKS;
+    const [y1, y2] = [parts.top + 2, parts.top + g.belt_height - 2];
+    parts.marks.forEach((line, i) => {
+      const x = g.belt_left + shift + (i - 1) * BELT_MARKS;
+      if (x < g.belt_left + 2 || x > parts.right - 2) { line.setAttribute("display", "none"); return; }
+      line.removeAttribute("display");
+      set(line, { x1: x.toFixed(1), x2: x.toFixed(1), y1, y2 });
+    });
+    probe.apparatus = { time: state.time, scale: k, origin: g.block_x, block: left, x: s.x, z: s.z, shift };
+    setText(parts.speedLabel, `v_b = ${fmt(p.v_b * 1e3, 4)} mm/s`);
+    setText(parts.time, t);
+    setText(parts.words, `block ${word}, x = ${fmt(s.x * 1e3, 4)} mm, v = ${fmt(s.v * 1e3, 4)} mm/s`);
+    return `The block on the belt at ${t}: the belt runs right at v_b = ${fmt(p.v_b * 1e3, 4)} mm/s; the block, held to the wall by the spring k = ${fmt(p.k, 4)} N/m, is ${word}, ${fmt(s.x * 1e3, 4)} mm right of where the spring is relaxed, at v = ${fmt(s.v * 1e3, 4)} mm/s.`;
+  }
+
+  /** The sketch's horizontal coil spring (src/models/belt/sketch.rs, zigzag) from x1 to x2 at
+   *  y: straight ends, `coils` zigzags of half-width `half`; its points. */
+  function zigzag(x1, x2, y, coils, half) {
+    const end = Math.min(10, (x2 - x1) / 4);
+    const a = x1 + end;
+    const b = x2 - end;
+    const n = 2 * Math.max(1, coils);
+    const step = (b - a) / n;
+    const pts = [[x1, y], [a, y]];
+    for (let i = 0; i < n; i++) pts.push([a + step * (i + 0.5), y + (i % 2 === 0 ? -half : half)]);
+    pts.push([b, y], [x2, y]);
+    return pts;
+  }
+
+  /** One drawing per kind of apparatus (the model's data names its kind): its elements, made
+   *  once, their move to the state s, and the speed of the surface the body sticks to. */
+  const DRAWINGS = {
+    "pulled-mass": { parts: pulledMassParts, draw: drawPulledMass, surface: () => 0 },
+    woodpecker: { parts: woodpeckerParts, draw: drawWoodpecker, surface: () => 0 },
+    belt: { parts: beltParts, draw: drawBelt, surface: () => view.evaluation.params.v_b },
+  };
+
   function drawApparatus() {
     if (!view) return;
     const svg = $("apparatus");
+    const drawing = DRAWINGS[model().apparatus.kind];
     if (!apparatus || apparatus.model !== state.model) {
       svg.replaceChildren(svg.querySelector("desc"));
-      const parts = state.model === "woodpecker" ? woodpeckerParts(svg) : pulledMassParts(svg);
+      const parts = drawing.parts(svg);
       apparatus = { model: state.model, parts };
       if (parts.height) svg.setAttribute("viewBox", `0 0 ${parts.width} ${parts.height}`);
     }
     const s = stateAt(state.time);
-    const moving = Math.abs(s.v) > 1e-12;
+    const moving = Math.abs(s.v - drawing.surface()) > 1e-12 * Math.max(1, Math.abs(s.v));
     const body = moving ? DATA.palette[0] : "#8a8a8a";
     const word = moving ? "slipping" : "stuck";
     const t = `t = ${fmt(state.time, 4)} s`;
-    const desc = state.model === "woodpecker" ? drawWoodpecker(apparatus.parts, s, body, word, t, svg)
-      : drawPulledMass(apparatus.parts, s, body, word, t);
+    const desc = drawing.draw(apparatus.parts, s, body, word, t, svg);
     setText(svg.querySelector("desc"), desc);
     const end = DATA.shown * view.period;
     $("time").value = String(Math.round((state.time / end) * 1000));
@@ -1150,7 +1276,7 @@
       const cat = i >= 0 && i < best.n && j >= 0 && j < best.n ? info.categories[best.cells[j * best.n + i]] : null;
       return cat ? `; the current set lies in "${cat[0]}"` : "; the current set lies outside the map";
     })();
-    const law = DATA.laws.find((l) => l.id === state.law).label;
+    const law = modelLaw(state.law).label;
     setText($("map-status"), `Regimes of the ${law}, ${best.n}×${best.n} cells: horizontally ${range(xp, info.x.range)}, vertically ${range(yp, info.y.range)}${here}.`);
     canvas.setAttribute("aria-label", `Regime map of the ${law} over ${xp.symbol} and ${yp.symbol}`);
   }

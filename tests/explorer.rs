@@ -1,6 +1,6 @@
 //! The explorer page (`stickslip explorer`, `reports/explorer.html`) in headless Chromium,
 //! driven by playwright-core (tests/explorer/run.mjs): it loads from file:// with no request
-//! leaving file:/data:/blob:, renders both models, follows sliders (mouse and keyboard), map
+//! leaving file:/data:/blob:, renders every model (the belt's block moved on its belt), follows sliders (mouse and keyboard), map
 //! clicks (mouse and keyboard), options and presets, shows the one-line error of an invalid
 //! value, has no console error and no serious accessibility violation; every parameter set it
 //! visited gives the same bytes as `stickslip eval … --json`; honours `prefers-reduced-motion`
@@ -111,7 +111,7 @@ fn the_default_report_writes_and_links_the_explorer_with_its_html() {
 }
 
 #[test]
-fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
+fn the_page_explores_every_model_in_chromium_with_the_clis_numbers() {
     let Some((browser, node, modules)) = tools() else {
         return;
     };
@@ -236,6 +236,68 @@ fn the_page_explores_both_models_in_chromium_with_the_clis_numbers() {
             "{key}: {wood} against {layout:?}"
         );
     }
+
+    // The belt: its own laws, regime and drawing; the block carried by the belt moves with
+    // its marks at v_b (first stick, t < x_s/v_b), then follows the exact motion.
+    let regime = checks["beltRegime"].as_str().unwrap();
+    assert!(
+        regime.contains("Closed forms (exact for this system): a stick and one harmonic slip")
+            && regime.contains("Exact integration, spring force −k x (exact): a stick and one"),
+        "{regime}"
+    );
+    assert!(!regime.contains("linearized"), "{regime}");
+    assert_eq!(
+        checks["beltLaws"],
+        serde_json::json!(["spring force −k x (exact)"])
+    );
+    assert!(checks["beltTable"].as_u64().unwrap() >= 15, "{checks}");
+    let map = checks["beltMap"].as_str().unwrap();
+    assert!(map.contains("stuck ≥ 50 % of the cycle"), "{map}");
+    let g = stickslip::models::belt::sketch::APPARATUS;
+    let p = stickslip::models::belt::BeltParams::default();
+    let c = stickslip::models::belt::formula::evaluate(&p);
+    let (_, run) = stickslip::models::belt::results::evaluate_with_run(&p, 8).unwrap();
+    let frames = checks["beltApparatus"].as_array().unwrap();
+    let f64s = |v: &serde_json::Value| v.as_f64().unwrap();
+    for frame in frames {
+        let (t, x, scale) = (
+            f64s(&frame["time"]),
+            f64s(&frame["x"]),
+            f64s(&frame["scale"]),
+        );
+        assert_eq!(frame["parts"][0], 1, "{frame}");
+        assert_eq!(frame["parts"][1], 1, "{frame}");
+        assert_eq!(frame["parts"][2], 1, "{frame}");
+        assert!(frame["parts"][3].as_u64().unwrap() >= 5, "{frame}");
+        let size: Vec<f64> = frame["blockSize"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(f64s)
+            .collect();
+        assert_eq!(size, [g.block_width, g.block_height], "{frame}");
+        // The block drawn at x to scale from the sketch's position; x that of the engine.
+        assert!(
+            (f64s(&frame["blockX"]) - (g.block_x + scale * x)).abs() <= 0.06,
+            "{frame}"
+        );
+        let (exact, v, _) = run.state_at(t).unwrap();
+        assert!((x - exact).abs() <= 1e-4, "{frame}: x = {exact} m");
+        // The belt's marks at its travel v_b t, to the block's scale.
+        let shift = (scale * p.v_b * t).rem_euclid(40.0);
+        assert!((f64s(&frame["shift"]) - shift).abs() <= 1e-6, "{frame}");
+        let stuck = frame["desc"].as_str().unwrap().contains("is stuck");
+        assert_eq!(stuck, t < c.first_slip_time, "{frame}: v = {v}");
+    }
+    // Carried by the belt: the block moves as far as the belt's marks.
+    let (a, b) = (&frames[0], &frames[1]);
+    assert!(f64s(&b["time"]) < c.first_slip_time);
+    let moved = f64s(&b["blockX"]) - f64s(&a["blockX"]);
+    let carried = f64s(&a["scale"]) * p.v_b * (f64s(&b["time"]) - f64s(&a["time"]));
+    assert!(
+        moved > 10.0 && (moved - carried).abs() <= 0.15,
+        "{moved} {carried}"
+    );
 
     // Every set the page visited: the same bytes as the command line.
     let visited = r["visited"].as_array().unwrap();

@@ -24,6 +24,7 @@ use crate::solver::dopri5::Dopri5EndpointsOnly;
 use crate::solver::{methods, Method};
 
 pub mod analysis;
+pub mod belt;
 pub mod charts;
 pub mod context;
 pub mod cost_tables;

@@ -60,11 +60,6 @@ pub trait Present: Physics {
     const LAW_WORDS: LawWords;
     /// The model's own figure kinds (an enum made with [`vocab::figure_kinds!`]).
     type Figure: FigureKinds;
-    /// What the explorer page draws the apparatus with (`()`: the model has no apparatus
-    /// there).
-    type Apparatus: serde::Serialize;
-    /// The geometry of the apparatus on the explorer page.
-    fn apparatus() -> Self::Apparatus;
     /// The words of the model in language `code` ("en", "it"): TOML whose tables are merged
     /// into that language's catalogue (the model's section, `[<id>]`, and any `[phrases]`);
     /// `None` for a language it has no words in (a test requires every language).

@@ -24,11 +24,10 @@ use super::render::{page, templates, Material, CSS};
 use super::scene::Scene;
 use super::writer::OutFile;
 use crate::error::Result;
-use crate::explore::{self, Explore, LawText};
+use crate::explore::{self, Apparatus, Explore, ExploredLaw, LawText};
 use crate::models::param::{ParamSpec, Rule};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
-use crate::present::Present;
 
 /// The engine, built by `.ci/wasm` (CI rebuilds it and fails if it differs).
 const ENGINE: &[u8] = include_bytes!("../explorer/engine.wasm");
@@ -53,7 +52,7 @@ pub fn material() -> Material {
         html: FILE.to_string(),
         md: FILE.to_string(),
         title: "Explorer".to_string(),
-        what: "move a slider and watch both models respond: the exact motion of both force \
+        what: "move a slider and watch each model respond: the exact motion of its force \
                laws, the regime, every closed form against the integration, the regime map and \
                the apparatus animated (one file that works offline, from a USB stick)"
             .to_string(),
@@ -70,11 +69,12 @@ pub enum Placement {
 
 /// The page, with the built-in `scenes` as presets.
 pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
+    let mut models = Vec::new();
+    for m in Model::offering(Capability::Explore) {
+        with_capability!(&m, explore, p => models.push(model_data(p)), else ());
+    }
     let data = PageData {
-        models: Model::offering(Capability::Explore)
-            .iter()
-            .filter_map(|m| with_capability!(m, explore, p => Some(model_data(p)), else None))
-            .collect(),
+        models,
         presets: scenes
             .iter()
             .filter(|s| s.setup.has(Capability::Explore))
@@ -92,7 +92,6 @@ pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
         samples: explore::SAMPLES,
         map_cells: MAP_CELLS,
         slider_steps: SLIDER_STEPS,
-        apparatus: ApparatusData,
     };
     let json = serde_json::to_string(&data).map_err(|e| crate::error::Error::Template {
         name: FILE.to_string(),
@@ -128,7 +127,8 @@ struct PageData {
     models: Vec<ModelData>,
     presets: Vec<Preset>,
     integration_regimes: Vec<LawText>,
-    /// Linear then harmonic, as in the engine's curves.
+    /// The curves' slots, linear then harmonic, as in the engine's curves: their styles (each
+    /// model names the laws it fills, [`ModelData::laws`]).
     laws: [LawStyle; 2],
     palette: Vec<String>,
     fills: Vec<String>,
@@ -139,32 +139,6 @@ struct PageData {
     map_cells: u32,
     /// Slider positions between the ends of a range.
     slider_steps: f64,
-    /// The apparatus of each model as its sketch draws it: the animation draws the same.
-    apparatus: ApparatusData,
-}
-
-/// The sketches' geometry, by model id: each model on the page ([`Capability::Explore`]) with
-/// its [`Present::apparatus`], in the order of the registry.
-struct ApparatusData;
-
-impl Serialize for ApparatusData {
-    fn serialize<S: serde::Serializer>(
-        &self,
-        serializer: S,
-    ) -> std::result::Result<S::Ok, S::Error> {
-        use serde::ser::SerializeMap;
-        fn entry<M: Present, S: SerializeMap>(
-            _: &M,
-            map: &mut S,
-        ) -> std::result::Result<(), S::Error> {
-            map.serialize_entry(M::ID, &M::apparatus())
-        }
-        let mut map = serializer.serialize_map(None)?;
-        for m in Model::offering(Capability::Explore) {
-            with_capability!(&m, present, p => entry(p, &mut map)?, else {});
-        }
-        map.end()
-    }
 }
 
 /// How a law is drawn: the report's figures' colours and dashes.
@@ -199,6 +173,13 @@ struct ModelData {
     about: &'static str,
     defaults_source: &'static str,
     position: &'static str,
+    /// The laws the page shows for the model, and what its closed forms describe.
+    laws: &'static [ExploredLaw],
+    closed_forms: &'static str,
+    /// The words of the regimes its integration summaries name beyond the engine's.
+    regimes: Vec<LawText>,
+    /// The apparatus as its sketch draws it: the animation draws the same.
+    apparatus: Apparatus,
     params: Vec<ParamData>,
     choices: Vec<ChoiceData>,
     quantities: Vec<QuantityData>,
@@ -259,6 +240,16 @@ fn model_data<M: Explore>(p: &M) -> ModelData {
         about: M::ABOUT,
         defaults_source: M::DEFAULTS_SOURCE,
         position: M::POSITION,
+        laws: M::LAWS,
+        closed_forms: M::CLOSED_FORMS,
+        regimes: M::SUMMARY_REGIMES
+            .iter()
+            .map(|&id| LawText {
+                id,
+                words: M::regime_words(id).unwrap_or(id),
+            })
+            .collect(),
+        apparatus: M::apparatus(),
         params: M::PARAMS.iter().map(|s| param_data(s, p)).collect(),
         choices: M::CHOICES
             .iter()

@@ -1,9 +1,11 @@
 //! The exact event-driven engine as a [`Method`]: the reference of every comparison.
 
+use super::surface::SurfaceProblem;
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
+use crate::engine::autonomous::{Ending, SurfaceOptions, SurfaceRun};
 use crate::engine::run::Motion;
-use crate::engine::{integrate, RunOptions, Segment};
-use crate::error::Result;
+use crate::engine::{integrate, integrate_surface, EventKind, RunOptions, Segment};
+use crate::error::{Error, Result};
 
 /// The exact engine ([`crate::engine::integrate`]); the setting is ignored.
 pub struct Exact;
@@ -54,10 +56,60 @@ impl Method for Exact {
         Ok(Solution::new(events, x_end, v_end, stats))
     }
 
+    /// [`integrate_surface`] over slip onsets until `t_end` is passed: its slips and sticks
+    /// up to `t_end`, and the state there.
+    fn solve_surface(&self, problem: &SurfaceProblem, _setting: Setting) -> Result<Solution> {
+        let run = surface_run(problem, true)?;
+        let events: Vec<MethodEvent> = run
+            .events
+            .iter()
+            .filter(|e| e.t <= problem.t_end)
+            .filter_map(|e| {
+                match e.kind {
+                    EventKind::Slip { .. } => Some("slip"),
+                    EventKind::Stick { .. } => Some("stick"),
+                    _ => None,
+                }
+                .map(|kind| MethodEvent { t: e.t, kind })
+            })
+            .collect();
+        let (x_end, v_end, _) = run.state_at(problem.t_end).ok_or(Error::Stalled {
+            t: problem.t_end,
+            reason: "exact: the surface run does not reach t_end",
+        })?;
+        let n = run.segments.len() as u64;
+        let stats = Stats {
+            rhs_evals: n,
+            steps: n,
+            accepted: n,
+            ..Stats::default()
+        };
+        Ok(Solution::new(events, x_end, v_end, stats))
+    }
+
     /// [`integrate`] alone, as a user calls it: the same events located, without recording
     /// the segments `solve` reads every period's events from.
     fn solve_timed(&self, problem: &Problem, _setting: Setting) -> Result<()> {
         integrate(&problem.body, &problem.law, &options(problem, false)).map(drop)
+    }
+}
+
+/// The surface run of `problem` past `t_end`: slip onsets doubled until the last is beyond
+/// it, or the body sticks or slips for ever.
+fn surface_run(problem: &SurfaceProblem, record_segments: bool) -> Result<SurfaceRun> {
+    let mut slips = 8u32;
+    loop {
+        let opts = SurfaceOptions {
+            x0: 0.0,
+            slips,
+            record_segments,
+        };
+        let run = integrate_surface(&problem.body, &problem.law, &opts)?;
+        let past = run.events.last().is_some_and(|e| e.t > problem.t_end);
+        if past || run.ending != Ending::Slips || slips >= 1 << 20 {
+            return Ok(run);
+        }
+        slips *= 2;
     }
 }
 

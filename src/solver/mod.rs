@@ -16,7 +16,9 @@
 //! Its name, [`DIFFSOL_PEER`], is known without it, so a build without the peer can say so.
 //!
 //! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
-//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`.
+//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`. The exact engine and
+//! rk4 also integrate a [`surface::SurfaceProblem`] (the belt: a force affine in x, sticking
+//! at the surface's speed); the other methods refuse it.
 
 use serde::Serialize;
 
@@ -30,6 +32,7 @@ pub mod euler_sign;
 pub mod exact;
 pub mod moreau;
 pub mod rk4;
+pub mod surface;
 pub mod tanh;
 
 /// The name of the compiled peer from a Rust ODE library (diffsol's Tsit45), built in with the
@@ -183,6 +186,15 @@ pub trait Method: Sync {
     fn name(&self) -> &'static str;
     /// Solves `problem` with the given accuracy setting.
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution>;
+    /// Solves the autonomous `problem` of a moving surface; refused by a method that takes
+    /// forces of time only.
+    fn solve_surface(
+        &self,
+        _problem: &surface::SurfaceProblem,
+        _setting: Setting,
+    ) -> Result<Solution> {
+        Err(surface::refused(self.name()))
+    }
     /// The work the benchmark times: [`Method::solve`], unless the method does the same
     /// integration with less bookkeeping for its output (the exact engine).
     fn solve_timed(&self, problem: &Problem, setting: Setting) -> Result<()> {

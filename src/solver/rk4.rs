@@ -18,8 +18,9 @@
 //! step. Events are located to round-off, so the global error stays O(h⁴) across them; a sign
 //! change that starts and ends inside one step is not seen (a brief stick or slip is missed).
 
-use super::dopri5::{next_breakpoint, State};
-use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
+use super::dopri5::State;
+use super::surface::{SurfaceProblem, System};
+use super::{Method, MethodEvent, Setting, Solution, Stats};
 use crate::error::{Error, Result};
 
 /// Largest number of grid steps a run may take.
@@ -39,7 +40,11 @@ impl Method for Rk4 {
         "rk4"
     }
 
-    fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
+    fn solve(&self, problem: &super::Problem, setting: Setting) -> Result<Solution> {
+        solve_step(problem, setting.fixed_step(self.name())?)
+    }
+
+    fn solve_surface(&self, problem: &SurfaceProblem, setting: Setting) -> Result<Solution> {
         solve_step(problem, setting.fixed_step(self.name())?)
     }
 }
@@ -53,10 +58,11 @@ enum Advance {
 }
 
 /// The increment of one RK4 step of length h from (t, y) for the slip direction s, counting
-/// 4 evaluations.
-fn rk4(problem: &Problem, s: f64, t: f64, y: State, h: f64, stats: &mut Stats) -> State {
+/// 4 evaluations; y = (u, w) = (x − v_s t, v − v_s).
+fn rk4(problem: &impl System, s: f64, t: f64, y: State, h: f64, stats: &mut Stats) -> State {
     stats.rhs_evals += 4;
-    let f = |t: f64, y: State| [y[1], problem.slip_acceleration(t, s)];
+    let v_s = problem.surface_speed();
+    let f = |t: f64, y: State| [y[1], problem.slip_acceleration(t, y[0] + v_s * t, s)];
     let k1 = f(t, y);
     let k2 = f(
         t + 0.5 * h,
@@ -88,11 +94,17 @@ impl Sum {
     }
 }
 
-/// G(t) = |D| − μs N_f (N), one evaluation: the body leaves rest when it becomes positive.
-fn margin(problem: &Problem, t: f64, stats: &mut Stats) -> f64 {
+/// G(t) = |D| − μs N_f (N) for the body stuck at u, one evaluation: the body leaves the
+/// surface when it becomes positive.
+fn margin(problem: &impl System, t: f64, u: f64, stats: &mut Stats) -> f64 {
     stats.rhs_evals += 1;
-    let (d, n) = problem.forces(t);
-    d.abs() - problem.body.mu_s * n
+    let (d, n) = forces(problem, t, u);
+    d.abs() - problem.body().mu_s * n
+}
+
+/// The forces at t for the body at u = x − v_s t.
+fn forces(problem: &impl System, t: f64, u: f64) -> (f64, f64) {
+    problem.forces(t, u + problem.surface_speed() * t)
 }
 
 /// Smallest σ in (0, width] with `after(σ)` true, given after(width), to BRACKET_REL of t + σ.
@@ -114,7 +126,7 @@ fn bisect(t: f64, width: f64, mut after: impl FnMut(f64) -> bool) -> f64 {
 
 /// One step of the current mode from t to `stop`: (x, v) move to the step end or to the event.
 fn advance(
-    problem: &Problem,
+    problem: &impl System,
     dir: f64,
     t: f64,
     stop: f64,
@@ -125,8 +137,9 @@ fn advance(
     stats.accepted += 1;
     let width = stop - t;
     if dir == 0.0 {
-        if margin(problem, stop, stats) > 0.0 {
-            let sigma = bisect(t, width, |sg| margin(problem, t + sg, stats) > 0.0);
+        let u = y.y[0];
+        if margin(problem, stop, u, stats) > 0.0 {
+            let sigma = bisect(t, width, |sg| margin(problem, t + sg, u, stats) > 0.0);
             return Advance::Event {
                 t: t + sigma,
                 x: y.y[0],
@@ -153,8 +166,9 @@ fn advance(
 }
 
 /// Integrates `problem` with RK4 of step h (s).
-pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
-    if problem.t_end / h > MAX_STEPS as f64 {
+pub fn solve_step(problem: &impl System, h: f64) -> Result<Solution> {
+    let t_end = problem.t_end();
+    if t_end / h > MAX_STEPS as f64 {
         return Err(Error::Stalled {
             t: 0.0,
             reason: "rk4: step size too small: more than 10^7 steps requested",
@@ -167,11 +181,11 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
     // Direction of slip, 0 when stuck.
     let mut dir = 0.0_f64;
     let mut at_same_time = (f64::NAN, 0u32);
-    if problem.t_end > 0.0 && margin(problem, 0.0, &mut stats) > 0.0 {
-        dir = problem.forces(0.0).0.signum();
+    if t_end > 0.0 && margin(problem, 0.0, 0.0, &mut stats) > 0.0 {
+        dir = forces(problem, 0.0, 0.0).0.signum();
         events.push(MethodEvent { t, kind: "slip" });
     }
-    while t < problem.t_end {
+    while t < t_end {
         if stats.steps >= 2 * MAX_STEPS {
             return Err(Error::Stalled {
                 t,
@@ -183,7 +197,7 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
         while grid <= t + 1e-9 * h {
             grid += h;
         }
-        let stop = grid.min(next_breakpoint(problem, t)).min(problem.t_end);
+        let stop = grid.min(problem.breakpoint_after(t)).min(t_end);
         match advance(problem, dir, t, stop, &mut y, &mut stats) {
             Advance::Step => t = stop,
             Advance::Event { t: te, x } => {
@@ -200,11 +214,11 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
                 }
                 t = te;
                 y.y = [x, 0.0];
-                let (d, n) = problem.forces(te);
+                let (d, n) = forces(problem, te, x);
                 let kind = if dir == 0.0 {
                     dir = d.signum();
                     "slip"
-                } else if d.abs() <= problem.body.mu_s * n {
+                } else if d.abs() <= problem.body().mu_s * n {
                     dir = 0.0;
                     "stick"
                 } else if d.signum() != dir {
@@ -219,7 +233,14 @@ pub fn solve_step(problem: &Problem, h: f64) -> Result<Solution> {
             }
         }
     }
-    Ok(Solution::new(events, y.y[0], y.y[1], stats))
+    // Back from (u, w) to (x, v); on a still surface they are the same numbers.
+    let v_s = problem.surface_speed();
+    let (x_end, v_end) = if v_s == 0.0 {
+        (y.y[0], y.y[1])
+    } else {
+        (y.y[0] + v_s * t_end, y.y[1] + v_s)
+    };
+    Ok(Solution::new(events, x_end, v_end, stats))
 }
 
 #[cfg(test)]

@@ -178,6 +178,31 @@ try {
   const seconds = (s) => Number(s.replace(/^t = /, "").replace(/ s$/, ""));
   out.checks.reducedMotionStep = (seconds(after) - seconds(before)) / (period / 8);
 
+  // The belt: a block on a moving belt held by a spring to a wall, moved by the computed
+  // motion (the time slider set to thousandths of the shown periods).
+  await page.emulateMedia({ reducedMotion: "no-preference" });
+  await page.check("#model-belt");
+  const belt = await visit("belt, defaults");
+  out.checks.beltRegime = belt.regime;
+  out.checks.beltTable = belt.table;
+  out.checks.beltLaws = await page.evaluate(() => [...document.querySelectorAll("#laws label")].filter((l) => !l.hidden).map((l) => l.textContent.trim()));
+  const beltAt = (value) => page.evaluate((v) => {
+    const time = document.getElementById("time");
+    time.value = String(v);
+    time.dispatchEvent(new Event("input", { bubbles: true }));
+    const a = document.getElementById("apparatus");
+    const num = (sel, attr) => Number(a.querySelector(sel).getAttribute(attr));
+    return { ...window.stickslipExplorer.apparatus, blockX: num("rect.block", "x"),
+      blockSize: [num("rect.block", "width"), num("rect.block", "height")],
+      parts: ["rect.wall", "rect.belt", "polyline.spring", ".belt-marks line"].map((sel) => a.querySelectorAll(sel).length),
+      fill: a.querySelector("rect.block").getAttribute("fill"), desc: a.querySelector("desc").textContent };
+  }, value);
+  out.checks.beltApparatus = [await beltAt(50), await beltAt(150), await beltAt(280)];
+  if (shots) await page.locator("#motion").screenshot({ path: path.join(shots, "explorer-belt.png") });
+  // The belt's map (its legend names the shares of the cycle stuck), once drawn.
+  await page.waitForFunction(() => document.getElementById("map-status").textContent.includes("v_b from"), null, { timeout: 0 });
+  out.checks.beltMap = await page.evaluate(() => document.getElementById("map-status").textContent);
+
   // Accessibility at desktop and phone width, light and dark; no sideways scrolling on a phone.
   out.axe = [];
   for (const [width, height, colorScheme] of [[1280, 1000, "light"], [390, 844, "light"], [390, 844, "dark"]]) {

@@ -102,7 +102,7 @@ pub enum Regime {
 
 impl Regime {
     /// The id, in the style of guide §14.
-    pub fn id(self) -> &'static str {
+    pub const fn id(self) -> &'static str {
         match self {
             Regime::StickSlip => "stick_slip",
             Regime::TouchingOscillation => "touching_oscillation",

@@ -12,14 +12,18 @@
 //! quantity.rs  the registry of the quantities: key, symbol, unit, equation
 //! results.rs   the evaluation: closed forms, the exact integration's last cycle, checks
 //! scene.rs     the figures: x(t) and v(t) with the belt's speed, the phase portrait
-//! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase
+//! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase, and its
+//!              geometry for the explorer's animation
+//! explore.rs   what the explorer page asks (`Explore`): regime sentence, curves, map
+//! map.rs       the (μd, v_b) regime map from the closed forms
 //! ```
 //!
-//! The belt has no presentation capabilities yet (report, worksheet, explorer), only the
-//! sketch and the figures a presentation will show: the commands that need them refuse it.
+//! The belt offers the explorer; the commands that need a capability it lacks refuse it.
 
 pub mod body;
+pub mod explore;
 pub mod formula;
+pub mod map;
 pub mod params;
 pub mod quantity;
 pub mod results;

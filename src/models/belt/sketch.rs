@@ -13,6 +13,8 @@
 //! Drawn for a printed width of one A4 column (90.5 mm), as the pulled mass's: the canvas is
 //! [`WIDTH`] px wide and no glyph is smaller than [`SUB`] px (8 pt or more in print).
 
+use serde::Serialize;
+
 use super::formula::{self, ClosedForm};
 use super::BeltParams;
 use crate::present::vocab::Phase;
@@ -27,6 +29,51 @@ const FONT: f64 = 20.0;
 const SUB: f64 = 19.0;
 /// The longest force arrow (px).
 const LONGEST: f64 = 110.0;
+
+/// The apparatus as the sketch draws it (px of the sketch's user space, [`WIDTH`] wide): the
+/// explorer's animation (the belt's `Explore::apparatus`) draws the same wall, spring, block
+/// and belt, the block moved by the computed motion and the belt's marks by v_b t.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct BeltApparatus {
+    /// Canvas width and label size (px).
+    pub width: f64,
+    pub font: f64,
+    /// The wall: its left edge, width and height above the belt (px).
+    pub wall_x: f64,
+    pub wall_width: f64,
+    pub wall_height: f64,
+    /// The block: its size and the sketch's drawn position of its left face (px).
+    pub block_width: f64,
+    pub block_height: f64,
+    pub block_x: f64,
+    /// The belt: its left end, its length in the sketch, its thickness and its rollers'
+    /// radius (px).
+    pub belt_left: f64,
+    pub belt_length: f64,
+    pub belt_height: f64,
+    pub roller_r: f64,
+    /// The spring: zigzags and their half-width (px).
+    pub coils: usize,
+    pub coil_half: f64,
+}
+
+/// The belt's apparatus, in the sketch and in the explorer.
+pub const APPARATUS: BeltApparatus = BeltApparatus {
+    width: WIDTH,
+    font: FONT,
+    wall_x: 14.0,
+    wall_width: 12.0,
+    wall_height: 120.0,
+    block_width: 90.0,
+    block_height: 56.0,
+    block_x: 150.0,
+    belt_left: 40.0,
+    belt_length: 250.0,
+    belt_height: 14.0,
+    roller_r: 7.0,
+    coils: 5,
+    coil_half: 8.0,
+};
 
 /// The drawn instant: its words, the position x (m), the speed v (m/s), the spring's force on
 /// the block (N, toward the wall for x > 0) and the friction on it (N, in the belt's direction).
@@ -155,9 +202,18 @@ pub fn belt(p: &BeltParams, phase: Phase) -> String {
     let drawn_at = at.words.replace("x_s", "x_{s}").replace("x_d", "x_{d}");
     s.text(10.0, 52.0, "start", FONT, &format!("drawn at {drawn_at}"));
     let belt_top = lower;
-    s.rect(14.0, belt_top - 120.0, 12.0, 120.0, 0.3, 1.4);
-    let (bw, bh) = (90.0, 56.0);
-    let block_x = 150.0;
+    let a = APPARATUS;
+    let wall_face = a.wall_x + a.wall_width;
+    s.rect(
+        a.wall_x,
+        belt_top - a.wall_height,
+        a.wall_width,
+        a.wall_height,
+        0.3,
+        1.4,
+    );
+    let (bw, bh) = (a.block_width, a.block_height);
+    let block_x = a.block_x;
     s.rect(block_x, belt_top - bh, bw, bh, 0.12, 1.6);
     s.text(
         block_x + bw / 2.0,
@@ -166,18 +222,33 @@ pub fn belt(p: &BeltParams, phase: Phase) -> String {
         FONT,
         "m",
     );
-    zigzag(&mut s, 26.0, block_x, belt_top - bh / 2.0, 5, 8.0);
+    zigzag(
+        &mut s,
+        wall_face,
+        block_x,
+        belt_top - bh / 2.0,
+        a.coils,
+        a.coil_half,
+    );
     s.text(
-        (26.0 + block_x) / 2.0,
+        (wall_face + block_x) / 2.0,
         belt_top - bh / 2.0 - 18.0,
         "middle",
         FONT,
         &format!("k = {}", plain(p.k, "N/m")),
     );
     // The belt: a band over two rollers, its speed along the top.
-    s.rect(40.0, belt_top, 250.0, 14.0, 0.18, 1.2);
-    s.circle_styled(47.0, belt_top + 7.0, 7.0, INK, 0.15, 1.2);
-    s.circle_styled(283.0, belt_top + 7.0, 7.0, INK, 0.15, 1.2);
+    let (r, belt_right) = (a.roller_r, a.belt_left + a.belt_length);
+    s.rect(
+        a.belt_left,
+        belt_top,
+        a.belt_length,
+        a.belt_height,
+        0.18,
+        1.2,
+    );
+    s.circle_styled(a.belt_left + r, belt_top + r, r, INK, 0.15, 1.2);
+    s.circle_styled(belt_right - r, belt_top + r, r, INK, 0.15, 1.2);
     s.arrow(
         Some("belt-speed"),
         (60.0, belt_top + 36.0),

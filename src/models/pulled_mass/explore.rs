@@ -1,8 +1,12 @@
 //! What the explorer page asks of the pulled mass: the regime sentence with the guide §9 inequality
 //! that decides it, the apparatus' second coordinate (the hanging mass) and the (μd, μs) map.
 
-use crate::engine::ForceLaw;
-use crate::explore::{Explore, MapAxis, RegimeText};
+use crate::error::Result;
+#[cfg(feature = "cli")]
+use crate::explore::Apparatus;
+use crate::explore::{
+    periodic_curve, Explore, ExploredLaw, MapAxis, RegimeText, Sample, LINEARIZED_AND_HARMONIC,
+};
 use crate::models::pulled_mass::formula::{ClosedForm, Regime};
 use crate::models::pulled_mass::map::{
     harmonic_category, linear_category, top, HARMONIC_CATEGORIES, LINEAR_CATEGORIES,
@@ -35,6 +39,9 @@ pub fn regime_reason(c: &ClosedForm, mu_s: f64) -> String {
 impl Explore for PulledMassParams {
     const NAME: &'static str = "pulled mass";
     const POSITION: &'static str = "x";
+    const LAWS: &'static [ExploredLaw] = LINEARIZED_AND_HARMONIC;
+    const CLOSED_FORMS: &'static str = "linearized law";
+    const SUMMARY_REGIMES: &'static [&'static str] = &[];
 
     fn quantities() -> Vec<&'static Quantity> {
         Key::ENTRIES.iter().map(|e| &e.quantity).collect()
@@ -52,10 +59,20 @@ impl Explore for PulledMassParams {
         &e.applicability
     }
 
-    /// The hanging mass' displacement below its rest position, (N(t) − W)/k: the spring
-    /// presses the block with N = W + k·(that displacement).
-    fn apparatus(&self, _law: LawKind, force_law: &ForceLaw, t: f64) -> f64 {
-        (force_law.normal(t) - self.weight()) / self.k
+    /// The apparatus coordinate is the hanging mass' displacement below its rest position,
+    /// (N(t) − W)/k: the spring presses the block with N = W + k·(that displacement).
+    fn curve(&self, law: LawKind, shown: u32, samples: usize) -> Result<Option<Vec<Sample>>> {
+        periodic_curve(self, law, shown, samples, |force_law, t| {
+            (force_law.normal(t) - self.weight()) / self.k
+        })
+    }
+
+    #[cfg(feature = "cli")]
+    fn apparatus() -> Apparatus {
+        Apparatus::new(
+            "pulled-mass",
+            &crate::models::pulled_mass::sketch::APPARATUS,
+        )
     }
 
     fn map_axes(&self) -> [MapAxis; 2] {

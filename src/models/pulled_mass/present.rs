@@ -39,11 +39,6 @@ impl Present for PulledMassParams {
     ));
     const LAW_WORDS: LawWords = paper::LAW_WORDS;
     type Figure = PulledFigure;
-    type Apparatus = sketch::Apparatus;
-
-    fn apparatus() -> sketch::Apparatus {
-        sketch::APPARATUS
-    }
 
     fn words(code: &str) -> Option<&'static str> {
         match code {

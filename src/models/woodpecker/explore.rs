@@ -1,8 +1,12 @@
 //! What the explorer page asks of the woodpecker: the regime sentence with the inequalities that
 //! decide it, the apparatus' second coordinate (the bird on its spring) and the (μd, z0) map.
 
-use crate::engine::ForceLaw;
-use crate::explore::{Explore, MapAxis, RegimeText};
+use crate::error::Result;
+#[cfg(feature = "cli")]
+use crate::explore::Apparatus;
+use crate::explore::{
+    periodic_curve, Explore, ExploredLaw, MapAxis, RegimeText, Sample, LINEARIZED_AND_HARMONIC,
+};
 use crate::models::woodpecker::formula::OrbitRegime;
 use crate::models::woodpecker::map::{integrated_cell, linear_cell, ranges, MAP_PERIODS, REGIMES};
 use crate::models::woodpecker::quantity::Key;
@@ -71,6 +75,9 @@ fn regime_reason(e: &Evaluation) -> String {
 impl Explore for WoodpeckerParams {
     const NAME: &'static str = "woodpecker";
     const POSITION: &'static str = "y_S";
+    const LAWS: &'static [ExploredLaw] = LINEARIZED_AND_HARMONIC;
+    const CLOSED_FORMS: &'static str = "linearized law";
+    const SUMMARY_REGIMES: &'static [&'static str] = &[];
 
     fn quantities() -> Vec<&'static Quantity> {
         Key::ENTRIES.iter().map(|e| &e.quantity).collect()
@@ -88,10 +95,21 @@ impl Explore for WoodpeckerParams {
         &e.applicability
     }
 
-    /// The spring coordinate z(t) of the law: the bird's position relative to the sleeve
-    /// (y_W = y_S + z, positive downward).
-    fn apparatus(&self, law: LawKind, _force_law: &ForceLaw, t: f64) -> f64 {
-        spring_coordinate(self, law, t.rem_euclid(self.period())).unwrap_or(0.0)
+    /// The apparatus coordinate is the spring coordinate z(t) of the law: the bird's position
+    /// relative to the sleeve (y_W = y_S + z, positive downward).
+    fn curve(&self, law: LawKind, shown: u32, samples: usize) -> Result<Option<Vec<Sample>>> {
+        let period = self.period();
+        periodic_curve(self, law, shown, samples, |_, t| {
+            spring_coordinate(self, law, t.rem_euclid(period)).unwrap_or(0.0)
+        })
+    }
+
+    #[cfg(feature = "cli")]
+    fn apparatus() -> Apparatus {
+        Apparatus::new(
+            "woodpecker",
+            &crate::models::woodpecker::sketch::WOODPECKER_APPARATUS,
+        )
     }
 
     fn map_axes(&self) -> [MapAxis; 2] {

@@ -41,11 +41,6 @@ impl Present for WoodpeckerParams {
     ));
     const LAW_WORDS: LawWords = paper::LAW_WORDS;
     type Figure = WoodFigure;
-    type Apparatus = sketch::WoodpeckerApparatus;
-
-    fn apparatus() -> sketch::WoodpeckerApparatus {
-        sketch::WOODPECKER_APPARATUS
-    }
 
     fn words(code: &str) -> Option<&'static str> {
         match code {

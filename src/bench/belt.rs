@@ -1,0 +1,140 @@
+//! The belt as a bench problem: the textbook stick-slip oscillator (docs/belt.md), a standard
+//! test for event-driven solvers, with the default set over [`PERIODS`] cycles. The force is
+//! the spring's −k x and the block sticks at the belt's speed v_b, so it is a
+//! [`SurfaceProblem`]: the exact engine and rk4 integrate it ([`Method::solve_surface`]); the
+//! methods that take forces of time only refuse it. The exact event times are those of the
+//! closed forms: first slip at x_s/v_b (B5), then slips of t_slip (B9) and sticks of
+//! t_stick (B10).
+//!
+//! Not yet in the work-precision sweep (`stickslip bench`): dopri5, moreau, tanh, euler_sign,
+//! and the diffsol and SciPy peers do not take a force depending on the position.
+
+use super::problems::PERIODS;
+use crate::error::Result;
+use crate::models::belt::body::{body, surface_law};
+use crate::models::belt::formula::{self, ClosedForm};
+use crate::models::belt::BeltParams;
+use crate::solver::surface::SurfaceProblem;
+#[cfg(test)]
+use crate::solver::Method;
+use crate::solver::MethodEvent;
+
+/// The problem's id in the bench's tables.
+pub const ID: &str = "belt_default";
+
+/// The belt's default set (m 0.5 kg, k 50 N/m, v_b 50 mm/s, μs 0.6, μd 0.4) over
+/// [`PERIODS`] cycles after the first slip, the end in the middle of a stick.
+pub fn problem() -> Result<(BeltParams, SurfaceProblem)> {
+    let p = BeltParams::default();
+    p.validate()?;
+    let c = formula::evaluate(&p);
+    let t_end = c.first_slip_time + f64::from(PERIODS) * c.period - 0.5 * c.t_stick;
+    let problem = SurfaceProblem {
+        body: body(&p),
+        law: surface_law(&p)?,
+        t_end,
+    };
+    Ok((p, problem))
+}
+
+/// The event times of the closed forms up to `t_end` (s): the reference of every method.
+pub fn closed_form_events(c: &ClosedForm, t_end: f64) -> Vec<MethodEvent> {
+    let mut out = Vec::new();
+    let mut t = c.first_slip_time;
+    let mut cycle = 0.0;
+    while t <= t_end {
+        out.push(MethodEvent { t, kind: "slip" });
+        let stick = t + c.t_slip;
+        if stick > t_end {
+            break;
+        }
+        out.push(MethodEvent {
+            t: stick,
+            kind: "stick",
+        });
+        cycle += 1.0;
+        // From the first slip, not summed: no drift of the rounding over the cycles.
+        t = c.first_slip_time + cycle * c.period;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::solver::exact::Exact;
+    use crate::solver::rk4::Rk4;
+    use crate::solver::{Setting, Solution};
+
+    /// Largest event-time error (s) against `want`, after checking the kinds agree.
+    fn error(got: &Solution, want: &[MethodEvent]) -> f64 {
+        let kinds = |e: &[MethodEvent]| e.iter().map(|e| e.kind).collect::<Vec<_>>();
+        assert_eq!(kinds(&got.events), kinds(want));
+        got.events
+            .iter()
+            .zip(want)
+            .map(|(a, b)| (a.t - b.t).abs())
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn the_exact_engine_gives_the_closed_forms_event_times() {
+        let (p, problem) = problem().unwrap();
+        let c = formula::evaluate(&p);
+        let want = closed_form_events(&c, problem.t_end);
+        assert_eq!(want.len(), 2 * PERIODS as usize);
+        let got = Exact.solve_surface(&problem, Setting::Step(1.0)).unwrap();
+        let err = error(&got, &want);
+        assert!(err <= 1e-13 * problem.t_end, "{err:e}");
+        // The end lies mid-stick: carried by the belt, at x_e + v_b t_stick/2.
+        assert_eq!(got.v_end, p.v_b);
+        let x = c.x_slip_end + 0.5 * p.v_b * c.t_stick;
+        assert!((got.x_end - x).abs() <= 1e-13, "{} {x}", got.x_end);
+    }
+
+    #[test]
+    fn rk4_converges_to_the_exact_event_times_as_its_step_shrinks() {
+        let (p, problem) = problem().unwrap();
+        let c = formula::evaluate(&p);
+        let want = closed_form_events(&c, problem.t_end);
+        let exact = Exact.solve_surface(&problem, Setting::Step(1.0)).unwrap();
+        let points: Vec<(f64, f64)> = [25.0, 50.0, 100.0, 200.0]
+            .iter()
+            .map(|n| {
+                let h = c.period / n;
+                let got = Rk4.solve_surface(&problem, Setting::Step(h)).unwrap();
+                assert_eq!(got.v_end, p.v_b);
+                let err = error(&got, &want);
+                // The position at the end carries the last stick's error, carried at v_b.
+                assert!((got.x_end - exact.x_end).abs() <= 2.0 * p.v_b * err, "{n}");
+                (h, err)
+            })
+            .collect();
+        // Measured: 1.2e-3, 4.5e-5, 6.6e-6, 5.4e-7 s over 20 cycles; fitted order 3.6 (the
+        // slips are harmonic arcs of ω h = 0.46 … 0.057 rad per step).
+        assert!(
+            points.windows(2).all(|w| w[1].1 < w[0].1 / 6.0),
+            "{points:?}"
+        );
+        let order = crate::solver::test_support::fitted_slope(&points);
+        assert!(3.0 < order && order < 4.8, "order {order}: {points:?}");
+        assert!(points[3].1 < 1e-6, "{points:?}");
+    }
+
+    #[test]
+    fn the_methods_of_time_only_forces_refuse_it() {
+        let (_, problem) = problem().unwrap();
+        for method in crate::solver::methods() {
+            let got = method.solve_surface(&problem, Setting::Tolerance(1e-6));
+            match method.name() {
+                "exact" => assert!(got.is_ok()),
+                "rk4" => assert!(method.solve_surface(&problem, Setting::Step(1e-2)).is_ok()),
+                name => {
+                    let e = got.unwrap_err().to_string();
+                    assert!(e.starts_with("invalid parameter method"), "{name}: {e}");
+                    assert!(e.contains(name), "{e}");
+                }
+            }
+        }
+    }
+}
