@@ -17,15 +17,16 @@ use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde_json::{json, Value};
 
 use crate::error::{Error, Result};
+use crate::models::{with_model, Model, Physics};
 use crate::results::quantity::{Kind, Registry};
 use crate::results::Versioned;
 
 /// One JSON document of the tool and its schema.
 pub struct Document {
     /// File stem under `schema/` (`eval-pulled-mass` → `schema/eval-pulled-mass.schema.json`).
-    pub name: &'static str,
+    pub name: String,
     /// The commands and files that write it.
-    pub written_by: &'static str,
+    pub written_by: String,
     pub schema: Schema,
 }
 
@@ -33,7 +34,8 @@ pub struct Document {
 pub const FOLDER: &str = "schema";
 
 /// The schema of `T` as written (with `schema_version` first), titled and described.
-fn document<T: JsonSchema>(name: &'static str, written_by: &'static str) -> Document {
+fn document<T: JsonSchema>(name: impl Into<String>, written_by: impl Into<String>) -> Document {
+    let (name, written_by) = (name.into(), written_by.into());
     // The serialize contract: outputs, so `rename(serialize = …)` names and every field written.
     let mut schema = schemars::generate::SchemaSettings::draft2020_12()
         .for_serialize()
@@ -69,20 +71,18 @@ impl JsonSchema for CheckOutput {
 
 /// Every JSON document of the tool, in a fixed order.
 pub fn documents() -> Vec<Document> {
-    use crate::models::{belt, pulled_mass, woodpecker};
-    vec![
-        document::<Versioned<pulled_mass::results::Evaluation>>(
-            "eval-pulled-mass",
-            "`stickslip eval pulled-mass --json` (guide §14)",
-        ),
-        document::<Versioned<woodpecker::results::Evaluation>>(
-            "eval-woodpecker",
-            "`stickslip eval woodpecker --json` (guide §14)",
-        ),
-        document::<Versioned<belt::results::Evaluation>>(
-            "eval-belt",
-            "`stickslip eval belt --json`",
-        ),
+    /// `eval --json` of a model: its evaluation's own type, through the registry.
+    fn eval<M: Physics>(_: &M) -> Document {
+        document::<Versioned<M::Evaluation>>(
+            format!("eval-{}", M::ID),
+            format!("`stickslip eval {} --json` (guide §14)", M::ID),
+        )
+    }
+    let mut all: Vec<Document> = Model::defaults()
+        .iter()
+        .map(|m| with_model!(m, p => eval(p)))
+        .collect();
+    all.extend([
         document::<Versioned<crate::claims::Claims>>(
             "claims",
             "`stickslip claims MODEL --json`",
@@ -103,7 +103,8 @@ pub fn documents() -> Vec<Document> {
             "bench-results",
             "results.json of `stickslip bench`",
         ),
-    ]
+    ]);
+    all
 }
 
 /// The schema files, `schema/NAME.schema.json`, pretty-printed with a final newline.
@@ -125,7 +126,7 @@ pub fn files() -> Result<Vec<crate::report::OutFile>> {
 }
 
 /// A string that is one of `ids` (deduplicated, in their order).
-fn one_of<'a>(description: &str, ids: impl IntoIterator<Item = &'a str>) -> Schema {
+pub(crate) fn one_of<'a>(description: &str, ids: impl IntoIterator<Item = &'a str>) -> Schema {
     let mut list: Vec<&str> = Vec::new();
     for id in ids {
         if !list.contains(&id) {
@@ -147,7 +148,7 @@ fn number(words: &str, unit: &str) -> Value {
 
 /// The guide §14 `closed_form` object of a registry: every key of the object required, numbers as
 /// number-or-null, the `regime` key one of `regimes`, the other labels flags.
-fn closed_form<K: Registry>(regimes: &[&str]) -> Schema {
+pub(crate) fn closed_form<K: Registry>(regimes: &[&str]) -> Schema {
     let mut properties = serde_json::Map::new();
     let mut required = Vec::new();
     for e in K::ENTRIES.iter().filter(|e| e.kind != Kind::Checked) {
@@ -168,73 +169,6 @@ fn closed_form<K: Registry>(regimes: &[&str]) -> Schema {
         "required": required,
         "additionalProperties": false,
     })
-}
-
-impl JsonSchema for crate::models::pulled_mass::formula::Regime {
-    fn schema_name() -> Cow<'static, str> {
-        "PulledMassRegime".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        one_of(
-            "Regime of the pulled mass's closed forms (guide §9)",
-            Self::ALL.iter().map(|r| r.id()),
-        )
-    }
-}
-
-impl JsonSchema for crate::models::pulled_mass::formula::ClosedForm {
-    fn schema_name() -> Cow<'static, str> {
-        "PulledMassClosedForm".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        use crate::models::pulled_mass::formula::Regime;
-        let ids: Vec<&str> = Regime::ALL.iter().map(|r| r.id()).collect();
-        closed_form::<crate::models::pulled_mass::quantity::Key>(&ids)
-    }
-}
-
-impl JsonSchema for crate::models::woodpecker::formula::WoodpeckerClosedForm {
-    fn schema_name() -> Cow<'static, str> {
-        "WoodpeckerClosedForm".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        use crate::models::woodpecker::lobe::OrbitRegime;
-        let mut ids: Vec<&str> = Vec::new();
-        for id in OrbitRegime::ALL.iter().map(|r| r.id()) {
-            if !ids.contains(&id) {
-                ids.push(id);
-            }
-        }
-        closed_form::<crate::models::woodpecker::quantity::Key>(&ids)
-    }
-}
-
-impl JsonSchema for crate::models::belt::formula::ClosedForm {
-    fn schema_name() -> Cow<'static, str> {
-        "BeltClosedForm".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        use crate::models::belt::formula::Regime;
-        let ids = [Regime::StickSlip.id(), Regime::TouchingOscillation.id()];
-        closed_form::<crate::models::belt::quantity::Key>(&ids)
-    }
-}
-
-impl JsonSchema for crate::models::woodpecker::lobe::OrbitRegime {
-    fn schema_name() -> Cow<'static, str> {
-        "OrbitRegime".into()
-    }
-
-    fn json_schema(_: &mut SchemaGenerator) -> Schema {
-        one_of(
-            "Regime of the woodpecker's periodic orbit (guide §10)",
-            Self::ALL.iter().map(|r| r.id()),
-        )
-    }
 }
 
 impl JsonSchema for crate::engine::IntegrationRegime {

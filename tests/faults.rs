@@ -155,7 +155,12 @@ impl Fixture {
 #[test]
 fn a_crash_at_every_rename_of_an_install_ends_complete_after_the_next_run() {
     let f = fixture();
-    let files = f.new.keys().filter(|k| !k.ends_with('/')).count();
+    // Only the files whose bytes change are installed (the others are left as they are).
+    let files = f
+        .new
+        .iter()
+        .filter(|(k, v)| !k.ends_with('/') && f.old.get(*k) != Some(*v))
+        .count();
     for n in 0..=files {
         let out = f.fresh(&format!("crash-{n}"));
         let status = report(&f.new_scenario, &out)

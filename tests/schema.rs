@@ -100,7 +100,7 @@ fn the_committed_schemas_are_what_the_types_generate() {
 #[test]
 fn every_schema_is_a_draft_2020_12_schema_that_requires_the_version() {
     for d in stickslip::schema::documents() {
-        let schema = committed(d.name);
+        let schema = committed(&d.name);
         assert_eq!(
             schema["$schema"], "https://json-schema.org/draft/2020-12/schema",
             "{}",

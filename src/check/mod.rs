@@ -27,6 +27,7 @@ use crate::draws::Draws;
 use crate::error::{Error, Result};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
+use crate::present::Present;
 use crate::results::{CheckValue, Checked};
 use crate::worksheet::exercise::{Exercise, Measured};
 
@@ -242,7 +243,7 @@ fn sourced_symbols(case: &Model) -> Vec<(Symbol, Source)> {
         if plain.contains(' ') || plain.contains('/') {
             continue;
         }
-        let value = step_value(&step);
+        let value = step.formula_value();
         let name = formula::identifier(step.symbol);
         let source = Source::Step(step.symbol);
         if name == "varphi" {
@@ -277,20 +278,11 @@ fn sourced_symbols(case: &Model) -> Vec<(Symbol, Source)> {
     out
 }
 
-/// A derived symbol's value is its formula's: defined also where the closed form does not
-/// describe the motion (τ_ST > 1 past the period); NaN where it is not (a formula using it is
-/// then undefined on that set, and counted so).
-fn step_value(step: &crate::derivation::Step) -> f64 {
-    let v = step.value.unwrap_or_else(|| step.expr.eval());
-    if v.is_finite() {
-        v
-    } else {
-        f64::NAN
-    }
-}
-
 /// The values of a formula's symbols on `case`, in the order of its names, from their sources:
-/// no symbol is named, rendered or looked up by string on the way (the sample's path).
+/// no symbol is named, rendered or looked up by string on the way, and the worked steps are
+/// values without expression trees (the sample's path). A derived symbol's value is its
+/// formula's ([`crate::derivation::Step::formula_value`]): NaN where undefined, so a formula
+/// using it is undefined on that set, and counted so.
 fn values(case: &Model, sources: &[Source]) -> Vec<f64> {
     fn param<M: Physics>(p: &M, key: &str) -> f64 {
         M::PARAMS
@@ -301,7 +293,7 @@ fn values(case: &Model, sources: &[Source]) -> Vec<f64> {
     }
     let needs_steps = sources.iter().any(|s| matches!(s, Source::Step(_)));
     let steps = if needs_steps {
-        crate::worksheet::answer::steps(case)
+        with_capability!(case, present, p => p.derivation_values(), else Vec::new())
     } else {
         Vec::new()
     };
@@ -312,7 +304,7 @@ fn values(case: &Model, sources: &[Source]) -> Vec<f64> {
             Source::Step(tex) => steps
                 .iter()
                 .find(|s| std::ptr::eq(s.symbol, *tex) || s.symbol == *tex)
-                .map_or(f64::NAN, step_value),
+                .map_or(f64::NAN, crate::derivation::Step::formula_value),
         })
         .collect()
 }

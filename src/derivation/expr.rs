@@ -61,14 +61,149 @@ pub enum Expr {
     Max(Box<Expr>, Box<Expr>),
 }
 
+/// What a derivation writes its formulas in: the expression tree ([`Expr`], rendered and
+/// evaluated), or the value alone ([`Value`], for callers that need only numbers, such as
+/// `stickslip check` per sampled set). Both evaluate with the same operations in the same
+/// order, so a [`Value`] is bit-identical to [`Expr::eval`] of the tree built the same way.
+pub trait Term:
+    Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+{
+    /// An exact integer.
+    fn int(n: i64) -> Self;
+    /// π.
+    fn pi() -> Self;
+    /// A computed quantity: symbol `tex`, value in SI units.
+    fn var(tex: &'static str, value: f64) -> Self;
+    /// A given parameter: symbol `tex`, value in SI units as typed.
+    fn given(tex: &'static str, value: f64) -> Self;
+    /// self^(num/den), den > 0.
+    fn pow_ratio(self, num: i32, den: i32) -> Self;
+    /// `f` applied to self.
+    fn apply(self, f: Func) -> Self;
+    /// The larger of self and `other` (a NaN argument is ignored, as by `f64::max`).
+    fn max(self, other: Self) -> Self;
+    /// The value, with every leaf at full precision.
+    fn eval(&self) -> f64;
+}
+
+impl Term for Expr {
+    fn int(n: i64) -> Self {
+        Expr::Int(n)
+    }
+    fn pi() -> Self {
+        Expr::Const {
+            tex: r"\pi",
+            value: std::f64::consts::PI,
+        }
+    }
+    fn var(tex: &'static str, value: f64) -> Self {
+        Expr::Var { tex, value }
+    }
+    fn given(tex: &'static str, value: f64) -> Self {
+        Expr::Given { tex, value }
+    }
+    fn pow_ratio(self, num: i32, den: i32) -> Self {
+        Expr::Pow(Box::new(self), num, den)
+    }
+    fn apply(self, f: Func) -> Self {
+        Expr::Apply(f, Box::new(self))
+    }
+    fn max(self, other: Self) -> Self {
+        Expr::Max(Box::new(self), Box::new(other))
+    }
+    fn eval(&self) -> f64 {
+        Expr::eval(self)
+    }
+}
+
+/// A formula's value without its tree: each operation done at once, as [`Expr::eval`] does it
+/// on the tree.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Value(pub f64);
+
+impl Term for Value {
+    fn int(n: i64) -> Self {
+        Value(n as f64)
+    }
+    fn pi() -> Self {
+        Value(std::f64::consts::PI)
+    }
+    fn var(_: &'static str, value: f64) -> Self {
+        Value(value)
+    }
+    fn given(_: &'static str, value: f64) -> Self {
+        Value(value)
+    }
+    fn pow_ratio(self, num: i32, den: i32) -> Self {
+        Value(power(self.0, num, den))
+    }
+    fn apply(self, f: Func) -> Self {
+        Value(f.of(self.0))
+    }
+    fn max(self, other: Self) -> Self {
+        Value(self.0.max(other.0))
+    }
+    fn eval(&self) -> f64 {
+        self.0
+    }
+}
+
+impl Add for Value {
+    type Output = Value;
+    fn add(self, rhs: Value) -> Value {
+        Value(self.0 + rhs.0)
+    }
+}
+
+impl Sub for Value {
+    type Output = Value;
+    fn sub(self, rhs: Value) -> Value {
+        Value(self.0 - rhs.0)
+    }
+}
+
+impl Mul for Value {
+    type Output = Value;
+    fn mul(self, rhs: Value) -> Value {
+        Value(self.0 * rhs.0)
+    }
+}
+
+impl Div for Value {
+    type Output = Value;
+    fn div(self, rhs: Value) -> Value {
+        Value(self.0 / rhs.0)
+    }
+}
+
+/// x^(num/den): `powi` for an integer power, as [`Expr::eval`] and [`Value`] both compute it.
+fn power(x: f64, num: i32, den: i32) -> f64 {
+    if den == 1 {
+        x.powi(num)
+    } else {
+        x.powf(f64::from(num) / f64::from(den))
+    }
+}
+
+impl Func {
+    /// The function's value at `x`.
+    fn of(self, x: f64) -> f64 {
+        match self {
+            Func::Sqrt => x.sqrt(),
+            Func::Arcsin => x.asin(),
+            Func::Arctan => crate::fmath::atan(x),
+        }
+    }
+}
+
 /// A computed quantity leaf: symbol `tex`, value in SI units.
 pub fn var(tex: &'static str, value: f64) -> Expr {
-    Expr::Var { tex, value }
+    Expr::var(tex, value)
 }
 
 /// A given parameter leaf: symbol `tex`, value in SI units as typed.
 pub fn given(tex: &'static str, value: f64) -> Expr {
-    Expr::Given { tex, value }
+    Expr::given(tex, value)
 }
 
 /// An exact integer leaf.
@@ -78,45 +213,42 @@ pub fn int(n: i64) -> Expr {
 
 /// π, written as π in both renderings.
 pub fn pi() -> Expr {
-    Expr::Const {
-        tex: r"\pi",
-        value: std::f64::consts::PI,
-    }
+    Expr::pi()
 }
 
 /// ½ as the fraction 1/2.
-pub fn half() -> Expr {
-    int(1) / int(2)
+pub fn half<E: Term>() -> E {
+    E::int(1) / E::int(2)
 }
 
 /// √e.
-pub fn sqrt(e: Expr) -> Expr {
-    Expr::Apply(Func::Sqrt, Box::new(e))
+pub fn sqrt<E: Term>(e: E) -> E {
+    e.apply(Func::Sqrt)
 }
 
 /// arcsin e.
-pub fn arcsin(e: Expr) -> Expr {
-    Expr::Apply(Func::Arcsin, Box::new(e))
+pub fn arcsin<E: Term>(e: E) -> E {
+    e.apply(Func::Arcsin)
 }
 
 /// arctan e (the crate's [`crate::fmath::atan`], that of the closed forms).
-pub fn arctan(e: Expr) -> Expr {
-    Expr::Apply(Func::Arctan, Box::new(e))
+pub fn arctan<E: Term>(e: E) -> E {
+    e.apply(Func::Arctan)
 }
 
 /// max(a, b).
-pub fn max(a: Expr, b: Expr) -> Expr {
-    Expr::Max(Box::new(a), Box::new(b))
+pub fn max<E: Term>(a: E, b: E) -> E {
+    a.max(b)
 }
 
 /// e^n for an integer n.
-pub fn pow(e: Expr, n: i32) -> Expr {
-    Expr::Pow(Box::new(e), n, 1)
+pub fn pow<E: Term>(e: E, n: i32) -> E {
+    e.pow_ratio(n, 1)
 }
 
 /// e^(num/den).
-pub fn pow_ratio(e: Expr, num: i32, den: i32) -> Expr {
-    Expr::Pow(Box::new(e), num, den)
+pub fn pow_ratio<E: Term>(e: E, num: i32, den: i32) -> E {
+    e.pow_ratio(num, den)
 }
 
 impl Add for Expr {
@@ -207,11 +339,8 @@ impl Expr {
             Expr::Sub(a, b) => a.eval() - b.eval(),
             Expr::Mul(a, b) => a.eval() * b.eval(),
             Expr::Div(a, b) => a.eval() / b.eval(),
-            Expr::Pow(e, n, 1) => e.eval().powi(*n),
-            Expr::Pow(e, n, d) => e.eval().powf(f64::from(*n) / f64::from(*d)),
-            Expr::Apply(Func::Sqrt, e) => e.eval().sqrt(),
-            Expr::Apply(Func::Arcsin, e) => e.eval().asin(),
-            Expr::Apply(Func::Arctan, e) => crate::fmath::atan(e.eval()),
+            Expr::Pow(e, n, d) => power(e.eval(), *n, *d),
+            Expr::Apply(f, e) => f.of(e.eval()),
             Expr::Max(a, b) => a.eval().max(b.eval()),
         }
     }

@@ -14,7 +14,7 @@
 
 pub mod expr;
 
-pub use expr::Expr;
+pub use expr::{Expr, Term, Value};
 
 use crate::results::quantity::{AnyKey, Registry};
 use crate::results::Applicability;
@@ -66,9 +66,11 @@ impl<K: Registry> From<K> for StepKey {
     }
 }
 
-/// One worked step: a closed form, the numbers put in, the result.
+/// One worked step: a closed form, the numbers put in, the result. Its formula is an
+/// expression tree ([`Expr`]), or only its value ([`Value`], [`Step::formula_value`]) for a caller
+/// that needs numbers alone.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Step {
+pub struct Step<E = Expr> {
     /// What the step works out.
     pub key: StepKey,
     /// LaTeX symbol, e.g. "t_{SL}".
@@ -83,20 +85,20 @@ pub struct Step {
     pub reason: Option<String>,
     /// The expression tree behind `formula` and `substituted`; evaluating it gives the value
     /// of the formula function (also where the form does not apply but is defined).
-    pub expr: Expr,
+    pub expr: E,
 }
 
 /// Why a step has no value when the formula function itself returns none.
 pub const UNDEFINED: &str =
     "the expression is undefined for these parameters (a zero denominator or a negative root)";
 
-impl Step {
+impl<E: Term> Step<E> {
     /// A step of `key` with formula `expr`, the formula function's `value` (`None` when the
     /// expression is undefined) and why the form does not describe the motion, if so.
     pub(crate) fn new(
         key: StepKey,
         (symbol, equation, unit): (&'static str, &'static str, &'static str),
-        expr: Expr,
+        expr: E,
         value: Option<f64>,
         not_applicable: Option<String>,
     ) -> Self {
@@ -115,6 +117,20 @@ impl Step {
         }
     }
 
+    /// The value of the step's formula: the closed form's where it applies, else its
+    /// expression's (defined also where the form does not describe the motion, e.g. τ_ST > 1
+    /// past the period); NaN where neither is finite.
+    pub fn formula_value(&self) -> f64 {
+        let v = self.value.unwrap_or_else(|| self.expr.eval());
+        if v.is_finite() {
+            v
+        } else {
+            f64::NAN
+        }
+    }
+}
+
+impl Step {
     /// LaTeX: the closed form in symbols (the right-hand side: `symbol = formula`). Rendered on
     /// demand, so that a caller that needs only values (`stickslip check`) renders nothing.
     pub fn formula(&self) -> String {
@@ -182,16 +198,16 @@ pub fn working<'a>(steps: &'a [Step], step: &Step) -> Vec<&'a Step> {
 
 /// Collects the steps of one model (key `K`) in order; each step's symbol and value become a
 /// quantity leaf for the steps after it.
-pub(crate) struct Steps<'a, K> {
+pub(crate) struct Steps<'a, K, E = Expr> {
     model: std::marker::PhantomData<K>,
     applicability: &'a [Applicability],
     /// Why no closed form of a key applies when the results' list does not name it (e.g. the
     /// woodpecker outside the closed-form domain); `None`: such keys apply.
     pub(crate) fallback: Option<&'a str>,
-    pub(crate) steps: Vec<Step>,
+    pub(crate) steps: Vec<Step<E>>,
 }
 
-impl<'a, K: Registry> Steps<'a, K> {
+impl<'a, K: Registry, E: Term> Steps<'a, K, E> {
     pub(crate) fn new(applicability: &'a [Applicability]) -> Self {
         Steps {
             model: std::marker::PhantomData,
@@ -204,7 +220,7 @@ impl<'a, K: Registry> Steps<'a, K> {
     /// Adds the step `symbol = expr` of the quantity `key` whose formula function gives
     /// `value` (symbol, equation and unit from the registry), and returns the quantity leaf of
     /// its symbol for later steps (NaN when undefined).
-    pub(crate) fn push(&mut self, key: K, expr: Expr, value: Option<f64>) -> Expr {
+    pub(crate) fn push(&mut self, key: K, expr: E, value: Option<f64>) -> E {
         let q = key.quantity();
         let any: AnyKey = key.into();
         let not_applicable = match self.applicability.iter().find(|a| a.quantity == any) {
@@ -221,7 +237,7 @@ impl<'a, K: Registry> Steps<'a, K> {
     }
 
     /// Adds the step of the derived parameter `param`, as [`Steps::push`].
-    pub(crate) fn push_param(&mut self, param: Param, expr: Expr, value: Option<f64>) -> Expr {
+    pub(crate) fn push_param(&mut self, param: Param, expr: E, value: Option<f64>) -> E {
         let not_applicable = self.fallback.map(str::to_string);
         self.add(
             StepKey::Param(param),
@@ -236,14 +252,14 @@ impl<'a, K: Registry> Steps<'a, K> {
         &mut self,
         key: StepKey,
         shown: (&'static str, &'static str, &'static str),
-        expr: Expr,
+        expr: E,
         value: Option<f64>,
         not_applicable: Option<String>,
-    ) -> Expr {
+    ) -> E {
         let symbol = shown.0;
         self.steps
             .push(Step::new(key, shown, expr, value, not_applicable));
-        expr::var(symbol, value.unwrap_or(f64::NAN))
+        E::var(symbol, value.unwrap_or(f64::NAN))
     }
 }
 

@@ -184,6 +184,30 @@ proptest! {
         );
     }
 
+    /// The values-only steps (`check`'s path) are the trees' steps without the trees: the same
+    /// keys, applicability and values, and each formula's value bit for bit that of its tree.
+    #[test]
+    fn values_only_steps_are_the_trees_values_bit_for_bit(
+        p in pulled_params(),
+        w in woodpecker_params(),
+    ) {
+        fn same<E: Term>(trees: &[Step], values: &[Step<E>]) -> Result<(), TestCaseError> {
+            prop_assert_eq!(trees.len(), values.len());
+            for (t, v) in trees.iter().zip(values) {
+                prop_assert_eq!(t.key, v.key);
+                prop_assert_eq!(t.value.map(f64::to_bits), v.value.map(f64::to_bits));
+                prop_assert_eq!(&t.reason, &v.reason);
+                prop_assert_eq!(t.expr.eval().to_bits(), v.expr.eval().to_bits(), "{}", t.symbol);
+                prop_assert_eq!(t.formula_value().to_bits(), v.formula_value().to_bits());
+            }
+            Ok(())
+        }
+        use crate::models::pulled_mass::derivation::pulled_mass_values;
+        use crate::models::woodpecker::derivation::woodpecker_values;
+        same(&pulled_mass(&p), &pulled_mass_values(&p))?;
+        same(&woodpecker(&w), &woodpecker_values(&w))?;
+    }
+
     #[test]
     fn every_string_renders_to_mathml(p in pulled_params(), w in woodpecker_params()) {
         for step in pulled_mass(&p).iter().chain(&woodpecker(&w)) {

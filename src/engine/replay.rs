@@ -141,12 +141,20 @@ pub(super) struct Outputs<'a> {
     pub segments: &'a mut Vec<Segment>,
 }
 
+/// Room for this many steps of a recorded period is reserved when a run may replay (two
+/// slip-stick cycles with their speed maxima and moves, and room to spare), so that recording
+/// seldom grows the list.
+const OPS_RESERVED: usize = 16;
+
 impl Tape {
     pub(super) fn new(mode: Replay, segments: bool) -> Tape {
         Tape {
             mode,
             segments,
-            ops: Vec::new(),
+            ops: match mode {
+                Replay::Off => Vec::new(),
+                Replay::Segments | Replay::Compact => Vec::with_capacity(OPS_RESERVED),
+            },
             recording: None,
             complete: false,
             dissipation: 0.0,
@@ -237,14 +245,6 @@ impl Tape {
             .ops
             .iter()
             .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
-        let moves: Vec<f64> = self
-            .ops
-            .iter()
-            .filter_map(|op| match *op {
-                Op::Move { dx } => Some(dx),
-                _ => None,
-            })
-            .collect();
         for m in from..periods {
             x_at_period_start.push(x);
             v_at_period_start.push(v);
@@ -255,8 +255,10 @@ impl Tape {
                 || rec.keeps(m - 1)
                 || rec.keeps(m.saturating_add(1));
             if !through_recorder {
-                for dx in &moves {
-                    x += dx;
+                for op in &self.ops {
+                    if let Op::Move { dx } = *op {
+                        x += dx;
+                    }
                 }
                 if let Some(d) = dissipation.as_deref_mut() {
                     d.push(self.dissipation);

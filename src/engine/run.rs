@@ -3,7 +3,7 @@
 //! asked for) friction dissipation.
 
 use super::accel::SignChanges;
-use super::arc::{phase, Arc, ArcMotion, HalfAngle, KnownAngles, Point, PolyArc, Start, TrigArc};
+use super::arc::{phase, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::replay::{Compact, Outputs, Replay, StartState, Tape};
@@ -315,16 +315,18 @@ pub fn integrate_with(
     let mut inline: [Option<PreparedPiece>; INLINE_PIECES] = [None, None, None, None];
     let heap: Vec<Option<PreparedPiece>>;
     let prepared: &[Option<PreparedPiece>] = if law.pieces.len() <= INLINE_PIECES {
-        for (place, piece) in inline.iter_mut().zip(&law.pieces) {
-            *place = Some(PreparedPiece::new(body, piece, snap));
+        for (i, piece) in law.pieces.iter().enumerate() {
+            let accel = PreparedPiece::accel_of_same(&inline[..i], piece);
+            inline[i] = Some(PreparedPiece::new(body, piece, snap, accel));
         }
         &inline[..law.pieces.len()]
     } else {
-        heap = law
-            .pieces
-            .iter()
-            .map(|piece| Some(PreparedPiece::new(body, piece, snap)))
-            .collect();
+        let mut all: Vec<Option<PreparedPiece>> = Vec::with_capacity(law.pieces.len());
+        for piece in &law.pieces {
+            let accel = PreparedPiece::accel_of_same(&all, piece);
+            all.push(Some(PreparedPiece::new(body, piece, snap, accel)));
+        }
+        heap = all;
         &heap
     };
     let mut state = State {
@@ -631,9 +633,15 @@ impl PreparedPiece<'_> {
     /// The piece with its start's phase and the searches for a slip onset in either direction.
     /// A direction in which g stays below zero by more than its rounding over the whole range of
     /// the basis over the piece, widened by `snap` before its start ([`Piece::basis_range`]),
-    /// is not searched (the direction opposite to the drive).
+    /// is not searched (the direction opposite to the drive). `accel`: the sign changes of the
+    /// acceleration when an earlier piece has them ([`PreparedPiece::accel_of_same`]).
     #[inline(always)]
-    fn new<'a>(body: &Body, piece: &'a Piece, snap: f64) -> PreparedPiece<'a> {
+    fn new<'a>(
+        body: &Body,
+        piece: &'a Piece,
+        snap: f64,
+        accel: Option<[SignChanges; 2]>,
+    ) -> PreparedPiece<'a> {
         let (b_min, b_max) = piece.basis_range(snap);
         let onset = |s: i8| Self::onsets(body, piece, s, (b_min, b_max), snap);
         let slope = |s: f64| {
@@ -658,7 +666,7 @@ impl PreparedPiece<'_> {
                 SignChanges::cos(omega, shift, h, exact)
             }
         };
-        let accel = [sign_changes(1.0), sign_changes(-1.0)];
+        let accel = accel.unwrap_or_else(|| [sign_changes(1.0), sign_changes(-1.0)]);
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
@@ -677,7 +685,7 @@ impl PreparedPiece<'_> {
             for end in std::iter::once(piece.end).chain(zeros) {
                 for t_c in starts.into_iter().flatten() {
                     if t_c.hi < end && end > piece.start && end <= piece.end {
-                        known.push(HalfAngle::between(omega, t_c, end));
+                        known.push_between(omega, t_c, end);
                     }
                 }
             }
@@ -693,6 +701,35 @@ impl PreparedPiece<'_> {
             accel,
             known,
         }
+    }
+
+    /// The sign changes of the acceleration of an `earlier` piece with the same basis, drive and
+    /// normal force as `piece`, bit for bit (the woodpecker's lobes before and after the
+    /// middle one): they are a function of those alone (over all time, not the piece's span),
+    /// so the same as `piece`'s own.
+    /// On a linear basis there is nothing to share ([`SignChanges::UNKNOWN`]).
+    #[inline]
+    fn accel_of_same(earlier: &[Option<PreparedPiece>], piece: &Piece) -> Option<[SignChanges; 2]> {
+        let bits = |p: &Piece| match p.basis {
+            Basis::Linear { .. } => None,
+            Basis::Cos { omega, shift } => Some(
+                [
+                    omega,
+                    shift,
+                    p.drive.c0,
+                    p.drive.c1,
+                    p.normal.c0,
+                    p.normal.c1,
+                ]
+                .map(f64::to_bits),
+            ),
+        };
+        let key = bits(piece)?;
+        earlier
+            .iter()
+            .flatten()
+            .find(|p| bits(p.piece) == Some(key))
+            .map(|p| p.accel)
     }
 
     /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
@@ -851,7 +888,7 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
-    let known = prepared.known.as_slice();
+    let known = &prepared.known;
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes

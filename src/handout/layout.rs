@@ -78,8 +78,7 @@ pub fn kinds(scene: &Scene) -> Vec<FigureKind> {
         with_capability!(&scene.setup, present, p => p.standard_scene().figures, else Vec::new());
     let mut kinds = scene.figures.clone();
     for kind in standard {
-        let same = std::mem::discriminant(&kind);
-        if !kinds.iter().any(|k| std::mem::discriminant(k) == same) {
+        if !kinds.iter().any(|k| k.name == kind.name) {
             kinds.push(kind);
         }
     }

@@ -300,6 +300,10 @@ fn chain(setup: &Model, words: &Translator) -> (Vec<StepCtx>, Vec<String>) {
     (shown, omitted)
 }
 
+/// The keys of the handout's words that each model with a presentation gives in its section of
+/// every language's catalogue (`[<id>]`, in its folder's `lang/<code>.toml`).
+pub const MODEL_WORDS: [&str; 2] = ["verification", "regime_of_closed_form"];
+
 /// Renders the handout of `scene` in `formats` (HTML, Markdown with its SVG figures) in the
 /// language of `words` and, with a `browser`, prints the HTML to `<id>.pdf`. Nothing is written
 /// here; the phrases left in English are in `words`.
@@ -312,7 +316,14 @@ pub fn render(
     let lang = words.lang();
     let handout = build(scene, words)?;
     let mut ctx = tera::Context::new();
-    ctx.insert("words", &lang.catalogue()?.section("handout")?);
+    let catalogue = lang.catalogue()?;
+    let mut shared = catalogue.section("handout")?;
+    // The headings that name the law the closed forms describe are the model's words.
+    for key in MODEL_WORDS {
+        let path = format!("{}.{key}", scene.setup.id());
+        shared.insert(key.to_string(), catalogue.text(&path, &[])?);
+    }
+    ctx.insert("words", &shared);
     ctx.insert("scene", &handout.scene);
     ctx.insert("handout", &handout);
     ctx.insert("css", &format!("{CSS}{HANDOUT_CSS}"));

@@ -1,5 +1,7 @@
 //! The languages of worksheets, answer keys and handouts (`--lang`): one message catalogue per
-//! language, `templates/lang/<code>.toml` (every key of `en.toml` in each), the locale's decimal
+//! language, `templates/lang/<code>.toml` with each model's words merged in (its folder's
+//! `lang/<code>.toml`, [`crate::present::Present::words`]; every key of the English one in
+//! each), the locale's decimal
 //! sign for the numbers on the page, and ([`phrases`]) the tool's generated English text in the
 //! other languages.
 
@@ -44,9 +46,13 @@ impl Lang {
             [OnceLock::new(), OnceLock::new()];
         let slot = &PARSED[self as usize];
         slot.get_or_init(|| {
-            toml::from_str(self.source())
-                .map(|table| Catalogue { table })
-                .map_err(|e| e.to_string())
+            let mut table: toml::Table =
+                toml::from_str(self.source()).map_err(|e| e.to_string())?;
+            for words in model_words(self) {
+                let words: toml::Table = toml::from_str(words).map_err(|e| e.to_string())?;
+                merge(&mut table, words);
+            }
+            Ok(Catalogue { table })
         })
         .as_ref()
         .map_err(|reason| self.error(reason.clone()))
@@ -88,6 +94,33 @@ impl Lang {
     /// attributes or style sheets); its words are left as they are.
     pub fn svg_numbers(self, svg: &str) -> String {
         phrases::map_text_nodes(svg, |text| self.number(text))
+    }
+}
+
+/// The words of every model with a presentation in `lang` ([`crate::present::Present::words`]),
+/// in the order of the registry.
+fn model_words(lang: Lang) -> Vec<&'static str> {
+    fn of<M: crate::present::Present>(_: &M, code: &str) -> Option<&'static str> {
+        M::words(code)
+    }
+    crate::models::Model::offering(crate::models::Capability::Present)
+        .iter()
+        .filter_map(
+            |m| crate::models::with_capability!(m, present, p => of(p, lang.code()), else None),
+        )
+        .collect()
+}
+
+/// Merges a model's words into a catalogue: its tables beside the shared ones, and the entries
+/// of a table both have (`[phrases]`) into the catalogue's.
+fn merge(table: &mut toml::Table, words: toml::Table) {
+    for (key, value) in words {
+        match (table.get_mut(&key), value) {
+            (Some(toml::Value::Table(into)), toml::Value::Table(from)) => into.extend(from),
+            (_, value) => {
+                table.insert(key, value);
+            }
+        }
     }
 }
 
@@ -222,6 +255,30 @@ mod tests {
             want.sort();
             assert_eq!(paths, want, "{}", lang.code());
         }
+    }
+
+    /// Each model with a presentation has its words in every language: its title (worksheets,
+    /// `check`, the index) and the handout's headings, so that a missing section fails here and
+    /// not in `stickslip report`.
+    #[test]
+    fn every_presented_model_has_its_words_in_every_language() {
+        use crate::models::{Capability, Model};
+        let models = Model::offering(Capability::Present);
+        assert!(models.len() >= 2);
+        for lang in Lang::ALL {
+            let c = lang.catalogue().unwrap();
+            for m in &models {
+                let keys = ["title"]
+                    .into_iter()
+                    .chain(crate::handout::MODEL_WORDS)
+                    .map(|k| format!("{}.{k}", m.id()));
+                for path in keys {
+                    assert!(c.optional(&path).is_some(), "{}: {path}", lang.code());
+                }
+            }
+        }
+        assert_eq!(model_words(Lang::En).len(), models.len());
+        assert_eq!(model_words(Lang::It).len(), models.len());
     }
 
     /// Every text of the worksheets' sketches (the built-in sets and sheets drawn in every

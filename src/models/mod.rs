@@ -27,6 +27,8 @@ use param::{ChoiceSpec, ParamSpec};
 pub mod belt;
 #[cfg(test)]
 pub mod dummy;
+#[cfg(feature = "cli")]
+pub mod paper;
 pub mod param;
 pub mod pulled_mass;
 pub mod woodpecker;
@@ -41,6 +43,19 @@ pub enum LawKind {
     /// The triangle wave with the same extremes or zeros, for which the paper gives closed forms.
     Linear,
 }
+
+/// What the JSON Schema of an evaluation needs (`schemars::JsonSchema` with the `cli` feature,
+/// which writes the schemas; nothing without it): every model's `eval --json` gets its schema
+/// from the registry, with no list of models in `crate::schema`.
+#[cfg(feature = "cli")]
+pub trait EvaluationSchema: schemars::JsonSchema {}
+#[cfg(feature = "cli")]
+impl<T: schemars::JsonSchema> EvaluationSchema for T {}
+/// What the JSON Schema of an evaluation needs: nothing without the `cli` feature.
+#[cfg(not(feature = "cli"))]
+pub trait EvaluationSchema {}
+#[cfg(not(feature = "cli"))]
+impl<T> EvaluationSchema for T {}
 
 /// What the engine and the command line need of a model; implemented by its params struct.
 pub trait Physics:
@@ -57,7 +72,7 @@ pub trait Physics:
     /// The parameters that take one of a few named values.
     const CHOICES: &'static [ChoiceSpec<Self>] = &[];
     /// The evaluation of guide §14: closed forms, both laws integrated, checks.
-    type Evaluation: Serialize;
+    type Evaluation: Serialize + EvaluationSchema;
 
     /// These parameters as a [`Model`].
     fn into_model(self) -> Model;

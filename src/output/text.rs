@@ -1,18 +1,23 @@
-//! The terminal output of `stickslip eval`: parameters, closed forms, checks, and the two laws
-//! side by side.
+//! The terminal output of `stickslip eval`: parameters, closed forms, checks, and the model's
+//! laws side by side, each named by the model.
 
 use std::fmt::Write;
 
 use super::format::{rel, short};
 use crate::models::regime_words;
+use crate::present::vocab::{LawName, LawWords};
 use crate::results::quantity::Registry;
 use crate::results::{Applicability, Check, CheckValue, Summary};
 
 pub(crate) const DIGITS: usize = 10;
 
 /// The numbers of the closed forms of model `K` with their symbols, units and equations.
-pub(crate) fn closed_form_table<K: Registry>(out: &mut String, get: impl Fn(K) -> Option<f64>) {
-    let _ = writeln!(out, "\nclosed forms (linearized law)");
+pub(crate) fn closed_form_table<K: Registry>(
+    out: &mut String,
+    words: &LawWords,
+    get: impl Fn(K) -> Option<f64>,
+) {
+    let _ = writeln!(out, "\nclosed forms ({})", words.closed_form_law);
     let _ = writeln!(
         out,
         "  {:<14} {:>18}  {:<6} {:<11} tag",
@@ -44,7 +49,7 @@ pub(crate) fn not_describing(out: &mut String, applicability: &[Applicability]) 
     }
 }
 
-pub(crate) fn checks_table(out: &mut String, checks: &[Check]) {
+pub(crate) fn checks_table(out: &mut String, words: &LawWords, checks: &[Check]) {
     let passed = checks.iter().filter(|c| c.passed()).count();
     let observable = checks.iter().filter(|c| c.pass.is_some()).count();
     let unobservable = match checks.len() - observable {
@@ -53,7 +58,8 @@ pub(crate) fn checks_table(out: &mut String, checks: &[Check]) {
     };
     let _ = writeln!(
         out,
-        "\nchecks: closed form vs exact integration of the linearized law ({passed}/{observable} pass{unobservable}, tolerance {:.0e})",
+        "\nchecks: closed form vs {} ({passed}/{observable} pass{unobservable}, tolerance {:.0e})",
+        words.checked_against,
         crate::results::TOLERANCE
     );
     let _ = writeln!(
@@ -110,80 +116,75 @@ fn value(v: &CheckValue) -> String {
     }
 }
 
-pub(crate) fn laws_table(out: &mut String, harmonic: &Summary, linear: Option<&Summary>) {
-    let _ = writeln!(out, "\nexact integration: harmonic law vs linearized law");
-    let Some(linear) = linear else {
-        let _ = writeln!(out, "  (no linear law: its counterpart is undefined)");
-        laws_table_rows(out, harmonic, harmonic, true);
-        return;
-    };
-    laws_table_rows(out, harmonic, linear, false);
-}
-
-fn laws_table_rows(out: &mut String, harmonic: &Summary, linear: &Summary, harmonic_only: bool) {
-    let row = |out: &mut String, name: &str, h: String, l: String| {
-        let _ = writeln!(out, "  {name:<26} {h:>22} {l:>22}");
-    };
-    // The regimes in words, one line each (too long for the table's columns).
-    let _ = writeln!(
-        out,
-        "  regime, harmonic:   {}",
-        regime_words(harmonic.regime.id())
-    );
-    if !harmonic_only {
-        let _ = writeln!(
-            out,
-            "  regime, linear:     {}",
-            regime_words(linear.regime.id())
-        );
+/// The exact integrations of a model's `laws` side by side, one column per law that exists
+/// for the parameters (`runs` in the order of `laws`; a `None` run is named with `missing`,
+/// why it does not exist).
+pub(crate) fn laws_table(
+    out: &mut String,
+    laws: &[LawName],
+    runs: &[Option<&Summary>],
+    missing: &str,
+) {
+    let names: Vec<&str> = laws.iter().map(|l| l.name).collect();
+    let _ = writeln!(out, "\nexact integration: {}", names.join(" vs "));
+    let mut columns: Vec<(&str, &Summary)> = Vec::with_capacity(laws.len());
+    for (law, run) in laws.iter().zip(runs) {
+        match run {
+            Some(s) => columns.push((law.id, s)),
+            None => {
+                let _ = writeln!(out, "  (no {} law: {missing})", law.id);
+            }
+        }
     }
-    row(out, "", "harmonic".into(), "linear".into());
+    let row = |out: &mut String, name: &str, values: Vec<String>| {
+        let mut line = format!("  {name:<26}");
+        for v in values {
+            let _ = write!(line, " {v:>22}");
+        }
+        let _ = writeln!(out, "{line}");
+    };
+    let each = |f: &dyn Fn(&Summary) -> String| columns.iter().map(|(_, s)| f(s)).collect();
+    // The regimes in words, one line each (too long for the table's columns).
+    for (id, law) in &columns {
+        let label = format!("regime, {id}:");
+        let _ = writeln!(out, "  {label:<20}{}", regime_words(law.regime.id()));
+    }
+    row(
+        out,
+        "",
+        columns.iter().map(|(id, _)| id.to_string()).collect(),
+    );
     let s = |x: Option<f64>| short(x, DIGITS);
     row(
         out,
         "immediate slip",
-        harmonic.immediate_slip.to_string(),
-        linear.immediate_slip.to_string(),
+        each(&|l| l.immediate_slip.to_string()),
     );
-    row(
-        out,
-        "first slip (s)",
-        s(harmonic.first_slip_time),
-        s(linear.first_slip_time),
-    );
+    row(out, "first slip (s)", each(&|l| s(l.first_slip_time)));
     let mult = |x: &Summary| x.period_multiplicity.map_or("—".into(), |n| n.to_string());
-    row(out, "period multiplicity", mult(harmonic), mult(linear));
+    row(out, "period multiplicity", each(&mult));
     row(
         out,
         "slips / sticks per period",
-        format!(
-            "{} / {}",
-            harmonic.slips_per_period, harmonic.sticks_per_period
-        ),
-        format!("{} / {}", linear.slips_per_period, linear.sticks_per_period),
+        each(&|l| format!("{} / {}", l.slips_per_period, l.sticks_per_period)),
     );
     row(
         out,
         "advance per period (m)",
-        s(harmonic.advance_per_period),
-        s(linear.advance_per_period),
+        each(&|l| s(l.advance_per_period)),
     );
-    row(
-        out,
-        "mean speed v̄ (m/s)",
-        s(harmonic.v_avg),
-        s(linear.v_avg),
-    );
-    let (hp, lp) = (power_rows(harmonic), power_rows(linear));
-    for ((name, h), (_, l)) in hp.into_iter().zip(lp) {
-        row(out, &name, s(h), s(l));
+    row(out, "mean speed v̄ (m/s)", each(&|l| s(l.v_avg)));
+    let powers: Vec<_> = columns.iter().map(|(_, l)| power_rows(l)).collect();
+    for (i, (name, _)) in powers
+        .first()
+        .cloned()
+        .unwrap_or_default()
+        .iter()
+        .enumerate()
+    {
+        row(out, name, powers.iter().map(|p| s(p[i].1)).collect());
     }
-    let laws: &[(&str, &Summary)] = if harmonic_only {
-        &[("harmonic", harmonic)]
-    } else {
-        &[("harmonic", harmonic), ("linear", linear)]
-    };
-    for &(name, law) in laws {
+    for &(name, law) in &columns {
         let events: Vec<String> = law
             .steady_events
             .iter()

@@ -4,11 +4,14 @@
 //! handout, worksheet, sweep and command line reach it through [`crate::models::with_model!`].
 //! The types of its signatures live in [`vocab`], a leaf that names no model.
 
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Expr, Step, StepKey, Value};
 use crate::error::Result;
 use crate::models::Physics;
 use crate::results::Summary;
-use vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
+use vocab::{
+    Builtin, Figure, FigureKind, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase,
+    Scene, SceneCtx,
+};
 
 pub mod spec;
 pub mod vocab;
@@ -32,12 +35,13 @@ pub struct DefaultSweep {
     pub steps: u32,
 }
 
-/// The laws of an evaluation as a sweep or a table reads them.
+/// The runs of an evaluation as a sweep or a table reads them: one per law of
+/// [`Present::LAWS`], in that order.
 pub struct Laws<'a> {
-    pub harmonic: &'a Summary,
-    /// `None` where the linearized law does not exist for the parameters.
-    pub linear: Option<&'a Summary>,
-    /// The regime id of the linearized law's closed forms.
+    /// The summary of each law's run; `None` where the law does not exist for the parameters
+    /// (the woodpecker's linear law with an undefined counterpart).
+    pub runs: Vec<Option<&'a Summary>>,
+    /// The regime id of the closed forms.
     pub closed_form_regime: &'static str,
 }
 
@@ -47,14 +51,58 @@ pub trait Present: Physics {
     const SKETCH_WHAT: &'static str;
     /// The sweep of `stickslip sweep` without a model.
     const SWEEP: DefaultSweep;
+    /// The model's part of the report: its title and story.
+    const PART: PartStory;
+    /// The model's laws, in the order of [`Laws::runs`] (the first is the one a sweep follows
+    /// for its regime changes).
+    const LAWS: &'static [LawName];
+    /// How its pages name what the closed forms are checked against.
+    const LAW_WORDS: LawWords;
+    /// The model's own figure kinds (an enum made with [`vocab::figure_kinds!`]).
+    type Figure: FigureKinds;
+    /// The words of the model in language `code` ("en", "it"): TOML whose tables are merged
+    /// into that language's catalogue (the model's section, `[<id>]`, and any `[phrases]`);
+    /// `None` for a language it has no words in (a test requires every language).
+    fn words(code: &str) -> Option<&'static str>;
+    /// The built-in scene whose handout the default report writes, and what it teaches (none
+    /// by default).
+    const HANDOUT: Option<(&'static str, &'static str)> = None;
+    /// The built-in scenes of the default report, in order (none by default).
+    fn builtin_scenes() -> Vec<Builtin> {
+        Vec::new()
+    }
     /// The standard figures, claims and caption of a scenario of this model.
     fn standard_scene(&self) -> StandardScene;
     /// The figures of `kind` for the scene `scene_id`.
-    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>>;
+    fn figures(&self, scene_id: &str, kind: Self::Figure) -> Result<Vec<Figure>>;
+    /// The figures of a shared [`FigureKind`]: refused when the model has no such kind.
+    fn figures_of(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>> {
+        let own = Self::Figure::from_kind(kind).ok_or_else(|| crate::error::Error::Figure {
+            id: format!("{scene_id}-{}", kind.name),
+            reason: format!("the {} model draws no figure `{}`", Self::ID, kind.name),
+        })?;
+        self.figures(scene_id, own)
+    }
     /// The report's tables of a scene of this model.
     fn scene_tables(&self, scene: &Scene) -> Result<SceneCtx>;
     /// The worked substitutions of every closed form.
     fn derivation(&self) -> Vec<Step>;
+    /// [`Present::derivation`] as values only (no expression tree), the same numbers bit for bit:
+    /// what a caller that reads only the steps' values uses (`stickslip check` per set).
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        self.derivation()
+            .into_iter()
+            .map(|s| Step {
+                expr: Value(Expr::eval(&s.expr)),
+                key: s.key,
+                symbol: s.symbol,
+                equation: s.equation,
+                value: s.value,
+                unit: s.unit,
+                reason: s.reason,
+            })
+            .collect()
+    }
     /// How the handout explains the step of `key`, and the heading before it.
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)>;
     /// The equation of motion, line by line: (formula, its physics).
@@ -67,4 +115,75 @@ pub trait Present: Physics {
     fn text(e: &Self::Evaluation) -> String;
     /// The evaluation, and the CSV files of its runs (time series and events of both laws).
     fn evaluate_with_csv(&self, periods: u32) -> Result<(Self::Evaluation, Vec<OutFile>)>;
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::models::Model;
+
+    /// The shared presentation names no model: a model with [`super::Present`] plugs in from
+    /// its folder and its registry line alone. Every file of these modules, test modules cut
+    /// off, is searched for each registered model's module path (`models::pulled_mass`) and
+    /// enum variant (`Model::PulledMass`), the test build's dummy included.
+    #[test]
+    fn no_shared_presentation_module_names_a_model() {
+        const SHARED: [&str; 8] = [
+            "report",
+            "present",
+            "handout",
+            "worksheet",
+            "sweep",
+            "output",
+            "lang",
+            "explorer",
+        ];
+        let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+        let names: Vec<(String, String)> = Model::defaults()
+            .iter()
+            .map(|m| {
+                let variant = format!("{m:?}");
+                let variant = variant.split('(').next().unwrap_or_default().to_string();
+                (m.id().replace('-', "_"), variant)
+            })
+            .collect();
+        assert!(names.len() >= 3, "{names:?}");
+        let mut files = Vec::new();
+        let mut stack: Vec<_> = SHARED.iter().map(|d| root.join(d)).collect();
+        while let Some(dir) = stack.pop() {
+            let Ok(entries) = std::fs::read_dir(&dir) else {
+                continue;
+            };
+            for entry in entries.flatten() {
+                let path = entry.path();
+                if path.is_dir() {
+                    stack.push(path);
+                } else if path.extension().is_some_and(|e| e == "rs")
+                    && path.file_name().is_some_and(|n| n != "tests.rs")
+                {
+                    files.push(path);
+                }
+            }
+        }
+        assert!(files.len() > 20, "{}", files.len());
+        for path in files {
+            let text = std::fs::read_to_string(&path).unwrap();
+            let code = text
+                .split("#[cfg(test)]\nmod tests")
+                .next()
+                .unwrap_or_default();
+            for (module, variant) in &names {
+                for needle in [
+                    format!("models::{module}"),
+                    format!("Model::{variant}"),
+                    format!("{module}::"),
+                ] {
+                    assert!(
+                        !code.contains(&needle),
+                        "{} names the model: {needle}",
+                        path.display()
+                    );
+                }
+            }
+        }
+    }
 }

@@ -64,6 +64,34 @@ pub struct Table {
     pub rows: Vec<Vec<String>>,
 }
 
+/// A table of the model's laws side by side, under its heading.
+#[derive(Clone, Debug, Serialize)]
+pub struct Comparison {
+    /// "Linearization: harmonic law against the linearized law".
+    pub heading: String,
+    pub table: Table,
+}
+
+/// A law of a model: its id in CSV and JSON column names (`harmonic`) and its name in tables
+/// ("harmonic law").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct LawName {
+    pub id: &'static str,
+    pub name: &'static str,
+}
+
+/// How a model's pages and tables name what its closed forms are checked against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct LawWords {
+    /// The law the closed forms describe ("linearized law").
+    pub closed_form_law: &'static str,
+    /// What the closed forms are checked against ("exact integration of the linearized law").
+    pub checked_against: &'static str,
+    /// Where the numeric values of the verification come from ("exact event-driven
+    /// integration of the same (triangle-wave) law").
+    pub numeric_from: &'static str,
+}
+
 /// A figure: the SVG for HTML (inline) and the file name for Markdown.
 #[derive(Clone, Debug, Serialize)]
 pub struct FigureCtx {
@@ -126,7 +154,11 @@ pub struct SceneCtx {
     pub checks_total: usize,
     pub all_pass: bool,
     pub figures: Vec<FigureCtx>,
-    pub linearization: Table,
+    /// What the model's laws are called on the page.
+    pub words: LawWords,
+    /// The table of the model's laws side by side, when it has more than one (the paper's
+    /// harmonic law against its linearization).
+    pub linearization: Option<Comparison>,
     pub claims: Vec<ClaimCtx>,
     /// Why the closed forms do not apply at all, if so.
     pub domain_note: String,
@@ -135,38 +167,60 @@ pub struct SceneCtx {
     pub harmonic_regime: String,
 }
 
-/// What a scene draws. Each kind may produce one or more figures.
+/// What a scene draws, as the shared code carries it: the name of one of its model's figure
+/// kinds and the kind's numeric argument, if it has one (periods to draw, a phase). Each
+/// model defines its own kinds, an enum in its folder made with [`figure_kinds!`], and
+/// converts it to and from this value ([`FigureKinds`]); the shared code compares kinds by
+/// [`FigureKind::name`] and never lists them.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub enum FigureKind {
-    /// Pulled mass: x, v, a against t for both laws, with t_SL, t_M, t_ST (Figs. 5, 6, 10).
-    PulledMotion { periods: f64 },
-    /// Pulled mass: F against μs N(t) and μd N(t), with t_SL, t_M, t_ST.
-    PulledForces,
-    /// Pulled mass: the (μd, μs) domain for the scene's φ, both laws on a grid (Fig. 9).
-    PulledDomain,
-    /// Pulled mass: position over 10 periods and the line of slope v̄ (Fig. 11).
-    PulledLongRun,
-    /// Pulled mass: speed and acceleration, harmonic against linear (Fig. 12).
-    PulledCompare,
-    /// Woodpecker: y_S and v against t for both laws, with the characteristic times (Figs. 15,
-    /// 16, 26).
-    WoodMotion { periods: f64 },
-    /// Woodpecker: the spring coordinate, harmonic against the three counterparts (Fig. 17).
-    WoodSpring,
-    /// Woodpecker: W_S + F_e against 2λμs|F_e| and 2λμd|F_e|, with t_SL^(I) (Fig. 18).
-    WoodForces,
-    /// Woodpecker: a, v, y and the characteristic times of phase 1 or 2 (Fig. 19).
-    WoodPhase { phase: u8 },
-    /// Woodpecker: v for μd below, at and above μd,MIN of phase 1 or 2 (Fig. 20).
-    WoodMuSweep { phase: u8 },
-    /// Woodpecker: sleeve and woodpecker positions and the speed (Fig. 23).
-    WoodPositions,
-    /// Woodpecker: regimes in the (μd, z0) plane with μd,MIN and μd,HALT of both phases.
-    WoodRegimeMap,
-    /// Woodpecker: the example track (synthetic) with the harmonic law fitted to it from the
-    /// scene's parameters (Figs. 26–27).
-    WoodTracked,
+pub struct FigureKind {
+    pub name: &'static str,
+    pub arg: Option<f64>,
 }
+
+/// A model's own figure kinds, converted to and from the shared [`FigureKind`].
+pub trait FigureKinds: Copy + Sized {
+    /// The kind as the shared code carries it.
+    fn kind(self) -> FigureKind;
+    /// The model's kind of `kind`; `None` for a name the model does not define.
+    fn from_kind(kind: FigureKind) -> Option<Self>;
+}
+
+/// `figure_kinds! { pub enum Name { Variant = "name", Other { field: f64 } = "other" } }`: a
+/// model's figure kinds (each with at most one numeric field) and their [`FigureKinds`]
+/// conversion, so that a name is written once.
+macro_rules! figure_kinds {
+    ($(#[$meta:meta])* $vis:vis enum $name:ident {
+        $($(#[$vmeta:meta])* $variant:ident $({ $field:ident : $ty:ty })? = $id:literal),+ $(,)?
+    }) => {
+        $(#[$meta])*
+        #[derive(Clone, Copy, Debug, PartialEq)]
+        $vis enum $name {
+            $($(#[$vmeta])* $variant $({ $field: $ty })?),+
+        }
+
+        impl $crate::present::vocab::FigureKinds for $name {
+            fn kind(self) -> $crate::present::vocab::FigureKind {
+                match self {
+                    $($name::$variant $({ $field })? => $crate::present::vocab::FigureKind {
+                        name: $id,
+                        arg: $crate::present::vocab::figure_kinds!(@arg $($field)?),
+                    }),+
+                }
+            }
+
+            fn from_kind(kind: $crate::present::vocab::FigureKind) -> Option<Self> {
+                $(if kind.name == $id {
+                    return Some($name::$variant $({ $field: kind.arg? as $ty })?);
+                })+
+                None
+            }
+        }
+    };
+    (@arg $field:ident) => { Some(f64::from($field)) };
+    (@arg) => { None };
+}
+pub(crate) use figure_kinds;
 
 /// A drawing ready for a renderer.
 #[derive(Clone, Debug, PartialEq)]
@@ -208,46 +262,86 @@ pub struct Figure {
     pub drawing: Drawing,
 }
 
-/// The part of the reading path a scene belongs to: the paper's two models, then the user's
-/// own scenario files.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "kebab-case")]
-pub enum Part {
-    PulledMass,
-    Woodpecker,
-    Scenarios,
+/// A model's part of the reading path: its title and its story in two sentences (what the
+/// apparatus is and what to follow). Declared by the model ([`super::Present::PART`]); the
+/// report numbers the parts in the order of the registry.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PartStory {
+    pub title: &'static str,
+    pub story: &'static str,
+}
+
+/// The part of the reading path a scene belongs to: a model's, numbered in the order of the
+/// registry, or the user's own scenario files ([`Part::SCENARIOS`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Part {
+    /// The part's number in the index (`None`: the user's scenarios, unnumbered).
+    pub number: Option<usize>,
+    pub story: PartStory,
 }
 
 impl Part {
-    /// Every part, in reading order.
-    pub const ALL: [Part; 3] = [Part::PulledMass, Part::Woodpecker, Part::Scenarios];
+    /// The scenes of the scenario files given to `stickslip report`.
+    pub const SCENARIOS: Part = Part {
+        number: None,
+        story: PartStory {
+            title: "Your scenarios",
+            story: "Scenes from the scenario files given to `stickslip report`.",
+        },
+    };
 
-    /// The heading of the part in the index.
-    pub fn heading(self) -> &'static str {
-        match self {
-            Part::PulledMass => "Part 1. The pulled mass",
-            Part::Woodpecker => "Part 2. The falling woodpecker",
-            Part::Scenarios => "Your scenarios",
+    /// The heading of the part in the index ("Part 1. The pulled mass").
+    pub fn heading(self) -> String {
+        match self.number {
+            Some(n) => format!("Part {n}. {}", self.story.title),
+            None => self.story.title.to_string(),
         }
     }
 
-    /// The part's story in two sentences: what the apparatus is and what to follow.
+    /// The part's story in two sentences.
     pub fn story(self) -> &'static str {
-        match self {
-            Part::PulledMass => {
-                "A block on a table is pulled by a constant force F while a spring presses it \
-                 down with a mass hanging under the table: the normal force N oscillates, so \
-                 friction alternately holds the block and lets it slide. Read the pages in order: \
-                 the pull against the friction limits, then each kind of motion, then the price \
-                 of the linearized law that makes every result a closed formula."
-            }
-            Part::Woodpecker => {
-                "The toy woodpecker slides down its pole in jerks: the bird swings on a spring, \
-                 tilting the sleeve so that it grips the pole and lets go twice per swing. The \
-                 same stick-slip rule as in Part 1, with the grip set by the lever l/h; the pages \
-                 follow one period phase by phase, then the regimes and the real toy."
-            }
-            Part::Scenarios => "Scenes from the scenario files given to `stickslip report`.",
+        self.story.story
+    }
+}
+
+/// A built-in scene of a model: a scenario file compiled into the binary, what to draw and
+/// its place in the model's part ([`super::Present::builtin_scenes`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Builtin {
+    /// File stem of the scene's pages (unique across the report).
+    pub id: &'static str,
+    /// The figure(s) of the paper it reproduces, and what they show (unique).
+    pub title: &'static str,
+    /// Why the scene matters, in a sentence.
+    pub why: &'static str,
+    /// The scenario file's name in `scenarios/` and its text (`include_str!`).
+    pub file: &'static str,
+    pub text: &'static str,
+    pub caption: &'static str,
+    pub figures: Vec<FigureKind>,
+    pub claims: &'static [u8],
+}
+
+impl Builtin {
+    /// A built-in scene `id` with its `(title, why)`, its scenario `(file name, text)`, the
+    /// caption, the model's figure kinds and the claims of the paper it concerns.
+    pub fn new<F: FigureKinds>(
+        id: &'static str,
+        (title, why): (&'static str, &'static str),
+        (file, text): (&'static str, &'static str),
+        caption: &'static str,
+        figures: &[F],
+        claims: &'static [u8],
+    ) -> Self {
+        Builtin {
+            id,
+            title,
+            why,
+            file,
+            text,
+            caption,
+            figures: figures.iter().map(|f| f.kind()).collect(),
+            claims,
         }
     }
 }

@@ -1,5 +1,5 @@
 //! The classroom material of the default report: the explorer page (`explorer.html`), lecture
-//! handouts of two scenes (one per model, in English and Italian) and a worksheet of each model
+//! handouts of a scene of each model that names one (in English and Italian) and a worksheet of each model
 //! with its answer key, written under `handouts/` and `worksheets/` beside the scene pages and
 //! linked from the index with the speed and accuracy study (`bench/`, written by
 //! `stickslip bench`).
@@ -10,21 +10,21 @@ use super::render::Material;
 use super::{Format, OutFile, Scene};
 use crate::error::Result;
 use crate::lang::phrases::Translator;
-use crate::models::{Capability, Model};
+use crate::models::{with_capability, Capability, Model};
+use crate::present::Present;
 use crate::worksheet::{self, Lang, Request};
 
-/// The scenes with a handout, and what each teaches.
-const HANDOUTS: &[(&str, &str)] = &[
-    (
-        "fig10-linear-slip-stick",
-        "the pulled mass from its equation of motion to every characteristic time, with the \
-         numbers substituted; two A4 pages",
-    ),
-    (
-        "fig15-double-slip-stick",
-        "the woodpecker's two phases from the equation of motion to the mean speed; two A4 pages",
-    ),
-];
+/// The built-in scenes with a handout, and what each teaches: each model's
+/// [`Present::HANDOUT`], in the order of the registry.
+fn handouts() -> Vec<(&'static str, &'static str)> {
+    fn of<M: Present>(_: &M) -> Option<(&'static str, &'static str)> {
+        M::HANDOUT
+    }
+    Model::offering(Capability::Present)
+        .iter()
+        .filter_map(|m| with_capability!(m, present, p => of(p), else None))
+        .collect()
+}
 /// Students on each sample worksheet, and the seed of their draw.
 const STUDENTS: u32 = 4;
 const SEED: u64 = 1;
@@ -42,8 +42,8 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
         links.push(super::explorer::material());
     }
     let (english, italian) = (Translator::new(Lang::En)?, Translator::new(Lang::It)?);
-    for (id, what) in HANDOUTS {
-        let Some(scene) = scenes.iter().find(|s| s.id == *id) else {
+    for (id, what) in handouts() {
+        let Some(scene) = scenes.iter().find(|s| s.id == id) else {
             continue;
         };
         files.extend(under(

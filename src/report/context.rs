@@ -6,7 +6,8 @@ use crate::handout::physics::equation_of_motion;
 use crate::models::{with_capability, Capability, Model};
 use crate::output::format::{people, people_rel, people_tolerance};
 pub use crate::present::vocab::{
-    ClaimCtx, FigureCtx, MotionLine, ParamRow, RegimeRow, SceneCtx, Table, VerificationRow,
+    ClaimCtx, Comparison, FigureCtx, LawWords, MotionLine, ParamRow, RegimeRow, SceneCtx, Table,
+    VerificationRow,
 };
 use crate::present::vocab::{Phase, Scene};
 use crate::present::Present;
@@ -20,13 +21,14 @@ pub(crate) const DIGITS: usize = 8;
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
     let missing = || scene.setup.missing(Capability::Present);
-    fn sketch<M: Present>(p: &M) -> (&'static str, String) {
-        (M::SKETCH_WHAT, p.sketch(Phase::Slipping))
+    fn sketch<M: Present>(p: &M) -> (&'static str, String, LawWords) {
+        (M::SKETCH_WHAT, p.sketch(Phase::Slipping), M::LAW_WORDS)
     }
     let mut ctx = with_capability!(&scene.setup, present, p => p.scene_tables(scene)?,
         else return Err(missing()));
-    let (what, svg) =
+    let (what, svg, words) =
         with_capability!(&scene.setup, present, p => sketch(p), else return Err(missing()));
+    ctx.words = words;
     ctx.sketch = FigureCtx {
         id: format!("{}-apparatus", scene.id),
         caption: format!(
@@ -165,7 +167,7 @@ pub(crate) fn blank(scene: &Scene, model: &str) -> SceneCtx {
         id: scene.id.clone(),
         title: scene.title.clone(),
         model: model.to_string(),
-        part: scene.part.heading().to_string(),
+        part: scene.part.heading(),
         why: scene.why.clone(),
         sketch: FigureCtx {
             id: String::new(),
@@ -183,10 +185,12 @@ pub(crate) fn blank(scene: &Scene, model: &str) -> SceneCtx {
         checks_total: 0,
         all_pass: true,
         figures: Vec::new(),
-        linearization: Table {
-            header: Vec::new(),
-            rows: Vec::new(),
+        words: LawWords {
+            closed_form_law: "",
+            checked_against: "",
+            numeric_from: "",
         },
+        linearization: None,
         claims: Vec::new(),
         domain_note: String::new(),
         closed_regime: String::new(),
@@ -340,7 +344,7 @@ fn plain_row(
     }
 }
 
-/// Harmonic against linear: regime, first slip, steady slip/stick times (mod T), v̄, power.
+/// The model's laws side by side: regime, first slip, steady slip/stick times (mod T), v̄, power.
 pub(crate) fn laws_table(columns: &[(&str, Option<&Summary>)], period: f64) -> Table {
     let mut header = vec!["quantity".to_string()];
     header.extend(columns.iter().map(|(n, _)| n.to_string()));

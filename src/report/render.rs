@@ -251,7 +251,7 @@ impl<'a> IndexRow<'a> {
 /// A part of the reading path in the index: its heading, story and scenes.
 #[derive(Serialize)]
 struct IndexPart<'a> {
-    heading: &'static str,
+    heading: String,
     story: &'static str,
     scenes: Vec<IndexRow<'a>>,
 }
@@ -352,9 +352,11 @@ pub fn render_with(
     // The physics guide the pages link, beside them.
     let mut files = super::guide::files(formats, true)?;
     let page = |name: &str, ctx: &tera::Context| page(&tera, name, ctx).map(String::into_bytes);
-    let parts: Vec<IndexPart> = Part::ALL
-        .iter()
-        .map(|&part| IndexPart {
+    let parts: Vec<IndexPart> = super::scene::parts()
+        .into_iter()
+        .map(|(_, part)| part)
+        .chain([Part::SCENARIOS])
+        .map(|part| IndexPart {
             heading: part.heading(),
             story: part.story(),
             scenes: scenes

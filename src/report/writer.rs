@@ -10,6 +10,8 @@
 //! recover   every <out>/.stickslip-*/: journal → install the rest; rollback → undo; else remove
 //! check     paths relative and distinct; no output is a folder, no folder of one is a file,
 //!           nothing below <out> on the way to a target is a symbolic link
+//! skip      a target that already holds exactly the new bytes is left alone (a regenerated
+//!           report rewrites only what changed: no staging, sync, rename or old copy for it)
 //! stage     <out>/.stickslip-XXXXXX/new/<path>   written, then synced at once (one syncfs on
 //!           Linux, else each file)                                        (a full disk fails here)
 //! commit    journal.tmp (paths, which existed, folders to make) synced, renamed to journal
@@ -83,7 +85,12 @@ fn write_all_with(
         .and_then(|()| lock::claim(out))
         .and_then(|()| recover_all(out))
         .and_then(|()| check_targets(out, files))
-        .and_then(|()| stage_and_install(out, files, write));
+        .and_then(|()| changed(out, files))
+        .and_then(|changed| match changed.is_empty() {
+            true => Ok(()),
+            false => stage_and_install(out, &changed, write),
+        })
+        .map(|()| files.iter().map(|f| out.join(&f.path)).collect());
     if result.is_err() {
         made.remove();
     }
@@ -169,21 +176,45 @@ fn check_targets(out: &Path, files: &[OutFile]) -> Result<()> {
     files.iter().try_for_each(|f| check_target(out, &f.path))
 }
 
+/// The files whose target does not already hold exactly their bytes (after
+/// [`check_targets`]: a target is a regular file or absent).
+fn changed<'a>(out: &Path, files: &'a [OutFile]) -> Result<Vec<&'a OutFile>> {
+    let mut changed = Vec::with_capacity(files.len());
+    for f in files {
+        let target = out.join(&f.path);
+        let same = match entry(&target)? {
+            Some(m) if m.is_file() && m.len() == f.bytes.len() as u64 => {
+                fs::read(&target).map_err(|e| output_error(&target, e))? == f.bytes
+            }
+            _ => false,
+        };
+        if !same {
+            changed.push(f);
+        }
+    }
+    Ok(changed)
+}
+
 fn stage_and_install(
     out: &Path,
-    files: &[OutFile],
+    files: &[&OutFile],
     write: &dyn Fn(&Path, &[u8]) -> io::Result<()>,
-) -> Result<Vec<PathBuf>> {
+) -> Result<()> {
     let staging = tempfile::Builder::new()
         .prefix(STAGING_PREFIX)
         .rand_bytes(6)
         .tempdir_in(out)
         .map_err(|e| output_error(out, e))?;
     let root = staging.path();
+    let mut folders: Vec<&Path> = Vec::new();
     for f in files {
         let path = root.join(NEW).join(&f.path);
-        if let Some(dir) = path.parent() {
-            fs::create_dir_all(dir).map_err(|e| output_error(&out.join(&f.path), e))?;
+        // Each staging folder made once (the files of a folder are mostly consecutive).
+        let folder = f.path.parent().unwrap_or(Path::new(""));
+        if !folders.contains(&folder) {
+            fs::create_dir_all(root.join(NEW).join(folder))
+                .map_err(|e| output_error(&out.join(&f.path), e))?;
+            folders.push(folder);
         }
         write(&path, &f.bytes).map_err(|e| output_error(&out.join(&f.path), e))?;
     }
@@ -199,12 +230,11 @@ fn stage_and_install(
         return Err(e);
     }
     sync_parents(out, &journal);
-    staging.close().map_err(|e| output_error(out, e))?;
-    Ok(files.iter().map(|f| out.join(&f.path)).collect())
+    staging.close().map_err(|e| output_error(out, e))
 }
 
 /// The journal of installing `files` into `out` as it is now.
-fn plan(out: &Path, files: &[OutFile]) -> Result<Journal> {
+fn plan(out: &Path, files: &[&OutFile]) -> Result<Journal> {
     let mut made: Vec<String> = Vec::new();
     let mut entries = Vec::with_capacity(files.len());
     for f in files {
@@ -250,6 +280,8 @@ fn crash_point(renamed: usize) {
 /// already installed has left `new/`). `keep` keeps each replaced file in `old/` for an undo.
 fn install(out: &Path, root: &Path, journal: &Journal, keep: bool) -> Result<()> {
     crash_point(0);
+    // The folders of the targets made (or found) so far, each once.
+    let mut folders: Vec<&Path> = Vec::new();
     for (i, (rel, _)) in journal.files.iter().enumerate() {
         let staged = root.join(NEW).join(rel);
         if entry(&staged)?.is_none() {
@@ -258,11 +290,14 @@ fn install(out: &Path, root: &Path, journal: &Journal, keep: bool) -> Result<()>
         let rel = Path::new(rel);
         let target = out.join(rel);
         check_target(out, rel)?;
-        if let Some(dir) = target.parent() {
-            fs::create_dir_all(dir).map_err(|e| output_error(dir, e))?;
+        let folder = rel.parent().unwrap_or(Path::new(""));
+        if !folders.contains(&folder) {
+            let dir = out.join(folder);
+            fs::create_dir_all(&dir).map_err(|e| output_error(&dir, e))?;
+            // The folders just made are real: check again that no link took their place.
+            check_target(out, rel)?;
+            folders.push(folder);
         }
-        // The folders just made are real: check again that no link took their place.
-        check_target(out, rel)?;
         if keep && entry(&target)?.is_some() {
             // A hard link keeps the old file without moving it: the target never disappears.
             let kept = root.join(OLD).join(i.to_string());
@@ -570,6 +605,33 @@ mod tests {
                 ("keep.txt".to_string(), "mine".to_string()),
             ]
         );
+    }
+
+    /// A target that already holds the new bytes is left as it is (the same file, not a copy);
+    /// one of the same length but other bytes, and one of another length, are replaced.
+    #[test]
+    fn only_changed_files_are_rewritten() {
+        use std::os::unix::fs::MetadataExt;
+        let dir = tempfile::tempdir().unwrap();
+        let names = ["same.html", "sub/same.svg", "other.html", "longer.html"];
+        write_all(dir.path(), &files(&names)).unwrap();
+        fs::write(dir.path().join("other.html"), b"old other.html").unwrap();
+        fs::write(dir.path().join("longer.html"), b"old").unwrap();
+        let inode = |n: &str| fs::metadata(dir.path().join(n)).unwrap().ino();
+        let before: Vec<u64> = names.iter().map(|n| inode(n)).collect();
+        let written = write_all(dir.path(), &files(&names)).unwrap();
+        assert_eq!(written.len(), names.len());
+        let after: Vec<u64> = names.iter().map(|n| inode(n)).collect();
+        assert_eq!(after[..2], before[..2]);
+        assert_ne!(after[2], before[2]);
+        assert_ne!(after[3], before[3]);
+        assert_eq!(tree(dir.path()).len(), names.len() + 1);
+        for n in names {
+            assert_eq!(
+                fs::read_to_string(dir.path().join(n)).unwrap(),
+                format!("new {n}")
+            );
+        }
     }
 
     #[test]

@@ -6,7 +6,6 @@ use std::fmt;
 use serde::Serialize;
 
 use crate::engine::IntegrationRegime;
-use crate::models::woodpecker::quantity as wp;
 use crate::params::DEFAULT_PERIODS;
 use crate::results::quantity::{AnyKey, Quantity, Registry};
 use crate::results::summary::Summary;
@@ -54,20 +53,43 @@ pub enum CheckValue {
     Text(String),
 }
 
-/// What a check checks: a quantity of a model's registry, or a quantity of the woodpecker's
-/// lobe-engine orbit.
+/// What a check checks: a quantity of a model's registry, or a quantity a model numbers at run
+/// time (the woodpecker's orbit: the speed of the second maximum of the first slip).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Checked {
     Key(AnyKey),
-    Orbit(wp::OrbitQuantity),
+    Numbered(Numbered),
+}
+
+/// A quantity numbered at run time: its name is the stem followed by its indices
+/// (`orbit_v_max_1_2`), and the section of the guide that derives it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Numbered {
+    /// The name before the indices (`orbit_v_max`).
+    pub stem: &'static str,
+    /// The indices, from 1 (the second is absent for a quantity numbered once).
+    pub indices: (usize, Option<usize>),
+    /// The guide's section that derives it ("guide §8.6").
+    pub equation: &'static str,
+}
+
+impl Numbered {
+    /// The name in the guide §14 `checks` array.
+    pub fn id(self) -> String {
+        match self.indices {
+            (i, None) => format!("{}_{i}", self.stem),
+            (i, Some(j)) => format!("{}_{i}_{j}", self.stem),
+        }
+    }
 }
 
 impl Checked {
-    /// The name in the guide §14 `checks` array: the JSON key (guide §14), or the orbit quantity's name.
+    /// The name in the guide §14 `checks` array: the JSON key (guide §14), or the numbered
+    /// quantity's name.
     pub fn id(self) -> Cow<'static, str> {
         match self {
             Checked::Key(k) => Cow::Borrowed(k.id()),
-            Checked::Orbit(o) => Cow::Owned(o.id()),
+            Checked::Numbered(n) => Cow::Owned(n.id()),
         }
     }
 
@@ -76,7 +98,7 @@ impl Checked {
     pub fn equation(self) -> &'static str {
         match self {
             Checked::Key(k) => k.quantity().equation,
-            Checked::Orbit(_) => wp::ORBIT,
+            Checked::Numbered(n) => n.equation,
         }
     }
 
@@ -84,7 +106,7 @@ impl Checked {
     pub fn quantity(self) -> Option<&'static Quantity> {
         match self {
             Checked::Key(k) => Some(k.quantity()),
-            Checked::Orbit(_) => None,
+            Checked::Numbered(_) => None,
         }
     }
 }
@@ -101,9 +123,9 @@ impl<K: Registry> From<K> for Checked {
     }
 }
 
-impl From<wp::OrbitQuantity> for Checked {
-    fn from(o: wp::OrbitQuantity) -> Self {
-        Checked::Orbit(o)
+impl From<Numbered> for Checked {
+    fn from(n: Numbered) -> Self {
+        Checked::Numbered(n)
     }
 }
 
@@ -302,16 +324,22 @@ mod tests {
 
     #[test]
     fn a_check_is_serialized_with_the_name_of_its_quantity() {
-        let c = Check::number(wp::Key::TSlip1, 1.0, 1.0);
+        let c = Check::number(pm::Key::TSlip, 1.0, 1.0);
         let json = serde_json::to_value(&c).unwrap();
-        assert_eq!(json["quantity"], wp::Key::TSlip1.id());
-        assert_eq!(json["equation"], wp::Key::TSlip1.quantity().equation);
-        let orbit = wp::OrbitQuantity::VMax {
-            slip: 2,
-            maximum: 1,
+        assert_eq!(json["quantity"], pm::Key::TSlip.id());
+        assert_eq!(json["equation"], pm::Key::TSlip.quantity().equation);
+        let numbered = Numbered {
+            stem: "orbit_v_max",
+            indices: (2, Some(1)),
+            equation: "guide §8.6",
         };
-        let json = serde_json::to_value(Check::number(orbit, 1.0, 1.0)).unwrap();
+        let json = serde_json::to_value(Check::number(numbered, 1.0, 1.0)).unwrap();
         assert_eq!(json["quantity"], "orbit_v_max_2_1");
-        assert_eq!(json["equation"], wp::ORBIT);
+        assert_eq!(json["equation"], "guide §8.6");
+        let once = Numbered {
+            indices: (3, None),
+            ..numbered
+        };
+        assert_eq!(Checked::from(once).id(), "orbit_v_max_3");
     }
 }

@@ -1,5 +1,5 @@
-//! `stickslip sweep`: one parameter of a model varied on a uniform grid; at each point both laws
-//! are integrated exactly (v̄, slips and sticks per period, regime) next to the closed-form
+//! `stickslip sweep`: one parameter of a model varied on a uniform grid; at each point each of
+//! the model's laws ([`Present::LAWS`]) is integrated exactly (v̄, slips and sticks per period, regime) next to the closed-form
 //! regime — the paper's remark that the double slip-stick is "critically related with small
 //! changes of the parameters", made visible.
 //!
@@ -20,6 +20,7 @@ use rayon::prelude::*;
 use crate::error::{Error, Result};
 use crate::models::param::{invalid, num};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
+use crate::present::vocab::LawName;
 use crate::present::Present;
 use crate::results::Summary;
 
@@ -94,15 +95,15 @@ impl LawPoint {
     }
 }
 
-/// One grid point: `None` laws when the parameter set is invalid (or, for the woodpecker's
-/// linear law, when its counterpart is undefined).
+/// One grid point: `None` laws when the parameter set is invalid (or when a law does not
+/// exist for the parameters).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Point {
     pub value: f64,
     /// Why the point is invalid, if it is.
     pub invalid: Option<Error>,
-    pub harmonic: Option<LawPoint>,
-    pub linear: Option<LawPoint>,
+    /// Each law of [`Sweep::laws`], in its order.
+    pub laws: Vec<Option<LawPoint>>,
     pub closed_form: Option<&'static str>,
 }
 
@@ -110,6 +111,8 @@ pub struct Point {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Sweep {
     pub model: &'static str,
+    /// The model's laws, in the order of [`Point::laws`].
+    pub laws: &'static [LawName],
     pub param: Param,
     pub spec: GridSpec,
     pub points: Vec<Point>,
@@ -257,8 +260,12 @@ pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Swee
             return Err(first);
         }
     }
+    fn laws<M: Present>(_: &M) -> &'static [LawName] {
+        M::LAWS
+    }
     Ok(Sweep {
         model: base.id(),
+        laws: with_capability!(base, present, p => laws(p), else &[]),
         param,
         spec: spec.clone(),
         points,
@@ -267,23 +274,20 @@ pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Swee
 
 /// Evaluates one grid point; an invalid parameter set is a point, not an error.
 fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
-    fn laws<M: Present>(p: &M, periods: u32) -> Result<(LawPoint, Option<LawPoint>, &'static str)> {
+    type Laws = (Vec<Option<LawPoint>>, &'static str);
+    fn laws<M: Present>(p: &M, periods: u32) -> Result<Laws> {
         let e = p.evaluate(periods)?;
         let laws = M::laws(&e);
-        Ok((
-            LawPoint::of(laws.harmonic),
-            laws.linear.map(LawPoint::of),
-            laws.closed_form_regime,
-        ))
+        let runs = laws.runs.iter().map(|r| r.map(LawPoint::of)).collect();
+        Ok((runs, laws.closed_form_regime))
     }
     let evaluated = with_capability!(model, present, p => laws(p, periods),
         else return Err(model.missing(Capability::Present)));
     match evaluated {
-        Ok((harmonic, linear, closed)) => Ok(Point {
+        Ok((laws, closed)) => Ok(Point {
             value,
             invalid: None,
-            harmonic: Some(harmonic),
-            linear,
+            laws,
             closed_form: Some(closed),
         }),
         // A point the model refuses, or (should it ever happen) one the engine cannot
@@ -296,8 +300,7 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
         ) => Ok(Point {
             value,
             invalid: Some(e),
-            harmonic: None,
-            linear: None,
+            laws: Vec::new(),
             closed_form: None,
         }),
         Err(e) => Err(e),

@@ -1,5 +1,5 @@
 //! Rendering of a finished sweep: `sweep.csv` (units in the header), `sweep.svg` (v̄ and slips
-//! per period of both laws against the parameter) and the one-line summary. Pure: strings in,
+//! per period of each of the model's laws against the parameter) and the one-line summary. Pure: strings in,
 //! [`OutFile`]s out; the caller writes them.
 
 use std::fmt::Write as _;
@@ -15,7 +15,7 @@ use crate::report::OutFile;
 
 /// Regime written for a point whose parameter set is invalid.
 pub const INVALID: &str = "invalid";
-/// Regime written for a law that does not exist at a point (woodpecker linear law, |z0| > d0).
+/// Regime written for a law that does not exist at a point.
 pub const UNDEFINED: &str = "undefined";
 /// Regime changes listed by name in the summary line; more are counted.
 const LISTED_CHANGES: usize = 3;
@@ -45,17 +45,18 @@ fn param_column(s: &Sweep) -> String {
 
 fn csv(s: &Sweep) -> String {
     let mut text = param_column(s);
-    for law in ["harmonic", "linear"] {
+    for law in s.laws {
         let _ = write!(
             text,
-            ",v_avg_{law}_m_s,slips_{law},sticks_{law},regime_{law}"
+            ",v_avg_{0}_m_s,slips_{0},sticks_{0},regime_{0}",
+            law.id
         );
     }
     text.push_str(",regime_closed_form\n");
     for p in &s.points {
         text.push_str(&num(p.value));
-        for law in [&p.harmonic, &p.linear] {
-            let cells = match law {
+        for i in 0..s.laws.len() {
+            let cells = match law(p, i) {
                 Some(l) => format!(
                     "{},{},{},{}",
                     l.v_avg.map(num).unwrap_or_default(),
@@ -72,6 +73,11 @@ fn csv(s: &Sweep) -> String {
     text
 }
 
+/// The point's run of law `i` of the sweep (`None`: invalid point, or no such law there).
+fn law(p: &Point, i: usize) -> Option<&LawPoint> {
+    p.laws.get(i).and_then(Option::as_ref)
+}
+
 fn missing_regime(p: &Point) -> &'static str {
     if p.invalid.is_some() {
         INVALID
@@ -82,25 +88,25 @@ fn missing_regime(p: &Point) -> &'static str {
 
 fn svg(s: &Sweep) -> Result<String> {
     let x = |p: &Point| p.value * s.param.axis_scale;
-    let curve = |label: &str,
-                 color: usize,
-                 stroke: Stroke,
-                 law: fn(&Point) -> Option<&LawPoint>,
-                 y: fn(&LawPoint) -> Option<f64>| Curve {
-        label: label.to_string(),
+    // The first law solid in the first colour, the others dashed: the report's figures' styles.
+    let curve = |i: usize, y: fn(&LawPoint) -> Option<f64>| Curve {
+        label: s.laws[i].id.to_string(),
         // Invalid points and missing values are NaN: the renderer breaks the curve there.
         points: s
             .points
             .iter()
-            .map(|p| (x(p), law(p).and_then(y).unwrap_or(f64::NAN)))
+            .map(|p| (x(p), law(p, i).and_then(y).unwrap_or(f64::NAN)))
             .collect(),
-        color,
-        stroke,
+        color: i,
+        stroke: if i == 0 {
+            Stroke::Solid
+        } else {
+            Stroke::Dashed
+        },
     };
-    let harmonic: fn(&Point) -> Option<&LawPoint> = |p| p.harmonic.as_ref();
-    let linear: fn(&Point) -> Option<&LawPoint> = |p| p.linear.as_ref();
     let v_mm: fn(&LawPoint) -> Option<f64> = |l| l.v_avg.map(|v| v * 1e3);
     let slips: fn(&LawPoint) -> Option<f64> = |l| Some(f64::from(l.slips));
+    let curves = |y| (0..s.laws.len()).map(|i| curve(i, y)).collect();
     let (a, b) = (
         s.spec.from * s.param.axis_scale,
         s.spec.to * s.param.axis_scale,
@@ -111,18 +117,12 @@ fn svg(s: &Sweep) -> Result<String> {
         panels: vec![
             Panel {
                 y_label: "v̄ (mm/s)".to_string(),
-                curves: vec![
-                    curve("harmonic", 0, Stroke::Solid, harmonic, v_mm),
-                    curve("linear", 1, Stroke::Dashed, linear, v_mm),
-                ],
+                curves: curves(v_mm),
                 h_lines: Vec::new(),
             },
             Panel {
                 y_label: "slips per period".to_string(),
-                curves: vec![
-                    curve("harmonic", 0, Stroke::Solid, harmonic, slips),
-                    curve("linear", 1, Stroke::Dashed, linear, slips),
-                ],
+                curves: curves(slips),
                 h_lines: Vec::new(),
             },
         ],
@@ -146,11 +146,8 @@ fn tally<'a>(items: impl Iterator<Item = &'a str>) -> Vec<(&'a str, usize)> {
     out
 }
 
-fn regime_of(law: Option<&LawPoint>, p: &Point) -> &'static str {
-    law.map_or_else(|| missing_regime(p), |l| l.regime)
-}
-
-/// One line: points, regimes seen per law, where the harmonic regime changes, files written.
+/// One line: points, regimes seen per law, where the first law's regime changes, files
+/// written.
 pub fn summary_line(s: &Sweep, out: &Path) -> String {
     let unit = if s.param.unit_text.is_empty() {
         String::new()
@@ -164,13 +161,14 @@ pub fn summary_line(s: &Sweep, out: &Path) -> String {
             .collect::<Vec<_>>()
             .join(", ")
     };
-    let harmonic: Vec<&str> = s
-        .points
-        .iter()
-        .map(|p| regime_of(p.harmonic.as_ref(), p))
-        .collect();
-    let linear = tally(s.points.iter().map(|p| regime_of(p.linear.as_ref(), p)));
-    let changes: Vec<String> = harmonic
+    let regimes = |i: usize| -> Vec<&str> {
+        s.points
+            .iter()
+            .map(|p| law(p, i).map_or_else(|| missing_regime(p), |l| l.regime))
+            .collect()
+    };
+    let first: Vec<&str> = regimes(0);
+    let changes: Vec<String> = first
         .windows(2)
         .zip(s.points.windows(2))
         .filter(|(r, _)| r[0] != r[1])
@@ -194,16 +192,26 @@ pub fn summary_line(s: &Sweep, out: &Path) -> String {
             n - LISTED_CHANGES
         ),
     };
+    let seen_per_law: String = s
+        .laws
+        .iter()
+        .enumerate()
+        .map(|(i, l)| {
+            format!(
+                "{} regimes: {}; ",
+                l.id,
+                seen(tally(regimes(i).into_iter()))
+            )
+        })
+        .collect();
     format!(
-        "sweep {} {}: {} points from {} to {}{unit}; harmonic regimes: {}; linear regimes: {}; \
-         harmonic regime changes: {}; wrote {}\n",
+        "sweep {} {}: {} points from {} to {}{unit}; {seen_per_law}{} regime changes: {}; wrote {}\n",
         s.model,
         s.param.name,
         s.points.len(),
         num(s.spec.from),
         num(s.spec.to),
-        seen(tally(harmonic.iter().copied())),
-        seen(linear),
+        s.laws.first().map_or("", |l| l.id),
         change_text,
         crate::error::excerpt_path(&out.display().to_string())
     )

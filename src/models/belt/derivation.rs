@@ -6,8 +6,8 @@
 use super::formula as cf;
 use super::quantity::Key;
 use super::BeltParams;
-use crate::derivation::expr::{arctan, given, int, pi, pow, sqrt};
-use crate::derivation::{Step, Steps};
+use crate::derivation::expr::{arctan, pow, sqrt, Term};
+use crate::derivation::{Expr, Step, Steps, Value};
 
 /// The derived parameters with a step (the `params` keys of `eval belt --json`).
 pub mod param {
@@ -45,8 +45,19 @@ pub mod param {
 
 /// Every closed form of the belt with `p`'s numbers, in the order a derivation reads.
 pub fn belt(p: &BeltParams) -> Vec<Step> {
+    steps::<Expr>(p)
+}
+
+/// [`belt`] without the expression trees: each step's formula as its value only (the same
+/// numbers, bit for bit).
+pub fn belt_values(p: &BeltParams) -> Vec<Step<Value>> {
+    steps::<Value>(p)
+}
+
+fn steps<E: Term>(p: &BeltParams) -> Vec<Step<E>> {
+    let (int, pi, given) = (E::int, E::pi, E::given);
     let c = cf::evaluate(p);
-    let mut s = Steps::<Key>::new(&[]);
+    let mut s = Steps::<Key, E>::new(&[]);
     let (m, g, k, v_b) = (
         given("m", p.mass),
         given("g", p.g),
@@ -143,6 +154,11 @@ mod tests {
         for p in super::super::test_sets() {
             let c = cf::evaluate(&p);
             let steps = belt(&p);
+            // The values-only steps are the same numbers, bit for bit.
+            for (tree, value) in steps.iter().zip(belt_values(&p)) {
+                assert_eq!(tree.value, value.value, "{}", tree.symbol);
+                assert_eq!(tree.expr.eval(), value.expr.eval(), "{}", tree.symbol);
+            }
             // Every numeric quantity of the registry once, after the four derived parameters.
             let numeric = super::super::quantity::ALL.len() - 1;
             assert_eq!(steps.len(), 4 + numeric);

@@ -225,6 +225,18 @@ pub fn evaluate(p: &BeltParams) -> ClosedForm {
     }
 }
 
+#[cfg(feature = "cli")]
+impl schemars::JsonSchema for ClosedForm {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "BeltClosedForm".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let ids = [Regime::StickSlip.id(), Regime::TouchingOscillation.id()];
+        crate::schema::closed_form::<super::quantity::Key>(&ids)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

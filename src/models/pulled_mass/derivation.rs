@@ -2,8 +2,8 @@
 //! closed form of the linearized law in the order of a derivation. Values come from
 //! [`crate::models::pulled_mass::formula`]; which forms apply, from [`crate::models::pulled_mass::results`].
 
-use crate::derivation::expr::{given, half, int, pi, pow, pow_ratio, sqrt, Expr};
-use crate::derivation::{Step, Steps};
+use crate::derivation::expr::{half, pow, pow_ratio, sqrt, Term};
+use crate::derivation::{Expr, Step, Steps, Value};
 use crate::models::pulled_mass::formula as cf;
 use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::applicability;
@@ -37,16 +37,27 @@ pub mod param {
 }
 
 /// D ≡ μs² + 2μsμd − μd² (guide §7), written out wherever it appears.
-fn big_d(mu_s: &Expr, mu_d: &Expr) -> Expr {
-    pow(mu_s.clone(), 2) + int(2) * mu_s.clone() * mu_d.clone() - pow(mu_d.clone(), 2)
+fn big_d<E: Term>(mu_s: &E, mu_d: &E) -> E {
+    pow(mu_s.clone(), 2) + E::int(2) * mu_s.clone() * mu_d.clone() - pow(mu_d.clone(), 2)
 }
 
 /// Every closed form of the pulled mass with `p`'s numbers, in the order a derivation reads.
 pub fn pulled_mass(p: &PulledMassParams) -> Vec<Step> {
+    steps::<Expr>(p)
+}
+
+/// [`pulled_mass`] without the expression trees: each step's formula as its value only (the
+/// same numbers, bit for bit).
+pub fn pulled_mass_values(p: &PulledMassParams) -> Vec<Step<Value>> {
+    steps::<Value>(p)
+}
+
+fn steps<E: Term>(p: &PulledMassParams) -> Vec<Step<E>> {
+    let (int, pi, given, half) = (E::int, E::pi, E::given, half::<E>);
     let (period, phi_value) = (p.period(), p.phi());
     let c = cf::evaluate(p.g, period, p.force, phi_value, p.mu_s, p.mu_d);
     let notes = applicability(&c);
-    let mut s = Steps::<Key>::new(&notes);
+    let mut s = Steps::<Key, E>::new(&notes);
     let (m, g, k, f) = (
         given("m", p.mass),
         given("g", p.g),

@@ -373,6 +373,32 @@ pub fn evaluate(g: f64, period: f64, force: f64, phi: f64, mu_s: f64, mu_d: f64)
     }
 }
 
+#[cfg(feature = "cli")]
+impl schemars::JsonSchema for Regime {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "PulledMassRegime".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        crate::schema::one_of(
+            "Regime of the pulled mass's closed forms (guide §9)",
+            Self::ALL.iter().map(|r| r.id()),
+        )
+    }
+}
+
+#[cfg(feature = "cli")]
+impl schemars::JsonSchema for ClosedForm {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "PulledMassClosedForm".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        let ids: Vec<&str> = Regime::ALL.iter().map(|r| r.id()).collect();
+        crate::schema::closed_form::<super::quantity::Key>(&ids)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

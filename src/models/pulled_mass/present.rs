@@ -1,10 +1,15 @@
 //! The pulled mass for the presentation layer: scene, figures, tables, derivation, notes.
 
-use super::{derivation, results, scene, sketch, tables, teaching, PulledMassParams};
-use crate::derivation::{Step, StepKey};
+use super::scene::PulledFigure;
+use super::{derivation, results, scene, scenes, sketch, tables, teaching, PulledMassParams};
+use crate::derivation::{Step, StepKey, Value};
 use crate::error::Result;
 use crate::export::law_files;
-use crate::present::vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
+use crate::models::paper;
+use crate::present::vocab::{
+    Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
+    SceneCtx,
+};
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 
 impl Present for PulledMassParams {
@@ -18,13 +23,41 @@ impl Present for PulledMassParams {
         to: 0.6,
         steps: 59,
     };
+    const PART: PartStory = PartStory {
+        title: "The pulled mass",
+        story: "A block on a table is pulled by a constant force F while a spring presses it \
+                down with a mass hanging under the table: the normal force N oscillates, so \
+                friction alternately holds the block and lets it slide. Read the pages in order: \
+                the pull against the friction limits, then each kind of motion, then the price \
+                of the linearized law that makes every result a closed formula.",
+    };
+    const LAWS: &'static [LawName] = paper::LAWS;
+    const HANDOUT: Option<(&'static str, &'static str)> = Some((
+        "fig10-linear-slip-stick",
+        "the pulled mass from its equation of motion to every characteristic time, with the \
+         numbers substituted; two A4 pages",
+    ));
+    const LAW_WORDS: LawWords = paper::LAW_WORDS;
+    type Figure = PulledFigure;
+
+    fn words(code: &str) -> Option<&'static str> {
+        match code {
+            "en" => Some(include_str!("lang/en.toml")),
+            "it" => Some(include_str!("lang/it.toml")),
+            _ => None,
+        }
+    }
+
+    fn builtin_scenes() -> Vec<Builtin> {
+        scenes::builtins()
+    }
 
     fn standard_scene(&self) -> StandardScene {
         StandardScene {
             figures: vec![
-                FigureKind::PulledMotion { periods: 2.0 },
-                FigureKind::PulledForces,
-                FigureKind::PulledCompare,
+                PulledFigure::Motion { periods: 2.0 }.kind(),
+                PulledFigure::Forces.kind(),
+                PulledFigure::Compare.kind(),
             ],
             claims: vec![1, 2, 3, 7],
             caption: "Motion of the pulled mass under both force laws, the competing forces, \
@@ -32,7 +65,7 @@ impl Present for PulledMassParams {
         }
     }
 
-    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>> {
+    fn figures(&self, scene_id: &str, kind: PulledFigure) -> Result<Vec<Figure>> {
         scene::figures(scene_id, self, kind)
     }
 
@@ -42,6 +75,10 @@ impl Present for PulledMassParams {
 
     fn derivation(&self) -> Vec<Step> {
         derivation::pulled_mass(self)
+    }
+
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        derivation::pulled_mass_values(self)
     }
 
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
@@ -62,8 +99,7 @@ impl Present for PulledMassParams {
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {
         Laws {
-            harmonic: &e.harmonic,
-            linear: Some(&e.linear),
+            runs: vec![Some(&e.harmonic), Some(&e.linear)],
             closed_form_regime: e.closed_form.regime.id(),
         }
     }

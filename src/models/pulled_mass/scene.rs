@@ -12,7 +12,23 @@ use crate::models::pulled_mass::PulledMassParams;
 use crate::models::{pulled_mass, LawKind};
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
-use crate::report::scene::{Drawing, Figure, FigureKind};
+use crate::report::scene::{Drawing, Figure};
+
+crate::present::vocab::figure_kinds! {
+    /// What a scene of the pulled mass draws. Each kind may produce one or more figures.
+    pub enum PulledFigure {
+        /// x, v, a against t for both laws, with t_SL, t_M, t_ST (Figs. 5, 6, 10).
+        Motion { periods: f64 } = "pulled-motion",
+        /// F against μs N(t) and μd N(t), with t_SL, t_M, t_ST.
+        Forces = "pulled-forces",
+        /// The (μd, μs) domain for the scene's φ, both laws on a grid (Fig. 9).
+        Domain = "pulled-domain",
+        /// Position over 10 periods and the line of slope v̄ (Fig. 11).
+        LongRun = "pulled-long-run",
+        /// Speed and acceleration, harmonic against linear (Fig. 12).
+        Compare = "pulled-compare",
+    }
+}
 
 /// Palette indices and strokes of the two laws, the same in every figure.
 const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);
@@ -20,38 +36,37 @@ const LINEAR: (usize, Stroke) = (1, Stroke::Dashed);
 /// Cells per side of the domain maps.
 const GRID: usize = 200;
 
-/// The figures of one kind for the pulled mass `p` (other models' kinds give none).
-pub fn figures(scene_id: &str, p: &PulledMassParams, kind: FigureKind) -> Result<Vec<Figure>> {
+/// The figures of one kind for the pulled mass `p`.
+pub fn figures(scene_id: &str, p: &PulledMassParams, kind: PulledFigure) -> Result<Vec<Figure>> {
     let figure = |name: &str, caption: String, drawing| Figure {
         id: format!("{scene_id}-{name}"),
         caption,
         drawing,
     };
     Ok(match kind {
-        FigureKind::PulledMotion { periods } => {
+        PulledFigure::Motion { periods } => {
             let (chart, caption) = motion(p, periods)?;
             vec![figure("motion", caption, Drawing::Chart(chart))]
         }
-        FigureKind::PulledForces => {
+        PulledFigure::Forces => {
             let (chart, caption) = forces(p)?;
             vec![figure("forces", caption, Drawing::Chart(chart))]
         }
-        FigureKind::PulledDomain => {
+        PulledFigure::Domain => {
             let [(lin, lin_caption), (har, har_caption)] = domain(p)?;
             vec![
                 figure("domain-linear", lin_caption, Drawing::Map(lin)),
                 figure("domain-harmonic", har_caption, Drawing::Map(har)),
             ]
         }
-        FigureKind::PulledLongRun => {
+        PulledFigure::LongRun => {
             let (chart, caption) = long_run(p)?;
             vec![figure("long-run", caption, Drawing::Chart(chart))]
         }
-        FigureKind::PulledCompare => {
+        PulledFigure::Compare => {
             let (chart, caption) = compare(p)?;
             vec![figure("compare", caption, Drawing::Chart(chart))]
         }
-        _ => Vec::new(),
     })
 }
 
@@ -400,10 +415,10 @@ mod tests {
             ..PulledMassParams::default()
         };
         for kind in [
-            FigureKind::PulledMotion { periods: 2.0 },
-            FigureKind::PulledForces,
-            FigureKind::PulledLongRun,
-            FigureKind::PulledCompare,
+            PulledFigure::Motion { periods: 2.0 },
+            PulledFigure::Forces,
+            PulledFigure::LongRun,
+            PulledFigure::Compare,
         ] {
             let figs = figures("t", &p, kind).unwrap();
             assert_eq!(figs.len(), 1, "{kind:?}");
@@ -422,7 +437,7 @@ mod tests {
     #[test]
     fn domain_maps_agree_with_the_closed_forms_where_they_are_exact() {
         let p = PulledMassParams::default();
-        let figs = figures("t", &p, FigureKind::PulledDomain).unwrap();
+        let figs = figures("t", &p, PulledFigure::Domain).unwrap();
         assert_eq!(figs.len(), 2);
         let Drawing::Map(linear) = &figs[0].drawing else {
             panic!("map")

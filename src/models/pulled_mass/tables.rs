@@ -8,11 +8,14 @@ use super::formula::Regime;
 use super::results::{self as pulled_mass, Evaluation};
 use super::{quantity as pm, PulledMassParams};
 use crate::error::Result;
+use crate::models::paper::{LAW_WORDS, LINEARIZATION};
 use crate::models::param::num as pnum;
 use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
+use crate::present::vocab::Comparison;
+use crate::present::Present;
 use crate::report::context::{
     blank, count, fill_checks, input, integration_regime, laws_table, row, RegimeRow, SceneCtx,
 };
@@ -47,13 +50,16 @@ pub(crate) fn scene_tables(scene: &Scene, p: &PulledMassParams) -> Result<SceneC
         integration_regime("harmonic law, exact integration", &e.harmonic),
     ];
     fill_checks(&mut ctx, |k: pm::Key| c.get(k), &e.checks, &e.applicability);
-    ctx.linearization = laws_table(
-        &[
-            ("harmonic", Some(&e.harmonic)),
-            ("linearized", Some(&e.linear)),
-        ],
-        pp.period,
-    );
+    ctx.linearization = Some(Comparison {
+        heading: LINEARIZATION.to_string(),
+        table: laws_table(
+            &[
+                ("harmonic", Some(&e.harmonic)),
+                ("linearized", Some(&e.linear)),
+            ],
+            pp.period,
+        ),
+    });
     Ok(ctx)
 }
 
@@ -85,10 +91,15 @@ pub(crate) fn text(e: &Evaluation) -> String {
         c.regime.id(),
         regime_reason(e)
     );
-    closed_form_table(&mut out, |k: pm::Key| c.get(k));
+    closed_form_table(&mut out, &LAW_WORDS, |k: pm::Key| c.get(k));
     not_describing(&mut out, &e.applicability);
-    checks_table(&mut out, &e.checks);
-    text_laws(&mut out, &e.harmonic, Some(&e.linear));
+    checks_table(&mut out, &LAW_WORDS, &e.checks);
+    text_laws(
+        &mut out,
+        <PulledMassParams as Present>::LAWS,
+        &[Some(&e.harmonic), Some(&e.linear)],
+        "",
+    );
     out
 }
 

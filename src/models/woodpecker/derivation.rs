@@ -3,8 +3,8 @@
 //! by the swap u^(−) ↔ u^(+), η ↔ η'), and the whole period. Values come from
 //! [`crate::models::woodpecker::formula`]; which forms apply, from [`crate::models::woodpecker::results`].
 
-use crate::derivation::expr::{arcsin, given, int, max, pi, pow, sqrt, Expr};
-use crate::derivation::{Step, Steps};
+use crate::derivation::expr::{arcsin, max, pow, sqrt, Term};
+use crate::derivation::{Expr, Step, Steps, Value};
 use crate::models::woodpecker::formula::{self as cf, Counterpart, Groups, PhaseClosedForm};
 use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::{applicability, domain_note, linear_inputs};
@@ -88,31 +88,42 @@ const PHASE_II: PhaseNames = PhaseNames {
 };
 
 /// The quantities every phase formula is written in (leaves of earlier steps).
-struct Common {
-    g: Expr,
-    tau: Expr,
-    w_s: Expr,
-    k: Expr,
-    zeta0: Expr,
-    lambda: Expr,
+struct Common<E> {
+    g: E,
+    tau: E,
+    w_s: E,
+    k: E,
+    zeta0: E,
+    lambda: E,
 }
 
 /// The factors seen by the slip of a phase (formula::woodpecker module doc): U, u_A, u_B and
 /// the height h_B of the lobe after the zero of F_e.
-struct Factors {
-    u: Expr,
-    u_a: Expr,
-    u_b: Expr,
-    h_b: Expr,
+struct Factors<E> {
+    u: E,
+    u_a: E,
+    u_b: E,
+    h_b: E,
 }
 
 /// Every closed form of the woodpecker with `p`'s numbers, in the order a derivation reads.
 pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
+    steps::<Expr>(p)
+}
+
+/// [`woodpecker`] without the expression trees: each step's formula as its value only (the
+/// same numbers, bit for bit).
+pub fn woodpecker_values(p: &WoodpeckerParams) -> Vec<Step<Value>> {
+    steps::<Value>(p)
+}
+
+fn steps<E: Term>(p: &WoodpeckerParams) -> Vec<Step<E>> {
+    let (int, pi, given) = (E::int, E::pi, E::given);
     let lw = linear_inputs(p);
     let c = cf::evaluate(&lw);
     let note = domain_note(p, &c);
     let notes = applicability(&c, note.as_deref());
-    let mut s = Steps::<Key>::new(&notes);
+    let mut s = Steps::<Key, E>::new(&notes);
     let (g, k) = (given("g", p.g), given("k", p.k));
     let (m_s, m_w) = (given("m_S", p.m_sleeve), given("m_W", p.m_bird));
     let (z0, d0) = (given("z_0", p.z0), given("d_0", p.d0));
@@ -147,7 +158,7 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
         Counterpart::Tangent => zeta0.clone() * two_over_pi() * arcsin(z0 / d0),
     };
     let delta0 = s.push(Key::Delta0, delta0_expr, c.delta0);
-    let two_lambda = |mu: &Expr| int(2) * lambda.clone() * mu.clone();
+    let two_lambda = |mu: &E| int(2) * lambda.clone() * mu.clone();
     let u_s_minus = s.push(Key::USMinus, two_lambda(&mu_s) - int(1), c.u_s_minus);
     let u_s_plus = s.push(Key::USPlus, two_lambda(&mu_s) + int(1), c.u_s_plus);
     let u_d_minus = s.push(Key::UDMinus, two_lambda(&mu_d) - int(1), c.u_d_minus);
@@ -228,14 +239,15 @@ pub fn woodpecker(p: &WoodpeckerParams) -> Vec<Step> {
 }
 
 /// The steps of one phase (guide §8.3, or guide §8.4 by the swap); returns the leaf of its Γ.
-fn phase(
-    s: &mut Steps<Key>,
+fn phase<E: Term>(
+    s: &mut Steps<Key, E>,
     names: &PhaseNames,
-    c: &Common,
-    f: &Factors,
-    t0_expr: Expr,
+    c: &Common<E>,
+    f: &Factors<E>,
+    t0_expr: E,
     v: &PhaseClosedForm,
-) -> Expr {
+) -> E {
+    let int = E::int;
     let [k_t0, k_delta, k_sl, k_a, k_tm, k_vm, k_s, k_st, k_min, k_halt, k_gamma, k_y] = names.keys;
     let (u, u_a, u_b, h) = (&f.u, &f.u_a, &f.u_b, &f.h_b);
     let t0 = s.push(k_t0, t0_expr, v.t0);
@@ -272,7 +284,7 @@ fn phase(
         v.s,
     );
     s.push(k_st, t0 + delta * s_factor.clone(), v.t_stick);
-    let sigma = |e: Expr| match names.sigma {
+    let sigma = |e: E| match names.sigma {
         1 => e + int(1),
         _ => e - int(1),
     };

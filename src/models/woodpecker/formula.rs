@@ -803,6 +803,24 @@ fn steady_orbit(
     lobe::periodic_orbit(slips, first, p.period())
 }
 
+#[cfg(feature = "cli")]
+impl schemars::JsonSchema for WoodpeckerClosedForm {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "WoodpeckerClosedForm".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        use super::lobe::OrbitRegime;
+        let mut ids: Vec<&str> = Vec::new();
+        for id in OrbitRegime::ALL.iter().map(|r| r.id()) {
+            if !ids.contains(&id) {
+                ids.push(id);
+            }
+        }
+        crate::schema::closed_form::<super::quantity::Key>(&ids)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -471,6 +471,20 @@ fn periodic_slips(slips: &[Option<OrbitSlip>; 2], first: Phase) -> Option<Vec<Or
     Some(both)
 }
 
+#[cfg(feature = "cli")]
+impl schemars::JsonSchema for OrbitRegime {
+    fn schema_name() -> std::borrow::Cow<'static, str> {
+        "OrbitRegime".into()
+    }
+
+    fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
+        crate::schema::one_of(
+            "Regime of the woodpecker's periodic orbit (guide §10)",
+            Self::ALL.iter().map(|r| r.id()),
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

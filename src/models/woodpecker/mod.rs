@@ -36,6 +36,8 @@ pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
 #[cfg(feature = "cli")]
+mod scenes;
+#[cfg(feature = "cli")]
 pub mod sketch;
 #[cfg(feature = "cli")]
 mod tables;

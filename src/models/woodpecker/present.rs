@@ -1,13 +1,19 @@
 //! The woodpecker for the presentation layer: scene, figures, tables, derivation, notes.
 
+use super::scene::WoodFigure;
 use super::{
-    derivation, results, scene, sketch, spring_coordinate, tables, teaching, WoodpeckerParams,
+    derivation, results, scene, scenes, sketch, spring_coordinate, tables, teaching,
+    WoodpeckerParams,
 };
-use crate::derivation::{Step, StepKey};
+use crate::derivation::{Step, StepKey, Value};
 use crate::error::Result;
 use crate::export::law_files;
+use crate::models::paper;
 use crate::models::LawKind;
-use crate::present::vocab::{Figure, FigureKind, Note, OutFile, Phase, Scene, SceneCtx};
+use crate::present::vocab::{
+    Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
+    SceneCtx,
+};
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 
 impl Present for WoodpeckerParams {
@@ -21,13 +27,39 @@ impl Present for WoodpeckerParams {
         to: 0.012,
         steps: 61,
     };
+    const PART: PartStory = PartStory {
+        title: "The falling woodpecker",
+        story: "The toy woodpecker slides down its pole in jerks: the bird swings on a spring, \
+                tilting the sleeve so that it grips the pole and lets go twice per swing. The \
+                same stick-slip rule as in Part 1, with the grip set by the lever l/h; the pages \
+                follow one period phase by phase, then the regimes and the real toy.",
+    };
+    const LAWS: &'static [LawName] = paper::LAWS;
+    const HANDOUT: Option<(&'static str, &'static str)> = Some((
+        "fig15-double-slip-stick",
+        "the woodpecker's two phases from the equation of motion to the mean speed; two A4 pages",
+    ));
+    const LAW_WORDS: LawWords = paper::LAW_WORDS;
+    type Figure = WoodFigure;
+
+    fn words(code: &str) -> Option<&'static str> {
+        match code {
+            "en" => Some(include_str!("lang/en.toml")),
+            "it" => Some(include_str!("lang/it.toml")),
+            _ => None,
+        }
+    }
+
+    fn builtin_scenes() -> Vec<Builtin> {
+        scenes::builtins()
+    }
 
     fn standard_scene(&self) -> StandardScene {
         StandardScene {
             figures: vec![
-                FigureKind::WoodMotion { periods: 2.0 },
-                FigureKind::WoodForces,
-                FigureKind::WoodSpring,
+                WoodFigure::Motion { periods: 2.0 }.kind(),
+                WoodFigure::Forces.kind(),
+                WoodFigure::Spring.kind(),
             ],
             claims: vec![3, 4, 5, 6, 7, 8],
             caption: "Motion of the woodpecker's sleeve under both force laws, the forces that \
@@ -35,7 +67,7 @@ impl Present for WoodpeckerParams {
         }
     }
 
-    fn figures(&self, scene_id: &str, kind: FigureKind) -> Result<Vec<Figure>> {
+    fn figures(&self, scene_id: &str, kind: WoodFigure) -> Result<Vec<Figure>> {
         scene::figures(scene_id, self, kind)
     }
 
@@ -45,6 +77,10 @@ impl Present for WoodpeckerParams {
 
     fn derivation(&self) -> Vec<Step> {
         derivation::woodpecker(self)
+    }
+
+    fn derivation_values(&self) -> Vec<Step<Value>> {
+        derivation::woodpecker_values(self)
     }
 
     fn handout_note(key: StepKey) -> Option<(Note, Option<&'static str>)> {
@@ -68,8 +104,7 @@ impl Present for WoodpeckerParams {
 
     fn laws(e: &results::Evaluation) -> Laws<'_> {
         Laws {
-            harmonic: &e.harmonic,
-            linear: e.linear.as_ref(),
+            runs: vec![Some(&e.harmonic), e.linear.as_ref()],
             closed_form_regime: e.closed_form.regime.id(),
         }
     }

@@ -4,6 +4,7 @@
 //! lobe engine, numbered by slip at run time, are named by [`OrbitQuantity`].
 
 use crate::models::woodpecker::lobe::Phase;
+use crate::results::checks::{Checked, Numbered};
 use crate::results::quantity::{AnyKey, Entry, Kind, Registry};
 
 /// The section of the lobe engine (guide §8.6): the equation of its orbit quantities.
@@ -708,16 +709,32 @@ pub enum OrbitQuantity {
 }
 
 impl OrbitQuantity {
+    /// The quantity as a check names it: `orbit_v_max_1_2` (guide §8.6).
+    pub fn numbered(self) -> Numbered {
+        let (stem, indices) = match self {
+            OrbitQuantity::TStick { slip } => ("orbit_t_stick", (slip, None)),
+            OrbitQuantity::TMaxSpeed { slip, maximum } => {
+                ("orbit_t_max_speed", (slip, Some(maximum)))
+            }
+            OrbitQuantity::VMax { slip, maximum } => ("orbit_v_max", (slip, Some(maximum))),
+            OrbitQuantity::Distance { slip } => ("orbit_distance", (slip, None)),
+        };
+        Numbered {
+            stem,
+            indices,
+            equation: ORBIT,
+        }
+    }
+
     /// The name in the `checks` array.
     pub fn id(self) -> String {
-        match self {
-            OrbitQuantity::TStick { slip } => format!("orbit_t_stick_{slip}"),
-            OrbitQuantity::TMaxSpeed { slip, maximum } => {
-                format!("orbit_t_max_speed_{slip}_{maximum}")
-            }
-            OrbitQuantity::VMax { slip, maximum } => format!("orbit_v_max_{slip}_{maximum}"),
-            OrbitQuantity::Distance { slip } => format!("orbit_distance_{slip}"),
-        }
+        self.numbered().id()
+    }
+}
+
+impl From<OrbitQuantity> for Checked {
+    fn from(o: OrbitQuantity) -> Self {
+        Checked::Numbered(o.numbered())
     }
 }
 
@@ -735,5 +752,24 @@ mod tests {
     #[test]
     fn the_registry_is_consistent() {
         registry_is_consistent(&ALL);
+    }
+
+    /// The names of the orbit's checks are part of the JSON (guide §14): slip first, then the
+    /// speed maximum.
+    #[test]
+    fn orbit_quantities_are_named_by_slip_then_maximum() {
+        let v = OrbitQuantity::VMax {
+            slip: 2,
+            maximum: 1,
+        };
+        assert_eq!(v.id(), "orbit_v_max_2_1");
+        assert_eq!(Checked::from(v).equation(), ORBIT);
+        assert_eq!(OrbitQuantity::Distance { slip: 3 }.id(), "orbit_distance_3");
+        assert_eq!(OrbitQuantity::TStick { slip: 1 }.id(), "orbit_t_stick_1");
+        let t = OrbitQuantity::TMaxSpeed {
+            slip: 1,
+            maximum: 2,
+        };
+        assert_eq!(t.id(), "orbit_t_max_speed_1_2");
     }
 }

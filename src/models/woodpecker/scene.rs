@@ -29,7 +29,30 @@ use crate::models::{woodpecker, LawKind};
 use crate::output::format::people;
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
-use crate::report::scene::{Drawing, Figure, FigureKind};
+use crate::report::scene::{Drawing, Figure};
+
+crate::present::vocab::figure_kinds! {
+    /// What a scene of the woodpecker draws. Each kind may produce one or more figures.
+    pub enum WoodFigure {
+        /// y_S and v against t for both laws, with the characteristic times (Figs. 15, 16, 26).
+        Motion { periods: f64 } = "wood-motion",
+        /// The spring coordinate, harmonic against the three counterparts (Fig. 17).
+        Spring = "wood-spring",
+        /// W_S + F_e against 2λμs|F_e| and 2λμd|F_e|, with t_SL^(I) (Fig. 18).
+        Forces = "wood-forces",
+        /// a, v, y and the characteristic times of phase 1 or 2 (Fig. 19).
+        Phase { phase: u8 } = "wood-phase",
+        /// v for μd below, at and above μd,MIN of phase 1 or 2 (Fig. 20).
+        MuSweep { phase: u8 } = "wood-mu-sweep",
+        /// Sleeve and woodpecker positions and the speed (Fig. 23).
+        Positions = "wood-positions",
+        /// Regimes in the (μd, z0) plane with μd,MIN and μd,HALT of both phases.
+        RegimeMap = "wood-regime-map",
+        /// The example track (synthetic) with the harmonic law fitted to it from the scene's
+        /// parameters (Figs. 26–27).
+        Tracked = "wood-tracked",
+    }
+}
 
 /// Palette index and stroke of each law, the same in every figure.
 const HARMONIC: (usize, Stroke) = (0, Stroke::Solid);
@@ -48,38 +71,38 @@ const BOUNDARY_POINTS: usize = 400;
 const SWEEP: [f64; 3] = [0.8, 1.0, 1.2];
 
 /// The figures of one kind for the woodpecker `p` (other models' kinds give none).
-pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: FigureKind) -> Result<Vec<Figure>> {
+pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: WoodFigure) -> Result<Vec<Figure>> {
     let figure = |name: &str, (chart, caption): (LineChart, String)| Figure {
         id: format!("{scene_id}-{name}"),
         caption,
         drawing: Drawing::Chart(chart),
     };
     Ok(match kind {
-        FigureKind::WoodMotion { periods } => vec![figure("motion", motion(p, periods)?)],
-        FigureKind::WoodSpring => vec![figure("spring", spring(p)?)],
-        FigureKind::WoodForces => {
+        WoodFigure::Motion { periods } => vec![figure("motion", motion(p, periods)?)],
+        WoodFigure::Spring => vec![figure("spring", spring(p)?)],
+        WoodFigure::Forces => {
             let mut out = vec![figure("forces", forces(p, None)?)];
             if let Some(window) = onset_window(p) {
                 out.push(figure("forces-onsets", forces(p, Some(window))?));
             }
             out
         }
-        FigureKind::WoodPhase { phase } => {
+        WoodFigure::Phase { phase } => {
             let phase = phase_of(phase)?;
             vec![figure(
                 &format!("phase-{}", phase_number(phase)),
                 phase_chart(p, phase)?,
             )]
         }
-        FigureKind::WoodMuSweep { phase } => {
+        WoodFigure::MuSweep { phase } => {
             let phase = phase_of(phase)?;
             vec![figure(
                 &format!("mu-sweep-{}", phase_number(phase)),
                 mu_sweep(p, phase)?,
             )]
         }
-        FigureKind::WoodPositions => vec![figure("positions", positions(p)?)],
-        FigureKind::WoodRegimeMap => regime_maps(p)?
+        WoodFigure::Positions => vec![figure("positions", positions(p)?)],
+        WoodFigure::RegimeMap => regime_maps(p)?
             .into_iter()
             .zip(["regimes-linear", "regimes-harmonic"])
             .map(|((map, caption), name)| Figure {
@@ -88,12 +111,7 @@ pub fn figures(scene_id: &str, p: &WoodpeckerParams, kind: FigureKind) -> Result
                 drawing: Drawing::Map(map),
             })
             .collect(),
-        FigureKind::WoodTracked => vec![figure("tracked", tracked(p)?)],
-        FigureKind::PulledMotion { .. }
-        | FigureKind::PulledForces
-        | FigureKind::PulledDomain
-        | FigureKind::PulledLongRun
-        | FigureKind::PulledCompare => Vec::new(),
+        WoodFigure::Tracked => vec![figure("tracked", tracked(p)?)],
     })
 }
 
@@ -1146,15 +1164,15 @@ mod tests {
     use crate::models::woodpecker::map::{regime_index, Category, MAP_MU_D_MIN};
     use std::time::Instant;
 
-    const WOOD_KINDS: [FigureKind; 8] = [
-        FigureKind::WoodMotion { periods: 2.0 },
-        FigureKind::WoodSpring,
-        FigureKind::WoodForces,
-        FigureKind::WoodPhase { phase: 1 },
-        FigureKind::WoodPhase { phase: 2 },
-        FigureKind::WoodMuSweep { phase: 1 },
-        FigureKind::WoodMuSweep { phase: 2 },
-        FigureKind::WoodPositions,
+    const WOOD_KINDS: [WoodFigure; 8] = [
+        WoodFigure::Motion { periods: 2.0 },
+        WoodFigure::Spring,
+        WoodFigure::Forces,
+        WoodFigure::Phase { phase: 1 },
+        WoodFigure::Phase { phase: 2 },
+        WoodFigure::MuSweep { phase: 1 },
+        WoodFigure::MuSweep { phase: 2 },
+        WoodFigure::Positions,
     ];
 
     fn chart_of(f: &Figure) -> &LineChart {
@@ -1170,7 +1188,7 @@ mod tests {
         for kind in WOOD_KINDS {
             let figs = figures("s", &p, kind).unwrap();
             // The forces also zoomed on the slip onsets.
-            let expected = if kind == FigureKind::WoodForces { 2 } else { 1 };
+            let expected = if kind == WoodFigure::Forces { 2 } else { 1 };
             assert_eq!(figs.len(), expected, "{kind:?}");
             for f in &figs {
                 assert!(f.id.starts_with("s-") && !f.caption.is_empty(), "{kind:?}");
@@ -1200,7 +1218,7 @@ mod tests {
     #[test]
     fn motion_marks_both_phases_of_the_standard_regime_in_each_period() {
         let p = WoodpeckerParams::default();
-        let figs = figures("s", &p, FigureKind::WoodMotion { periods: 2.0 }).unwrap();
+        let figs = figures("s", &p, WoodFigure::Motion { periods: 2.0 }).unwrap();
         let chart = chart_of(&figs[0]);
         let count = |l: &str| chart.markers.iter().filter(|m| m.label == l).count();
         for l in ["t_SL(I)", "t_ST(I)", "t_SL(II)", "t_ST(II)"] {
@@ -1230,7 +1248,7 @@ mod tests {
     fn mu_sweep_draws_three_values_around_mu_d_min() {
         let p = WoodpeckerParams::default();
         for phase in [1u8, 2] {
-            let figs = figures("s", &p, FigureKind::WoodMuSweep { phase }).unwrap();
+            let figs = figures("s", &p, WoodFigure::MuSweep { phase }).unwrap();
             let chart = chart_of(&figs[0]);
             let curves = &chart.panels[0].curves;
             assert_eq!(curves.len(), 3, "phase {phase}");
@@ -1249,7 +1267,7 @@ mod tests {
             counterpart: Counterpart::Extremes,
             ..WoodpeckerParams::default()
         };
-        let figs = figures("s", &p, FigureKind::WoodSpring).unwrap();
+        let figs = figures("s", &p, WoodFigure::Spring).unwrap();
         let curves = &chart_of(&figs[0]).panels[0].curves;
         assert_eq!(curves.len(), 4);
         let style = |prefix: &str| {
@@ -1269,20 +1287,30 @@ mod tests {
             counterpart: Counterpart::Extremes,
             ..WoodpeckerParams::default()
         };
-        let figs = figures("s", &p, FigureKind::WoodMuSweep { phase: 1 }).unwrap();
+        let figs = figures("s", &p, WoodFigure::MuSweep { phase: 1 }).unwrap();
         let curves = &chart_of(&figs[0]).panels[0].curves;
         assert_eq!(curves.len(), 2);
         assert!(figs[0].caption.contains("above μs"), "{}", figs[0].caption);
     }
 
     #[test]
-    fn wrong_phase_is_an_error_and_pulled_kinds_give_nothing() {
+    fn wrong_phase_is_an_error_and_other_models_kinds_are_refused() {
+        use crate::present::vocab::{FigureKind, FigureKinds};
+        use crate::present::Present;
         let p = WoodpeckerParams::default();
-        assert!(figures("s", &p, FigureKind::WoodPhase { phase: 3 }).is_err());
-        assert!(figures("s", &p, FigureKind::WoodMotion { periods: f64::NAN }).is_err());
-        assert!(figures("s", &p, FigureKind::PulledForces)
-            .unwrap()
-            .is_empty());
+        assert!(figures("s", &p, WoodFigure::Phase { phase: 3 }).is_err());
+        assert!(figures("s", &p, WoodFigure::Motion { periods: f64::NAN }).is_err());
+        let other = FigureKind {
+            name: "pulled-forces",
+            arg: None,
+        };
+        assert!(p.figures_of("s", other).is_err());
+        let own = WoodFigure::Phase { phase: 2 }.kind();
+        assert_eq!(
+            WoodFigure::from_kind(own),
+            Some(WoodFigure::Phase { phase: 2 })
+        );
+        assert_eq!(p.figures_of("s", own).unwrap().len(), 1);
     }
 
     #[test]
@@ -1292,22 +1320,19 @@ mod tests {
             z0: 0.010,
             ..WoodpeckerParams::default()
         };
-        for kind in [
-            FigureKind::WoodMotion { periods: 1.0 },
-            FigureKind::WoodForces,
-        ] {
+        for kind in [WoodFigure::Motion { periods: 1.0 }, WoodFigure::Forces] {
             let figs = figures("s", &p, kind).unwrap();
             let chart = chart_of(&figs[0]);
             assert!(chart.panels.iter().all(|panel| !panel.curves.is_empty()));
         }
-        assert!(figures("s", &p, FigureKind::WoodPhase { phase: 1 }).is_err());
+        assert!(figures("s", &p, WoodFigure::Phase { phase: 1 }).is_err());
     }
 
     #[test]
     fn regime_maps_are_fine_and_the_harmonic_map_has_the_scene_in_double_slip_stick() {
         let p = WoodpeckerParams::default();
         let start = Instant::now();
-        let figs = figures("s", &p, FigureKind::WoodRegimeMap).unwrap();
+        let figs = figures("s", &p, WoodFigure::RegimeMap).unwrap();
         eprintln!(
             "woodpecker regime maps ({MAP_CELLS}×{MAP_CELLS}, {MAP_PERIODS} periods): {:.3} s",
             start.elapsed().as_secs_f64()

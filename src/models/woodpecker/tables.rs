@@ -7,11 +7,14 @@ use super::formula::Counterpart;
 use super::results::{self as woodpecker};
 use super::{quantity as wp, WoodpeckerParams};
 use crate::error::Result;
+use crate::models::paper::{LAW_WORDS, LINEARIZATION};
 use crate::models::param::num as pnum;
 use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };
+use crate::present::vocab::Comparison;
+use crate::present::Present;
 use crate::report::context::{
     blank, count, fill_checks, input, integration_regime, laws_table, opt, row, ParamRow,
     RegimeRow, SceneCtx,
@@ -95,7 +98,10 @@ pub(crate) fn scene_tables(scene: &Scene, p: &WoodpeckerParams) -> Result<SceneC
         .iter()
         .map(|(n, s)| (n.as_str(), s.as_ref()))
         .collect();
-    ctx.linearization = laws_table(&cols, pp.period);
+    ctx.linearization = Some(Comparison {
+        heading: LINEARIZATION.to_string(),
+        table: laws_table(&cols, pp.period),
+    });
     Ok(ctx)
 }
 
@@ -142,11 +148,16 @@ pub(crate) fn text(e: &woodpecker::Evaluation) -> String {
     if let Some(note) = &e.domain_note {
         let _ = writeln!(out, "closed forms do not apply: {note}");
     }
-    closed_form_table(&mut out, |k: wp::Key| c.get(k));
+    closed_form_table(&mut out, &LAW_WORDS, |k: wp::Key| c.get(k));
     if e.domain_note.is_none() {
         not_describing(&mut out, &e.applicability);
     }
-    checks_table(&mut out, &e.checks);
-    text_laws(&mut out, &e.harmonic, e.linear.as_ref());
+    checks_table(&mut out, &LAW_WORDS, &e.checks);
+    text_laws(
+        &mut out,
+        <WoodpeckerParams as Present>::LAWS,
+        &[Some(&e.harmonic), e.linear.as_ref()],
+        "its counterpart is undefined",
+    );
     out
 }

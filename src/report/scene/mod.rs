@@ -5,9 +5,9 @@
 use std::path::{Path, PathBuf};
 
 use crate::error::{Error, Result};
-use crate::models::{with_capability, Capability};
+use crate::models::{with_capability, Capability, Model};
 use crate::params::{Scenario, DEFAULT_PERIODS};
-pub use crate::present::vocab::{Drawing, Figure, FigureKind, Part, Scene};
+pub use crate::present::vocab::{Builtin, Drawing, Figure, FigureKind, Part, PartStory, Scene};
 use crate::present::Present;
 
 pub mod sampling;
@@ -27,7 +27,7 @@ impl Scene {
         Ok(Self {
             id: id.to_string(),
             title: scenario.title.clone(),
-            part: Part::Scenarios,
+            part: Part::SCENARIOS,
             why: String::new(),
             caption: caption.to_string(),
             description: scenario.description.trim().to_string(),
@@ -91,7 +91,7 @@ impl Scene {
     pub fn build_figures(&self) -> Result<Vec<Figure>> {
         let mut out = Vec::new();
         for kind in &self.figures {
-            let built = with_capability!(&self.setup, present, p => p.figures(&self.id, *kind)?,
+            let built = with_capability!(&self.setup, present, p => p.figures_of(&self.id, *kind)?,
                 else return Err(self.setup.missing(Capability::Present)));
             out.extend(built);
         }
@@ -117,320 +117,38 @@ pub fn page_name(stem: &str) -> String {
 /// Page names of the report itself, which no scene may take (compared in lower case).
 pub const RESERVED_PAGES: &[&str] = &["index", "all-scenes"];
 
-/// A built-in scene: a scenario file compiled into the binary and its place in the story.
-struct Builtin {
-    id: &'static str,
-    /// The figure(s) of the paper it reproduces, and what they show (unique).
-    title: &'static str,
-    part: Part,
-    why: &'static str,
-    file: &'static str,
-    text: &'static str,
-    caption: &'static str,
-    figures: &'static [FigureKind],
-    claims: &'static [u8],
-}
-
-macro_rules! scenario_file {
-    ($name:literal) => {
-        ($name, include_str!(concat!("../../../scenarios/", $name)))
-    };
-}
-
-const FIG05: (&str, &str) = scenario_file!("fig05-immediate-slip.toml");
-const FIG06: (&str, &str) = scenario_file!("fig06-continuous-slip.toml");
-const SET_B: (&str, &str) = scenario_file!("set-b-slip-stick.toml");
-const SET_C: (&str, &str) = scenario_file!("set-c-late-stick.toml");
-const FIG15: (&str, &str) = scenario_file!("fig15-double-slip-stick.toml");
-const FIG16: (&str, &str) = scenario_file!("fig16-no-intermediate-halt.toml");
-const FIG26: (&str, &str) = scenario_file!("fig26-tracked-toy.toml");
-const LAMBDA1: (&str, &str) = scenario_file!("lambda1-printed-formulas.toml");
-
-/// The title, part and why of a built-in scene.
-struct Story {
-    title: &'static str,
-    part: Part,
-    why: &'static str,
-}
-
-const fn pulled(title: &'static str, why: &'static str) -> Story {
-    Story {
-        title,
-        part: Part::PulledMass,
-        why,
+/// The parts of the reading path: each model that offers a presentation, numbered in the
+/// order of the registry, then the user's scenarios ([`Part::SCENARIOS`]).
+pub fn parts() -> Vec<(Model, Part)> {
+    fn story<M: Present>(_: &M) -> PartStory {
+        M::PART
     }
+    Model::offering(Capability::Present)
+        .into_iter()
+        .enumerate()
+        .filter_map(|(i, model)| {
+            let story = with_capability!(&model, present, p => story(p), else return None);
+            Some((
+                model,
+                Part {
+                    number: Some(i + 1),
+                    story,
+                },
+            ))
+        })
+        .collect()
 }
 
-const fn wood(title: &'static str, why: &'static str) -> Story {
-    Story {
-        title,
-        part: Part::Woodpecker,
-        why,
-    }
-}
-
-const fn builtin(
-    id: &'static str,
-    story: Story,
-    scenario: (&'static str, &'static str),
-    caption: &'static str,
-    figures: &'static [FigureKind],
-    claims: &'static [u8],
-) -> Builtin {
-    Builtin {
-        id,
-        title: story.title,
-        part: story.part,
-        why: story.why,
-        file: scenario.0,
-        text: scenario.1,
-        caption,
-        figures,
-        claims,
-    }
-}
-
-const BUILTINS: &[Builtin] = &[
-    builtin(
-        "fig05-immediate-slip",
-        pulled(
-            "Fig. 5: immediate slip",
-            "The simplest case sets the scale: a pull stronger than friction can ever hold, φ = F/W > 2μs.",
-        ),
-        FIG05,
-        "Immediate slip: F exceeds the largest static capacity 2μsW, so the mass slips at t = 0 \
-         and never sticks. Position, speed and acceleration under both laws.",
-        &[FigureKind::PulledMotion { periods: 2.0 }],
-        &[],
-    ),
-    builtin(
-        "fig06-continuous-slip",
-        pulled(
-            "Fig. 6: continuous slip",
-            "Friction brakes the block every period but never stops it: its speed oscillates about a steady drift.",
-        ),
-        FIG06,
-        "Non-immediate continuous slip (the paper's Fig. 6 set): the slip starts where F = μs N, \
-         the speed peaks where F = μd N, and the mass never comes back to rest.",
-        &[FigureKind::PulledMotion { periods: 2.0 }],
-        &[1],
-    ),
-    builtin(
-        "pulled-forces",
-        pulled(
-            "The pull against the friction limits",
-            "One picture decides the motion: where F crosses μs N the slip starts, where it crosses μd N the speed peaks.",
-        ),
-        SET_B,
-        "The competing forces: the pull F against the static capacity μs N(t) and the dynamic \
-         friction μd N(t). The slip starts where F crosses μs N (t_SL), the speed is largest \
-         where F = μd N (t_M), and the mass sticks at t_ST.",
-        &[FigureKind::PulledForces],
-        &[1],
-    ),
-    builtin(
-        "fig09-domain",
-        pulled(
-            "Fig. 9: where the block sticks, in the (μd, μs) plane",
-            "Which friction pairs give stick-slip, and the band where the paper's condition (20) misses a late stick.",
-        ),
-        FIG06,
-        "The (μd, μs) plane for the Fig. 6 value of φ = F/W: where the mass sticks in the same \
-         period (20), sticks late in the next period, or slips for ever, for the linear \
-         closed forms and for the exact harmonic integration; the analytic boundaries are drawn \
-         over the computed regimes.",
-        &[FigureKind::PulledDomain],
-        &[1],
-    ),
-    builtin(
-        "fig10-linear-slip-stick",
-        pulled(
-            "Fig. 10: slip-stick within one period",
-            "Textbook stick-slip: every characteristic time has a closed formula, each checked here against the integration.",
-        ),
-        SET_B,
-        "Slip-stick within one period (set B): position, speed and acceleration with the \
-         characteristic times of the closed forms.",
-        &[FigureKind::PulledMotion { periods: 1.5 }],
-        &[2],
-    ),
-    builtin(
-        "late-stick",
-        pulled(
-            "Late stick: the block stops in the next period",
-            "A motion the paper's Fig. 9 calls non-stick: the block halts early in the following period.",
-        ),
-        SET_C,
-        "Late stick (set C): (20) is violated, yet the mass stops early in the next period, \
-         before the next slip onset — the band the paper's Fig. 9 calls non-stick.",
-        &[FigureKind::PulledMotion { periods: 2.0 }],
-        &[1],
-    ),
-    builtin(
-        "fig11-position",
-        pulled(
-            "Fig. 11: ten periods of position and the mean speed",
-            "The staircase motion and its mean speed v̄, the number an experiment measures.",
-        ),
-        SET_B,
-        "Position over ten periods and the line of slope v̄ through the slip onsets.",
-        &[FigureKind::PulledLongRun],
-        &[2, 7],
-    ),
-    builtin(
-        "fig12-harmonic-vs-linear",
-        pulled(
-            "Fig. 12: the harmonic law against its linearization",
-            "What the triangle-wave approximation changes in the motion: the price of closed formulas.",
-        ),
-        SET_B,
-        "Speed and acceleration of the harmonic law against its linearization, in the settled \
-         motion.",
-        &[FigureKind::PulledCompare],
-        &[3],
-    ),
-    builtin(
-        "fig15-double-slip-stick",
-        wood(
-            "Fig. 15: double slip-stick of the falling woodpecker",
-            "The toy as it works: two slips and two halts per swing of the bird.",
-        ),
-        FIG15,
-        "The falling woodpecker (Fig. 15 set): two slips and two sticks per period under both \
-         laws. Sleeve position and speed with the characteristic times.",
-        &[FigureKind::WoodMotion { periods: 2.0 }],
-        &[8],
-    ),
-    builtin(
-        "fig16-no-intermediate-halt",
-        wood(
-            "Fig. 16: no intermediate halt under the harmonic law (z0 = 7.1 mm)",
-            "Regime boundaries are sharp: 0.1 mm of spring set-up changes the motion.",
-        ),
-        FIG16,
-        "A 0.1 mm larger z0 removes the intermediate halt of the harmonic law: one slip per \
-         period with two speed maxima.",
-        &[FigureKind::WoodMotion { periods: 2.0 }],
-        &[8],
-    ),
-    builtin(
-        "fig17-spring-coordinate",
-        wood(
-            "Fig. 17: the spring coordinate and its linear counterparts",
-            "Three ways to replace the bird's harmonic swing by a triangle wave, and how far each is off.",
-        ),
-        FIG15,
-        "The spring coordinate of the harmonic law against its three linear counterparts \
-         (same extremes, same zeros, same zeros and slopes).",
-        &[FigureKind::WoodSpring],
-        &[3],
-    ),
-    builtin(
-        "fig18-forces",
-        wood(
-            "Fig. 18: the driving force against the grip",
-            "Why the sleeve slips: its weight and the spring force against the friction the lever can hold.",
-        ),
-        FIG15,
-        "The driving force W_S + F_e against the static capacity 2λμs|F_e| (and the dynamic \
-         friction 2λμd|F_e|): the slip of phase I starts where they cross.",
-        &[FigureKind::WoodForces],
-        &[],
-    ),
-    builtin(
-        "fig19-phase-one",
-        wood(
-            "Fig. 19: phase I step by step",
-            "The first slip of each period, with each of its characteristic times.",
-        ),
-        FIG15,
-        "Phase I of the linear law: acceleration, speed and position with t_SL, t0, t_M, t_ST.",
-        &[FigureKind::WoodPhase { phase: 1 }],
-        &[5],
-    ),
-    builtin(
-        "fig20-mu-d-min-one",
-        wood(
-            "Fig. 20: the critical dynamic friction of phase I",
-            "The friction μd,MIN at which the sleeve stops exactly at half a period.",
-        ),
-        FIG15,
-        "Phase I for μd below, at and above μd,MIN^(I): at the critical value the sleeve \
-         stops exactly at T/2.",
-        &[FigureKind::WoodMuSweep { phase: 1 }],
-        &[4, 5],
-    ),
-    builtin(
-        "phase-two",
-        wood(
-            "Phase II and its critical dynamic friction",
-            "The second slip of the period, and the friction μd,MIN at which it ends at the period's end.",
-        ),
-        FIG15,
-        "Phase II likewise: acceleration, speed and position, and μd below, at and above \
-         μd,MIN^(II).",
-        &[
-            FigureKind::WoodPhase { phase: 2 },
-            FigureKind::WoodMuSweep { phase: 2 },
-        ],
-        &[4],
-    ),
-    builtin(
-        "fig23-positions",
-        wood(
-            "Fig. 23: sleeve and bird positions",
-            "The bird swings about the falling sleeve: the motion the eye follows on the real toy.",
-        ),
-        FIG15,
-        "Sleeve and woodpecker positions and the sleeve speed (harmonic law): the bird \
-         oscillates about the falling sleeve.",
-        &[FigureKind::WoodPositions],
-        &[7],
-    ),
-    builtin(
-        "fig26-tracked-toy",
-        wood(
-            "Figs. 26-27: the parameters of the tracked toy",
-            "The model with the parameters of a real, video-tracked toy.",
-        ),
-        FIG26,
-        "The tracked toy's parameters (Figs. 26–27): sleeve position and speed under both laws, \
-         and a tracked track (synthetic here: the paper does not give its tracked data) with \
-         the harmonic law fitted to it, as `stickslip fit` does for your own video.",
-        &[FigureKind::WoodMotion { periods: 3.0 }, FigureKind::WoodTracked],
-        &[3, 8],
-    ),
-    builtin(
-        "woodpecker-regime-map",
-        wood(
-            "The woodpecker's regimes in the (μd, z0) plane",
-            "Where the toy halts twice, once or never, and how well the closed-form boundaries find it.",
-        ),
-        FIG15,
-        "Regimes in the (μd, z0) plane: the linear orbit (closed forms) and the harmonic law \
-         (exact integration), with the analytic boundaries μd,MIN and μd,HALT of both phases.",
-        &[FigureKind::WoodRegimeMap],
-        &[4, 5, 6],
-    ),
-    builtin(
-        "lambda1-printed-formulas",
-        wood(
-            "The printed formulas (λ = 1): a sleeve that never halts",
-            "The paper's formulas as printed leave out the lever: with them the toy would not work.",
-        ),
-        LAMBDA1,
-        "The printed formulas (λ = 1, N = |F_e|): with the paper's friction values the sleeve \
-         never sticks.",
-        &[FigureKind::WoodMotion { periods: 2.0 }],
-        &[8],
-    ),
-];
-
-/// The built-in scenes of the default report, in order.
+/// The built-in scenes of the default report, in order: each model's
+/// ([`Present::builtin_scenes`]) in the order of the registry.
 pub fn builtin_scenes() -> Result<Vec<Scene>> {
-    BUILTINS
-        .iter()
-        .map(|b| {
+    fn of<M: Present>(_: &M) -> Vec<Builtin> {
+        M::builtin_scenes()
+    }
+    let mut scenes = Vec::new();
+    for (model, part) in parts() {
+        let builtins = with_capability!(&model, present, p => of(p), else Vec::new());
+        for b in builtins {
             let path = Path::new("scenarios").join(b.file);
             let scenario = Scenario::parse(b.text, &path)?;
             let scene = Scene::from_scenario(
@@ -438,17 +156,18 @@ pub fn builtin_scenes() -> Result<Vec<Scene>> {
                 &scenario,
                 &path,
                 b.caption,
-                b.figures.to_vec(),
+                b.figures,
                 b.claims.to_vec(),
             )?;
-            Ok(Scene {
+            scenes.push(Scene {
                 title: b.title.to_string(),
-                part: b.part,
+                part,
                 why: b.why.to_string(),
                 ..scene
-            })
-        })
-        .collect()
+            });
+        }
+    }
+    Ok(scenes)
 }
 
 #[cfg(test)]
@@ -476,13 +195,9 @@ mod tests {
         assert_eq!(titles.len(), scenes.len());
         for s in &scenes {
             assert!(s.why.ends_with('.') && s.why.len() > 40, "{}", s.id);
-            assert_ne!(s.part, Part::Scenarios, "{}", s.id);
-            let model = if s.part == Part::PulledMass {
-                "pulled-mass"
-            } else {
-                "woodpecker"
-            };
-            assert_eq!(s.setup.id(), model, "{}", s.id);
+            assert_ne!(s.part, Part::SCENARIOS, "{}", s.id);
+            let (model, _) = parts().into_iter().find(|(_, p)| *p == s.part).unwrap();
+            assert_eq!(s.setup.id(), model.id(), "{}", s.id);
         }
     }
 }
