@@ -22,6 +22,7 @@ pub const DIGITS: usize = 4;
 pub enum Func {
     Sqrt,
     Arcsin,
+    Arctan,
 }
 
 /// A closed form as a tree. Leaves are exact integers, named constants (π) and quantities
@@ -96,6 +97,11 @@ pub fn sqrt(e: Expr) -> Expr {
 /// arcsin e.
 pub fn arcsin(e: Expr) -> Expr {
     Expr::Apply(Func::Arcsin, Box::new(e))
+}
+
+/// arctan e.
+pub fn arctan(e: Expr) -> Expr {
+    Expr::Apply(Func::Arctan, Box::new(e))
 }
 
 /// max(a, b).
@@ -205,6 +211,7 @@ impl Expr {
             Expr::Pow(e, n, d) => e.eval().powf(f64::from(*n) / f64::from(*d)),
             Expr::Apply(Func::Sqrt, e) => e.eval().sqrt(),
             Expr::Apply(Func::Arcsin, e) => e.eval().asin(),
+            Expr::Apply(Func::Arctan, e) => e.eval().atan(),
             Expr::Max(a, b) => a.eval().max(b.eval()),
         }
     }
@@ -283,6 +290,9 @@ impl Expr {
             Expr::Apply(Func::Sqrt, e) => (format!(r"\sqrt{{{}}}", e.child(mode, 0)), prec::ATOM),
             Expr::Apply(Func::Arcsin, e) => {
                 (format!(r"\arcsin{}", paren(&e.child(mode, 0))), prec::ATOM)
+            }
+            Expr::Apply(Func::Arctan, e) => {
+                (format!(r"\arctan{}", paren(&e.child(mode, 0))), prec::ATOM)
             }
             Expr::Max(a, b) => (
                 format!(
