@@ -13,18 +13,25 @@
 //! results.rs   the evaluation: closed forms, the exact integration's last cycle, checks
 //! scene.rs     the figures: x(t) and v(t) with the belt's speed, the phase portrait
 //! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase
+//! present.rs   the presentation (report part, tables, derivation, handout, text, CSV)
+//! scenes.rs    the built-in scenes of the report (scenarios/belt-*.toml)
+//! lang/        its words in each language of the handouts
 //! ```
 //!
-//! The belt has no presentation capabilities yet (report, worksheet, explorer), only the
-//! sketch and the figures a presentation will show: the commands that need them refuse it.
+//! The belt offers the `present` capability (report, handout, sweep, eval's tables); the
+//! commands that need another (worksheet, explorer, claims) refuse it.
 
 pub mod body;
 pub mod formula;
 pub mod params;
+#[cfg(feature = "cli")]
+pub mod present;
 pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
+#[cfg(feature = "cli")]
+mod scenes;
 #[cfg(feature = "cli")]
 pub mod sketch;
 
