@@ -14,6 +14,45 @@ fn default_report() -> Vec<OutFile> {
     render(&builtin_scenes().unwrap(), &[Format::Html, Format::Md]).unwrap()
 }
 
+/// The belt's part: its pages exist in both formats, check every closed form against its own
+/// integration, and carry none of the paper's words for its two laws or its two models (the
+/// words of another model on a page were once served silently).
+#[test]
+fn the_belts_pages_are_its_own() {
+    let files = default_report();
+    let index = rendered(&files, "index.md");
+    assert!(index.contains("Part 3. The textbook oscillator"), "{index}");
+    for id in ["belt-textbook", "belt-touching", "belt-fast"] {
+        for ext in ["html", "md"] {
+            let page = rendered(&files, &format!("{id}.{ext}"));
+            assert!(
+                page.contains("Part 3. The textbook oscillator"),
+                "{id}.{ext}"
+            );
+            assert!(
+                page.contains("exact integration of the same autonomous system"),
+                "{id}.{ext}"
+            );
+            // The words of the page, not its style sheet (whose classes name the tables).
+            let body = page.split_once("</style>").map_or(page, |(_, b)| b);
+            let lower = body.to_lowercase();
+            for word in [
+                "lineari",
+                "pulled mass",
+                "woodpecker",
+                "harmonic law",
+                "triangle",
+            ] {
+                assert!(!lower.contains(word), "{id}.{ext}: {word}");
+            }
+            assert!(page.contains("16 / 16"), "{id}.{ext}");
+        }
+        assert!(files
+            .iter()
+            .any(|f| f.path.to_string_lossy() == format!("figures/{id}-phase.svg")));
+    }
+}
+
 #[test]
 fn markdown_pages_match_their_snapshots() {
     let files = default_report();
@@ -112,15 +151,16 @@ fn every_default_scene_passes_all_its_checks() {
     let files = default_report();
     let index = rendered(&files, "index.md");
     let summary = index
-        .split("counted once per parameter set (8 sets): **")
+        .split("counted once per parameter set (11 sets): **")
         .nth(1)
         .and_then(|s| s.split("**").next())
-        .unwrap_or_else(|| panic!("no summary of the 8 parameter sets in {index}"));
+        .unwrap_or_else(|| panic!("no summary of the 11 parameter sets in {index}"));
     let (passed, total) = summary.split_once(" / ").unwrap();
     assert_eq!(passed, total, "{summary}");
-    // Counted once per set: the Fig. 15 set's 18 checks once, not eight times (254).
+    // Counted once per set: the Fig. 15 set's 18 checks once, not eight times (254); the
+    // paper's 8 sets (89 checks) and the belt's 3 (16 each).
     let total: usize = total.parse().unwrap();
-    assert!((80..120).contains(&total), "{summary}");
+    assert!((120..160).contains(&total), "{summary}");
 }
 
 /// The index is a reading path: the two parts of the paper in order, each scene once with a
@@ -159,8 +199,8 @@ fn the_index_is_a_reading_path_through_the_paper() {
     }
 }
 
-/// The lecture notes show each parameter set's tables once: 8 verification tables for the 19
-/// scenes, and each claim once.
+/// The lecture notes show each parameter set's tables once: 11 verification tables for the 22
+/// scenes (8 sets of the paper, 3 of the belt), and each claim once.
 #[test]
 fn the_lecture_notes_share_tables_once() {
     let files = default_report();
@@ -170,7 +210,7 @@ fn the_lecture_notes_share_tables_once() {
         notes.matches("<section class=\"scene\"").count(),
         scenes.len()
     );
-    assert_eq!(notes.matches("<table class=\"verification\">").count(), 8);
+    assert_eq!(notes.matches("<table class=\"verification\">").count(), 11);
     for claim in 1..=8 {
         assert!(
             notes.matches(&format!("<strong>Claim {claim}:")).count() <= 1,

@@ -371,3 +371,20 @@ fn the_working_of_a_step_is_its_chain_of_earlier_steps() {
     let symbols: Vec<&str> = working(&steps, t_slip).iter().map(|s| s.symbol).collect();
     assert!(symbols.contains(&"T"), "{symbols:?}");
 }
+
+/// arctan (the belt's slip time (B8)) evaluates as `f64::atan`, renders as `\arctan` around its
+/// argument in both the symbols and the numbers, and converts to MathML.
+#[test]
+fn arctan_evaluates_and_renders_in_both_modes() {
+    use crate::derivation::expr::{arctan, given, var};
+    let e = arctan(var(r"\omega", 10.0) * given(r"\Delta", 0.01962) / given("v_b", 0.05));
+    assert!((e.eval() - 3.924f64.atan()).abs() < 1e-15);
+    assert_eq!(
+        e.symbols(),
+        r"\arctan\left(\frac{\omega \Delta}{v_b}\right)"
+    );
+    assert!(e.numbers().starts_with(r"\arctan\left("), "{}", e.numbers());
+    assert!(e.numbers().contains("0.01962"), "{}", e.numbers());
+    renders(&e.symbols());
+    renders(&e.numbers());
+}

@@ -7,10 +7,9 @@
 use crate::derivation::{Expr, Step, StepKey, Value};
 use crate::error::Result;
 use crate::models::Physics;
-use crate::results::Summary;
 use vocab::{
-    Builtin, Figure, FigureKind, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase,
-    Scene, SceneCtx,
+    Builtin, Figure, FigureKind, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile,
+    PartStory, Phase, Scene, SceneCtx,
 };
 
 pub mod spec;
@@ -37,10 +36,10 @@ pub struct DefaultSweep {
 
 /// The runs of an evaluation as a sweep or a table reads them: one per law of
 /// [`Present::LAWS`], in that order.
-pub struct Laws<'a> {
-    /// The summary of each law's run; `None` where the law does not exist for the parameters
+pub struct Laws {
+    /// The outcome of each law's run; `None` where the law does not exist for the parameters
     /// (the woodpecker's linear law with an undefined counterpart).
-    pub runs: Vec<Option<&'a Summary>>,
+    pub runs: Vec<Option<LawPoint>>,
     /// The regime id of the closed forms.
     pub closed_form_regime: &'static str,
 }
@@ -49,6 +48,9 @@ pub struct Laws<'a> {
 pub trait Present: Physics {
     /// What the sketch of the apparatus shows, for its caption ("the block on the table …").
     const SKETCH_WHAT: &'static str;
+    /// The instant whose forces the report's sketch ([`Phase::Slipping`]) draws, for its
+    /// caption.
+    const SKETCH_WHEN: &'static str = "at the slip onset";
     /// The sweep of `stickslip sweep` without a model.
     const SWEEP: DefaultSweep;
     /// The model's part of the report: its title and story.
@@ -110,7 +112,7 @@ pub trait Present: Physics {
     /// A sketch of the apparatus with these parameters and the forces of `phase` (SVG).
     fn sketch(&self, phase: Phase) -> String;
     /// The laws of an evaluation.
-    fn laws(e: &Self::Evaluation) -> Laws<'_>;
+    fn laws(e: &Self::Evaluation) -> Laws;
     /// The evaluation as terminal tables.
     fn text(e: &Self::Evaluation) -> String;
     /// The evaluation, and the CSV files of its runs (time series and events of both laws).

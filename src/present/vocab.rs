@@ -80,6 +80,30 @@ pub struct LawName {
     pub name: &'static str,
 }
 
+/// The outcome of one law of an evaluation as a sweep reads it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LawPoint {
+    /// Mean speed of the settled orbit (m/s); `None` when no periodic orbit was found.
+    pub v_avg: Option<f64>,
+    /// Slips and sticks per period (per cycle of an autonomous model).
+    pub slips: u32,
+    pub sticks: u32,
+    /// The regime's id (the model's [`crate::models::Physics::regime_words`] names it).
+    pub regime: &'static str,
+}
+
+impl LawPoint {
+    /// The point of a run of a time-periodic law.
+    pub fn of(s: &crate::results::Summary) -> Self {
+        Self {
+            v_avg: s.v_avg,
+            slips: s.slips_per_period,
+            sticks: s.sticks_per_period,
+            regime: s.regime.id(),
+        }
+    }
+}
+
 /// How a model's pages and tables name what its closed forms are checked against.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct LawWords {

@@ -3,7 +3,7 @@
 
 use crate::error::Result;
 use crate::handout::physics::equation_of_motion;
-use crate::models::{with_capability, Capability, Model};
+use crate::models::{with_capability, Model};
 use crate::output::format::{people, people_rel, people_tolerance};
 pub use crate::present::vocab::{
     ClaimCtx, Comparison, FigureCtx, LawWords, MotionLine, ParamRow, RegimeRow, SceneCtx, Table,
@@ -20,20 +20,22 @@ pub(crate) const DIGITS: usize = 8;
 
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
-    let missing = || scene.setup.missing(Capability::Present);
-    fn sketch<M: Present>(p: &M) -> (&'static str, String, LawWords) {
-        (M::SKETCH_WHAT, p.sketch(Phase::Slipping), M::LAW_WORDS)
+    fn sketch<M: Present>(p: &M) -> (&'static str, &'static str, String, LawWords) {
+        (
+            M::SKETCH_WHAT,
+            M::SKETCH_WHEN,
+            p.sketch(Phase::Slipping),
+            M::LAW_WORDS,
+        )
     }
     let mut ctx = with_capability!(&scene.setup, present, p => p.scene_tables(scene)?,
-        else return Err(missing()));
-    let (what, svg, words) =
-        with_capability!(&scene.setup, present, p => sketch(p), else return Err(missing()));
+        else return Err(scene.setup.missing(crate::models::Capability::Present)));
+    let (what, when, svg, words) = with_capability!(&scene.setup, present, p => sketch(p), else return Err(scene.setup.missing(crate::models::Capability::Present)));
     ctx.words = words;
     ctx.sketch = FigureCtx {
         id: format!("{}-apparatus", scene.id),
         caption: format!(
-            "The apparatus with this page's parameters, {what}; forces at the slip onset, to \
-             scale."
+            "The apparatus with this page's parameters, {what}; forces {when}, to scale."
         ),
         svg,
         file: format!("figures/{}-apparatus.svg", scene.id),

@@ -21,8 +21,8 @@ use crate::error::{Error, Result};
 use crate::models::param::{invalid, num};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::present::vocab::LawName;
+pub use crate::present::vocab::LawPoint;
 use crate::present::Present;
-use crate::results::Summary;
 
 pub use render::{render, summary_line};
 
@@ -72,27 +72,6 @@ pub struct GridSpec {
     pub steps: u32,
     /// Periods integrated at each point.
     pub periods: u32,
-}
-
-/// The outcome of one law at one point.
-#[derive(Clone, Debug, PartialEq)]
-pub struct LawPoint {
-    /// Mean speed of the settled orbit (m/s); `None` when no periodic orbit was found.
-    pub v_avg: Option<f64>,
-    pub slips: u32,
-    pub sticks: u32,
-    pub regime: &'static str,
-}
-
-impl LawPoint {
-    fn of(s: &Summary) -> Self {
-        Self {
-            v_avg: s.v_avg,
-            slips: s.slips_per_period,
-            sticks: s.sticks_per_period,
-            regime: s.regime.id(),
-        }
-    }
 }
 
 /// One grid point: `None` laws when the parameter set is invalid (or when a law does not
@@ -278,8 +257,7 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
     fn laws<M: Present>(p: &M, periods: u32) -> Result<Laws> {
         let e = p.evaluate(periods)?;
         let laws = M::laws(&e);
-        let runs = laws.runs.iter().map(|r| r.map(LawPoint::of)).collect();
-        Ok((runs, laws.closed_form_regime))
+        Ok((laws.runs, laws.closed_form_regime))
     }
     let evaluated = with_capability!(model, present, p => laws(p, periods),
         else return Err(model.missing(Capability::Present)));

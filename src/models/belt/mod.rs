@@ -15,12 +15,16 @@
 //! sketch.rs    the sketch of the apparatus with the balanced forces of the stated phase, and its
 //!              geometry for the explorer's animation
 //! derivation.rs the worked substitutions of every closed form (handout, answer keys)
+//! teaching.rs  how a handout explains the equation of motion and each derivation step
+//! present.rs   the presentation (report part, tables, handout, text, CSV)
+//! scenes.rs    the built-in scenes of the report (scenarios/belt-*.toml)
+//! lang/        its words in each language of the handouts
 //! explore.rs   what the explorer page asks (`Explore`): regime sentence, curves, map
 //! map.rs       the (μd, v_b) regime map from the closed forms
-//! teaching.rs  how a handout explains the equation of motion and each derivation step
 //! ```
 //!
-//! The belt offers the explorer; the commands that need a capability it lacks refuse it.
+//! The belt offers the `present` and `explore` capabilities (report, handout, sweep, eval's
+//! tables, the explorer page); the commands that need another (worksheet, claims) refuse it.
 
 pub mod body;
 #[cfg(feature = "cli")]
@@ -29,10 +33,14 @@ pub mod explore;
 pub mod formula;
 pub mod map;
 pub mod params;
+#[cfg(feature = "cli")]
+pub mod present;
 pub mod quantity;
 pub mod results;
 #[cfg(feature = "cli")]
 pub mod scene;
+#[cfg(feature = "cli")]
+mod scenes;
 #[cfg(feature = "cli")]
 pub mod sketch;
 #[cfg(feature = "cli")]

@@ -7,8 +7,8 @@ use crate::error::Result;
 use crate::export::law_files;
 use crate::models::paper;
 use crate::present::vocab::{
-    Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
-    SceneCtx,
+    Builtin, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory, Phase,
+    Scene, SceneCtx,
 };
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 
@@ -97,9 +97,12 @@ impl Present for PulledMassParams {
         sketch::pulled_mass(self, phase)
     }
 
-    fn laws(e: &results::Evaluation) -> Laws<'_> {
+    fn laws(e: &results::Evaluation) -> Laws {
         Laws {
-            runs: vec![Some(&e.harmonic), Some(&e.linear)],
+            runs: vec![
+                Some(LawPoint::of(&e.harmonic)),
+                Some(LawPoint::of(&e.linear)),
+            ],
             closed_form_regime: e.closed_form.regime.id(),
         }
     }

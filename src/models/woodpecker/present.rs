@@ -11,8 +11,8 @@ use crate::export::law_files;
 use crate::models::paper;
 use crate::models::LawKind;
 use crate::present::vocab::{
-    Builtin, Figure, FigureKinds, LawName, LawWords, Note, OutFile, PartStory, Phase, Scene,
-    SceneCtx,
+    Builtin, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory, Phase,
+    Scene, SceneCtx,
 };
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 
@@ -102,9 +102,12 @@ impl Present for WoodpeckerParams {
         sketch::woodpecker(self, phase)
     }
 
-    fn laws(e: &results::Evaluation) -> Laws<'_> {
+    fn laws(e: &results::Evaluation) -> Laws {
         Laws {
-            runs: vec![Some(&e.harmonic), e.linear.as_ref()],
+            runs: vec![
+                Some(LawPoint::of(&e.harmonic)),
+                e.linear.as_ref().map(LawPoint::of),
+            ],
             closed_form_regime: e.closed_form.regime.id(),
         }
     }

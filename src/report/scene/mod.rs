@@ -123,18 +123,14 @@ pub fn parts() -> Vec<(Model, Part)> {
     fn story<M: Present>(_: &M) -> PartStory {
         M::PART
     }
+    let story_of = |model: &Model| with_capability!(model, present, p => Some(story(p)), else None);
     Model::offering(Capability::Present)
         .into_iter()
+        .filter_map(|model| Some((model, story_of(&model)?)))
         .enumerate()
-        .filter_map(|(i, model)| {
-            let story = with_capability!(&model, present, p => story(p), else return None);
-            Some((
-                model,
-                Part {
-                    number: Some(i + 1),
-                    story,
-                },
-            ))
+        .map(|(i, (model, story))| {
+            let number = Some(i + 1);
+            (model, Part { number, story })
         })
         .collect()
 }
