@@ -6,7 +6,7 @@ use super::quantity::Key as B;
 use crate::derivation::StepKey;
 use crate::present::vocab::Note::{self, Label, Sentence};
 
-/// (LaTeX, sentence) lines of the belt: docs/belt.md §16.1–16.3.
+/// (LaTeX, sentence) lines of the belt: guide §16.1–16.3.
 pub const EQUATION_OF_MOTION: &[(&str, &str)] = &[
     (
         r"m\,\ddot x = -k\,x + f, \quad N = W = mg",
