@@ -400,7 +400,7 @@ fn worksheets_and_answer_keys_print_one_student_per_page() {
         return;
     };
     let dir = tempfile::tempdir().unwrap();
-    for model in ["pulled-mass", "woodpecker"] {
+    for model in ["pulled-mass", "woodpecker", "belt"] {
         let out = dir.path().join(model);
         let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
             .args(["worksheet", "--model", model, "--students", "3", "--pdf"])

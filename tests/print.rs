@@ -213,7 +213,7 @@ fn every_printed_word_is_at_least_8_pt() {
             );
             pdfs.push(out.join(format!("{scene}.pdf")));
         }
-        for model in ["pulled-mass", "woodpecker"] {
+        for model in ["pulled-mass", "woodpecker", "belt"] {
             let out = dir.join(format!("{model}-{lang}"));
             stickslip(
                 &[

@@ -488,7 +488,7 @@ fn every_relative_link_of_the_reports_resolves_and_the_keys_are_linked() {
     assert!(dead.is_empty(), "dead links:\n{}", dead.join("\n"));
 
     let read = |p: &str| std::fs::read_to_string(root.join(p)).unwrap();
-    for model in ["pulled-mass", "woodpecker"] {
+    for model in ["pulled-mass", "woodpecker", "belt"] {
         let folder = format!("worksheets/{model}");
         assert!(read("index.html")
             .contains(&format!("{folder}/answer-key.html").replace('/', "&#x2F;")));

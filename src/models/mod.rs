@@ -215,7 +215,7 @@ macro_rules! registry {
 registry! {$
     PulledMass(pulled_mass::PulledMassParams) [present explore exercise claims],
     Woodpecker(woodpecker::WoodpeckerParams) [present explore exercise claims],
-    Belt(belt::BeltParams) [present explore],
+    Belt(belt::BeltParams) [present explore exercise],
     // A test build's fourth model: its folder and this line, nothing else (README).
     #[cfg(test)]
     Dummy(dummy::DummyParams) [],

@@ -12,7 +12,7 @@ use super::question::{Kind, Question};
 use crate::derivation::{Step, StepKey};
 use crate::engine::Run;
 use crate::error::Result;
-use crate::models::{with_capability, Capability, Model};
+use crate::models::{with_capability, Model};
 use crate::params::DEFAULT_PERIODS;
 use crate::present::Present;
 use crate::results::quantity::AnyKey;
@@ -75,7 +75,7 @@ struct Evaluated {
 
 fn evaluate(case: &Model, record_segments: bool) -> Result<Evaluated> {
     let (checks, linear) = with_capability!(case, exercise, p => p.checks_and_linear_run(DEFAULT_PERIODS, record_segments)?,
-            else return Err(case.missing(Capability::Exercise)));
+            else return Err(case.missing(crate::models::Capability::Exercise)));
     Ok(Evaluated { checks, linear })
 }
 
@@ -123,7 +123,7 @@ pub fn answer(
             Kind::ClosedForm(key) => measured(question, steps, &evaluated, key),
             Kind::Threshold(key) => {
                 with_capability!(case, exercise, p => p.threshold(question, steps, key)?,
-                    else return Err(case.missing(Capability::Exercise)))
+                    else return Err(case.missing(crate::models::Capability::Exercise)))
             }
             Kind::Regime(key) => regime(question, case, steps, &evaluated, key),
             Kind::ReadFigure(key) => {

@@ -15,7 +15,7 @@ use crate::derivation::{self, Step};
 use crate::error::Result;
 use crate::lang::phrases::Translator;
 use crate::lang::{Catalogue, Lang};
-use crate::models::{with_capability, with_model, Capability, Model, Physics};
+use crate::models::{with_capability, with_model, Model, Physics};
 use crate::output::format::{figures, people, people_rel};
 use crate::report::context::regime_words;
 use crate::report::figures::style::with_text;
@@ -295,7 +295,7 @@ fn sketch_file(number: u32) -> String {
 /// words of `lang`.
 fn sketch(case: &Model, lang: Lang) -> Result<String> {
     let svg = with_capability!(case, exercise, p => p.sketch_givens(),
-        else return Err(case.missing(Capability::Exercise)));
+        else return Err(case.missing(crate::models::Capability::Exercise)));
     Ok(Translator::new(lang)?.svg(&svg))
 }
 
@@ -557,6 +557,7 @@ pub fn render(w: &Worksheets, formats: &[Format], lang: Lang) -> Result<Vec<OutF
 mod tests {
     use super::*;
     use crate::derivation::unit_tex;
+    use crate::models::Capability;
 
     #[test]
     fn every_rule_and_question_symbol_renders_to_mathml() {

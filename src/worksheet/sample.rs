@@ -7,7 +7,7 @@ use crate::draws::Draws;
 use super::exercise::Exercise;
 use super::question::Regime;
 use crate::error::Result;
-use crate::models::{with_capability, Capability, Model};
+use crate::models::{with_capability, Model};
 
 /// `x` to three significant figures, as the nearest f64 of the shortest decimal (0.437, 45.2).
 pub fn round3(x: f64) -> f64 {
@@ -21,12 +21,13 @@ pub fn draw(model: Model, regime: Regime, rng: &mut Draws) -> Result<Model> {
         M::draw(regime, rng).into_model()
     }
     with_capability!(&model, exercise, p => Ok(draw_as(p, regime, rng)),
-        else Err(model.missing(Capability::Exercise)))
+        else Err(model.missing(crate::models::Capability::Exercise)))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::Capability;
     use crate::worksheet::question;
 
     #[test]

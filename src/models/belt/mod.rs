@@ -16,6 +16,7 @@
 //!              geometry for the explorer's animation
 //! derivation.rs the worked substitutions of every closed form (handout, answer keys)
 //! teaching.rs  how a handout explains the equation of motion and each derivation step
+//! exercise.rs  the worksheet (`Exercise`): questions, regimes, drawn and probed sets
 //! present.rs   the presentation (report part, tables, handout, text, CSV)
 //! scenes.rs    the built-in scenes of the report (scenarios/belt-*.toml)
 //! lang/        its words in each language of the handouts
@@ -23,12 +24,14 @@
 //! map.rs       the (μd, v_b) regime map from the closed forms
 //! ```
 //!
-//! The belt offers the `present` and `explore` capabilities (report, handout, sweep, eval's
-//! tables, the explorer page); the commands that need another (worksheet, claims) refuse it.
+//! The belt offers the `present`, `explore` and `exercise` capabilities (report, handout, sweep,
+//! eval's tables, the explorer page, worksheet, check); `claims` refuses it.
 
 pub mod body;
 #[cfg(feature = "cli")]
 pub mod derivation;
+#[cfg(feature = "cli")]
+mod exercise;
 pub mod explore;
 pub mod formula;
 pub mod map;

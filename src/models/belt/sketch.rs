@@ -201,68 +201,7 @@ pub fn belt(p: &BeltParams, phase: Phase) -> String {
     );
     let drawn_at = at.words.replace("x_s", "x_{s}").replace("x_d", "x_{d}");
     s.text(10.0, 52.0, "start", FONT, &format!("drawn at {drawn_at}"));
-    let belt_top = lower;
-    let a = APPARATUS;
-    let wall_face = a.wall_x + a.wall_width;
-    s.rect(
-        a.wall_x,
-        belt_top - a.wall_height,
-        a.wall_width,
-        a.wall_height,
-        0.3,
-        1.4,
-    );
-    let (bw, bh) = (a.block_width, a.block_height);
-    let block_x = a.block_x;
-    s.rect(block_x, belt_top - bh, bw, bh, 0.12, 1.6);
-    s.text(
-        block_x + bw / 2.0,
-        belt_top - bh / 2.0 + 7.0,
-        "middle",
-        FONT,
-        "m",
-    );
-    zigzag(
-        &mut s,
-        wall_face,
-        block_x,
-        belt_top - bh / 2.0,
-        a.coils,
-        a.coil_half,
-    );
-    s.text(
-        (wall_face + block_x) / 2.0,
-        belt_top - bh / 2.0 - 18.0,
-        "middle",
-        FONT,
-        &format!("k = {}", plain(p.k, "N/m")),
-    );
-    // The belt: a band over two rollers, its speed along the top.
-    let (r, belt_right) = (a.roller_r, a.belt_left + a.belt_length);
-    s.rect(
-        a.belt_left,
-        belt_top,
-        a.belt_length,
-        a.belt_height,
-        0.18,
-        1.2,
-    );
-    s.circle_styled(a.belt_left + r, belt_top + r, r, INK, 0.15, 1.2);
-    s.circle_styled(belt_right - r, belt_top + r, r, INK, 0.15, 1.2);
-    s.arrow(
-        Some("belt-speed"),
-        (60.0, belt_top + 36.0),
-        (150.0, belt_top + 36.0),
-        ORANGE,
-        3.0,
-    );
-    s.text(
-        158.0,
-        belt_top + 43.0,
-        "start",
-        FONT,
-        &format!("v_{{b}} = {}", mm_per_s(p.v_b)),
-    );
+    apparatus(&mut s, p, lower);
 
     // The free-body diagram of the block, right.
     let (left, right) = (bx - half_w, bx + half_w);
@@ -388,6 +327,141 @@ pub fn belt(p: &BeltParams, phase: Phase) -> String {
         &format!("{} (force scale)", newton(unit)),
     );
     s.finish()
+}
+
+/// The belt at t = 0 labelled with the given values only, for a worksheet: the block on the
+/// belt at x = 0 (the spring unstretched), the forces named, not numbered; ω, x_s, x_d, Δ and
+/// the motion are the student's to work out.
+pub fn belt_givens(p: &BeltParams) -> String {
+    let belt_top = 190.0;
+    let height = belt_top + 150.0;
+    let mut s = Svg::sized(WIDTH, height, SUB);
+    let description = format!(
+        "A block of mass m = {m} lies on a belt moving to the right at v_b = {vb} and is held \
+         back by a spring of stiffness k = {k} fixed to a wall; x is the stretch of the spring, \
+         x = 0 at t = 0, when the block is carried by the belt. Friction coefficients μs = {mus}, \
+         μd = {mud}, g = {g}. The forces on the block: weight W = m g, normal force N, the \
+         spring's force k x toward the wall, friction F_f.",
+        m = plain(p.mass, "kg"),
+        vb = mm_per_s(p.v_b),
+        k = plain(p.k, "N/m"),
+        mus = num(p.mu_s),
+        mud = num(p.mu_d),
+        g = plain(p.g, "m/s²"),
+    );
+    s.open(
+        "Block on a moving belt at t = 0: the wall, the spring, the block on the belt",
+        &description,
+    );
+    s.text(
+        10.0,
+        28.0,
+        "start",
+        FONT,
+        "at t = 0: x = 0, carried by the belt",
+    );
+    s.text(
+        10.0,
+        52.0,
+        "start",
+        FONT,
+        &format!("m = {}", plain(p.mass, "kg")),
+    );
+    apparatus(&mut s, p, belt_top);
+    let y0 = belt_top + 80.0;
+    s.text(
+        10.0,
+        y0,
+        "start",
+        FONT,
+        &format!(
+            "μ_{{s}} = {}, μ_{{d}} = {}, g = {}",
+            num(p.mu_s),
+            num(p.mu_d),
+            plain(p.g, "m/s²")
+        ),
+    );
+    s.text(
+        10.0,
+        y0 + 24.0,
+        "start",
+        FONT,
+        "forces on the block: W = m g, N, k x (toward the wall), F_{f}",
+    );
+    s.text(
+        10.0,
+        y0 + 48.0,
+        "start",
+        FONT,
+        "stick while |k x| ≤ μ_{s} N; slipping, F_{f} = μ_{d} N",
+    );
+    s.finish()
+}
+
+/// The apparatus at the left of the sketch, its belt's top at `belt_top` (px): the wall, the
+/// spring k to the block m on the belt, the belt's speed v_b.
+fn apparatus(s: &mut Svg, p: &BeltParams, belt_top: f64) {
+    let a = APPARATUS;
+    let wall_face = a.wall_x + a.wall_width;
+    s.rect(
+        a.wall_x,
+        belt_top - a.wall_height,
+        a.wall_width,
+        a.wall_height,
+        0.3,
+        1.4,
+    );
+    let (bw, bh) = (a.block_width, a.block_height);
+    let block_x = a.block_x;
+    s.rect(block_x, belt_top - bh, bw, bh, 0.12, 1.6);
+    s.text(
+        block_x + bw / 2.0,
+        belt_top - bh / 2.0 + 7.0,
+        "middle",
+        FONT,
+        "m",
+    );
+    zigzag(
+        s,
+        wall_face,
+        block_x,
+        belt_top - bh / 2.0,
+        a.coils,
+        a.coil_half,
+    );
+    s.text(
+        (wall_face + block_x) / 2.0,
+        belt_top - bh / 2.0 - 18.0,
+        "middle",
+        FONT,
+        &format!("k = {}", plain(p.k, "N/m")),
+    );
+    // The belt: a band over two rollers, its speed along the top.
+    let (r, belt_right) = (a.roller_r, a.belt_left + a.belt_length);
+    s.rect(
+        a.belt_left,
+        belt_top,
+        a.belt_length,
+        a.belt_height,
+        0.18,
+        1.2,
+    );
+    s.circle_styled(a.belt_left + r, belt_top + r, r, INK, 0.15, 1.2);
+    s.circle_styled(belt_right - r, belt_top + r, r, INK, 0.15, 1.2);
+    s.arrow(
+        Some("belt-speed"),
+        (60.0, belt_top + 36.0),
+        (150.0, belt_top + 36.0),
+        ORANGE,
+        3.0,
+    );
+    s.text(
+        158.0,
+        belt_top + 43.0,
+        "start",
+        FONT,
+        &format!("v_{{b}} = {}", mm_per_s(p.v_b)),
+    );
 }
 
 /// A horizontal coil spring from x1 to x2 at height y: straight ends, `coils` zigzags.
