@@ -128,11 +128,25 @@ fn evaluated(setup: &str, periods: Option<i64>) -> Result<Evaluated> {
 }
 
 fn evaluated_model<M: Explore + Present>(p: &M, periods: u32) -> Result<Evaluated> {
+    // The package reads the paper's two laws (`linear`, `harmonic`: python/stickslip/_api.py),
+    // so a model with other laws is refused, never served half-read.
+    let ids =
+        |laws: &[crate::present::vocab::LawName]| laws.iter().map(|l| l.id).collect::<Vec<_>>();
+    if ids(<M as Present>::LAWS) != ids(crate::models::paper::LAWS) {
+        return Err(Error::Unsupported {
+            model: M::ID,
+            what: "the Python evaluation (series and display) yet: use \
+                   stickslip.cli(['eval', …, '--json'])"
+                .to_string(),
+        });
+    }
     let json = |e: serde_json::Error| Error::InvalidLaw(e.to_string());
     let (evaluation, files) = p.evaluate_with_csv(periods)?;
     let extras = crate::explore::Extras {
         closed_form: M::regime(&evaluation),
         applicability: M::applicability(&evaluation),
+        period: p.period(),
+        periods,
     };
     let files = CsvDialect::default()
         .apply(files)
@@ -162,7 +176,7 @@ fn figure_svg(setup: &str) -> Result<String> {
     model.validate()?;
     let figures = with_capability!(&model, present, p => {
         let kind = p.standard_scene().figures[0];
-        p.figures("python", kind)?
+        p.figures_of("python", kind)?
     }, else return Err(Error::Unsupported {
         model: model.id(),
         what: "figures yet".to_string(),
