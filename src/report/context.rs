@@ -20,17 +20,23 @@ pub(crate) const DIGITS: usize = 8;
 
 /// The numbers of a scene that do not depend on rendering: tables and regimes.
 pub fn scene_tables(scene: &Scene) -> Result<SceneCtx> {
-    fn sketch<M: Present>(p: &M) -> (&'static str, &'static str, String, LawWords) {
-        (
+    /// The model's tables, with its sketch, the sketch's caption words and its law words.
+    fn of<M: Present>(
+        p: &M,
+        scene: &Scene,
+    ) -> Result<(SceneCtx, &'static str, &'static str, String, LawWords)> {
+        let ctx = p.scene_tables(scene)?;
+        Ok((
+            ctx,
             M::SKETCH_WHAT,
             M::SKETCH_WHEN,
             p.sketch(Phase::Slipping),
             M::LAW_WORDS,
-        )
+        ))
     }
-    let mut ctx = with_capability!(&scene.setup, present, p => p.scene_tables(scene)?,
+    let (mut ctx, what, when, svg, words) = with_capability!(&scene.setup, present,
+        p => of(p, scene)?,
         else return Err(scene.setup.missing(crate::models::Capability::Present)));
-    let (what, when, svg, words) = with_capability!(&scene.setup, present, p => sketch(p), else return Err(scene.setup.missing(crate::models::Capability::Present)));
     ctx.words = words;
     ctx.sketch = FigureCtx {
         id: format!("{}-apparatus", scene.id),
