@@ -236,9 +236,9 @@ pub struct CheckArgs {
         required_unless_present_any = ["formulas", "symbols"]
     )]
     pub formula: Option<String>,
-    /// The measured quantity it gives: a guide §14 closed-form key (t_slip, t_stick, v_max, v_avg,
-    /// power … for the pulled mass; t_slip_1, v_avg … for the woodpecker), or `sticks` for a
-    /// condition; not needed when the formula's left side names it.
+    /// The measured quantity it gives: a closed-form key of the model's `eval --json`
+    /// (guide §14; t_slip, t_stick, v_avg …; an unknown name lists the model's keys), or
+    /// `sticks` for a condition; not needed when the formula's left side names it.
     #[arg(long, value_name = "NAME")]
     pub quantity: Option<String>,
     /// Only sets of this closed-form regime (the regime a formula is stated for, e.g.

@@ -10,7 +10,7 @@
 //!     value:        0.09035
 //! ```
 
-use std::ops::{Add, Div, Mul, Sub};
+use std::ops::{Add, Div, Mul, Neg, Sub};
 
 use crate::output::format::sig;
 
@@ -59,6 +59,8 @@ pub enum Expr {
     Apply(Func, Box<Expr>),
     /// The larger of two values (a NaN argument is ignored, as by `f64::max`).
     Max(Box<Expr>, Box<Expr>),
+    /// The opposite, written with a leading minus sign (−ωA).
+    Neg(Box<Expr>),
 }
 
 /// What a derivation writes its formulas in: the expression tree ([`Expr`], rendered and
@@ -66,7 +68,12 @@ pub enum Expr {
 /// `stickslip check` per sampled set). Both evaluate with the same operations in the same
 /// order, so a [`Value`] is bit-identical to [`Expr::eval`] of the tree built the same way.
 pub trait Term:
-    Clone + Add<Output = Self> + Sub<Output = Self> + Mul<Output = Self> + Div<Output = Self>
+    Clone
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
 {
     /// An exact integer.
     fn int(n: i64) -> Self;
@@ -176,6 +183,13 @@ impl Div for Value {
     }
 }
 
+impl Neg for Value {
+    type Output = Value;
+    fn neg(self) -> Value {
+        Value(-self.0)
+    }
+}
+
 /// x^(num/den): `powi` for an integer power, as [`Expr::eval`] and [`Value`] both compute it.
 fn power(x: f64, num: i32, den: i32) -> f64 {
     if den == 1 {
@@ -279,6 +293,13 @@ impl Div for Expr {
     }
 }
 
+impl Neg for Expr {
+    type Output = Expr;
+    fn neg(self) -> Expr {
+        Expr::Neg(Box::new(self))
+    }
+}
+
 /// Binding strength of a rendered piece: a child weaker than its context needs parentheses.
 mod prec {
     /// A sum or difference.
@@ -320,7 +341,7 @@ impl Expr {
                     walk(a, out);
                     walk(b, out);
                 }
-                Expr::Pow(a, ..) | Expr::Apply(_, a) => walk(a, out),
+                Expr::Pow(a, ..) | Expr::Apply(_, a) | Expr::Neg(a) => walk(a, out),
             }
         }
         let mut out = Vec::new();
@@ -342,6 +363,7 @@ impl Expr {
             Expr::Pow(e, n, d) => power(e.eval(), *n, *d),
             Expr::Apply(f, e) => f.of(e.eval()),
             Expr::Max(a, b) => a.eval().max(b.eval()),
+            Expr::Neg(e) => -e.eval(),
         }
     }
 
@@ -430,6 +452,8 @@ impl Expr {
                 ),
                 prec::ATOM,
             ),
+            // A product or anything tighter follows the sign as it is: −ωA, −10.00 × 0.02025.
+            Expr::Neg(e) => (format!("-{}", e.child(mode, prec::PRODUCT)), prec::NEGATIVE),
         }
     }
 
@@ -503,6 +527,26 @@ mod tests {
             e.eval(),
             2.0 / 10.0 * (std::f64::consts::PI - crate::fmath::atan(10.0 * 0.01962 / 0.05))
         );
+    }
+
+    #[test]
+    fn a_negation_is_a_leading_minus_in_both_modes_and_evaluates_bit_for_bit() {
+        let (omega, a) = (var(r"\omega", 10.0), var("A", 0.020_247_084));
+        let e = -(omega.clone() * a.clone());
+        assert_eq!(e.symbols(), r"-\omega A");
+        assert_eq!(e.numbers(), r"-10.00 \times 0.02025");
+        assert_eq!(
+            e.eval().to_bits(),
+            (-1.0 * 10.0 * 0.020_247_084f64).to_bits()
+        );
+        let v = -(Value(10.0) * Value(0.020_247_084));
+        assert_eq!(v.eval().to_bits(), e.eval().to_bits());
+        // A negated sum keeps its parentheses; a negation inside a product gets them.
+        assert_eq!(
+            (-(omega.clone() + a.clone())).symbols(),
+            r"-\left(\omega + A\right)"
+        );
+        assert_eq!((a * -omega).symbols(), r"A \left(-\omega\right)");
     }
 
     #[test]

@@ -114,11 +114,7 @@ fn steps<E: Term>(p: &BeltParams) -> Vec<Step<E>> {
     );
     s.push(Key::XMax, x_d.clone() + a.clone(), Some(c.x_max));
     s.push(Key::XMin, x_d - a.clone(), Some(c.x_min));
-    s.push(
-        Key::VMin,
-        int(-1) * omega.clone() * a.clone(),
-        Some(c.v_min),
-    );
+    s.push(Key::VMin, -(omega.clone() * a.clone()), Some(c.v_min));
     s.push(
         Key::SlipSpeedMax,
         v_b.clone() + omega * a,
