@@ -94,9 +94,15 @@ fn program(argv: Vec<String>) -> impl Iterator<Item = String> {
     std::iter::once("stickslip".to_string()).chain(argv)
 }
 
-/// What [`evaluate`] returns: the guide §14 JSON, the extras JSON (regime in words, applicability)
-/// and the CSV files of `eval --csv` as (name, text).
-type Evaluated = (String, String, Vec<(String, String)>);
+/// What [`evaluate`] returns: the guide §14 JSON, the extras JSON (regime in words, applicability),
+/// the CSV files of `eval --csv` as (name, text) and the model's laws as (id in the CSV names,
+/// name, key of its summary in the JSON).
+type Evaluated = (
+    String,
+    String,
+    Vec<(String, String)>,
+    Vec<(&'static str, &'static str, &'static str)>,
+);
 
 /// One parameter set (`setup`: the JSON of [`Setup`]) over `periods` periods (`None`: 8, as
 /// `stickslip eval`), as `stickslip eval MODEL … --json --csv DIR` computes it.
@@ -127,19 +133,12 @@ fn evaluated(setup: &str, periods: Option<i64>) -> Result<Evaluated> {
     }))
 }
 
+/// The evaluation with what the package needs to read it for any model: its laws by name.
 fn evaluated_model<M: Explore + Present>(p: &M, periods: u32) -> Result<Evaluated> {
-    // The package reads the paper's two laws (`linear`, `harmonic`: python/stickslip/_api.py),
-    // so a model with other laws is refused, never served half-read.
-    let ids =
-        |laws: &[crate::present::vocab::LawName]| laws.iter().map(|l| l.id).collect::<Vec<_>>();
-    if ids(<M as Present>::LAWS) != ids(crate::models::paper::LAWS) {
-        return Err(Error::Unsupported {
-            model: M::ID,
-            what: "the Python evaluation (series and display) yet: use \
-                   stickslip.cli(['eval', …, '--json'])"
-                .to_string(),
-        });
-    }
+    let laws = <M as Present>::LAWS
+        .iter()
+        .map(|l| (l.id, l.name, l.summary))
+        .collect();
     let json = |e: serde_json::Error| Error::InvalidLaw(e.to_string());
     let (evaluation, files) = p.evaluate_with_csv(periods)?;
     let extras = crate::explore::Extras {
@@ -160,6 +159,7 @@ fn evaluated_model<M: Explore + Present>(p: &M, periods: u32) -> Result<Evaluate
         serde_json::to_string_pretty(&crate::results::Versioned::new(&evaluation)).map_err(json)?,
         serde_json::to_string(&extras).map_err(json)?,
         files,
+        laws,
     ))
 }
 

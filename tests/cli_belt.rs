@@ -132,20 +132,32 @@ fn the_belts_tables_csv_and_sweep_name_its_own_law() {
         .assert()
         .success();
     let sweep = std::fs::read_to_string(dir.path().join("sweep.csv")).unwrap();
-    let header = sweep.lines().next().unwrap();
+    let mut lines = sweep.lines();
     assert_eq!(
-        header,
-        "v_b_m_s,v_avg_exact_m_s,slips_exact,sticks_exact,regime_exact,regime_closed_form"
+        lines.next().unwrap(),
+        "v_b_m_s,v_avg_exact_m_s,slips_exact,sticks_exact,regime_exact,regime_closed_form,\
+         period_s,amplitude_m,stick_share"
     );
     assert!(
         !sweep.contains("undefined") && !sweep.contains("harmonic"),
         "{sweep}"
     );
-    assert_eq!(
-        sweep
-            .lines()
-            .filter(|l| l.ends_with(",stick_slip,stick_slip"))
-            .count(),
-        4
-    );
+    // Its own quantities are those `eval belt` measures on its integration at the same v_b,
+    // to the last digit; the block does not advance, so v̄ is left empty.
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows.len(), 4);
+    for row in &rows {
+        assert_eq!(&row[1..6], ["", "1", "1", "stick_slip", "stick_slip"], "{row:?}");
+        let eval = stickslip()
+            .args(["eval", "belt", "--json", "--v-b", row[0]])
+            .assert()
+            .success();
+        let json: serde_json::Value = serde_json::from_slice(&eval.get_output().stdout).unwrap();
+        for (cell, key) in row[6..].iter().zip(["period", "amplitude", "stick_share"]) {
+            let measured = json["integration"][key].as_f64().unwrap();
+            assert_eq!(cell.parse::<f64>().unwrap(), measured, "{key} at v_b = {}", row[0]);
+        }
+    }
+    let svg = std::fs::read_to_string(dir.path().join("sweep.svg")).unwrap();
+    assert!(svg.contains("T (s)") && svg.contains("A (mm)") && !svg.contains("v̄"));
 }

@@ -26,10 +26,6 @@ from .errors import error_for
 
 PathLike = Union[str, "os.PathLike[str]"]
 
-#: What ``eval`` returns for a law that does not exist for the parameters (e.g. the
-#: woodpecker's linear law when the spring never changes sign).
-LAWS = ("linear", "harmonic")
-
 
 def cli(*argv: Any, check: bool = True) -> str:
     """Runs ``stickslip ARGV…`` in this process and returns what it prints on stdout.
@@ -85,16 +81,19 @@ class Evaluation:
     """One parameter set of a model evaluated as ``stickslip eval MODEL … --json`` does.
 
     ``data`` is exactly ``json.loads`` of that command's output (guide §14, SI units):
-    ``model``, ``params``, ``closed_form`` (the linear law's closed forms, ``regime``),
-    ``linear`` and ``harmonic`` (the exact integration's summaries, ``None`` for a law that
-    does not exist), ``checks`` (closed form against integration). ``regime`` says the closed
-    forms' regime in words (``id``, ``words``, ``why``); ``series`` and ``events`` hold the
-    time series and event lists of both laws (``eval --csv``) as NumPy arrays.
+    ``model``, ``params``, ``closed_form`` (the closed forms, ``regime``), the exact
+    integration's summary of each law (the paper's models: ``linear`` and ``harmonic``,
+    ``None`` for a law that does not exist; the belt: ``integration``), ``checks`` (closed form
+    against integration). ``laws`` lists the model's laws (``id``, ``name``, ``summary``: the
+    key of its summary in ``data``); ``regime`` says the closed forms' regime in words (``id``,
+    ``words``, ``why``); ``series`` and ``events`` hold the time series and event lists of each
+    law by its id (``eval --csv``) as NumPy arrays, ``None`` for a law that does not exist.
     """
 
     data: dict[str, Any]
     regime: dict[str, Any]
     applicability: list[Any]
+    laws: list[dict[str, str]]
     series: dict[str, Series | None]
     events: dict[str, Series | None]
     setup: dict[str, Any] = field(repr=False)
@@ -117,13 +116,20 @@ class Evaluation:
         return self.data["closed_form"]
 
     @property
+    def summaries(self) -> dict[str, dict[str, Any] | None]:
+        """The exact integration's summary of each law, by the law's id (``None`` for a law
+        that does not exist for the parameters)."""
+        return {law["id"]: self.data[law["summary"]] for law in self.laws}
+
+    @property
     def linear(self) -> dict[str, Any] | None:
-        """The exact integration of the linearized law (``None`` if it does not exist)."""
+        """The exact integration of the linearized law (the paper's models; ``None`` if it
+        does not exist)."""
         return self.data["linear"]
 
     @property
     def harmonic(self) -> dict[str, Any]:
-        """The exact integration of the harmonic law."""
+        """The exact integration of the harmonic law (the paper's models)."""
         return self.data["harmonic"]
 
     @property
@@ -154,10 +160,10 @@ class Evaluation:
 
 
 def eval(model: str, *, periods: int | None = None, **params: float | str) -> Evaluation:
-    """Evaluates every closed form of ``model`` ("pulled-mass" or "woodpecker") for the paper's
-    default set overridden by ``params`` (SI units; options as words), checks it against the
-    exact integration over ``periods`` periods (default 8, as the command line) and integrates
-    the harmonic law too.
+    """Evaluates every closed form of ``model`` ("pulled-mass", "woodpecker", "belt") for its
+    default set overridden by ``params`` (SI units; options as words) and checks it against the
+    exact integration over ``periods`` periods (default 8, as the command line), integrating
+    each of the model's laws (the paper's models: the harmonic law and its linearization).
 
     ``stickslip.eval("woodpecker", mu_d=0.3).data == json.loads(<stickslip eval woodpecker
     --mu-d 0.3 --json>)``, to the last digit. Bad input raises
@@ -173,17 +179,19 @@ def eval(model: str, *, periods: int | None = None, **params: float | str) -> Ev
             setup["params"][key] = float(value)
     if periods is not None and not isinstance(periods, (int, np.integer)):
         raise error_for(2, f"invalid value {periods!r} for periods: a whole number 1 to 1000000")
-    evaluation, extras, files = _native.evaluate(
+    evaluation, extras, files, laws = _native.evaluate(
         json.dumps(setup), None if periods is None else int(periods)
     )
     extras = json.loads(extras)
     tables = {name: _columns(text) for name, text in files}
+    ids = [law_id for law_id, _, _ in laws]
     return Evaluation(
         data=json.loads(evaluation),
         regime=extras["closed_form"],
         applicability=extras["applicability"],
-        series={law: tables.get(f"timeseries_{law}.csv") for law in LAWS},
-        events={law: tables.get(f"events_{law}.csv") for law in LAWS},
+        laws=[{"id": i, "name": n, "summary": s} for i, n, s in laws],
+        series={law: tables.get(f"timeseries_{law}.csv") for law in ids},
+        events={law: tables.get(f"events_{law}.csv") for law in ids},
         setup=setup,
     )
 

@@ -43,14 +43,14 @@ def evaluation_html(e: "Evaluation") -> str:
     table = quantities(e.model)
     words = law_words()
     laws = []
-    for law in ("linear", "harmonic"):
-        summary = e.data[law]
+    for law in e.laws:
+        summary = e.data[law["summary"]]
         said = (
             "does not exist for these parameters"
             if summary is None
             else escape(words.get(summary["regime"], summary["regime"]))
         )
-        laws.append(f"{law} law: {said}")
+        laws.append(f"{escape(law['name'])}: {said}")
     rows = []
     for c in e.checks:
         q = table.get(c["quantity"], {})

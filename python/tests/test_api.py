@@ -23,6 +23,9 @@ SETS = [
     ("pulled-mass", {}),
     ("pulled-mass", {"mu_s": 0.4, "mu_d": 0.35, "mass": 0.06, "k": 45.0, "force": 0.18}),
     ("pulled-mass", {"force": 0.1 / 3, "periods": 3}),
+    ("belt", {}),
+    ("belt", {"mu_d": 0.45, "v_b": 0.3, "periods": 3}),
+    ("belt", {"mu_d": 0.5}),
 ]
 
 
@@ -39,12 +42,14 @@ def test_eval_is_the_commands_json_to_the_last_digit(command, model, params):
     assert json.dumps(got.data) == json.dumps(want)
 
 
-@pytest.mark.parametrize(("model", "params"), [SETS[1], SETS[3], SETS[5]])
+@pytest.mark.parametrize(("model", "params"), [SETS[1], SETS[3], SETS[5], SETS[8]])
 def test_series_and_events_are_the_commands_csv_files(command, tmp_path, model, params):
     done = run(command, "eval", model, *flags(params), "--csv", str(tmp_path))
     assert done.returncode == 0, done.stderr
     got = stickslip.eval(model, **params)
-    for law in ("linear", "harmonic"):
+    assert sorted(got.series) == sorted(law["id"] for law in got.laws)
+    assert set(got.summaries) == set(got.series)
+    for law in got.series:
         for kind, tables in (("timeseries", got.series), ("events", got.events)):
             path = tmp_path / f"{kind}_{law}.csv"
             if not path.exists():
@@ -82,7 +87,7 @@ def test_periods_out_of_range_and_unknown_names_are_refused():
     for bad in ({"periods": 0}, {"periods": 10**7}, {"periods": -1}):
         with pytest.raises(ValueError, match="periods"):
             stickslip.eval("pulled-mass", **bad)
-    with pytest.raises(ValueError, match="pulled-mass, woodpecker"):
+    with pytest.raises(ValueError, match="pulled-mass, woodpecker, belt"):
         stickslip.eval("seesaw")
     with pytest.raises(ValueError, match="for parameter"):
         stickslip.eval("woodpecker", F=1.0)
@@ -101,6 +106,17 @@ def test_the_rich_display_says_the_regime_and_shows_checks_formulas_and_figure()
     assert "<math" in html and "<svg" in html
     assert "(41)" in html  # t_SL of phase I, the paper's equation number
     assert repr(e).startswith("<stickslip.Evaluation woodpecker:")
+
+
+def test_the_belt_is_read_by_its_own_law():
+    e = stickslip.eval("belt", mu_d=0.3)
+    assert [law["id"] for law in e.laws] == ["exact"]
+    assert e.summaries["exact"] is e.data["integration"]
+    assert e.series["exact"]["t_s"].dtype == np.float64
+    assert e.passed
+    html = e._repr_html_()
+    assert "exact integration: " in html and "(B14)" in html and "<svg" in html
+    assert html.count("<tr>") == len(e.checks) + 1
 
 
 def test_check_returns_the_report_and_a_wrong_formula_as_a_verdict(command):

@@ -535,10 +535,7 @@ mod tests {
         let e = -(omega.clone() * a.clone());
         assert_eq!(e.symbols(), r"-\omega A");
         assert_eq!(e.numbers(), r"-10.00 \times 0.02025");
-        assert_eq!(
-            e.eval().to_bits(),
-            (-10.0 * 0.020_247_084f64).to_bits()
-        );
+        assert_eq!(e.eval().to_bits(), (-10.0 * 0.020_247_084f64).to_bits());
         let v = -(Value(10.0) * Value(0.020_247_084));
         assert_eq!(v.eval().to_bits(), e.eval().to_bits());
         // A negated sum keeps its parentheses; a negation inside a product gets them.

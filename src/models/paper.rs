@@ -10,10 +10,12 @@ pub const LAWS: &[LawName] = &[
     LawName {
         id: "harmonic",
         name: "harmonic law",
+        summary: "harmonic",
     },
     LawName {
         id: "linear",
         name: "linearized law",
+        summary: "linear",
     },
 ];
 

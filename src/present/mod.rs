@@ -9,7 +9,7 @@ use crate::error::Result;
 use crate::models::Physics;
 use vocab::{
     Builtin, Figure, FigureKind, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile,
-    PartStory, Phase, Scene, SceneCtx,
+    PartStory, Phase, Scene, SceneCtx, SweepColumn,
 };
 
 pub mod spec;
@@ -113,6 +113,12 @@ pub trait Present: Physics {
     fn sketch(&self, phase: Phase) -> String;
     /// The laws of an evaluation.
     fn laws(e: &Self::Evaluation) -> Laws;
+    /// The model's own quantities that `sweep` tabulates after the laws' columns and plots
+    /// instead of v̄ and slips per period (none by default: a model whose body advances is
+    /// swept by its mean speed).
+    fn sweep_columns() -> Vec<SweepColumn<Self::Evaluation>> {
+        Vec::new()
+    }
     /// The evaluation as terminal tables.
     fn text(e: &Self::Evaluation) -> String;
     /// The evaluation, and the CSV files of its runs (time series and events of both laws).
@@ -186,6 +192,37 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// Each law's `summary` names the key of its summary in the model's `eval --json` (an
+    /// object, or null for a law that does not exist for the parameters), and every law has
+    /// a CSV time series of its id: what the Python package reads by these names.
+    #[test]
+    fn every_law_names_its_summary_and_its_csv_files() {
+        fn check<M: super::Present>(p: &M) {
+            let (evaluation, files) = p.evaluate_with_csv(2).unwrap();
+            let json = serde_json::to_value(&evaluation).unwrap();
+            for law in M::LAWS {
+                let summary = &json[law.summary];
+                assert!(
+                    summary.is_object(),
+                    "{}: {} is {summary}",
+                    M::ID,
+                    law.summary
+                );
+                let series = format!("timeseries_{}.csv", law.id);
+                assert!(
+                    files.iter().any(|f| f.path.to_string_lossy() == series),
+                    "{}: no {series}",
+                    M::ID
+                );
+            }
+        }
+        let presented = Model::offering(crate::models::Capability::Present);
+        assert!(presented.len() >= 3);
+        for m in presented {
+            crate::models::with_capability!(&m, present, p => check(p), else unreachable!());
         }
     }
 }

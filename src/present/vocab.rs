@@ -72,24 +72,42 @@ pub struct Comparison {
     pub table: Table,
 }
 
-/// A law of a model: its id in CSV and JSON column names (`harmonic`) and its name in tables
-/// ("harmonic law").
+/// A law of a model: its id in CSV and JSON column names (`harmonic`), its name in tables
+/// ("harmonic law") and the key of its integration's summary in `eval --json`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 pub struct LawName {
     pub id: &'static str,
     pub name: &'static str,
+    /// The key of the law's summary in the evaluation's JSON (`harmonic`; the belt's
+    /// `integration`): what a binding reads the summary from.
+    #[serde(skip)]
+    pub summary: &'static str,
 }
 
 /// The outcome of one law of an evaluation as a sweep reads it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LawPoint {
-    /// Mean speed of the settled orbit (m/s); `None` when no periodic orbit was found.
+    /// Mean speed of the settled orbit (m/s); `None` when no periodic orbit was found, or for
+    /// a body that does not advance (the belt's block oscillates about a fixed point).
     pub v_avg: Option<f64>,
     /// Slips and sticks per period (per cycle of an autonomous model).
     pub slips: u32,
     pub sticks: u32,
     /// The regime's id (the model's [`crate::models::Physics::regime_words`] names it).
     pub regime: &'static str,
+}
+
+/// A quantity of the model's own that `stickslip sweep` tabulates and plots at every point
+/// ([`crate::present::Present::sweep_columns`]), read from the point's evaluation `E`.
+pub struct SweepColumn<E> {
+    /// The CSV column's name with its unit suffix (`period_s`, `stick_share`).
+    pub column: &'static str,
+    /// The plot panel's axis label with its unit ("T (s)").
+    pub label: &'static str,
+    /// Factor from SI to the axis unit (1e3 for mm).
+    pub scale: f64,
+    /// The value at a point (SI); `None` where it is undefined.
+    pub value: fn(&E) -> Option<f64>,
 }
 
 impl LawPoint {

@@ -84,6 +84,17 @@ pub struct Point {
     /// Each law of [`Sweep::laws`], in its order.
     pub laws: Vec<Option<LawPoint>>,
     pub closed_form: Option<&'static str>,
+    /// The model's own quantities, in the order of [`Sweep::columns`] (empty at an invalid
+    /// point).
+    pub own: Vec<Option<f64>>,
+}
+
+/// A column of the model's own quantities ([`Present::sweep_columns`]) without its reader.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Column {
+    pub column: &'static str,
+    pub label: &'static str,
+    pub scale: f64,
 }
 
 /// A finished sweep.
@@ -92,6 +103,8 @@ pub struct Sweep {
     pub model: &'static str,
     /// The model's laws, in the order of [`Point::laws`].
     pub laws: &'static [LawName],
+    /// The model's own quantities, in the order of [`Point::own`].
+    pub columns: Vec<Column>,
     pub param: Param,
     pub spec: GridSpec,
     pub points: Vec<Point>,
@@ -239,12 +252,23 @@ pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Swee
             return Err(first);
         }
     }
-    fn laws<M: Present>(_: &M) -> &'static [LawName] {
-        M::LAWS
+    fn laws<M: Present>(_: &M) -> (&'static [LawName], Vec<Column>) {
+        let columns = M::sweep_columns()
+            .into_iter()
+            .map(|c| Column {
+                column: c.column,
+                label: c.label,
+                scale: c.scale,
+            })
+            .collect();
+        (M::LAWS, columns)
     }
+    let (laws, columns): (&[LawName], _) =
+        with_capability!(base, present, p => laws(p), else (&[], Vec::new()));
     Ok(Sweep {
         model: base.id(),
-        laws: with_capability!(base, present, p => laws(p), else &[]),
+        laws,
+        columns,
         param,
         spec: spec.clone(),
         points,
@@ -253,20 +277,22 @@ pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Swee
 
 /// Evaluates one grid point; an invalid parameter set is a point, not an error.
 fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
-    type Laws = (Vec<Option<LawPoint>>, &'static str);
+    type Laws = (Vec<Option<LawPoint>>, &'static str, Vec<Option<f64>>);
     fn laws<M: Present>(p: &M, periods: u32) -> Result<Laws> {
         let e = p.evaluate(periods)?;
         let laws = M::laws(&e);
-        Ok((laws.runs, laws.closed_form_regime))
+        let own = M::sweep_columns().iter().map(|c| (c.value)(&e)).collect();
+        Ok((laws.runs, laws.closed_form_regime, own))
     }
     let evaluated = with_capability!(model, present, p => laws(p, periods),
         else return Err(model.missing(Capability::Present)));
     match evaluated {
-        Ok((laws, closed)) => Ok(Point {
+        Ok((laws, closed, own)) => Ok(Point {
             value,
             invalid: None,
             laws,
             closed_form: Some(closed),
+            own,
         }),
         // A point the model refuses, or (should it ever happen) one the engine cannot
         // advance, is a gap in the sweep, not the end of it.
@@ -280,6 +306,7 @@ fn evaluate_point(model: &Model, value: f64, periods: u32) -> Result<Point> {
             invalid: Some(e),
             laws: Vec::new(),
             closed_form: None,
+            own: Vec::new(),
         }),
         Err(e) => Err(e),
     }

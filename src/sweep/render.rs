@@ -52,7 +52,11 @@ fn csv(s: &Sweep) -> String {
             law.id
         );
     }
-    text.push_str(",regime_closed_form\n");
+    text.push_str(",regime_closed_form");
+    for c in &s.columns {
+        let _ = write!(text, ",{}", c.column);
+    }
+    text.push('\n');
     for p in &s.points {
         text.push_str(&num(p.value));
         for i in 0..s.laws.len() {
@@ -68,7 +72,12 @@ fn csv(s: &Sweep) -> String {
             };
             let _ = write!(text, ",{cells}");
         }
-        let _ = writeln!(text, ",{}", p.closed_form.unwrap_or(INVALID));
+        let _ = write!(text, ",{}", p.closed_form.unwrap_or(INVALID));
+        for i in 0..s.columns.len() {
+            let cell = p.own.get(i).copied().flatten().map(num);
+            let _ = write!(text, ",{}", cell.unwrap_or_default());
+        }
+        text.push('\n');
     }
     text
 }
@@ -111,10 +120,26 @@ fn svg(s: &Sweep) -> Result<String> {
         s.spec.from * s.param.axis_scale,
         s.spec.to * s.param.axis_scale,
     );
-    let spec = LineChart {
-        x_label: s.param.axis_label.to_string(),
-        x_range: Some((a.min(b), a.max(b))),
-        panels: vec![
+    // The model's own quantities, one panel each, replace v̄ and slips per period.
+    let own = s.columns.iter().enumerate().map(|(i, c)| Panel {
+        y_label: c.label.to_string(),
+        curves: vec![Curve {
+            label: c.column.to_string(),
+            points: s
+                .points
+                .iter()
+                .map(|p| {
+                    let y = p.own.get(i).copied().flatten();
+                    (x(p), y.map_or(f64::NAN, |y| y * c.scale))
+                })
+                .collect(),
+            color: 0,
+            stroke: Stroke::Solid,
+        }],
+        h_lines: Vec::new(),
+    });
+    let panels = if s.columns.is_empty() {
+        vec![
             Panel {
                 y_label: "v̄ (mm/s)".to_string(),
                 curves: curves(v_mm),
@@ -125,7 +150,14 @@ fn svg(s: &Sweep) -> Result<String> {
                 curves: curves(slips),
                 h_lines: Vec::new(),
             },
-        ],
+        ]
+    } else {
+        own.collect()
+    };
+    let spec = LineChart {
+        x_label: s.param.axis_label.to_string(),
+        x_range: Some((a.min(b), a.max(b))),
+        panels,
         markers: Vec::new(),
     };
     line_chart(&spec).map_err(|e| Error::Figure {

@@ -18,7 +18,7 @@ use crate::output::format::short;
 use crate::output::text::{checks_table, closed_form_table, DIGITS as TEXT_DIGITS};
 use crate::present::vocab::{
     Builtin, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory, Phase,
-    RegimeRow, Scene, SceneCtx,
+    RegimeRow, Scene, SceneCtx, SweepColumn,
 };
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 use crate::report::context::{blank, count, fill_checks, input, row};
@@ -38,6 +38,7 @@ crate::present::vocab::figure_kinds! {
 const LAWS: &[LawName] = &[LawName {
     id: "exact",
     name: "exact integration",
+    summary: "integration",
 }];
 
 impl Present for BeltParams {
@@ -161,8 +162,10 @@ impl Present for BeltParams {
     /// One cycle: a slip and a stick (none in a touching oscillation); the block comes back
     /// to where the cycle started, so its mean speed over a cycle is zero.
     fn laws(e: &Evaluation) -> Laws {
+        // The block oscillates about a fixed point: no mean speed (the sweep's columns are
+        // the belt's own, `sweep_columns`).
         let run = e.integration.regime.map(|regime| LawPoint {
-            v_avg: Some(0.0),
+            v_avg: None,
             slips: 1,
             sticks: u32::from(regime == Regime::StickSlip.id()),
             regime,
@@ -171,6 +174,30 @@ impl Present for BeltParams {
             runs: vec![run],
             closed_form_regime: e.closed_form.regime.id(),
         }
+    }
+
+    /// The cycle the integration measured: its period, amplitude and stick share.
+    fn sweep_columns() -> Vec<SweepColumn<Evaluation>> {
+        vec![
+            SweepColumn {
+                column: "period_s",
+                label: "T (s)",
+                scale: 1.0,
+                value: |e| e.integration.period,
+            },
+            SweepColumn {
+                column: "amplitude_m",
+                label: "A (mm)",
+                scale: 1e3,
+                value: |e| e.integration.amplitude,
+            },
+            SweepColumn {
+                column: "stick_share",
+                label: "stick share",
+                scale: 1.0,
+                value: |e| e.integration.stick_share,
+            },
+        ]
     }
 
     fn text(e: &Evaluation) -> String {
