@@ -123,3 +123,36 @@ pub fn evaluate_given(
         .collect();
     Ok(Claims { claims })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::models::Model;
+
+    /// Through the capability: without a model, the paper's sets, no claim judged outside its
+    /// domain; with a model, its set is the one given, and a claim whose domain excludes it
+    /// does not apply.
+    #[test]
+    fn the_capability_evaluates_the_given_set_or_the_papers() {
+        let sample = Sample { seed: 3, size: 20 };
+        let (paper, wood) = (PulledMassParams::default(), WoodpeckerParams::default());
+        assert_eq!(
+            crate::claims::paper(&sample).unwrap(),
+            evaluate(&paper, &wood, &sample).unwrap()
+        );
+        // Not slip-stick: outside the domain of claim 2.
+        let pulled = PulledMassParams {
+            force: 0.35,
+            ..paper
+        };
+        let given = crate::claims::of(&Model::PulledMass(pulled), &sample).unwrap();
+        assert_eq!(
+            given,
+            evaluate_given(&pulled, &wood, Given::PulledMass, &sample).unwrap()
+        );
+        assert_eq!(given.claims[1].verdict, Verdict::DoesNotApply);
+        let stand_in = pulled.claims(false, &sample).unwrap();
+        assert_ne!(stand_in.claims[1].verdict, Verdict::DoesNotApply);
+        assert_eq!(stand_in, evaluate(&pulled, &wood, &sample).unwrap());
+    }
+}
