@@ -153,20 +153,16 @@ fn claims(
         seed,
         size: samples,
     };
-    // Without a model: both models at the paper's sets, as text.
+    // Without a model: the paper's sets, as text.
     let (claims, json) = match model {
         Some(model) => {
             let common = &model.args.common;
             reject_flag("claims", "--csv", common.csv.is_some())?;
             reject_flag("claims", "--csv-dialect", common.csv_dialect.is_some())?;
             let (params, _) = model_params(&model.args)?;
-            params.require(crate::models::Capability::Claims)?;
-            (crate::claims::evaluate_for(&params, &sample)?, common.json)
+            (crate::claims::of(&params, &sample)?, common.json)
         }
-        None => {
-            let (pulled, wood) = (Default::default(), Default::default());
-            (crate::claims::evaluate(&pulled, &wood, &sample)?, false)
-        }
+        None => (crate::claims::paper(&sample)?, false),
     };
     print_stdout(
         out,

@@ -2,10 +2,9 @@
 //! woodpecker): the expected verdicts and numbers, determinism of the seeded sample, and the
 //! harmonic regimes of Figs. 15 and 16 around the z0 threshold.
 
-use stickslip::claims::{
-    evaluate, evaluate_for, halt_threshold_z0, Claim, Claims, Sample, Verdict,
-};
+use stickslip::claims::{Claim, Claims, Sample, Verdict};
 use stickslip::engine::IntegrationRegime;
+use stickslip::models::paper::claims::{evaluate, halt_threshold_z0};
 use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::woodpecker::results as woodpecker;
 use stickslip::models::woodpecker::WoodpeckerParams;
@@ -230,7 +229,7 @@ fn claims_outside_their_domain_do_not_apply_and_say_why() {
         ..WoodpeckerParams::default()
     };
     let sample = Sample { seed: 1, size: 200 };
-    let claims = evaluate_for(&Model::Woodpecker(w), &sample).expect("valid");
+    let claims = stickslip::claims::of(&Model::Woodpecker(w), &sample).expect("valid");
     for id in [5, 6, 7, 8] {
         let c = claim(&claims, id);
         assert_eq!(c.verdict, Verdict::DoesNotApply, "claim {id}");
@@ -259,7 +258,7 @@ fn claims_outside_their_domain_do_not_apply_and_say_why() {
 /// A pulled-mass set in continuous slip is outside the domain of (28) and of claims 3 and 7.
 #[test]
 fn a_continuous_slip_pull_is_outside_the_domain_of_claim_2() {
-    let claims = evaluate_for(
+    let claims = stickslip::claims::of(
         &Model::PulledMass(PulledMassParams {
             force: 0.35,
             ..PulledMassParams::default()

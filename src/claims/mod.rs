@@ -1,12 +1,15 @@
-//! The paper's claims checked on computed evidence (guide §11): for each of the eight
-//! statements, what the paper says, a verdict and the numbers behind it, computed on the given
-//! parameter sets, on variations of them (another μd, z0, m_S or λ) and, for statements about
-//! "sensible values" in general, on a seeded random sample of valid parameter sets.
+//! The vocabulary of the paper's claims (guide §11), shared by every model that offers them: a
+//! claim with what the paper says, a verdict and the numbers behind it, the seeded random
+//! sample for statements about "sensible values", and the capability [`PaperClaims`] through
+//! which the commands, the report and the handouts reach a model's claims. This module names no
+//! model: the claims themselves are computed in the models' folders (the claims about both
+//! paper models in `crate::models::paper::claims`).
 //!
 //! ```text
-//! pulled mass + woodpecker params ─┬─ closed forms (formula)     ─┐
-//!                                  ├─ exact integration (engine) ─┼─→ Claim { verdict,
-//!            Sample { seed, size } ─┴─ random sets (closed forms)  ─┘    finding, numbers }
+//! model params ─┬─ closed forms (formula)     ─┐
+//!               ├─ exact integration (engine) ─┼─→ Claim { verdict, finding, numbers }
+//!      Sample ──┴─ random sets (closed forms)  ─┘
+//! Model ── of / paper (with_capability!, claims) ──→ PaperClaims::claims ──→ Claims
 //! ```
 //!
 //! A verdict judges the paper's statement (`paper_says`) as written: `confirmed` (it holds on the
@@ -15,31 +18,45 @@
 //! lies outside the claim's domain: the claim says nothing about it; `does_not_apply` gives the
 //! reason in words and the finding shows the evidence on the paper's set). Nothing is quoted from
 //! the specification: every verdict follows from numbers computed here.
-//!
-//! ```text
-//! claims 1, 2  pulled_mass.rs     claims 3, 7  both.rs      claims 4, 6  woodpecker.rs
-//! claim 5      halt.rs            claim 8      lever.rs     random sets  sample.rs
-//! ```
-
-mod both;
-pub(crate) mod sample;
-
-use crate::models::pulled_mass::claims as pulled_mass;
-use crate::models::woodpecker::{claims as woodpecker, halt, lever};
 
 use serde::{Deserialize, Serialize};
 
-use crate::engine::{analyse, integrate, Body, EventKind, ForceLaw, Run, RunOptions, Steady};
-use crate::error::Result;
+use crate::engine::{analyse, integrate, EventKind, Run, RunOptions, Steady};
+use crate::error::{Error, Result};
 use crate::models::param::invalid;
-use crate::models::pulled_mass::PulledMassParams;
-use crate::models::woodpecker::formula::Counterpart;
-use crate::models::woodpecker::WoodpeckerParams;
-use crate::models::{LawKind, Model, Physics};
+use crate::models::{with_capability, Capability, LawKind, Model, Physics};
 use crate::params::DEFAULT_PERIODS;
 pub(crate) use crate::results::rel_diff;
 
-pub use lever::halt_threshold_z0;
+/// The paper's claims about a model: the capability `claims` of the registry, implemented for
+/// the models the paper makes claims about.
+pub trait PaperClaims: Physics {
+    /// The claims on this set and the paper's sets of the other models they concern, checked
+    /// on `sample`. `given`: the set is the user's, and a claim whose domain excludes it does
+    /// not apply; otherwise the set stands in for the paper's, and a claim whose domain excludes
+    /// it is shown on a set of the paper inside its domain. Errors: an invalid set or sample.
+    fn claims(&self, given: bool, sample: &Sample) -> Result<Claims>;
+}
+
+/// The claims on `model`'s set, the one the user gave; a model without the capability `claims`
+/// is refused with the one-line error of [`Model::missing`].
+pub fn of(model: &Model, sample: &Sample) -> Result<Claims> {
+    with_capability!(model, claims, p => p.claims(true, sample),
+        else Err(model.missing(Capability::Claims)))
+}
+
+/// The claims on the paper's sets: those of the first registered model that offers them, at
+/// its default set (which stands in for the paper's).
+pub fn paper(sample: &Sample) -> Result<Claims> {
+    let Some(model) = Model::offering(Capability::Claims).into_iter().next() else {
+        return Err(Error::Unsupported {
+            model: "registered",
+            what: Capability::Claims.words().to_string(),
+        });
+    };
+    with_capability!(&model, claims, p => p.claims(false, sample),
+        else Err(model.missing(Capability::Claims)))
+}
 
 /// Largest random sample a caller may ask for.
 pub const MAX_SAMPLE: usize = 1_000_000;
@@ -64,6 +81,21 @@ impl Default for Sample {
     }
 }
 
+impl Sample {
+    /// Checks the size: 1 to [`MAX_SAMPLE`] sets.
+    pub fn check(&self) -> Result<()> {
+        if (1..=MAX_SAMPLE).contains(&self.size) {
+            Ok(())
+        } else {
+            Err(invalid(
+                "sample size",
+                self.size,
+                format!("1 <= size <= {MAX_SAMPLE}"),
+            ))
+        }
+    }
+}
+
 /// How a claim fares against the computed evidence.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
@@ -84,39 +116,6 @@ impl Verdict {
             Self::Refuted => "refuted",
             Self::Qualified => "qualified",
             Self::DoesNotApply => "does not apply",
-        }
-    }
-}
-
-/// Whose parameter set the claims judge: a claim whose domain excludes the set of the model the
-/// user gave does not apply; a model the user did not give keeps the paper's set, and a claim
-/// about it is shown on a set of the paper inside its domain.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Given {
-    /// Neither set was given: both are the paper's.
-    Paper,
-    /// The pulled-mass set was given.
-    PulledMass,
-    /// The woodpecker set was given.
-    Woodpecker,
-}
-
-impl Given {
-    /// The model whose parameters `model` carries (the paper's sets for a model the claims
-    /// are not about).
-    pub fn of(model: &Model) -> Self {
-        match model {
-            Model::PulledMass(_) => Self::PulledMass,
-            Model::Woodpecker(_) => Self::Woodpecker,
-            _ => Self::Paper,
-        }
-    }
-
-    fn gave(self, model_id: &str) -> bool {
-        match self {
-            Self::Paper => false,
-            Self::PulledMass => model_id == <PulledMassParams as Physics>::ID,
-            Self::Woodpecker => model_id == <WoodpeckerParams as Physics>::ID,
         }
     }
 }
@@ -147,6 +146,28 @@ pub struct SampleResult {
     pub example: Option<String>,
 }
 
+impl SampleResult {
+    /// `counterexamples` among `size` valid sets of `sample`, the first described by `example`.
+    pub(crate) fn counted(
+        sample: &Sample,
+        size: usize,
+        counterexamples: usize,
+        example: Option<String>,
+    ) -> Self {
+        Self {
+            size,
+            seed: sample.seed,
+            counterexamples,
+            share: if size == 0 {
+                0.0
+            } else {
+                counterexamples as f64 / size as f64
+            },
+            example,
+        }
+    }
+}
+
 /// One claim of guide §11 with its verdict.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
@@ -166,8 +187,8 @@ pub struct Claim {
     pub numbers: Vec<ClaimNumber>,
     pub sample: Option<SampleResult>,
     /// Set by a claim whose domain excludes the set it was given for one model: (that model's
-    /// id, the reason in words). [`evaluate_given`] turns it into the verdict when the user
-    /// gave that model's set.
+    /// id, the reason in words). The evaluation turns it into the verdict when the user gave
+    /// that model's set ([`PaperClaims::claims`] with `given`).
     #[serde(skip)]
     pub(crate) outside: Vec<(&'static str, String)>,
 }
@@ -180,87 +201,12 @@ impl Claim {
     }
 }
 
-/// All eight claims, in the order of guide §11.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// The claims on a set, in the order of guide §11 (the paper's eight; none for a model the
+/// paper makes no claim about).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 #[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Claims {
     pub claims: Vec<Claim>,
-}
-
-/// The inputs of one evaluation of the claims: the two models' sets and which one was given
-/// (the report computes the claims once per distinct value).
-pub type Inputs = (PulledMassParams, WoodpeckerParams, Given);
-
-/// The parameter pair the claims are computed on when one model's set is given: that set for
-/// its model, the paper's default set for the other.
-pub fn params_for(model: &Model) -> (PulledMassParams, WoodpeckerParams) {
-    // The claims are about these two models; any other model leaves both at the paper's sets.
-    let mut pair = (PulledMassParams::default(), WoodpeckerParams::default());
-    if let Model::PulledMass(p) = *model {
-        pair.0 = p;
-    }
-    if let Model::Woodpecker(p) = *model {
-        pair.1 = p;
-    }
-    pair
-}
-
-/// The eight claims on `model`'s set (the other model keeps the paper's set): a claim whose
-/// domain excludes the given set does not apply.
-pub fn evaluate_for(model: &Model, sample: &Sample) -> Result<Claims> {
-    let (pulled, wood) = params_for(model);
-    evaluate_given(&pulled, &wood, Given::of(model), sample)
-}
-
-/// The eight claims on sets that are the paper's or stand in for them: no claim is judged
-/// outside its domain; a set outside it is replaced by the paper's set (the finding says so).
-pub fn evaluate(
-    pulled: &PulledMassParams,
-    wood: &WoodpeckerParams,
-    sample: &Sample,
-) -> Result<Claims> {
-    evaluate_given(pulled, wood, Given::Paper, sample)
-}
-
-/// Checks the parameters and the sample, then evaluates the eight claims; a claim whose domain
-/// excludes the set of the model in `given` gets the verdict `does_not_apply` with its reason.
-pub fn evaluate_given(
-    pulled: &PulledMassParams,
-    wood: &WoodpeckerParams,
-    given: Given,
-    sample: &Sample,
-) -> Result<Claims> {
-    pulled.validate()?;
-    wood.validate()?;
-    if !(1..=MAX_SAMPLE).contains(&sample.size) {
-        return Err(invalid(
-            "sample size",
-            sample.size,
-            format!("1 <= size <= {MAX_SAMPLE}"),
-        ));
-    }
-    let pulled_periodic = pulled_mass::periodic_set(pulled)?;
-    let claims = vec![
-        pulled_mass::claim_1(pulled, sample)?,
-        pulled_mass::claim_2(pulled)?,
-        both::claim_3(&pulled_periodic, wood)?,
-        woodpecker::claim_4(wood, sample),
-        halt::claim_5(wood)?,
-        woodpecker::claim_6(wood)?,
-        both::claim_7(&pulled_periodic, wood)?,
-        lever::claim_8(wood)?,
-    ];
-    let claims = claims
-        .into_iter()
-        .map(|mut c| {
-            if let Some((_, reason)) = c.outside.iter().find(|(m, _)| given.gave(m)) {
-                c.verdict = Verdict::DoesNotApply;
-                c.does_not_apply = Some(reason.clone());
-            }
-            c
-        })
-        .collect();
-    Ok(Claims { claims })
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -311,28 +257,17 @@ impl Integrated {
     }
 }
 
-/// Integrates `body` under `law` for the default number of periods.
-fn steady_run(body: &Body, law: &ForceLaw) -> Result<Integrated> {
+/// Integrates the model with parameters `p` under `law` for the default number of periods (the
+/// linearized law may not exist for some sets).
+pub(crate) fn steady_run<M: Physics>(p: &M, law: LawKind) -> Result<Integrated> {
     let opts = RunOptions {
         periods: DEFAULT_PERIODS,
         record_segments: false,
         dissipation: true,
     };
-    let run = integrate(body, law, &opts)?;
+    let run = integrate(&p.body(), &p.force_law(law)?, &opts)?;
     let steady = analyse(&run);
     Ok(Integrated { run, steady })
-}
-
-/// Integrates the pulled mass under `law`.
-pub(crate) fn run_pulled(p: &PulledMassParams, law: LawKind) -> Result<Integrated> {
-    let body = crate::models::pulled_mass::body(p);
-    steady_run(&body, &crate::models::pulled_mass::force_law(p, law)?)
-}
-
-/// Integrates the woodpecker sleeve under `law` (the linear law needs a defined counterpart).
-pub(crate) fn run_wood(p: &WoodpeckerParams, law: LawKind) -> Result<Integrated> {
-    let body = crate::models::woodpecker::body(p);
-    steady_run(&body, &crate::models::woodpecker::force_law(p, law)?)
 }
 
 /// (max − min) / max|x| of the values (0 for fewer than two).
@@ -350,15 +285,6 @@ pub(crate) fn spread(values: &[f64]) -> f64 {
 /// A speed in mm/s for the findings.
 pub(crate) fn mm_s(v: f64) -> String {
     format!("{:.2} mm/s", 1e3 * v)
-}
-
-/// The lowercase name of a counterpart, as on the command line.
-pub(crate) fn counterpart_name(c: Counterpart) -> &'static str {
-    match c {
-        Counterpart::Extremes => "extremes",
-        Counterpart::Zeros => "zeros",
-        Counterpart::Tangent => "tangent",
-    }
 }
 
 /// A relative error in words: scientific below 0.1 %, else in percent.

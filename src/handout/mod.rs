@@ -14,14 +14,13 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::claims::{self, Sample};
 use crate::error::{Error, Result};
 use crate::lang::phrases::Translator;
 use crate::models::{with_capability, Capability, Model};
 use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx, SceneCtx};
 use crate::report::render::{
-    claim_params, figure_contexts, first_sentence, page, scene_context, templates, CSS,
+    figure_contexts, first_sentence, page, scene_claims, scene_context, templates, CSS,
 };
 use crate::report::{builtin_scenes, Format, OutFile, Scene};
 use crate::worksheet::Lang;
@@ -125,8 +124,7 @@ pub fn list() -> Result<String> {
 /// without a translation stay in English and are listed by `words` ([`Translator::missing`]).
 pub fn build(scene: &Scene, words: &Translator) -> Result<Handout> {
     scene.setup.require(Capability::Present)?;
-    let (pulled, wood, given) = claim_params(scene);
-    let claims = claims::evaluate_given(&pulled, &wood, given, &Sample::default())?;
+    let claims = scene_claims(&scene.setup)?;
     let with_figures = Scene {
         figures: layout::kinds(scene),
         ..scene.clone()

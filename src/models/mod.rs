@@ -27,7 +27,6 @@ use param::{ChoiceSpec, ParamSpec};
 pub mod belt;
 #[cfg(test)]
 pub mod dummy;
-#[cfg(feature = "cli")]
 pub mod paper;
 pub mod param;
 pub mod pulled_mass;
@@ -111,7 +110,7 @@ pub enum Capability {
     Explore,
     /// `crate::worksheet::Exercise`: worksheets, and `check`'s draws over the model's domain.
     Exercise,
-    /// The paper's claims about the model (`stickslip claims`).
+    /// [`crate::claims::PaperClaims`]: the paper's claims about the model (`stickslip claims`).
     Claims,
 }
 
@@ -199,7 +198,7 @@ macro_rules! registry {
 
         /// `with_capability!(model, cap, p => expr, else missing)`: `expr` with `p` bound to
         /// the params struct of a model that offers capability `cap` (`present`, `explore`,
-        /// `exercise`), `missing` for the others.
+        /// `exercise`, `claims`), `missing` for the others.
         macro_rules! with_capability {
             ($d m:expr, $d cap:ident, $d p:ident => $d body:expr, else $d missing:expr) => {
                 match $d m {

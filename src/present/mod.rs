@@ -135,7 +135,8 @@ mod tests {
     /// enum variant (`Model::PulledMass`), the test build's dummy included.
     #[test]
     fn no_shared_presentation_module_names_a_model() {
-        const SHARED: [&str; 8] = [
+        const SHARED: [&str; 9] = [
+            "claims",
             "report",
             "present",
             "handout",

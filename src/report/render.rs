@@ -10,8 +10,9 @@ use super::figures::style::{with_text, Geometry};
 use super::figures::{chart, map};
 use super::scene::{Drawing, Figure, Part, Scene};
 use super::writer::OutFile;
-use crate::claims::{self, Claims, Given, Sample};
+use crate::claims::{self, Claims, Sample};
 use crate::error::{Error, Result};
+use crate::models::{Capability, Model};
 
 /// Output formats of the report.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -176,11 +177,13 @@ pub(crate) fn first_sentence(text: &str) -> &str {
         .unwrap_or(text)
 }
 
-/// The parameter pair the claims of a scene are computed on: the scene's own set for its
-/// model (the one given), the paper's default set for the other.
-pub(crate) fn claim_params(scene: &Scene) -> claims::Inputs {
-    let (p, w) = crate::claims::params_for(&scene.setup);
-    (p, w, Given::of(&scene.setup))
+/// The paper's claims on a scene's set (the set given), none for a model without them.
+pub(crate) fn scene_claims(setup: &Model) -> Result<Claims> {
+    if setup.has(Capability::Claims) {
+        claims::of(setup, &Sample::default())
+    } else {
+        Ok(Claims::default())
+    }
 }
 
 /// The full context of a scene: tables, `figures` and its claims.
@@ -323,18 +326,14 @@ pub fn render_with(
     material: &[Material],
 ) -> Result<Vec<OutFile>> {
     let tera = templates(&[])?;
-    // Claims are computed once per distinct parameter pair.
-    let mut pairs: Vec<claims::Inputs> = Vec::new();
+    // Claims are computed once per distinct set.
+    let mut setups: Vec<Model> = Vec::new();
     for s in scenes {
-        let pair = claim_params(s);
-        if !pairs.contains(&pair) {
-            pairs.push(pair);
+        if !setups.contains(&s.setup) {
+            setups.push(s.setup);
         }
     }
-    let all_claims: Vec<Claims> = pairs
-        .par_iter()
-        .map(|(p, w, given)| claims::evaluate_given(p, w, *given, &Sample::default()))
-        .collect::<Result<_>>()?;
+    let all_claims: Vec<Claims> = setups.par_iter().map(scene_claims).collect::<Result<_>>()?;
     let figures: Vec<Vec<Figure>> = scenes
         .par_iter()
         .map(Scene::build_figures)
@@ -343,8 +342,7 @@ pub fn render_with(
         .par_iter()
         .zip(&figures)
         .map(|(s, f)| {
-            let pair = claim_params(s);
-            let i = pairs.iter().position(|p| *p == pair).unwrap_or(0);
+            let i = setups.iter().position(|m| *m == s.setup).unwrap_or(0);
             scene_context(s, &all_claims[i], figure_contexts(f, Geometry::REPORT)?)
         })
         .collect::<Result<_>>()?;

@@ -185,9 +185,15 @@ mod tests {
             Capability::Present,
             Capability::Explore,
             Capability::Exercise,
+            Capability::Claims,
         ] {
             let refused = model.require(capability).unwrap_err().to_string();
             assert!(refused.starts_with("the dummy model has no"), "{refused}");
         }
+        let refused = crate::claims::of(&model, &crate::claims::Sample::default());
+        assert_eq!(
+            refused.unwrap_err().to_string(),
+            "the dummy model has no claims of the paper to check"
+        );
     }
 }

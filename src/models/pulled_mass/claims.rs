@@ -1,17 +1,21 @@
 //! Claims 1 and 2 about the pulled mass (guide §7, guide §11): the stick condition (20)/(22)
 //! against the late stick, and the coefficient of D^{3/2} in Γ (28). Also picks the periodic
-//! set that claims 3 and 7 compare the two force laws on.
+//! set that claims 3 and 7 compare the two force laws on, and draws the seeded random sample of
+//! claim 1 (only closed forms are evaluated on it, so thousands of sets cost milliseconds).
 //!
 //! ```text
 //! (20)  t_ST ≤ T  ⇔  φ ≤ 1/Θ            (22)  μs = μd = μ:  μ ≥ μ_MIN = (1+√2)φ/2
 //! late stick  1/Θ < φ ≤ φ_c,  φ_c = 4μsμd/(2μs + √(2D))   (μs = μd = μ ⇒ φ_c = μ)
 //! (28)  Γ = [c·D^{3/2} + μs³ + 3μs²μd − μd³]/(96 μs³ μd²),  c = 1 (derived) or 2 (misreading)
+//! sample (claim 1):  μs ∈ [0.1, 1],  μd = μs·[0.05, 1],  φ uniform in (1/Θ, 2μs]
+//!                    counterexample to (20): late stick, φ ≤ φ_c
 //! ```
 
-use crate::claims::sample::{self, PulledExample};
 use crate::claims::{
-    mm_s, or_none, rel_diff, run_pulled, Claim, Integrated, Numbers, Sample, Verdict,
+    mm_s, or_none, rel_diff, rel_text, steady_run, Claim, Integrated, Numbers, Sample,
+    SampleResult, Verdict,
 };
+use crate::draws::Draws;
 use crate::engine::IntegrationRegime;
 use crate::error::Result;
 use crate::models::pulled_mass::formula as cf;
@@ -49,8 +53,8 @@ impl PeriodicSet {
             p: *p,
             name,
             outside: None,
-            linear: run_pulled(p, LawKind::Linear)?,
-            harmonic: run_pulled(p, LawKind::Harmonic)?,
+            linear: steady_run(p, LawKind::Linear)?,
+            harmonic: steady_run(p, LawKind::Harmonic)?,
         })
     }
 
@@ -97,14 +101,14 @@ pub(crate) fn claim_1(p: &PulledMassParams, sample: &Sample) -> Result<Claim> {
         mu_d: mu,
         ..*p
     };
-    let run = run_pulled(&q, LawKind::Linear)?;
+    let run = steady_run(&q, LawKind::Linear)?;
     let tau_stick = run
         .first_slip_and_stick()
         .and_then(|(_, stick)| stick)
         .map(|t| t / q.period());
     let late_closed = cf::tau_stick_late(phi, mu, mu);
     let sticks = run.steady.regime() == IntegrationRegime::SingleSlipStick && tau_stick.is_some();
-    let (result, example) = sample::pulled_late_stick(sample);
+    let (result, example) = pulled_late_stick(sample);
     let example_check = example.as_ref().map(check_example).transpose()?;
     let mut n = Numbers::default();
     n.push("phi = F/W (given set)", phi, "")
@@ -176,7 +180,7 @@ fn stick_words(tau_stick: Option<f64>, late_closed: Option<f64>) -> String {
 
 /// Integrates the sample's first late-stick set and says where it sticks.
 fn check_example(e: &PulledExample) -> Result<String> {
-    let run = run_pulled(&e.params, LawKind::Linear)?;
+    let run = steady_run(&e.params, LawKind::Linear)?;
     let stick = run.first_slip_and_stick().and_then(|(_, st)| st);
     Ok(match stick {
         Some(t) => format!(
@@ -210,7 +214,7 @@ pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
     let (g, period, phi) = (q.g, q.period(), q.phi());
     let v_of = |c: f64| g * period * phi.powi(3) * gamma_with(c, q.mu_s, q.mu_d);
     let (v1, v2) = (v_of(1.0), v_of(2.0));
-    let v_num = run_pulled(&q, LawKind::Linear)?.steady.v_avg;
+    let v_num = steady_run(&q, LawKind::Linear)?.steady.v_avg;
     let err = |v: f64| v_num.map(|n| rel_diff(v, n));
     let (e1, e2) = (err(v1), err(v2));
     let agrees = |e: Option<f64>| e.is_some_and(|e| e <= AGREE);
@@ -219,7 +223,7 @@ pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
         (false, true) => Verdict::Refuted,
         _ => Verdict::Qualified,
     };
-    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), crate::claims::rel_text);
+    let pct = |e: Option<f64>| e.map_or("n/a".to_string(), rel_text);
     let finding = format!(
         "On {name}, the exact integration of the linearized law gives v̄ = {}. Eq. (27) with \
          coefficient 1 gives {} (relative error {}); with coefficient 2 it gives {} (relative \
@@ -260,4 +264,49 @@ pub(crate) fn claim_2(p: &PulledMassParams) -> Result<Claim> {
             )
         }),
     ))
+}
+
+/// The first late-stick set of the pulled-mass sample, to integrate.
+struct PulledExample {
+    params: PulledMassParams,
+}
+
+/// Claim 1 on the sample: sets in the "non-stick" area of Fig. 9 (φ > 1/Θ, no immediate slip)
+/// that still stick, in the next period (φ ≤ φ_c).
+fn pulled_late_stick(sample: &Sample) -> (SampleResult, Option<PulledExample>) {
+    let mut rng = Draws::new(sample.seed);
+    let mut counterexamples = 0;
+    let mut example = None;
+    for _ in 0..sample.size {
+        let mu_s = rng.between(0.1, 1.0);
+        let mu_d = mu_s * rng.between(0.05, 1.0);
+        let lo = cf::phi_stick_max(mu_s, mu_d);
+        // 1/Θ ≤ μd ≤ μs < 2μs, so the interval is never empty.
+        let phi = lo + (2.0 * mu_s - lo) * (1.0 - rng.unit());
+        if cf::regime(phi, mu_s, mu_d) != cf::Regime::SlipStickLate {
+            continue;
+        }
+        counterexamples += 1;
+        if example.is_none() {
+            let base = PulledMassParams::default();
+            let params = PulledMassParams {
+                mu_s,
+                mu_d,
+                force: phi * base.weight(),
+                ..base
+            };
+            let text = format!(
+                "μs = {mu_s:.4}, μd = {mu_d:.4}, φ = {phi:.4}: (20) needs φ ≤ 1/Θ = {lo:.4}, \
+                 but φ ≤ φ_c = {:.4}, so the mass sticks at τ = {:.6} (m 0.06 kg, k 45 N/m)",
+                cf::phi_continuous(mu_s, mu_d),
+                cf::tau_stick_late(phi, mu_s, mu_d).unwrap_or(f64::NAN),
+            );
+            example = Some((text, PulledExample { params }));
+        }
+    }
+    let (text, example) = example.unzip();
+    (
+        SampleResult::counted(sample, sample.size, counterexamples, text),
+        example,
+    )
 }

@@ -4,12 +4,22 @@
 //! ```text
 //! (51) μd,MIN^(I): t_ST^(I) ≤ T/2       (65) μd,MIN^(II): t_ST^(II) ≤ T
 //! (71) v̄ = g τ W_S² Γ/(24 ζ0² k²),  Γ = Γ^(I) + Γ^(II) depends on λμs, λμd only
+//! sample (claim 4):  λ ∈ [1, 3], μs ∈ [0.3, 1], μd = μs·[0.05, 1], k ∈ [5, 50] N/m,
+//!                    m_S ∈ [2, 20] g, ζ0 ∈ [2, 20] mm, δ0 = ζ0·[0, 0.95);
+//!                    kept if in the closed-form domain without immediate slip (38);
+//!                    counterexample: μd,MIN^(I) ≤ μd,MIN^(II)
 //! ```
+//!
+//! The sample evaluates closed forms only, so thousands of sets cost milliseconds; the same
+//! seed always gives the same sets ([`Draws`]).
 
-use crate::claims::sample::{self, WOODPECKER_RANGES};
-use crate::claims::{rel_diff, run_wood, spread, Claim, Numbers, Sample, Verdict};
+use crate::claims::{
+    mm_s, or_none, rel_diff, rel_text, spread, steady_run, Claim, Numbers, Sample, SampleResult,
+    Verdict,
+};
+use crate::draws::Draws;
 use crate::error::Result;
-use crate::models::woodpecker::formula as cf;
+use crate::models::woodpecker::formula::{self as cf, LinearWoodpecker};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
@@ -21,12 +31,20 @@ const REFUTING_SHARE: f64 = 0.05;
 const Z0_STEPS: u32 = 40;
 const Z0_KEPT: usize = 5;
 
+/// Draws per kept set before the woodpecker sample gives up (most draws are kept).
+const MAX_DRAWS_PER_SET: usize = 100;
+
+/// The ranges of the woodpecker sample, for the finding.
+const WOODPECKER_RANGES: &str = "λ in [1, 3], μs in [0.3, 1], k in [5, 50] N/m, m_S \
+     in [2, 20] g, ζ0 in [2, 20] mm, δ0/ζ0 in [0, 0.95), kept when in the closed-form domain \
+     and not slipping at once";
+
 /// Claim 4: "μd,MIN^(I) > μd,MIN^(II) for sensible values".
 pub(crate) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
     let c = cf::evaluate(&linear_inputs(w));
     let (one, two) = (c.mu_d_min_1, c.mu_d_min_2);
     let given_fails = one.zip(two).is_some_and(|(a, b)| a <= b);
-    let result = sample::woodpecker_mu_min_order(sample, w.g, 0.25 * w.period());
+    let result = woodpecker_mu_min_order(sample, w.g, 0.25 * w.period());
     let verdict = if given_fails || result.share >= REFUTING_SHARE {
         Verdict::Refuted
     } else if result.counterexamples > 0 {
@@ -37,7 +55,7 @@ pub(crate) fn claim_4(w: &WoodpeckerParams, sample: &Sample) -> Claim {
     let given = match one.zip(two) {
         Some((a, b)) => format!(
             "Given set (`{}` counterpart, λ = {:.3}): μd,MIN^(I) = {a:.4}, μd,MIN^(II) = {b:.4}{}",
-            crate::claims::counterpart_name(w.counterpart),
+            w.counterpart.id(),
             w.lambda(),
             if a > b {
                 ", in the paper's order."
@@ -125,7 +143,7 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
         etas.extend(c.eta);
         gammas.extend(c.gamma);
         v_closed.extend(c.v_avg);
-        v_num.extend(run_wood(&q, LawKind::Linear)?.steady.v_avg);
+        v_num.extend(steady_run(&q, LawKind::Linear)?.steady.v_avg);
     }
     let complete = v_num.len() == z0s.len() && gammas.len() == z0s.len();
     let (s_gamma, s_v) = (spread(&gammas), spread(&v_num));
@@ -163,11 +181,11 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
         z0s.len(),
         1e3 * z_lo,
         1e3 * z_hi,
-        crate::claims::or_none(gammas.first().copied(), |g| format!("{g:.6}")),
-        crate::claims::rel_text(s_gamma),
-        crate::claims::or_none(v_num.first().copied(), crate::claims::mm_s),
-        crate::claims::rel_text(s_v),
-        crate::claims::rel_text(worst_closed),
+        or_none(gammas.first().copied(), |g| format!("{g:.6}")),
+        rel_text(s_gamma),
+        or_none(v_num.first().copied(), mm_s),
+        rel_text(s_v),
+        rel_text(worst_closed),
     );
     Ok(Claim {
         id: 6,
@@ -188,4 +206,73 @@ pub(crate) fn claim_6(w: &WoodpeckerParams) -> Result<Claim> {
         outside: Vec::new(),
     }
     .outside(<WoodpeckerParams as Physics>::ID, outside))
+}
+
+/// Claim 4 on the sample: valid sets with μd,MIN^(I) ≤ μd,MIN^(II). `g` (m/s²) and the quarter
+/// period `tau` (s) do not change either critical value; they only complete the set.
+fn woodpecker_mu_min_order(sample: &Sample, g: f64, tau: f64) -> SampleResult {
+    let mut rng = Draws::new(sample.seed);
+    let (mut kept, mut counterexamples) = (0, 0);
+    let mut example = None;
+    for _ in 0..sample.size.saturating_mul(MAX_DRAWS_PER_SET) {
+        if kept == sample.size {
+            break;
+        }
+        let p = random_woodpecker(&mut rng, g, tau);
+        let Some((one, two)) = mu_d_mins(&p) else {
+            continue;
+        };
+        kept += 1;
+        if one <= two {
+            counterexamples += 1;
+            example.get_or_insert_with(|| describe(&p, one, two));
+        }
+    }
+    SampleResult::counted(sample, kept, counterexamples, example)
+}
+
+fn random_woodpecker(rng: &mut Draws, g: f64, tau: f64) -> LinearWoodpecker {
+    let lambda = rng.between(1.0, 3.0);
+    let mu_s = rng.between(0.3, 1.0);
+    let mu_d = mu_s * rng.between(0.05, 1.0);
+    let k = rng.between(5.0, 50.0);
+    let m_s = rng.between(0.002, 0.02);
+    let zeta0 = rng.between(0.002, 0.02);
+    let delta0 = zeta0 * rng.between(0.0, 0.95);
+    LinearWoodpecker {
+        mu_s,
+        mu_d,
+        lambda,
+        k,
+        w_s: m_s * g,
+        g,
+        zeta0,
+        delta0,
+        tau_quarter: tau,
+    }
+}
+
+/// (μd,MIN^(I), μd,MIN^(II)) of a set in the closed-form domain without immediate slip.
+fn mu_d_mins(p: &LinearWoodpecker) -> Option<(f64, f64)> {
+    if !cf::in_closed_form_domain(p) {
+        return None;
+    }
+    let c = cf::evaluate(p);
+    if c.immediate_slip {
+        return None;
+    }
+    c.mu_d_min_1.zip(c.mu_d_min_2)
+}
+
+fn describe(p: &LinearWoodpecker, one: f64, two: f64) -> String {
+    format!(
+        "λ = {:.3}, μs = {:.3}, k = {:.2} N/m, m_S = {:.2} g, ζ0 = {:.2} mm, δ0 = {:.2} mm: \
+         μd,MIN^(I) = {one:.4} ≤ μd,MIN^(II) = {two:.4}",
+        p.lambda,
+        p.mu_s,
+        p.k,
+        1e3 * p.w_s / p.g,
+        1e3 * p.zeta0,
+        1e3 * p.delta0,
+    )
 }

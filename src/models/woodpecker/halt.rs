@@ -8,7 +8,7 @@
 //! ```
 //! A μd between the two is integrated exactly and its first slip is followed to its stop.
 
-use crate::claims::{or_none, run_wood, Claim, Numbers, Verdict};
+use crate::claims::{or_none, steady_run, Claim, Numbers, Verdict};
 use crate::error::Result;
 use crate::models::woodpecker::formula::{self as cf, WoodpeckerClosedForm};
 use crate::models::woodpecker::lobe::{HaltKind, OrbitRegime, Phase, PhaseLobes};
@@ -137,7 +137,7 @@ fn halt_below_min(
     let q = WoodpeckerParams { mu_d: mu, ..*set };
     let c = cf::evaluate(&linear_inputs(&q));
     let closed = phase_one_halt(&q, &c);
-    let first = run_wood(&q, LawKind::Linear)?.first_slip_and_stick();
+    let first = steady_run(&q, LawKind::Linear)?.first_slip_and_stick();
     let stick = first.and_then(|(_, st)| st);
     let half = 0.5 * q.period();
     n.push("mu_d tried", mu, "")

@@ -8,7 +8,7 @@
 //!                and one stick per period (no intermediate halt)
 //! ```
 
-use crate::claims::{mm_s, or_none, run_wood, Claim, ClaimNumber, Integrated, Numbers, Verdict};
+use crate::claims::{mm_s, or_none, steady_run, Claim, ClaimNumber, Integrated, Numbers, Verdict};
 use crate::engine::{EventKind, IntegrationRegime};
 use crate::error::Result;
 use crate::models::woodpecker::WoodpeckerParams;
@@ -30,7 +30,7 @@ const MAX_BISECTIONS: u32 = 200;
 /// or sticks once per period (`Some(false)`); `None` for any other motion or a failed run.
 fn intermediate_halt(p: &WoodpeckerParams) -> Option<bool> {
     p.validate().ok()?;
-    let run = run_wood(p, LawKind::Harmonic).ok()?;
+    let run = steady_run(p, LawKind::Harmonic).ok()?;
     match run.steady.regime() {
         IntegrationRegime::DoubleSlipStick => Some(true),
         IntegrationRegime::DoubleSlipNoHalt | IntegrationRegime::SingleSlipStick => Some(false),
@@ -105,7 +105,7 @@ struct Evidence {
 
 impl Evidence {
     fn of(w: &WoodpeckerParams) -> Result<Self> {
-        let printed = run_wood(
+        let printed = steady_run(
             &WoodpeckerParams {
                 lever: Some(1.0),
                 ..*w
@@ -120,9 +120,9 @@ impl Evidence {
             printed_sticks,
             printed,
             geometric,
-            lever: run_wood(&geometric, LawKind::Harmonic)?,
+            lever: steady_run(&geometric, LawKind::Harmonic)?,
             threshold: threshold_above(&geometric),
-            fig26_v: run_wood(&fig26(), LawKind::Harmonic)?.steady.v_avg,
+            fig26_v: steady_run(&fig26(), LawKind::Harmonic)?.steady.v_avg,
         })
     }
 

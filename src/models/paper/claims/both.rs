@@ -6,20 +6,20 @@
 //! claim 7: P_W = W_S v̄ ∝ W_S³ (m_S doubled ⇒ ×8);  P_fric = W_S v̄ + ⟨F_e v⟩;  pulled: P = F v̄
 //! ```
 
-use super::pulled_mass::PeriodicSet;
-use super::{
-    counterpart_name, mm_s, rel_diff, run_wood, Claim, Integrated, Numbers, Verdict, BOTH_MODELS,
+use crate::claims::{
+    mm_s, or_none, rel_diff, rel_text, steady_run, Claim, Integrated, Numbers, Verdict, BOTH_MODELS,
 };
 use crate::error::Result;
+use crate::models::pulled_mass::claims::PeriodicSet;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind, Physics};
+use crate::output::format::people;
 
 const PULLED_ID: &str = <PulledMassParams as Physics>::ID;
 const WOOD_ID: &str = <WoodpeckerParams as Physics>::ID;
-use crate::output::format::people;
 
 /// Mean speeds within this relative difference count as "close" for claim 3.
 const CLOSE: f64 = 0.10;
@@ -45,7 +45,7 @@ pub(crate) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
             vh.zip(vl).map(|(h, l)| h / l),
             "",
         );
-    let harmonic = run_wood(w, LawKind::Harmonic)?;
+    let harmonic = steady_run(w, LawKind::Harmonic)?;
     let wh = harmonic.steady.v_avg;
     n.push("woodpecker v_avg, harmonic", wh, "m/s");
     let (mut regimes_ok, mut any_ok, mut all_close) = (pulled_same, false, true);
@@ -59,12 +59,12 @@ pub(crate) fn claim_3(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
             counterpart: c,
             ..*w
         };
-        let name = counterpart_name(c);
+        let name = c.id();
         if woodpecker::linear_amplitudes(&q).is_none() {
             parts.push(format!("{name}: undefined for |z0| > d0"));
             continue;
         }
-        let lin = run_wood(&q, LawKind::Linear)?;
+        let lin = steady_run(&q, LawKind::Linear)?;
         let same = lin.steady.regime() == harmonic.steady.regime();
         let diff = (wh.filter(|&h| h > 0.0))
             .zip(lin.steady.v_avg)
@@ -166,7 +166,7 @@ fn doubled_pair(w: &WoodpeckerParams) -> Option<(WoodpeckerParams, WoodpeckerPar
 /// P_W = W_S v̄ of the closed form (71) and of the linear integration.
 fn weight_powers(p: &WoodpeckerParams) -> Result<(Option<f64>, Option<f64>)> {
     let closed = cf::evaluate(&linear_inputs(p)).power_weight;
-    let run = run_wood(p, LawKind::Linear)?;
+    let run = steady_run(p, LawKind::Linear)?;
     Ok((closed, run.steady.v_avg.map(|v| p.sleeve_weight() * v)))
 }
 
@@ -203,15 +203,15 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
              multiplies W_S v̄ by {} in (71) and by {} in the exact linear integration, i.e. 2³",
             1e3 * a.m_sleeve,
             1e3 * b.m_sleeve,
-            super::or_none(closed, |r| people(Some(r), 10)),
-            super::or_none(numeric, |r| people(Some(r), 10)),
+            or_none(closed, |r| people(Some(r), 10)),
+            or_none(numeric, |r| people(Some(r), 10)),
         );
     }
     let w_s = w.sleeve_weight();
     let lin = woodpecker::linear_amplitudes(w)
-        .map(|_| run_wood(w, LawKind::Linear))
+        .map(|_| steady_run(w, LawKind::Linear))
         .transpose()?;
-    let harm = run_wood(w, LawKind::Harmonic)?;
+    let harm = steady_run(w, LawKind::Harmonic)?;
     let r_lin = lin.as_ref().and_then(|r| friction_ratio(r, w_s));
     let r_harm = friction_ratio(&harm, w_s);
     n.push("P_fric / (W_S v_avg), linear (given set)", r_lin, "")
@@ -227,7 +227,7 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
     let pulled_ok = [b_lin, b_harm]
         .iter()
         .all(|b| b.is_some_and(|b| b <= AGREE));
-    let fmt = |r: Option<f64>| super::or_none(r, |r| format!("{r:.3} × W_S v̄"));
+    let fmt = |r: Option<f64>| or_none(r, |r| format!("{r:.3} × W_S v̄"));
     let dissipation = match (r_lin, r_harm) {
         (None, None) => "The given set does not advance periodically, so its friction \
                          dissipation cannot be compared with W_S v̄."
@@ -243,8 +243,8 @@ pub(crate) fn claim_7(pulled: &PeriodicSet, w: &WoodpeckerParams) -> Result<Clai
         "Woodpecker: {cube_text}, not 2². {dissipation} Pulled mass, on {}: F v̄ equals the \
          dissipated power within {} (linear) and {} (harmonic).",
         pulled.name,
-        super::or_none(b_lin, super::rel_text),
-        super::or_none(b_harm, super::rel_text),
+        or_none(b_lin, rel_text),
+        or_none(b_harm, rel_text),
     );
     Ok(Claim {
         id: 7,
