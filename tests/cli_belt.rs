@@ -147,7 +147,11 @@ fn the_belts_tables_csv_and_sweep_name_its_own_law() {
     let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
     assert_eq!(rows.len(), 4);
     for row in &rows {
-        assert_eq!(&row[1..6], ["", "1", "1", "stick_slip", "stick_slip"], "{row:?}");
+        assert_eq!(
+            &row[1..6],
+            ["", "1", "1", "stick_slip", "stick_slip"],
+            "{row:?}"
+        );
         let eval = stickslip()
             .args(["eval", "belt", "--json", "--v-b", row[0]])
             .assert()
@@ -155,7 +159,12 @@ fn the_belts_tables_csv_and_sweep_name_its_own_law() {
         let json: serde_json::Value = serde_json::from_slice(&eval.get_output().stdout).unwrap();
         for (cell, key) in row[6..].iter().zip(["period", "amplitude", "stick_share"]) {
             let measured = json["integration"][key].as_f64().unwrap();
-            assert_eq!(cell.parse::<f64>().unwrap(), measured, "{key} at v_b = {}", row[0]);
+            assert_eq!(
+                cell.parse::<f64>().unwrap(),
+                measured,
+                "{key} at v_b = {}",
+                row[0]
+            );
         }
     }
     let svg = std::fs::read_to_string(dir.path().join("sweep.svg")).unwrap();

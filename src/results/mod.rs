@@ -3,6 +3,8 @@
 
 pub mod checks;
 pub mod quantity;
+#[cfg(feature = "cli")]
+pub mod schema;
 pub mod summary;
 pub mod version;
 

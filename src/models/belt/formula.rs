@@ -233,7 +233,7 @@ impl schemars::JsonSchema for ClosedForm {
 
     fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
         let ids = [Regime::StickSlip.id(), Regime::TouchingOscillation.id()];
-        crate::schema::closed_form::<super::quantity::Key>(&ids)
+        crate::results::schema::closed_form::<super::quantity::Key>(&ids)
     }
 }
 

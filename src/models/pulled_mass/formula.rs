@@ -380,7 +380,7 @@ impl schemars::JsonSchema for Regime {
     }
 
     fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        crate::schema::one_of(
+        crate::results::schema::one_of(
             "Regime of the pulled mass's closed forms (guide §9)",
             Self::ALL.iter().map(|r| r.id()),
         )
@@ -395,7 +395,7 @@ impl schemars::JsonSchema for ClosedForm {
 
     fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
         let ids: Vec<&str> = Regime::ALL.iter().map(|r| r.id()).collect();
-        crate::schema::closed_form::<super::quantity::Key>(&ids)
+        crate::results::schema::closed_form::<super::quantity::Key>(&ids)
     }
 }
 

@@ -817,7 +817,7 @@ impl schemars::JsonSchema for WoodpeckerClosedForm {
                 ids.push(id);
             }
         }
-        crate::schema::closed_form::<super::quantity::Key>(&ids)
+        crate::results::schema::closed_form::<super::quantity::Key>(&ids)
     }
 }
 

@@ -478,7 +478,7 @@ impl schemars::JsonSchema for OrbitRegime {
     }
 
     fn json_schema(_: &mut schemars::SchemaGenerator) -> schemars::Schema {
-        crate::schema::one_of(
+        crate::results::schema::one_of(
             "Regime of the woodpecker's periodic orbit (guide §10)",
             Self::ALL.iter().map(|r| r.id()),
         )
