@@ -16,9 +16,10 @@
 //! Its name, [`DIFFSOL_PEER`], is known without it, so a build without the peer can say so.
 //!
 //! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
-//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`. The exact engine and
-//! rk4 also integrate a [`surface::SurfaceProblem`] (the belt: a force affine in x, sticking
-//! at the surface's speed); the other methods refuse it.
+//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`. The exact engine, rk4,
+//! moreau and euler_sign also integrate a [`surface::SurfaceProblem`] (the belt: a force
+//! affine in x, sticking at the surface's speed), stepping either problem as a
+//! [`surface::System`]; dopri5 and the tanh methods refuse it.
 
 use serde::Serialize;
 

@@ -19,7 +19,7 @@
 //! change that starts and ends inside one step is not seen (a brief stick or slip is missed).
 
 use super::dopri5::State;
-use super::surface::{SurfaceProblem, System};
+use super::surface::{absolute, SurfaceProblem, System};
 use super::{Method, MethodEvent, Setting, Solution, Stats};
 use crate::error::{Error, Result};
 
@@ -233,13 +233,7 @@ pub fn solve_step(problem: &impl System, h: f64) -> Result<Solution> {
             }
         }
     }
-    // Back from (u, w) to (x, v); on a still surface they are the same numbers.
-    let v_s = problem.surface_speed();
-    let (x_end, v_end) = if v_s == 0.0 {
-        (y.y[0], y.y[1])
-    } else {
-        (y.y[0] + v_s * t_end, y.y[1] + v_s)
-    };
+    let (x_end, v_end) = absolute(problem, t_end, y.y[0], y.y[1]);
     Ok(Solution::new(events, x_end, v_end, stats))
 }
 

@@ -28,10 +28,13 @@ pub struct SurfaceProblem {
 /// where the forces have kinks in time.
 pub trait System {
     fn body(&self) -> &Body;
-    /// D and N_f (N) at absolute time t (s) and position x (m).
+    /// D and N_f (N) at absolute time t (s) and position x (m); N_f does not depend on x.
     fn forces(&self, t: f64, x: f64) -> (f64, f64);
     /// Speed of the surface the body sticks to (m/s).
     fn surface_speed(&self) -> f64;
+    /// ∂D/∂x (N/m), constant on both problems (0 for forces of time only): the Jacobian the
+    /// implicit methods solve with (Moreau–Jean's W = M − h²θ² ∂D/∂x).
+    fn force_gradient(&self) -> f64;
     /// The first kink of the forces in time after t (s), infinity without one.
     fn breakpoint_after(&self, t: f64) -> f64;
     fn t_end(&self) -> f64;
@@ -54,6 +57,9 @@ impl System for Problem {
     fn surface_speed(&self) -> f64 {
         0.0
     }
+    fn force_gradient(&self) -> f64 {
+        0.0
+    }
     fn breakpoint_after(&self, t: f64) -> f64 {
         next_breakpoint(self, t)
     }
@@ -72,6 +78,9 @@ impl System for SurfaceProblem {
     fn surface_speed(&self) -> f64 {
         self.law.surface_speed
     }
+    fn force_gradient(&self) -> f64 {
+        self.law.stiffness
+    }
     fn breakpoint_after(&self, _t: f64) -> f64 {
         f64::INFINITY
     }
@@ -80,12 +89,24 @@ impl System for SurfaceProblem {
     }
 }
 
+/// Position (m) and velocity (m/s) at time t (s) of a body at u = x − v_s t, w = v − v_s; on
+/// a still surface the same numbers.
+pub fn absolute(problem: &impl System, t: f64, u: f64, w: f64) -> (f64, f64) {
+    let v_s = problem.surface_speed();
+    if v_s == 0.0 {
+        (u, w)
+    } else {
+        (u + v_s * t, w + v_s)
+    }
+}
+
 /// The refusal of a method that takes forces of time only ([`Problem`]).
 pub fn refused(method: &str) -> Error {
     Error::InvalidParam {
         name: "method",
         value: method.to_string(),
-        rule: "forces of time only: a force depending on the position needs exact or rk4"
+        rule: "forces of time only: a force depending on the position needs exact, rk4, moreau \
+               or euler_sign"
             .to_string(),
     }
 }
