@@ -49,9 +49,10 @@ pub enum Replay {
 }
 
 /// One step of a recorded period, in the order the integration took it; `M` is what a segment
-/// holds (the engine's motion, placed at the current position), `E` what an event carries
+/// holds (the forced engine's motion, placed at the current position; the belt's segment in
+/// local time, at its own x since its cycle returns to the same x), `E` what an event carries
 /// besides its time, kind, place and speed (nothing for the forced models, the friction's
-/// ledger since the cycle's start for the belt).
+/// ledger since the cycle's onset for the belt).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Op<M = Motion, E = ()> {
     /// An event at local time `t`: at the current position, or `dx` (m) beyond it.
