@@ -610,7 +610,7 @@ pub fn integrate_surface_with(
             (((x_on - x) / v_s).max(0.0), x_on, s, y_c)
         };
         let tau_on = tau + carried;
-        let stretch = (tau_on > tau).then(|| SurfaceSegment {
+        let stretch = (tau_on > tau).then_some(SurfaceSegment {
             t0: tau,
             t1: tau_on,
             duration: carried,
