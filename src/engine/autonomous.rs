@@ -651,7 +651,7 @@ pub fn integrate_surface_with(
         frame = next;
         local = Ledger::default();
         if tape.replays() && slips < opts.slips {
-            replay_cycles(&tape, slips..opts.slips, &mut out);
+            replay_cycles(tape.mode(), slips..opts.slips, &mut out);
             break;
         }
         let cycle = slips;
@@ -765,51 +765,36 @@ fn recorded(tape: &CycleTape, first: u32, frame: Frame, period: f64) -> SurfaceC
     cycle
 }
 
-/// Replays the run's cycle for cycles `cycles` and the onset that ends the last, from the ops
-/// on `tape`: with [`Replay::Segments`] every event and segment into `out`, with
-/// [`Replay::Compact`] none (the run keeps what rebuilds them).
-fn replay_cycles(tape: &CycleTape, cycles: std::ops::Range<u32>, out: &mut Out) {
-    let (ops, start, _) = tape.recorded();
+/// Replays the run's cycle (read from the tape's ops by [`recorded`]) for cycles `cycles` and
+/// the onset that ends the last: with [`Replay::Segments`] every event and segment into `out`,
+/// with [`Replay::Compact`] none (the run keeps what rebuilds them).
+fn replay_cycles(mode: Replay, cycles: std::ops::Range<u32>, out: &mut Out) {
     let Some(cycle) = out.run.cycle.clone() else {
         return;
     };
     out.run.end = cycle.frame(cycles.end).t;
-    if tape.mode() == Replay::Compact {
+    if mode == Replay::Compact {
         out.run.replayed = Some(Replayed {
             from: cycles.start,
             to: cycles.end,
         });
         return;
     }
-    let x_on = start.map_or(0.0, |s| f64::from_bits(s.x));
-    let place = |dx: Option<f64>| dx.map_or(x_on, |dx| x_on + dx);
+    // Events and segments go to their own lists: each in its recorded order.
+    let events = || cycle.events.iter().zip(&cycle.event_ledger);
     for n in cycles.clone() {
         let (frame, next) = (cycle.frame(n), cycle.frame(n + 1));
-        for op in ops {
-            match *op {
-                Op::Event {
-                    t,
-                    kind,
-                    dx,
-                    v,
-                    extra,
-                } => out.event(frame, n, t, (kind, place(dx), v), extra),
-                Op::Segment { motion, .. } => out.segment(&motion, frame.t, next.t),
-                Op::Move { .. } | Op::Retract { .. } => {}
-            }
+        for (e, &local) in events() {
+            out.event(frame, n, e.t, (e.kind, e.x, e.v), local);
+        }
+        for segment in &cycle.segments {
+            out.segment(segment, frame.t, next.t);
         }
     }
-    // The onset that ends the run: the first op of the next cycle.
-    if let Some(&Op::Event {
-        t,
-        kind,
-        dx,
-        v,
-        extra,
-    }) = ops.first()
-    {
+    // The onset that ends the run: the cycle's first event.
+    if let Some((e, &local)) = events().next() {
         let frame = cycle.frame(cycles.end);
-        out.event(frame, cycles.end, t, (kind, place(dx), v), extra);
+        out.event(frame, cycles.end, e.t, (e.kind, e.x, e.v), local);
     }
 }
 

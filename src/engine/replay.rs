@@ -31,7 +31,8 @@
 //! which keeps only the first and last periods and merges a stick and a slip at one instant;
 //! the belt's cycle starts at a time that is an output (t_k + (n − k) T) and returns to the
 //! same x (the spring's force is not invariant under a shift), and every event of it is kept.
-//! The belt's replay is [`super::autonomous`]'s `replay_cycles`, reading the same ops.
+//! The belt's replay is [`super::autonomous`]'s `replay_cycles`, which places the cycle read
+//! from the tape's ops (`SurfaceCycle`, the cycle the run exposes).
 
 use super::run::{absolute_time, EventKind, Motion, Recorder, Segment};
 
