@@ -1,11 +1,19 @@
 //! The exact replay of periodic orbits (src/engine/replay.rs) gives every output bit for bit
 //! as full integration does, on seeded random parameter sets of both models and both laws that
 //! reach every regime, including those where no period is replayed (continuous slip,
-//! orbits that do not rest at a period start, transients).
+//! orbits that do not rest at a period start, transients); and the same for the cycle of the
+//! autonomous belt (src/engine/autonomous.rs), whose compact replay stays bounded in memory.
 
 use std::collections::BTreeMap;
 
-use stickslip::engine::{analyse, integrate_with, Body, ForceLaw, Replay, Run, RunOptions};
+use stickslip::engine::autonomous::SurfaceRun;
+use stickslip::engine::{
+    analyse, integrate_surface_with, integrate_with, Body, ForceLaw, Replay, Run, RunOptions,
+    SurfaceOptions,
+};
+use stickslip::models::belt::body::{body as belt_body, surface_law};
+use stickslip::models::belt::formula as belt_formula;
+use stickslip::models::belt::BeltParams;
 use stickslip::models::pulled_mass::PulledMassParams;
 use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::{pulled_mass, woodpecker, LawKind};
@@ -147,4 +155,106 @@ fn replayed_periods_are_bit_identical_to_full_integration_in_every_regime() {
             "{regime:?} not reached: {regimes:?}"
         );
     }
+}
+
+/// (x, v, a) of a belt run at `samples`, written bit for bit.
+fn belt_states(run: &SurfaceRun, samples: &[f64]) -> String {
+    let states: Vec<_> = samples.iter().map(|&t| run.state_at(t)).collect();
+    format!("{states:?}")
+}
+
+#[test]
+fn replayed_belt_cycles_are_bit_identical_to_full_integration() {
+    let mut rng = Rng(0xbe17_c7c1e);
+    let log = |rng: &mut Rng, lo: f64, hi: f64| (lo.ln() + (hi.ln() - lo.ln()) * rng.unit()).exp();
+    let (mut transients, mut touches) = (0, 0);
+    for i in 0..400 {
+        let mu_s = rng.between(0.0, 2.0);
+        let p = BeltParams {
+            mass: log(&mut rng, 0.01, 10.0),
+            k: log(&mut rng, 1.0, 1e4),
+            v_b: log(&mut rng, 1e-4, 10.0),
+            mu_s,
+            mu_d: if i % 8 == 0 { mu_s } else { mu_s * rng.unit() },
+            g: rng.between(1.0, 25.0),
+        };
+        // Starts beyond the threshold (a transient of immediate slips) as well as at rest.
+        let x_s = belt_formula::evaluate(&p).x_s;
+        let x0 = if i % 3 == 0 {
+            x_s * rng.between(-6.0, 6.0)
+        } else {
+            0.0
+        };
+        let slips = [1, 2, 3, 7, 40][i % 5];
+        let opts = SurfaceOptions {
+            x0,
+            slips,
+            record_segments: true,
+        };
+        let law = surface_law(&p).expect("law");
+        let run = |mode| integrate_surface_with(&belt_body(&p), &law, &opts, mode).expect("run");
+        let (full, replayed, compact) = (
+            run(Replay::Off),
+            run(Replay::Segments),
+            run(Replay::Compact),
+        );
+        let what = format!("{p:?} from x0 = {x0} over {slips}");
+        assert_eq!(
+            format!("{full:?}"),
+            format!("{replayed:?}"),
+            "{what}: replay"
+        );
+        // From rest the second onset repeats the first; a transient may outlast a short run.
+        match &full.cycle {
+            Some(cycle) => {
+                transients += u32::from(cycle.first > 0);
+                touches += u32::from(p.mu_d == p.mu_s);
+            }
+            None => assert!(x0 != 0.0 || slips < 2, "{what}: no cycle"),
+        }
+        // The compact run keeps the events up to the replay and rebuilds the segments.
+        assert_eq!(full.cycle, compact.cycle, "{what}: compact cycle");
+        assert_eq!(full.end, compact.end, "{what}: compact end");
+        assert!(
+            full.events.starts_with(&compact.events),
+            "{what}: compact events"
+        );
+        let mut samples: Vec<f64> = (0..=331).map(|j| full.end * f64::from(j) / 331.0).collect();
+        samples.extend(full.events.iter().map(|e| e.t));
+        assert_eq!(
+            belt_states(&full, &samples),
+            belt_states(&compact, &samples),
+            "{what}: compact states"
+        );
+    }
+    eprintln!("belt sets with a transient: {transients}, touching: {touches}");
+    assert!(transients >= 10 && touches >= 10, "{transients} {touches}");
+}
+
+#[test]
+fn a_compact_belt_run_of_1e5_cycles_stores_a_bounded_amount() {
+    let p = BeltParams::default();
+    let opts = SurfaceOptions {
+        x0: 0.0,
+        slips: 100_000,
+        record_segments: true,
+    };
+    let law = surface_law(&p).expect("law");
+    let run = |mode| integrate_surface_with(&belt_body(&p), &law, &opts, mode).expect("run");
+    let (full, compact) = (run(Replay::Segments), run(Replay::Compact));
+    assert_eq!(full.events.len(), 3 * 100_000 + 1);
+    // The first cycle is recorded, the second onset repeats it: nothing grows with the cycles.
+    assert!(compact.events.len() <= 4, "{}", compact.events.len());
+    assert!(compact.ledger.len() <= 4 && compact.segments.len() <= 4);
+    let cycle = compact.cycle.as_ref().expect("a cycle");
+    assert!(cycle.events.len() <= 4 && cycle.segments.len() <= 4);
+    // The last onset at t_1 + 10⁵ T, and the late motion rebuilt bit for bit.
+    assert_eq!(compact.end, full.events.last().expect("events").t);
+    assert_eq!(compact.end, cycle.start + 1e5 * cycle.period);
+    let late: Vec<f64> = full.events[full.events.len() - 40..]
+        .iter()
+        .map(|e| e.t)
+        .chain((0..100).map(|j| compact.end * (1.0 - f64::from(j) * 1e-6)))
+        .collect();
+    assert_eq!(belt_states(&full, &late), belt_states(&compact, &late));
 }

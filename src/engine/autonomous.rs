@@ -2,7 +2,7 @@
 //! position, D(x) = D0 + c·x with c < 0 (a spring), under a constant friction-bearing normal
 //! force N_f, on a surface that moves at a constant speed v_s (a belt). The force does not
 //! depend on time, so there is no forcing period: the run goes from event to event and the
-//! cycle, with its period, is found from the events ([`detect_cycle`]).
+//! cycle, with its period, is found from the events ([`SurfaceCycle`]).
 //!
 //! ```text
 //! STUCK (v = v_s)   x = x0 + v_s (t − t0);  leaves when |D(x)| > μs N_f   → SLIP, s = sgn D(x)
@@ -21,8 +21,32 @@
 //! The friction's ledger is kept exactly too: the heat ∫ μd N_f |v − v_s| dt of each slip and
 //! the work ∫ f v_s dt the surface does through the friction force f on the body (what drives
 //! a belt), both from the arc's closed form.
+//!
+//! The cycle and its replay ([`super::replay`], the mechanism of the forced models' periods).
+//! The run is integrated in local time: a cycle runs from a slip onset (τ = 0) to the next, its
+//! events and segments are placed at t_n + τ, and its ledger at L_n + ℓ(τ), where (t_n, L_n)
+//! is the onset's time and ledger. The motion after an onset depends only on the onset's
+//! state, so an onset that repeats the state of the previous one, bit for bit, starts a cycle
+//! that repeats the previous one event for event. The state compared is the direction s, x
+//! and y = x − x_eq (with v = v_s at every onset): an onset reached while carried is at
+//! x_on = (s μs N_f − D0)/c with y = s (μs − μd) N_f/c, both formed from the law's constants
+//! alone, so every such onset has the same bits and the cycle is found at the second onset
+//! (an immediate onset, where |D| exceeds μs N_f at a stick, only happens in a transient: each
+//! one lowers the excess by 2 μd N_f, and after a carried onset the stick is at
+//! |D| = |2 μd − μs| N_f ≤ μs N_f). From then on, with k the recorded cycle and T its length
+//! in local time,
+//!
+//! ```text
+//! t_n = t_k + (n − k)·T,   L_n = L_k + (n − k)·ΔL,   event = (t_n + τ, x, v, L_n + ℓ)
+//! ```
+//!
+//! in every mode: with [`Replay::Off`] each cycle is integrated and placed so, and its local
+//! offsets are the recorded ones bit for bit (tests/replay.rs), otherwise the recorded cycle
+//! is replayed. The period, the offsets within a cycle and the ledger over it
+//! ([`SurfaceCycle`]) carry their full relative precision however late the cycle starts.
 
 use super::law::Body;
+use super::replay::{Op, Replay, Tape};
 use super::roots::monotone_zero;
 use super::run::{Event, EventKind};
 use crate::error::{Error, Result};
@@ -109,6 +133,8 @@ pub struct HarmonicArc {
 pub struct ArcPoint {
     /// Position (m), velocity (m/s), acceleration (m/s²).
     pub x: f64,
+    /// x − x_c (m): x is x_c + dx, so that a replayed event at x_c + dx has x's bits.
+    pub dx: f64,
     pub v: f64,
     pub a: f64,
     /// v − v_s (m/s), formed from the start without the cancellation of v − v_s.
@@ -129,8 +155,10 @@ impl HarmonicArc {
             ..
         } = *self;
         let y = y_c - y_c * one_minus_cos + v_c / omega * sin;
+        let dx = v_c / omega * sin - y_c * one_minus_cos;
         ArcPoint {
-            x: x_c + (v_c / omega * sin - y_c * one_minus_cos),
+            x: x_c + dx,
+            dx,
             v: v_c - v_c * one_minus_cos - y_c * omega * sin,
             a: -omega * omega * y,
             relative: (v_c - surface_speed) - v_c * one_minus_cos - y_c * omega * sin,
@@ -262,7 +290,8 @@ pub enum SurfaceMotion {
     Slip(HarmonicArc),
 }
 
-/// A piece of the trajectory on [t0, t1] (absolute s).
+/// A piece of the trajectory on [t0, t1] (absolute s; local, from the cycle's onset, in a
+/// [`SurfaceCycle`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SurfaceSegment {
     pub t0: f64,
@@ -272,6 +301,33 @@ pub struct SurfaceSegment {
     /// the rounding of the time of day).
     pub duration: f64,
     pub motion: SurfaceMotion,
+}
+
+impl SurfaceSegment {
+    /// The segment of a cycle that starts at `start` (absolute s) and ends at `next`, from its
+    /// local form: a slip at start + τ, a carried stretch from start + τ0 to the next onset.
+    /// Integration and replay place segments through this one function.
+    fn placed(&self, start: f64, next: f64) -> SurfaceSegment {
+        let t0 = start + self.t0;
+        let (t1, motion) = match self.motion {
+            SurfaceMotion::Carried { x0, speed, .. } => {
+                (next, SurfaceMotion::Carried { t0, x0, speed })
+            }
+            SurfaceMotion::Slip(arc) => (
+                start + self.t1,
+                SurfaceMotion::Slip(HarmonicArc {
+                    t_c: start + arc.t_c,
+                    ..arc
+                }),
+            ),
+        };
+        SurfaceSegment {
+            t0,
+            t1,
+            duration: self.duration,
+            motion,
+        }
+    }
 }
 
 /// Options of a run.
@@ -286,13 +342,30 @@ pub struct SurfaceOptions {
     pub record_segments: bool,
 }
 
-/// The friction's ledger at an event, from t = 0 (J).
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// The friction's ledger at an event, from t = 0 (J); within a [`SurfaceCycle`], from its
+/// onset.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Ledger {
     /// Heat ∫ μd N_f |v − v_s| dt.
     pub heat: f64,
     /// Work of the surface ∫ f v_s dt through the friction force f on the body.
     pub surface_work: f64,
+}
+
+impl Ledger {
+    fn plus(self, other: Ledger) -> Ledger {
+        Ledger {
+            heat: self.heat + other.heat,
+            surface_work: self.surface_work + other.surface_work,
+        }
+    }
+
+    fn times(self, n: f64) -> Ledger {
+        Ledger {
+            heat: n * self.heat,
+            surface_work: n * self.surface_work,
+        }
+    }
 }
 
 /// How a run ended.
@@ -306,23 +379,86 @@ pub enum Ending {
     Slipping,
 }
 
+/// The cycle of a run: the one from slip onset `first` to the next, which every later cycle
+/// repeats (module doc). Times are local, from the cycle's onset, so that they keep their
+/// relative precision however late the cycle starts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceCycle {
+    /// Index of the slip onset the recorded cycle starts at, and its time (s, absolute).
+    pub first: u32,
+    pub start: f64,
+    /// Period T (s): the cycle's length in local time.
+    pub period: f64,
+    /// The friction's ledger over one cycle (J).
+    pub ledger: Ledger,
+    /// The cycle's events, its onset first, with `t` the offset from the onset (s) and
+    /// `period` its index `first`.
+    pub events: Vec<Event>,
+    /// The ledger at each event since the onset (same index).
+    pub event_ledger: Vec<Ledger>,
+    /// The cycle's segments in local time (empty unless recorded).
+    pub segments: Vec<SurfaceSegment>,
+    /// The ledger at the onset (J, from t = 0).
+    ledger_start: Ledger,
+}
+
+impl SurfaceCycle {
+    /// The onset of cycle n ≥ `first`: time t_k + (n − k)·T (s) and ledger L_k + (n − k)·ΔL.
+    fn frame(&self, n: u32) -> Frame {
+        let cycles = f64::from(n - self.first);
+        Frame {
+            t: self.start + cycles * self.period,
+            ledger: self.ledger_start.plus(self.ledger.times(cycles)),
+        }
+    }
+}
+
+/// A slip onset: its time (s, absolute) and the ledger there (J).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Frame {
+    t: f64,
+    ledger: Ledger,
+}
+
+/// What the motion after a slip onset depends on besides the law: the direction, x and
+/// y = x − x_eq (as bits); v is v_s at every onset.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Onset {
+    dir: i8,
+    x: u64,
+    y: u64,
+}
+
+/// The cycles a [`Replay::Compact`] run replayed without storing them: `from..to`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Replayed {
+    from: u32,
+    to: u32,
+}
+
 /// The outcome of a run.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SurfaceRun {
     /// Every event in time order; `period` counts the slip onsets before it (the cycle index).
+    /// With [`Replay::Compact`], those up to the onset where the replay began.
     pub events: Vec<Event>,
     /// The ledger at each event (same index).
     pub ledger: Vec<Ledger>,
-    /// Recorded segments (empty unless asked for).
+    /// Recorded segments (empty unless asked for; with [`Replay::Compact`], up to the onset
+    /// where the replay began: [`SurfaceRun::state_at`] covers the rest).
     pub segments: Vec<SurfaceSegment>,
     pub ending: Ending,
+    /// The cycle every later one repeats, once found.
+    pub cycle: Option<SurfaceCycle>,
+    /// Time of the run's last event (s).
+    pub end: f64,
+    replayed: Option<Replayed>,
 }
 
 impl SurfaceRun {
     /// (x, v, a) at absolute time t from the recorded segments, if t is covered.
     pub fn state_at(&self, t: f64) -> Option<(f64, f64, f64)> {
-        let i = self.segments.partition_point(|s| s.t1 < t);
-        let seg = self.segments.get(i)?;
+        let seg = self.segment_at(t)?;
         if t < seg.t0 {
             return None;
         }
@@ -334,6 +470,27 @@ impl SurfaceRun {
             }
         })
     }
+
+    /// The first segment that ends at or after t, replayed ones included.
+    fn segment_at(&self, t: f64) -> Option<SurfaceSegment> {
+        let i = self.segments.partition_point(|s| s.t1 < t);
+        if let Some(seg) = self.segments.get(i) {
+            return Some(*seg);
+        }
+        let (replayed, cycle) = (self.replayed?, self.cycle.as_ref()?);
+        // Segments of cycles before n − 1 end before t: a window around the cycle of t.
+        let n = ((t - cycle.start) / cycle.period).floor();
+        let n = (f64::from(cycle.first) + n).clamp(0.0, f64::from(u32::MAX)) as u32;
+        let from = n.saturating_sub(1).max(replayed.from);
+        (from..replayed.to.min(n.saturating_add(2))).find_map(|m| {
+            let (start, next) = (cycle.frame(m).t, cycle.frame(m + 1).t);
+            cycle
+                .segments
+                .iter()
+                .map(|s| s.placed(start, next))
+                .find(|s| s.t1 >= t)
+        })
+    }
 }
 
 /// The acceleration's centre x_eq of a slip in direction s (m), and x − x_eq at x.
@@ -341,92 +498,178 @@ fn centre(law: &SurfaceLaw, body: &Body, s: f64) -> f64 {
     (s * body.mu_d * law.normal - law.drive) / law.stiffness
 }
 
-/// Integrates `body` under `law` from x = `opts.x0`, v = v_s at t = 0.
+/// Integrates `body` under `law` from x = `opts.x0`, v = v_s at t = 0, replaying the cycle
+/// once found ([`Replay::Segments`]).
 pub fn integrate_surface(
     body: &Body,
     law: &SurfaceLaw,
     opts: &SurfaceOptions,
 ) -> Result<SurfaceRun> {
+    integrate_surface_with(body, law, opts, Replay::Segments)
+}
+
+/// The recorded cycle: local segments with absolute x, events with x − x_onset, the ledger
+/// since the onset.
+type CycleTape = Tape<Onset, SurfaceSegment, Ledger, Ledger>;
+
+/// The run's outputs that events and segments go to.
+struct Out<'a> {
+    run: &'a mut SurfaceRun,
+    record_segments: bool,
+}
+
+impl Out<'_> {
+    /// An event of cycle `n` at local time `tau` of the cycle starting at `frame`, with the
+    /// ledger `local` since the onset (integration and replay both place events here).
+    fn event(
+        &mut self,
+        frame: Frame,
+        n: u32,
+        tau: f64,
+        (kind, x, v): (EventKind, f64, f64),
+        local: Ledger,
+    ) {
+        self.run.events.push(Event {
+            t: frame.t + tau,
+            period: n,
+            kind,
+            x,
+            v,
+        });
+        self.run.ledger.push(frame.ledger.plus(local));
+    }
+
+    fn segment(&mut self, local: &SurfaceSegment, start: f64, next: f64) {
+        if self.record_segments {
+            self.run.segments.push(local.placed(start, next));
+        }
+    }
+}
+
+/// [`integrate_surface`], with the cycles that repeat treated as `replay` says.
+pub fn integrate_surface_with(
+    body: &Body,
+    law: &SurfaceLaw,
+    opts: &SurfaceOptions,
+    replay: Replay,
+) -> Result<SurfaceRun> {
     let omega = (-law.stiffness / body.mass).sqrt();
     let v_s = law.surface_speed;
     let limit = body.mu_s * law.normal;
+    let friction = body.mu_d * law.normal;
     let mut run = SurfaceRun {
         events: Vec::new(),
         ledger: Vec::new(),
         segments: Vec::new(),
         ending: Ending::Slips,
+        cycle: None,
+        end: 0.0,
+        replayed: None,
     };
-    let mut ledger = Ledger {
-        heat: 0.0,
-        surface_work: 0.0,
+    let mut out = Out {
+        run: &mut run,
+        record_segments: opts.record_segments,
     };
+    let mut tape = CycleTape::detecting(replay, opts.record_segments);
+    // The current cycle's onset (before the first, t = 0), and the ledger ℓ since it.
+    let mut frame = Frame {
+        t: 0.0,
+        ledger: Ledger::default(),
+    };
+    let mut local = Ledger::default();
     let mut slips = 0u32;
-    // Carried from (t, x): the next slip onset, then the arc.
-    let (mut t, mut x) = (0.0, opts.x0);
+    // Carried from (τ, x), τ local: the next slip onset, then the arc.
+    let (mut tau, mut x) = (0.0, opts.x0);
     // How far |D(x)| may exceed μs N_f by the rounding of x at a stick (N): the position at the
     // end of an arc is known to a few ulps of the arc's amplitude. A touch (μd = μs) ends at
     // the onset's position, where |D| = μs N_f: its rounding must not start a slip the other
     // way.
     let mut rounding = 0.0;
     loop {
-        if run.events.len() > MAX_EVENTS {
+        if out.run.events.len() > MAX_EVENTS {
             return Err(Error::Stalled {
-                t,
+                t: frame.t + tau,
                 reason: "too many events on a surface",
             });
         }
-        // STUCK at (t, x), v = v_s: the onset, now or where the moving x brings D(x) to ±μs N_f.
+        // STUCK at (τ, x), v = v_s: the onset, now or where the moving x brings D(x) to ±μs N_f.
         let force = law.force(x);
-        let (t_on, x_on, s, y_c) = if force.abs() > limit + rounding {
+        let (carried, x_on, s, y_c) = if force.abs() > limit + rounding {
             let s = force.signum();
-            (t, x, s, x - centre(law, body, s))
+            (0.0, x, s, x - centre(law, body, s))
         } else {
             // D(x) moves at c·v_s: it reaches the limit in direction sgn(c v_s).
             let s = (law.stiffness * v_s).signum();
             if v_s == 0.0 || s == 0.0 {
-                run.ending = Ending::Stuck;
+                out.run.ending = Ending::Stuck;
                 break;
             }
             let x_on = (s * limit - law.drive) / law.stiffness;
-            let t_on = t + (x_on - x) / v_s;
             // x_on − x_eq = s (μs − μd) N_f / c, without the cancellation of two positions.
             let y_c = s * (body.mu_s - body.mu_d) * law.normal / law.stiffness;
-            (t_on.max(t), x_on, s, y_c)
+            (((x_on - x) / v_s).max(0.0), x_on, s, y_c)
         };
-        if t_on > t {
-            if opts.record_segments {
-                run.segments.push(SurfaceSegment {
-                    t0: t,
-                    t1: t_on,
-                    duration: (x_on - x) / v_s,
-                    motion: SurfaceMotion::Carried {
-                        t0: t,
-                        x0: x,
-                        speed: v_s,
-                    },
-                });
-            }
+        let tau_on = tau + carried;
+        let stretch = (tau_on > tau).then_some(SurfaceSegment {
+            t0: tau,
+            t1: tau_on,
+            duration: carried,
+            motion: SurfaceMotion::Carried {
+                t0: tau,
+                x0: x,
+                speed: v_s,
+            },
+        });
+        if let Some(stretch) = &stretch {
+            tape.segment(tau, tau_on, *stretch);
             // f = −D(x) while carried: the surface's work −∫ D dx from x to x_on.
-            ledger.surface_work -= (x_on - x) * (law.drive + 0.5 * law.stiffness * (x_on + x));
+            local.surface_work -= (x_on - x) * (law.drive + 0.5 * law.stiffness * (x_on + x));
         }
+        // The onset closes the cycle: a repeat of the last onset's state makes it the cycle.
         let dir = s as i8;
-        let cycle = slips;
-        let event = move |t, kind, x, v| Event {
-            t,
-            period: cycle,
-            kind,
-            x,
-            v,
+        let onset = Onset {
+            dir,
+            x: x_on.to_bits(),
+            y: y_c.to_bits(),
         };
-        run.events
-            .push(event(t_on, EventKind::Slip { dir }, x_on, v_s));
-        run.ledger.push(ledger);
+        tape.end(local, onset);
+        if !tape.repeats() {
+            out.run.cycle = None;
+        } else if out.run.cycle.is_none() {
+            out.run.cycle = Some(recorded(&tape, slips - 1, frame, tau_on));
+        }
+        let next = match &out.run.cycle {
+            Some(cycle) => cycle.frame(slips),
+            None => Frame {
+                t: frame.t + tau_on,
+                ledger: frame.ledger.plus(local),
+            },
+        };
+        if let Some(stretch) = &stretch {
+            out.segment(stretch, frame.t, next.t);
+        }
+        frame = next;
+        local = Ledger::default();
+        if tape.replays() && slips < opts.slips {
+            replay_cycles(tape.mode(), slips..opts.slips, &mut out);
+            break;
+        }
+        let cycle = slips;
+        out.event(
+            frame,
+            cycle,
+            0.0,
+            (EventKind::Slip { dir }, x_on, v_s),
+            local,
+        );
         if slips == opts.slips {
             break;
         }
         slips += 1;
+        tape.begin(onset);
+        tape.event(0.0, EventKind::Slip { dir }, None, v_s, local);
         let arc = HarmonicArc {
-            t_c: t_on,
+            t_c: 0.0,
             x_c: x_on,
             v_c: v_s,
             y_c,
@@ -435,10 +678,9 @@ pub fn integrate_surface(
             dir,
         };
         let (maxima, stick) = arc.stick();
-        let friction = body.mu_d * law.normal;
         let at = |delta: f64| Ledger {
-            heat: ledger.heat + friction * arc.slip_distance(delta),
-            surface_work: ledger.surface_work - s * friction * v_s * delta / omega,
+            heat: friction * arc.slip_distance(delta),
+            surface_work: -s * friction * v_s * delta / omega,
         };
         for delta in maxima
             .iter()
@@ -446,73 +688,114 @@ pub fn integrate_surface(
             .filter(|&d| stick.is_none_or(|e| d < e))
         {
             let p = arc.at_angle(delta);
-            run.events
-                .push(event(t_on + delta / omega, EventKind::SpeedMax, p.x, p.v));
-            run.ledger.push(at(delta));
+            let t = delta / omega;
+            out.event(frame, cycle, t, (EventKind::SpeedMax, p.x, p.v), at(delta));
+            tape.event(t, EventKind::SpeedMax, Some(p.dx), p.v, at(delta));
         }
         let Some(delta) = stick else {
-            if opts.record_segments {
-                run.segments.push(SurfaceSegment {
-                    t0: t_on,
-                    t1: f64::INFINITY,
-                    duration: f64::INFINITY,
-                    motion: SurfaceMotion::Slip(arc),
-                });
-            }
-            run.ending = Ending::Slipping;
+            let slip = SurfaceSegment {
+                t0: 0.0,
+                t1: f64::INFINITY,
+                duration: f64::INFINITY,
+                motion: SurfaceMotion::Slip(arc),
+            };
+            out.segment(&slip, frame.t, f64::INFINITY);
+            out.run.ending = Ending::Slipping;
             break;
         };
-        t = t_on + delta / omega;
-        x = arc.at_angle(delta).x;
+        tau = delta / omega;
+        let end = arc.at_angle(delta);
+        x = end.x;
         let amplitude = arc.y_c.hypot(arc.v_c / omega);
         rounding = TOUCH_REL * -law.stiffness * (amplitude + x.abs());
-        ledger = at(delta);
-        if opts.record_segments {
-            run.segments.push(SurfaceSegment {
-                t0: t_on,
-                t1: t,
-                duration: delta / omega,
-                motion: SurfaceMotion::Slip(arc),
-            });
-        }
-        run.events.push(event(t, EventKind::Stick { dir }, x, v_s));
-        run.ledger.push(ledger);
+        local = at(delta);
+        let slip = SurfaceSegment {
+            t0: 0.0,
+            t1: tau,
+            duration: tau,
+            motion: SurfaceMotion::Slip(arc),
+        };
+        // The next onset is not known yet; a slip ends at its own offset, not at it.
+        out.segment(&slip, frame.t, f64::NAN);
+        tape.segment(0.0, tau, slip);
+        out.event(frame, cycle, tau, (EventKind::Stick { dir }, x, v_s), local);
+        tape.event(tau, EventKind::Stick { dir }, Some(end.dx), v_s, local);
     }
+    run.end = run.events.last().map_or(0.0, |e| e.t).max(run.end);
     Ok(run)
 }
 
-/// A cycle found in the events of an autonomous run: `events[first..first + len]` repeat with
-/// period `period` (s).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Cycle {
-    pub first: usize,
-    pub len: usize,
-    pub period: f64,
+/// The cycle recorded on `tape`, cycle `first` of the run, which started at `frame` and lasted
+/// `period` (s, local).
+fn recorded(tape: &CycleTape, first: u32, frame: Frame, period: f64) -> SurfaceCycle {
+    let (ops, start, ledger) = tape.recorded();
+    let x_on = start.map_or(0.0, |s| f64::from_bits(s.x));
+    let mut cycle = SurfaceCycle {
+        first,
+        start: frame.t,
+        period,
+        ledger,
+        events: Vec::new(),
+        event_ledger: Vec::new(),
+        segments: Vec::new(),
+        ledger_start: frame.ledger,
+    };
+    for op in ops {
+        match *op {
+            Op::Event {
+                t,
+                kind,
+                dx,
+                v,
+                extra,
+            } => {
+                cycle.events.push(Event {
+                    t,
+                    period: first,
+                    kind,
+                    x: dx.map_or(x_on, |dx| x_on + dx),
+                    v,
+                });
+                cycle.event_ledger.push(extra);
+            }
+            Op::Segment { motion, .. } => cycle.segments.push(motion),
+            Op::Move { .. } | Op::Retract { .. } => {}
+        }
+    }
+    cycle
 }
 
-/// The last cycle of `events`: the latest slip onset and the nearest earlier one in the same
-/// direction at the same position and velocity (to `rel_tol` of the largest |x| and |v| of the
-/// events, with an absolute floor of `rel_tol` m and m/s). The system is autonomous, so a
-/// repeated onset state is a repeated motion.
-pub fn detect_cycle(events: &[Event], rel_tol: f64) -> Option<Cycle> {
-    let onsets: Vec<usize> = (0..events.len())
-        .filter(|&i| matches!(events[i].kind, EventKind::Slip { .. }))
-        .collect();
-    let (&last, earlier) = onsets.split_last()?;
-    let x_scale = events.iter().fold(1.0f64, |m, e| m.max(e.x.abs()));
-    let v_scale = events.iter().fold(1.0f64, |m, e| m.max(e.v.abs()));
-    let end = events[last];
-    earlier.iter().rev().find_map(|&i| {
-        let e = events[i];
-        let same = e.kind == end.kind
-            && (e.x - end.x).abs() <= rel_tol * x_scale
-            && (e.v - end.v).abs() <= rel_tol * v_scale;
-        same.then(|| Cycle {
-            first: i,
-            len: last - i,
-            period: end.t - e.t,
-        })
-    })
+/// Replays the run's cycle (read from the tape's ops by [`recorded`]) for cycles `cycles` and
+/// the onset that ends the last: with [`Replay::Segments`] every event and segment into `out`,
+/// with [`Replay::Compact`] none (the run keeps what rebuilds them).
+fn replay_cycles(mode: Replay, cycles: std::ops::Range<u32>, out: &mut Out) {
+    let Some(cycle) = out.run.cycle.clone() else {
+        return;
+    };
+    out.run.end = cycle.frame(cycles.end).t;
+    if mode == Replay::Compact {
+        out.run.replayed = Some(Replayed {
+            from: cycles.start,
+            to: cycles.end,
+        });
+        return;
+    }
+    // Events and segments go to their own lists: each in its recorded order.
+    let events = || cycle.events.iter().zip(&cycle.event_ledger);
+    for n in cycles.clone() {
+        let (frame, next) = (cycle.frame(n), cycle.frame(n + 1));
+        for (e, &local) in events() {
+            out.event(frame, n, e.t, (e.kind, e.x, e.v), local);
+        }
+        for segment in &cycle.segments {
+            out.segment(segment, frame.t, next.t);
+        }
+    }
+    // The onset that ends the run: the cycle's first event.
+    if let Some((e, &local)) = events().next() {
+        let frame = cycle.frame(cycles.end);
+        out.event(frame, cycles.end, e.t, (e.kind, e.x, e.v), local);
+    }
 }
 
 #[cfg(test)]
@@ -543,7 +826,9 @@ mod tests {
         let first = run.events[0];
         assert_eq!(first.kind, EventKind::Slip { dir: -1 });
         assert!((first.t - 0.5).abs() < 1e-15 && (first.x - 0.05).abs() < 1e-16);
-        let cycle = detect_cycle(&run.events, 1e-12).unwrap();
+        let cycle = run.cycle.as_ref().unwrap();
+        // The second onset repeats the first: the first cycle is the cycle.
+        assert_eq!(cycle.first, 0);
         let omega: f64 = 10.0;
         let period = 2.0 / omega * (std::f64::consts::PI - (omega * 0.02 / 0.1).atan()) + 0.4;
         assert!(
@@ -551,16 +836,19 @@ mod tests {
             "{}",
             cycle.period
         );
-        assert_eq!(cycle.len, 3);
-        let stick = run.events[cycle.first + 2];
+        assert_eq!(cycle.events.len(), 3);
+        assert_eq!(run.events.len(), 4 * 3 + 1);
+        let stick = run.events[2];
         assert_eq!(stick.kind, EventKind::Stick { dir: -1 });
         assert!((stick.x - 0.01).abs() < 1e-16, "{}", stick.x);
+        assert_eq!(cycle.events[2].x, stick.x);
         // Over a cycle the heat equals the belt's work: the block's energy returns.
-        let (a, b) = (run.ledger[cycle.first], run.ledger[cycle.first + cycle.len]);
-        let (heat, work) = (b.heat - a.heat, b.surface_work - a.surface_work);
+        let (heat, work) = (cycle.ledger.heat, cycle.ledger.surface_work);
         assert!((heat - work).abs() <= 1e-14 * heat, "{heat} vs {work}");
+        // Later cycles are placed at t_1 + nT.
+        assert_eq!(run.events[12].t, run.events[0].t + 4.0 * cycle.period);
         // The speed maximum is the backward speed −√(v_b² + ω²Δ²) at x = x_d.
-        let max = run.events[cycle.first + 1];
+        let max = run.events[1];
         assert_eq!(max.kind, EventKind::SpeedMax);
         assert!((max.v + (0.01f64 + 0.04).sqrt()).abs() < 1e-15 && (max.x - 0.03).abs() < 1e-16);
         // The recorded trajectory agrees with the events.
@@ -577,7 +865,7 @@ mod tests {
             record_segments: false,
         };
         let run = integrate_surface(&body, &law, &opts).unwrap();
-        let cycle = detect_cycle(&run.events, 1e-12).unwrap();
+        let cycle = run.cycle.unwrap();
         let period = std::f64::consts::TAU / 10.0;
         assert!(
             (cycle.period - period).abs() <= 4e-15 * period,

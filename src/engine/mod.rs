@@ -27,7 +27,8 @@ pub mod run;
 pub mod steady;
 
 pub use autonomous::{
-    detect_cycle, integrate_surface, Cycle, HarmonicArc, SurfaceLaw, SurfaceOptions, SurfaceRun,
+    integrate_surface, integrate_surface_with, HarmonicArc, SurfaceCycle, SurfaceLaw,
+    SurfaceOptions, SurfaceRun,
 };
 pub use law::{Affine, Basis, Body, ForceLaw, Piece};
 pub use replay::Replay;

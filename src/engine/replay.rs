@@ -19,6 +19,20 @@
 //! tests/replay.rs against [`Replay::Off`]). Orbits whose start states differ (multi-period
 //! orbits, transients, a continuous slip whose v at the period start still changes in its last
 //! bits) are integrated period by period as before.
+//!
+//! The autonomous belt ([`super::autonomous`]) uses the same tape for its cycle: there the
+//! "period" runs from a slip onset to the next, its start state is the onset's (direction, x and
+//! y = x − x_eq bit for bit), its times are local (from the onset) and its per-event extra is the
+//! friction's ledger since the onset. Both engines share [`Replay`], [`Op`] and [`Tape`]
+//! (recording, detection of a repeated start state, the per-period total). The loop that
+//! replays differs, for two reasons of physics, not of code: the forced models' periods start
+//! at n·T and move x by the recorded displacements (the motion is invariant under a shift in x,
+//! so x carries on from period to period), and their events pass through the [`Recorder`],
+//! which keeps only the first and last periods and merges a stick and a slip at one instant;
+//! the belt's cycle starts at a time that is an output (t_k + (n − k) T) and returns to the
+//! same x (the spring's force is not invariant under a shift), and every event of it is kept.
+//! The belt's replay is [`super::autonomous`]'s `replay_cycles`, which places the cycle read
+//! from the tape's ops (`SurfaceCycle`, the cycle the run exposes).
 
 use super::run::{absolute_time, EventKind, Motion, Recorder, Segment};
 
@@ -35,22 +49,27 @@ pub enum Replay {
     Compact,
 }
 
-/// One step of a recorded period, in the order the integration took it.
+/// One step of a recorded period, in the order the integration took it; `M` is what a segment
+/// holds (the forced engine's motion, placed at the current position; the belt's segment in
+/// local time, at its own x since its cycle returns to the same x), `E` what an event carries
+/// besides its time, kind, place and speed (nothing for the forced models, the friction's
+/// ledger since the cycle's onset for the belt).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Op {
+pub(super) enum Op<M = Motion, E = ()> {
     /// An event at local time `t`: at the current position, or `dx` (m) beyond it.
     Event {
         t: f64,
         kind: EventKind,
         dx: Option<f64>,
         v: f64,
+        extra: E,
     },
     /// A slip onset at local time `t` taken back.
     Retract { t: f64 },
     /// The body moved by `dx` (m) along an arc.
     Move { dx: f64 },
     /// A recorded segment over local [t0, t1]; its motion starts at the current position.
-    Segment { t0: f64, t1: f64, motion: Motion },
+    Segment { t0: f64, t1: f64, motion: M },
 }
 
 /// The segments of replayed periods, rebuilt on demand ([`Replay::Compact`]).
@@ -120,17 +139,22 @@ pub(super) struct StartState {
     pub accel_sign: i8,
 }
 
-/// The steps of the current period, recorded while it may become the template.
-pub(super) struct Tape {
+/// The steps of the current period, recorded while it may become the template: `S` is the
+/// start state a repeat is detected on, `P` the period's total the replay hands on (the
+/// friction dissipation for the forced models, the ledger for the belt).
+pub(super) struct Tape<S = StartState, M = Motion, E = (), P = f64> {
     mode: Replay,
     segments: bool,
-    ops: Vec<Op>,
+    /// Record (and detect) also with [`Replay::Off`]: the belt reads its cycle from the tape.
+    always: bool,
+    ops: Vec<Op<M, E>>,
     /// The current period is being recorded, from this start state.
-    recording: Option<StartState>,
-    /// The last period was recorded in full and ended at rest: the next periods repeat it.
+    recording: Option<S>,
+    /// The last period was recorded in full and ended in its start state: the next periods
+    /// repeat it.
     complete: bool,
-    /// The recorded period's friction dissipation (J).
-    dissipation: f64,
+    /// The recorded period's total: friction dissipation (J) or the belt's ledger.
+    dissipation: P,
 }
 
 /// The outputs of a run that replayed periods extend.
@@ -146,18 +170,30 @@ pub(super) struct Outputs<'a> {
 /// seldom grows the list.
 const OPS_RESERVED: usize = 16;
 
-impl Tape {
-    pub(super) fn new(mode: Replay, segments: bool) -> Tape {
+impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> {
+    /// A tape that records only where `mode` replays (the forced models).
+    pub(super) fn new(mode: Replay, segments: bool) -> Self {
         Tape {
             mode,
             segments,
+            always: false,
             ops: match mode {
                 Replay::Off => Vec::new(),
                 Replay::Segments | Replay::Compact => Vec::with_capacity(OPS_RESERVED),
             },
             recording: None,
             complete: false,
-            dissipation: 0.0,
+            dissipation: P::default(),
+        }
+    }
+
+    /// A tape that records and detects in every mode, [`Replay::Off`] included (the belt, whose
+    /// cycle is an output of every run).
+    pub(super) fn detecting(mode: Replay, segments: bool) -> Self {
+        Tape {
+            always: true,
+            ops: Vec::with_capacity(OPS_RESERVED),
+            ..Self::new(mode, segments)
         }
     }
 
@@ -167,25 +203,47 @@ impl Tape {
         self.complete
     }
 
-    /// A period begins in state `start`.
+    /// Whether the run replays the periods that repeat (not with [`Replay::Off`]).
     #[inline]
-    pub(super) fn begin(&mut self, start: StartState) {
-        self.ops.clear();
-        self.recording = (self.mode != Replay::Off).then_some(start);
+    pub(super) fn replays(&self) -> bool {
+        self.complete && self.mode != Replay::Off
     }
 
-    /// The period ended with friction dissipation `dissipation` (J) in state `end`: the next
+    /// The mode the tape was made for.
+    pub(super) fn mode(&self) -> Replay {
+        self.mode
+    }
+
+    /// A period begins in state `start`.
+    #[inline]
+    pub(super) fn begin(&mut self, start: S) {
+        self.ops.clear();
+        self.recording = (self.always || self.mode != Replay::Off).then_some(start);
+    }
+
+    /// The period ended with total `dissipation` (J, or the ledger) in state `end`: the next
     /// periods repeat it when that is the state it started in.
     #[inline]
-    pub(super) fn end(&mut self, dissipation: f64, end: StartState) {
+    pub(super) fn end(&mut self, dissipation: P, end: S) {
         self.complete = self.recording == Some(end);
         self.dissipation = dissipation;
     }
 
+    /// The recorded steps of the last period, its start state and its total.
+    pub(super) fn recorded(&self) -> (&[Op<M, E>], Option<S>, P) {
+        (&self.ops, self.recording, self.dissipation)
+    }
+
     #[inline]
-    pub(super) fn event(&mut self, t: f64, kind: EventKind, dx: Option<f64>, v: f64) {
+    pub(super) fn event(&mut self, t: f64, kind: EventKind, dx: Option<f64>, v: f64, extra: E) {
         if self.recording.is_some() {
-            self.ops.push(Op::Event { t, kind, dx, v });
+            self.ops.push(Op::Event {
+                t,
+                kind,
+                dx,
+                v,
+                extra,
+            });
         }
     }
 
@@ -204,12 +262,14 @@ impl Tape {
     }
 
     #[inline]
-    pub(super) fn segment(&mut self, t0: f64, t1: f64, motion: Motion) {
-        if self.recording.is_some() && t1 > t0 {
+    pub(super) fn segment(&mut self, t0: f64, t1: f64, motion: M) {
+        if self.segments && self.recording.is_some() && t1 > t0 {
             self.ops.push(Op::Segment { t0, t1, motion });
         }
     }
+}
 
+impl Tape {
     /// Replays the recorded period for periods `from..periods` starting at position `x` (m),
     /// through the recorder and into the outputs; returns the position at the end and, in
     /// [`Replay::Compact`] mode, what rebuilds the replayed segments.
@@ -267,7 +327,7 @@ impl Tape {
             }
             for op in &self.ops {
                 match *op {
-                    Op::Event { t, kind, dx, v } => {
+                    Op::Event { t, kind, dx, v, .. } => {
                         rec.push(m, t, kind, dx.map_or(x, |dx| x + dx), v);
                     }
                     Op::Retract { t } => rec.retract_slip(f64::from(m) * period + t),

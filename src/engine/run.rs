@@ -487,7 +487,7 @@ fn walk_piece<'a, M: ArcMotion>(
             let Some((crossing, s)) = onset else { break };
             rec.push(n, crossing.t.hi, EventKind::Slip { dir: s }, state.x, 0.0);
             rec.tape
-                .event(crossing.t.hi, EventKind::Slip { dir: s }, None, 0.0);
+                .event(crossing.t.hi, EventKind::Slip { dir: s }, None, 0.0, ());
             state.dir = s;
             state.accel_sign = 0;
             t = crossing.t.hi;
@@ -532,7 +532,7 @@ fn walk_piece<'a, M: ArcMotion>(
         let mut on_max = |tm: f64, at_max: Point| {
             rec.push(n, tm, EventKind::SpeedMax, at_max.x, at_max.v);
             rec.tape
-                .event(tm, EventKind::SpeedMax, Some(at_max.dx), at_max.v);
+                .event(tm, EventKind::SpeedMax, Some(at_max.dx), at_max.v, ());
         };
         let work_normal = opts.dissipation.then_some(normal_start);
         let slide = slide(
@@ -581,7 +581,7 @@ fn walk_piece<'a, M: ArcMotion>(
                     0.0,
                 );
                 rec.tape
-                    .event(t_stick, EventKind::Stick { dir: state.dir }, None, 0.0);
+                    .event(t_stick, EventKind::Stick { dir: state.dir }, None, 0.0, ());
                 state.dir = 0;
                 t = t_stick;
                 phase_t = if M::TRIG { end.phase } else { None };

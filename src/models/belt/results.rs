@@ -1,6 +1,8 @@
 //! The belt's evaluation: the closed forms, the exact integration of the same system
 //! ([`crate::engine::autonomous`]) with its cycle found from its events, and the checks of every
-//! closed form against the integration's last cycle (docs/belt.md, "Machine-readable output").
+//! closed form against the integration's cycle (docs/belt.md, "Machine-readable output"),
+//! measured in the cycle's local time: the period, the offsets and the ledger over a cycle
+//! keep their relative precision however late the cycle starts.
 
 use serde::Serialize;
 
@@ -9,15 +11,12 @@ use super::formula::{self as cf, ClosedForm, Regime};
 use super::params::BeltParams;
 use super::quantity::Key;
 use crate::engine::autonomous::{Ending, SurfaceMotion, SurfaceOptions, SurfaceRun};
-use crate::engine::{detect_cycle, integrate_surface, EventKind};
+use crate::engine::{integrate_surface_with, EventKind, Replay};
 use crate::error::{Error, Result};
 use crate::params::validate_periods;
 use crate::results::checks::{Check, BOUNDARY_BAND};
 use crate::results::ensure_in_range;
 
-/// Two onsets this close (relative to the largest |x| and |v|) are the same state: the onsets
-/// of the belt's cycle are the same bits, the tolerance only has to be above zero.
-const SAME_ONSET: f64 = 1e-12;
 /// A stick shorter than this fraction of the period is the rounding of a touch (Δ = 0): the
 /// time from the arc's end back to x_s, a difference of positions of size A.
 const TOUCH: f64 = 64.0 * f64::EPSILON;
@@ -35,8 +34,8 @@ pub struct ParamsOut {
     pub delta: f64,
 }
 
-/// The closed forms' quantities measured on the exact integration's last cycle; `null` where
-/// the run has no complete cycle.
+/// The closed forms' quantities measured on the exact integration's cycle (the one every later
+/// cycle repeats); `null` where the run has no complete cycle.
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 #[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
 pub struct Integration {
@@ -98,11 +97,21 @@ pub struct Evaluation {
 
 /// Validates `p`, evaluates the closed forms and integrates `cycles` slip-stick cycles.
 pub fn evaluate(p: &BeltParams, cycles: u32) -> Result<Evaluation> {
-    Ok(evaluate_with_run(p, cycles)?.0)
+    // The replayed cycles are not stored: memory stays bounded for 10⁶ cycles.
+    Ok(evaluate_replayed(p, cycles, Replay::Compact)?.0)
 }
 
-/// As [`evaluate`], also returning the run (with its segments).
+/// As [`evaluate`], also returning the run (with the segments of every cycle).
 pub fn evaluate_with_run(p: &BeltParams, cycles: u32) -> Result<(Evaluation, SurfaceRun)> {
+    evaluate_replayed(p, cycles, Replay::Segments)
+}
+
+/// As [`evaluate_with_run`], with the repeated cycles treated as `replay` says.
+pub fn evaluate_replayed(
+    p: &BeltParams,
+    cycles: u32,
+    replay: Replay,
+) -> Result<(Evaluation, SurfaceRun)> {
     p.validate()?;
     validate_periods(cycles)?;
     let c = cf::evaluate(p);
@@ -119,7 +128,7 @@ pub fn evaluate_with_run(p: &BeltParams, cycles: u32) -> Result<(Evaluation, Sur
         slips: cycles,
         record_segments: true,
     };
-    let run = integrate_surface(&body(p), &surface_law(p)?, &opts)?;
+    let run = integrate_surface_with(&body(p), &surface_law(p)?, &opts, replay)?;
     let integration = measure(p, &run, cycles)?;
     let checks = checks(p, &c, &integration);
     let evaluation = Evaluation {
@@ -139,7 +148,7 @@ pub fn evaluate_with_run(p: &BeltParams, cycles: u32) -> Result<(Evaluation, Sur
     Ok((evaluation, run))
 }
 
-/// The quantities of the last cycle of `run`.
+/// The quantities of the cycle of `run`, from its local times and ledger.
 fn measure(p: &BeltParams, run: &SurfaceRun, cycles: u32) -> Result<Integration> {
     let out = Integration {
         cycles,
@@ -148,28 +157,28 @@ fn measure(p: &BeltParams, run: &SurfaceRun, cycles: u32) -> Result<Integration>
     };
     if run.ending != Ending::Slips {
         return Err(Error::Stalled {
-            t: run.events.last().map_or(0.0, |e| e.t),
+            t: run.end,
             reason: "the belt's run ended without completing its cycles",
         });
     }
-    let Some(cycle) = detect_cycle(&run.events, SAME_ONSET) else {
+    let Some(cycle) = &run.cycle else {
         return Ok(out);
     };
-    let (start, end) = (cycle.first, cycle.first + cycle.len);
-    let events = &run.events[start..=end];
-    let Some((slip, arc)) = run.segments.iter().find_map(|s| match s.motion {
-        SurfaceMotion::Slip(arc) if s.t0 == events[0].t => Some((s, arc)),
-        _ => None,
+    let events = &cycle.events;
+    let Some((slip, arc)) = cycle.segments.iter().find_map(|s| match s.motion {
+        SurfaceMotion::Slip(arc) => Some((s, arc)),
+        SurfaceMotion::Carried { .. } => None,
     }) else {
         return Ok(out);
     };
-    let stick = run.segments.iter().find(|s| {
-        s.t1 == events[events.len() - 1].t && matches!(s.motion, SurfaceMotion::Carried { .. })
-    });
+    let stick = cycle
+        .segments
+        .iter()
+        .find(|s| matches!(s.motion, SurfaceMotion::Carried { .. }));
     let t_slip = slip.duration;
     // A stick of zero duration (a touch) has no segment.
     let t_stick = stick.map_or(0.0, |s| s.duration);
-    let period = t_slip + t_stick;
+    let period = cycle.period;
     let angle = t_slip * arc.omega;
     let xs = arc
         .turns(angle)
@@ -184,8 +193,7 @@ fn measure(p: &BeltParams, run: &SurfaceRun, cycles: u32) -> Result<Integration>
         .filter(|e| e.kind == EventKind::SpeedMax)
         .map(|e| e.v)
         .fold(f64::INFINITY, f64::min);
-    let (a, b) = (run.ledger[start], run.ledger[end]);
-    let (heat, work) = (b.heat - a.heat, b.surface_work - a.surface_work);
+    let (heat, work) = (cycle.ledger.heat, cycle.ledger.surface_work);
     let x_slip_end = events
         .iter()
         .find(|e| matches!(e.kind, EventKind::Stick { .. }))

@@ -12,7 +12,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::engine::{detect_cycle, integrate_surface, Body, ForceLaw, SurfaceLaw, SurfaceOptions};
+use crate::engine::{integrate_surface, Body, ForceLaw, SurfaceLaw, SurfaceOptions};
 use crate::error::{Error, Result};
 use crate::models::param::{validate_all, ParamSpec, Rule};
 use crate::models::{LawKind, Model, Physics};
@@ -149,7 +149,7 @@ impl Physics for DummyParams {
             record_segments: false,
         };
         let run = integrate_surface(&self.body(), &law, &opts)?;
-        let numeric = detect_cycle(&run.events, 1e-12).map(|c| c.period);
+        let numeric = run.cycle.map(|c| c.period);
         Ok(Evaluation {
             model: Self::ID,
             params: *self,
