@@ -16,8 +16,8 @@ use std::path::Path;
 use criterion::{criterion_group, criterion_main, Criterion};
 
 use stickslip::fit::data::{parse, ReadOptions, Tracked, Unit};
-use stickslip::fit::synthetic::Synthetic;
-use stickslip::fit::{fit, track, FitParam};
+use stickslip::models::woodpecker::fit::synthetic::Synthetic;
+use stickslip::models::woodpecker::fit::{fit, track, FitParam};
 use stickslip::models::woodpecker::WoodpeckerParams;
 
 /// The Figs. 26–27 scenario values (the starting point).

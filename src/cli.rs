@@ -11,7 +11,7 @@ use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand}
 
 use crate::export::CsvDialect;
 use crate::fit::data::{Columns, Unit};
-use crate::fit::FitParam;
+use crate::models::woodpecker::fit::FitParam;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{Model, Physics};
 use crate::report::Format;

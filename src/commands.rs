@@ -185,27 +185,19 @@ fn fit(args: &FitArgs, out: &mut dyn Write) -> Result<()> {
         ("FILE", Some(&args.file)),
         ("--scenario", common.scenario.as_deref()),
     ])?;
-    let Model::Woodpecker(base) = model_params(&args.model.args)?.0 else {
-        unreachable!("fit takes the woodpecker's flags")
-    };
+    let model = model_params(&args.model.args)?.0;
     let opts = crate::fit::data::ReadOptions {
         columns: args.columns.clone(),
         unit: args.units,
     };
     report::lock::claim_if_exists(&args.out)?;
     let data = crate::fit::data::read(&args.file, &opts)?;
-    let fit = crate::fit::fit(&data, &base, &args.free)?;
-    let files = dialect(common).apply(crate::fit::render(&fit)?);
+    let free: Vec<&str> = args.free.iter().map(|f| f.name()).collect();
+    let fit = crate::fit::fit(&model, &data, &free, &args.out)?;
+    let files = dialect(common).apply(fit.files);
     refuse_overwriting_inputs(&args.out, &files, &[("FILE", &args.file)])?;
     report::write_all(&args.out, &files)?;
-    print_stdout(
-        out,
-        &if common.json {
-            crate::fit::json(&fit)?
-        } else {
-            crate::fit::text(&fit, &args.out)
-        },
-    )?;
+    print_stdout(out, if common.json { &fit.json } else { &fit.text })?;
     if !fit.converged {
         return Err(Error::NotConverged {
             reason: format!(
@@ -216,13 +208,9 @@ fn fit(args: &FitArgs, out: &mut dyn Write) -> Result<()> {
         }
         .into());
     }
-    if !fit.verdict.describes {
+    if let Some(misfit) = fit.misfit {
         return Err(Error::Verdict {
-            reason: format!(
-                "{} (results in {}, flagged)",
-                fit.verdict.brief(),
-                shown(&args.out)
-            ),
+            reason: format!("{misfit} (results in {}, flagged)", shown(&args.out)),
         }
         .into());
     }

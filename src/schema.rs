@@ -16,7 +16,8 @@ use schemars::{json_schema, JsonSchema, Schema, SchemaGenerator};
 use serde_json::json;
 
 use crate::error::{Error, Result};
-use crate::models::{with_model, Model, Physics};
+use crate::fit::FitTracked;
+use crate::models::{with_capability, with_model, Capability, Model, Physics};
 use crate::results::Versioned;
 
 /// One JSON document of the tool and its schema.
@@ -76,10 +77,30 @@ pub fn documents() -> Vec<Document> {
             format!("`stickslip eval {} --json` (guide §14)", M::ID),
         )
     }
+    /// `fit --json` of a model with [`Capability::Fit`]: its outcome's own type, through the
+    /// registry; `fit` for the first such model (the one `stickslip fit` fits), `fit-ID` after.
+    fn fit<M: FitTracked>(_: &M, first: bool) -> Document {
+        if first {
+            document::<Versioned<M::Outcome>>(
+                "fit",
+                "`stickslip fit … --json` and fit.json of `fit --out`",
+            )
+        } else {
+            document::<Versioned<M::Outcome>>(
+                format!("fit-{}", M::ID),
+                format!("`stickslip fit` of the {} model and its fit.json", M::ID),
+            )
+        }
+    }
     let mut all: Vec<Document> = Model::defaults()
         .iter()
         .map(|m| with_model!(m, p => eval(p)))
         .collect();
+    let fits = Model::offering(Capability::Fit)
+        .iter()
+        .enumerate()
+        .filter_map(|(i, m)| with_capability!(m, fit, p => Some(fit(p, i == 0)), else None))
+        .collect::<Vec<_>>();
     all.extend([
         document::<Versioned<crate::claims::Claims>>(
             "claims",
@@ -89,10 +110,9 @@ pub fn documents() -> Vec<Document> {
             "check",
             "`stickslip check … --json` (one object for one formula, an array for --formulas) and check.json of `check --out`",
         ),
-        document::<Versioned<crate::fit::Fit>>(
-            "fit",
-            "`stickslip fit … --json` and fit.json of `fit --out`",
-        ),
+    ]);
+    all.extend(fits);
+    all.extend([
         document::<crate::worksheet::json::KeySchema>(
             "answer-key",
             "answer-key.json of `stickslip worksheet`",

@@ -14,13 +14,13 @@ use assert_cmd::Command;
 use serde_json::Value;
 
 use stickslip::fit::data::{parse, ReadOptions, Unit};
-use stickslip::fit::synthetic::Synthetic;
-use stickslip::fit::{self, FitParam};
+use stickslip::models::woodpecker::fit::synthetic::Synthetic;
+use stickslip::models::woodpecker::fit::{self, FitParam};
 use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::Model;
 use stickslip::params::Scenario;
 
-const EXAMPLE: &str = stickslip::fit::synthetic::EXAMPLE_FILE;
+const EXAMPLE: &str = stickslip::models::woodpecker::fit::synthetic::EXAMPLE_FILE;
 const FIG26: &str = "scenarios/fig26-tracked-toy.toml";
 
 fn stickslip() -> Command {
@@ -593,7 +593,10 @@ fn wrong_basin_truth() -> WoodpeckerParams {
 
 /// A Tracker export of `track` in cm with no units row (title, `t,x,y`), the cells of `x` and
 /// `y` blank in the frames listed in `unmarked` (Tracker leaves a frame without a mark blank).
-fn tracker_cm(track: &stickslip::fit::synthetic::SyntheticTrack, unmarked: &[usize]) -> String {
+fn tracker_cm(
+    track: &stickslip::models::woodpecker::fit::synthetic::SyntheticTrack,
+    unmarked: &[usize],
+) -> String {
     let mut text = String::from("mass A\nt,x,y\n");
     for (i, (t, y)) in track.t.iter().zip(&track.y).enumerate() {
         if unmarked.contains(&i) {

@@ -20,7 +20,7 @@ use stickslip::cli::{Cli, Command};
 use stickslip::commands::model_params;
 use stickslip::error::Error;
 use stickslip::fit::data::{parse, ReadOptions};
-use stickslip::fit::{fit, FitParam};
+use stickslip::models::woodpecker::fit::{fit, FitParam};
 use stickslip::models::woodpecker::WoodpeckerParams;
 use stickslip::models::Model;
 use stickslip::params::Scenario;

@@ -112,6 +112,8 @@ pub enum Capability {
     Exercise,
     /// [`crate::claims::PaperClaims`]: the paper's claims about the model (`stickslip claims`).
     Claims,
+    /// `crate::fit::FitTracked`: the model fitted to tracked data (`stickslip fit`).
+    Fit,
 }
 
 impl Capability {
@@ -122,6 +124,7 @@ impl Capability {
             Capability::Explore => "explore",
             Capability::Exercise => "exercise",
             Capability::Claims => "claims",
+            Capability::Fit => "fit",
         }
     }
 
@@ -132,6 +135,7 @@ impl Capability {
             Capability::Explore => "explorer page yet",
             Capability::Exercise => "worksheets, nor the drawn parameter sets of `check`",
             Capability::Claims => "claims of the paper to check",
+            Capability::Fit => "fit of tracked data",
         }
     }
 }
@@ -145,6 +149,7 @@ macro_rules! pick {
     (explore [explore $($rest:ident)*] $yes:tt $no:tt) => { $yes };
     (exercise [exercise $($rest:ident)*] $yes:tt $no:tt) => { $yes };
     (claims [claims $($rest:ident)*] $yes:tt $no:tt) => { $yes };
+    (fit [fit $($rest:ident)*] $yes:tt $no:tt) => { $yes };
     ($cap:ident [] $yes:tt $no:tt) => { $no };
     ($cap:ident [$first:ident $($rest:ident)*] $yes:tt $no:tt) => {
         $crate::models::pick!($cap [$($rest)*] $yes $no)
@@ -213,7 +218,7 @@ macro_rules! registry {
 
 registry! {$
     PulledMass(pulled_mass::PulledMassParams) [present explore exercise claims],
-    Woodpecker(woodpecker::WoodpeckerParams) [present explore exercise claims],
+    Woodpecker(woodpecker::WoodpeckerParams) [present explore exercise claims fit],
     Belt(belt::BeltParams) [present explore exercise],
     // A test build's fourth model: its folder and this line, nothing else (README).
     #[cfg(test)]

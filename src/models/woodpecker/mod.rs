@@ -13,6 +13,7 @@
 //! claims.rs      the paper's claims about this model (claims 4, 6); halt.rs claim 5, lever.rs claim 8
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
 //! scene.rs       the report's figures of this model
+//! fit/           the harmonic model fitted to a tracked toy (`stickslip fit`)
 //! sketch.rs      the sketch of the apparatus with its forces (reports, handouts, worksheets)
 //! ```
 
@@ -23,6 +24,8 @@ pub mod derivation;
 #[cfg(feature = "cli")]
 mod exercise;
 pub mod explore;
+#[cfg(feature = "cli")]
+pub mod fit;
 pub mod formula;
 pub(crate) mod halt;
 pub(crate) mod lever;

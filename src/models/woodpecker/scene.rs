@@ -14,9 +14,9 @@ use std::path::Path;
 use crate::engine::{integrate, EventKind, Run, RunOptions};
 use crate::error::{Error, Result};
 use crate::fit::data::{parse, ReadOptions, Unit};
-use crate::fit::synthetic::{Synthetic, EXAMPLE_FILE};
-use crate::fit::{self, FitParam};
 use crate::models::param::{invalid, num};
+use crate::models::woodpecker::fit::synthetic::{Synthetic, EXAMPLE_FILE};
+use crate::models::woodpecker::fit::{self, FitParam};
 use crate::models::woodpecker::formula::{
     self as cf, counterpart, in_closed_form_domain, Counterpart, OrbitRegime, Phase,
     WoodpeckerClosedForm,

@@ -11,9 +11,9 @@ use std::fmt::Write as _;
 
 use crate::draws::Draws;
 
-use super::data::Unit;
 use super::track;
 use crate::error::Result;
+use crate::fit::data::Unit;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::output::format::people;
 
