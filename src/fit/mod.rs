@@ -87,7 +87,7 @@ pub fn fit(model: &Model, data: &Tracked, free: &[&str], out: &Path) -> Result<F
 fn free_names<M: FitTracked>() -> Vec<String> {
     <M::Free as clap::ValueEnum>::value_variants()
         .iter()
-        .filter_map(|v| clap::ValueEnum::to_possible_value(v))
+        .filter_map(clap::ValueEnum::to_possible_value)
         .map(|v| v.get_name().to_string())
         .collect()
 }
