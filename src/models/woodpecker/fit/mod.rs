@@ -381,18 +381,3 @@ fn curve(
         .map(|(d, m)| (data.t[0] + d, (y_off + setup.sign * m) / scale))
         .collect())
 }
-
-#[cfg(test)]
-pub(crate) mod tests {
-    use crate::models::woodpecker::WoodpeckerParams;
-
-    /// The tracked toy's set (scenarios/fig26-tracked-toy.toml), for the unit tests.
-    pub(crate) fn fig26() -> WoodpeckerParams {
-        WoodpeckerParams {
-            mu_d: 0.332,
-            k: 20.3,
-            d0: 0.0095,
-            ..WoodpeckerParams::default()
-        }
-    }
-}

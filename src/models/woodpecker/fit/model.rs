@@ -231,7 +231,7 @@ mod tests {
 
     #[test]
     fn the_tracked_window_is_periodic_past_the_transient() {
-        let p = crate::models::woodpecker::fit::tests::fig26();
+        let p = crate::models::woodpecker::lever::fig26();
         let period = p.period();
         let dt: Vec<f64> = (0..200).map(|i| f64::from(i) * period / 50.0).collect();
         let tr = track(&p, 0.3 * period, &dt).unwrap();
@@ -251,7 +251,7 @@ mod tests {
     /// integration straight through all the periods.
     #[test]
     fn a_track_folded_into_one_period_is_the_integration_straight_through() {
-        let p = crate::models::woodpecker::fit::tests::fig26();
+        let p = crate::models::woodpecker::lever::fig26();
         let period = p.period();
         let shift = 0.3 * period;
         let dt: Vec<f64> = (0..3000).map(|i| f64::from(i) * 0.0371 * period).collect();
@@ -283,7 +283,7 @@ mod tests {
     fn a_sleeve_that_never_halts_is_followed_over_a_bounded_span() {
         let p = WoodpeckerParams {
             mu_d: 0.02,
-            ..crate::models::woodpecker::fit::tests::fig26()
+            ..crate::models::woodpecker::lever::fig26()
         };
         let period = p.period();
         let short: Vec<f64> = (0..100).map(|i| f64::from(i) * 0.1 * period).collect();

@@ -159,7 +159,7 @@ mod tests {
 
     #[test]
     fn every_internal_point_is_a_valid_parameter_set() {
-        let base = crate::models::woodpecker::fit::tests::fig26();
+        let base = crate::models::woodpecker::lever::fig26();
         let all = [
             FitParam::MuD,
             FitParam::Z0,

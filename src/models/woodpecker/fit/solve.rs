@@ -612,7 +612,7 @@ mod tests {
 
     #[test]
     fn the_exact_shift_column_agrees_with_differences() {
-        let p = crate::models::woodpecker::fit::tests::fig26();
+        let p = crate::models::woodpecker::lever::fig26();
         let setup = Setup {
             base: p,
             free: &[FitParam::MuD],
