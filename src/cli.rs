@@ -11,7 +11,7 @@ use clap::{Arg, ArgAction, ArgMatches, Args, FromArgMatches, Parser, Subcommand}
 
 use crate::export::CsvDialect;
 use crate::fit::data::{Columns, Unit};
-use crate::models::woodpecker::fit::FitParam;
+use crate::fit::FitTracked;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{Model, Physics};
 use crate::report::Format;
@@ -123,8 +123,9 @@ pub struct FitArgs {
     #[arg(long, value_enum)]
     pub units: Option<Unit>,
     /// Parameters to fit, comma-separated; the others keep their given values.
-    #[arg(long, value_enum, value_delimiter = ',', default_values_t = FitParam::DEFAULT)]
-    pub free: Vec<FitParam>,
+    #[arg(long, value_enum, value_delimiter = ',',
+          default_values_t = WoodpeckerParams::DEFAULT_FREE.to_vec())]
+    pub free: Vec<<WoodpeckerParams as FitTracked>::Free>,
     /// Output folder (fit.json, fit.csv, fit.svg).
     #[arg(long, short = 'o', default_value = "fit")]
     pub out: PathBuf,

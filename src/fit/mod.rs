@@ -28,6 +28,8 @@ pub use verdict::{ScaleSlip, Verdict};
 pub trait FitTracked: Physics {
     /// A parameter the fit may adjust, named on the command line (`--free`).
     type Free: Copy + clap::ValueEnum;
+    /// The parameters fitted unless asked otherwise (the default of `--free`).
+    const DEFAULT_FREE: &'static [Self::Free];
     /// The outcome, written as fit.json (SI units) and printed by `fit --json`; its JSON Schema
     /// is reports/schema/'s.
     type Outcome: Serialize + schemars::JsonSchema;

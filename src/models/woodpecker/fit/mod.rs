@@ -124,6 +124,7 @@ pub struct Fit {
 
 impl FitTracked for WoodpeckerParams {
     type Free = FitParam;
+    const DEFAULT_FREE: &'static [FitParam] = &FitParam::DEFAULT;
     type Outcome = Fit;
 
     fn fit_tracked(&self, data: &Tracked, free: &[FitParam]) -> Result<Fit> {
