@@ -1,14 +1,14 @@
 //! The belt as a bench problem: the textbook stick-slip oscillator (docs/belt.md), a standard
 //! test for event-driven solvers, with the default set over [`PERIODS`] cycles. The force is
 //! the spring's −k x and the block sticks at the belt's speed v_b, so it is a
-//! [`SurfaceProblem`]: the exact engine, rk4, moreau and euler_sign integrate it
-//! ([`Method::solve_surface`]; each method's test on it is beside its code); dopri5 and the
-//! tanh methods take forces of time only and refuse it. The exact event times are those of
+//! [`SurfaceProblem`]: the exact engine, rk4, dopri5 (and dopri5_endpoints: their generic
+//! path), moreau and euler_sign integrate it ([`Method::solve_surface`]; each method's test on
+//! it is beside its code); the tanh methods take forces of time only and refuse it. The exact event times are those of
 //! the closed forms: first slip at x_s/v_b (B5), then slips of t_slip (B9) and sticks of
 //! t_stick (B10).
 //!
-//! Not yet in the work-precision sweep (`stickslip bench`): dopri5 and the tanh methods do not
-//! take a force depending on the position, nor do the diffsol and SciPy peers.
+//! Not yet in the work-precision sweep (`stickslip bench`): the tanh methods do not take a
+//! force depending on the position, nor do the diffsol and SciPy peers.
 
 use super::problems::PERIODS;
 use crate::error::Result;
@@ -130,6 +130,9 @@ mod tests {
         let h = Setting::Step(formula::evaluate(&p).period / 100.0);
         for method in crate::solver::methods() {
             match method.name() {
+                "dopri5" => assert!(method
+                    .solve_surface(&problem, Setting::Tolerance(1e-6))
+                    .is_ok()),
                 "exact" | "rk4" | "moreau" | "euler_sign" => {
                     assert!(
                         method.solve_surface(&problem, h).is_ok(),

@@ -105,8 +105,8 @@ pub fn refused(method: &str) -> Error {
     Error::InvalidParam {
         name: "method",
         value: method.to_string(),
-        rule: "forces of time only: a force depending on the position needs exact, rk4, moreau \
-               or euler_sign"
+        rule: "forces of time only: a force depending on the position needs exact, rk4, dopri5, \
+               moreau or euler_sign"
             .to_string(),
     }
 }
