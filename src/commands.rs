@@ -303,7 +303,7 @@ fn report(args: &ReportArgs, out: &mut dyn Write) -> Result<()> {
     report::lock::claim_if_exists(&args.out)?;
     let (scenes, files) = if args.scenarios.is_empty() {
         let scenes = report::builtin_scenes()?;
-        let (mut files, links) = report::classroom::material(&scenes, &args.format)?;
+        let (mut files, links) = crate::classroom::material(&scenes, &args.format)?;
         files.extend(report::render_with(&scenes, &args.format, &links)?);
         // The JSON Schemas of the tool's outputs, beside the built-in report (reports/schema/).
         files.extend(crate::schema::files()?);

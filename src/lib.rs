@@ -28,6 +28,8 @@ pub mod bench;
 pub mod check;
 pub mod claims;
 #[cfg(feature = "cli")]
+pub mod classroom;
+#[cfg(feature = "cli")]
 pub mod cli;
 #[cfg(feature = "cli")]
 pub mod commands;
@@ -44,11 +46,13 @@ pub mod export;
 #[cfg(feature = "cli")]
 pub mod fit;
 pub mod fmath;
+pub mod format;
 #[cfg(feature = "cli")]
 pub mod handout;
 #[cfg(feature = "cli")]
 pub mod lang;
 pub mod models;
+#[cfg(feature = "cli")]
 pub mod output;
 pub mod params;
 #[cfg(feature = "cli")]

@@ -19,8 +19,9 @@ use common::find;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use stickslip::classroom;
 use stickslip::report::explorer::Placement;
-use stickslip::report::{builtin_scenes, classroom, explorer, Format};
+use stickslip::report::{builtin_scenes, explorer, Format};
 
 /// Budgets of the issue: page size, first render, one redraw.
 const MAX_BYTES: usize = 1_500_000;

@@ -119,7 +119,7 @@ fn every_builtin_scene_renders_a_complete_self_contained_handout() {
         assert_eq!(handout.scene.verification.len(), checks.len(), "{id}");
         for c in &checks {
             if let Some(x) = c["numeric"].as_f64() {
-                let shown = stickslip::output::format::people(Some(x), 8);
+                let shown = stickslip::format::people(Some(x), 8);
                 assert!(
                     html.contains(&shown),
                     "{id}: check {} = {shown}",

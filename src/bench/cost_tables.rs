@@ -6,7 +6,7 @@ use super::analysis::{CostRow, Metric};
 use super::sweep::is_compiled_peer;
 use super::tables::{e2, row, Table};
 use super::BenchResults;
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// The error level of the headline cost tables.
 pub const HEADLINE_LEVEL: f64 = 1e-8;

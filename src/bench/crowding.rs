@@ -26,10 +26,10 @@ use super::problems::{self, transitions, BenchProblem};
 use super::sweep::{method_kind, MethodKind};
 use super::tables::{by_method_and_setting, row, table, Table};
 use crate::error::Result;
+use crate::format::sig;
 use crate::models::pulled_mass::formula::{tau_slip, tau_stick};
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
-use crate::output::format::sig;
 use crate::solver::exact::Exact;
 use crate::solver::{Method, MethodEvent, Problem, Setting};
 

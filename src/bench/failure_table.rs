@@ -10,7 +10,7 @@ use super::failures::{CreepPoint, MissedPoint, RegimePoint, ReversalPoint};
 use super::problems::{title, PERIODS};
 use super::sweep::{is_compiled_peer, method_kind, MethodKind, SweepPoint};
 use super::Studies;
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// Name of the dopri5 variant that checks the switching functions at step ends only.
 pub const ENDPOINTS: &str = "dopri5_endpoints";

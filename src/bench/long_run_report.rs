@@ -12,7 +12,7 @@ use super::long_runs::{
 };
 use super::tables::{e2, row, table, Table};
 use crate::error::Result;
-use crate::output::format::sig;
+use crate::format::sig;
 use crate::report::figures::spec::{Curve, LineChart, Panel};
 
 /// Errors below this are drawn at it (an exact zero has no logarithm).

@@ -14,7 +14,7 @@ use super::analysis::Metric;
 use super::peer::{PeerPoint, RatioRow};
 use super::tables::{e2, row, table, Table};
 use super::BenchResults;
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// Event-time error levels of the comparison table (s).
 pub const TABLE_LEVELS: [f64; 2] = [1e-8, 1e-10];

@@ -18,9 +18,9 @@ use super::problems::{self, BenchProblem};
 use super::sweep::{method_kind, MethodKind};
 use super::tables::{row, table, Table};
 use crate::error::Result;
+use crate::format::sig;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::LawKind;
-use crate::output::format::sig;
 use crate::solver::exact::Exact;
 use crate::solver::{Method, MethodEvent, Problem, Setting};
 

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use super::BenchResults;
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// One table row: formatted cells and a CSS class ("pass", "fail", "na" or "").
 #[derive(Serialize)]

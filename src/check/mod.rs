@@ -332,7 +332,7 @@ pub fn symbols_text(case: &Model) -> String {
     );
     for s in symbols(case) {
         let shown = if s.value.is_finite() {
-            crate::output::format::people(Some(s.value), 6)
+            crate::format::people(Some(s.value), 6)
         } else {
             "undefined here".to_string()
         };

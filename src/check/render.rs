@@ -7,8 +7,8 @@ use serde::Serialize;
 
 use super::{Report, Sample, Verdict, STICKS};
 use crate::error::{excerpt, Error, Result};
+use crate::format::people;
 use crate::models::{with_model, Model, Physics};
-use crate::output::format::people;
 use crate::report::context::regime_words;
 use crate::report::math::mathml;
 use crate::report::render::{page, templates, CSS};

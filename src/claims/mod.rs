@@ -292,7 +292,7 @@ pub(crate) fn rel_text(e: f64) -> String {
     if e == 0.0 {
         "0".to_string()
     } else if e < 1e-3 {
-        crate::output::format::people_rel(Some(e))
+        crate::format::people_rel(Some(e))
     } else {
         format!("{:.1} %", 100.0 * e)
     }

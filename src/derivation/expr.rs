@@ -12,7 +12,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// Significant figures of the numbers in a substituted formula.
 pub const DIGITS: usize = 4;

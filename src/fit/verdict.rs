@@ -40,7 +40,7 @@
 use serde::Serialize;
 
 use super::data::Unit;
-use crate::output::format::sig;
+use crate::format::sig;
 
 /// Lag-1 autocorrelation of the residuals above which the misfit is systematic (S > 2σ).
 pub const MAX_AUTOCORRELATION: f64 = 0.8;

@@ -16,6 +16,7 @@ use serde::Serialize;
 
 use crate::error::{Error, Result};
 use crate::lang::phrases::Translator;
+use crate::lang::Lang;
 use crate::models::{with_capability, Capability, Model};
 use crate::present::Present;
 use crate::report::context::{ClaimCtx, FigureCtx, SceneCtx};
@@ -23,7 +24,6 @@ use crate::report::render::{
     figure_contexts, first_sentence, page, scene_claims, scene_context, templates, CSS,
 };
 use crate::report::{builtin_scenes, Format, OutFile, Scene};
-use crate::worksheet::Lang;
 use physics::Note;
 
 #[cfg(unix)]

@@ -1,6 +1,7 @@
-//! The words of the handout: the equation of motion of each model in symbols (guide §5.1,
-//! guide §5.2 and guide §8), and for each step of the chain of formulas (by its key) what it means: a label for
-//! a definition, a sentence of physics for a step of the motion. Keys not named here stay out of
+//! The words of the handout: for each step of the chain of formulas (by its key) what it
+//! means: a label for a definition, a sentence of physics for a step of the motion (the
+//! equation of motion of each model, guide §5.1, guide §5.2 and guide §8, is the report's
+//! `context::equation_of_motion`). Keys not named here stay out of
 //! the handout's chain (thresholds such as μd,MIN; the report shows them).
 
 use crate::derivation::StepKey;
@@ -17,18 +18,10 @@ pub fn note(setup: &Model, key: StepKey) -> Option<(Note, Option<&'static str>)>
     with_capability!(setup, present, p => note_of(p, key), else None)
 }
 
-/// The equation of motion of the scene's model, line by line.
-pub fn equation_of_motion(setup: &Model) -> &'static [(&'static str, &'static str)] {
-    fn lines<M: Present>(_: &M) -> &'static [(&'static str, &'static str)] {
-        M::equation_of_motion()
-    }
-    // A model without a presentation has no equation of motion to show (nor a handout).
-    with_capability!(setup, present, p => lines(p), else &[])
-}
-
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::models::Model;
+    use crate::report::context::equation_of_motion;
     use crate::report::math::mathml;
 
     #[test]

@@ -1,7 +1,6 @@
-//! Rendering of results for people: number formatting (in the core, for the claims' findings),
-//! and with the `cli` feature the terminal tables of `eval` and the progress bar.
+//! Rendering of results for people (`cli` feature): the terminal tables of `eval` and the
+//! progress bar. Number formatting is [`crate::format`], a leaf of the core.
 
-pub mod format;
 #[cfg(feature = "cli")]
 pub mod progress;
 #[cfg(feature = "cli")]

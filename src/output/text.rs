@@ -3,7 +3,7 @@
 
 use std::fmt::Write;
 
-use super::format::{rel, short};
+use crate::format::{rel, short};
 use crate::models::regime_words;
 use crate::present::vocab::{LawName, LawWords};
 use crate::results::quantity::Registry;

@@ -2,9 +2,8 @@
 //! rendered, so that the templates hold no computation (STYLE habit 7).
 
 use crate::error::Result;
-use crate::handout::physics::equation_of_motion;
+use crate::format::{people, people_rel, people_tolerance};
 use crate::models::{with_capability, Model};
-use crate::output::format::{people, people_rel, people_tolerance};
 pub use crate::present::vocab::{
     ClaimCtx, Comparison, FigureCtx, LawWords, MotionLine, ParamRow, RegimeRow, SceneCtx, Table,
     VerificationRow,
@@ -156,6 +155,15 @@ pub(crate) fn count(name: &str, n: u32) -> ParamRow {
         value: n.to_string(),
         unit: String::new(),
     }
+}
+
+/// The equation of motion of the scene's model, line by line.
+pub fn equation_of_motion(setup: &Model) -> &'static [(&'static str, &'static str)] {
+    fn lines<M: Present>(_: &M) -> &'static [(&'static str, &'static str)] {
+        M::equation_of_motion()
+    }
+    // A model without a presentation has no equation of motion to show (nor a handout).
+    with_capability!(setup, present, p => lines(p), else &[])
 }
 
 /// The equation of motion of `setup`'s model, each line in MathML and LaTeX with its physics.

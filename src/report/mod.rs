@@ -6,7 +6,6 @@
 //!       → tera templates (templates/) → files (writer)
 //! ```
 
-pub mod classroom;
 pub mod context;
 pub mod explorer;
 pub mod figures;

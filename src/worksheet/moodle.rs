@@ -209,7 +209,7 @@ fn feedback(a: &Answer, words: &Words) -> Result<String> {
     let unit = a.question.unit();
     let value = match &a.numeric {
         Value::Number(x) => {
-            words.number(format!("{} {unit}", crate::output::format::sig(Some(*x), 10)).trim_end())
+            words.number(format!("{} {unit}", crate::format::sig(Some(*x), 10)).trim_end())
         }
         Value::Text(t) => words.regime(t),
     };
@@ -228,8 +228,7 @@ fn feedback(a: &Answer, words: &Words) -> Result<String> {
                 .comparisons
                 .iter()
                 .map(|c| {
-                    let value =
-                        crate::output::format::sig(Some(c.value), ANSWER_FIGURES as usize + 1);
+                    let value = crate::format::sig(Some(c.value), ANSWER_FIGURES as usize + 1);
                     format!("{} = {value}", c.symbol)
                 })
                 .collect::<Vec<_>>()

@@ -15,8 +15,8 @@ use crate::error::{Error, Result};
 #[cfg(feature = "cli")]
 use crate::explore::Apparatus;
 use crate::explore::{Explore, ExploredLaw, MapAxis, RegimeText, Sample};
+use crate::format::people;
 use crate::models::LawKind;
-use crate::output::format::people;
 use crate::results::quantity::{Quantity, Registry};
 use crate::results::Applicability;
 

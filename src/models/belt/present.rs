@@ -13,8 +13,8 @@ use crate::derivation::{Step, StepKey, Value};
 use crate::engine::autonomous::SurfaceRun;
 use crate::error::Result;
 use crate::export::num as csv_num;
+use crate::format::short;
 use crate::models::Physics;
-use crate::output::format::short;
 use crate::output::text::{checks_table, closed_form_table, DIGITS as TEXT_DIGITS};
 use crate::present::vocab::{
     Builtin, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory, Phase,

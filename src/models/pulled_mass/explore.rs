@@ -7,6 +7,7 @@ use crate::explore::Apparatus;
 use crate::explore::{
     periodic_curve, Explore, ExploredLaw, MapAxis, RegimeText, Sample, LINEARIZED_AND_HARMONIC,
 };
+use crate::format::people;
 use crate::models::pulled_mass::formula::{ClosedForm, Regime};
 use crate::models::pulled_mass::map::{
     harmonic_category, linear_category, top, HARMONIC_CATEGORIES, LINEAR_CATEGORIES,
@@ -15,7 +16,6 @@ use crate::models::pulled_mass::quantity::Key;
 use crate::models::pulled_mass::results::Evaluation;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::LawKind;
-use crate::output::format::people;
 use crate::results::quantity::{Quantity, Registry};
 use crate::results::Applicability;
 

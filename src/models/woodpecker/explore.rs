@@ -7,13 +7,13 @@ use crate::explore::Apparatus;
 use crate::explore::{
     periodic_curve, Explore, ExploredLaw, MapAxis, RegimeText, Sample, LINEARIZED_AND_HARMONIC,
 };
+use crate::format::people;
 use crate::models::woodpecker::formula::OrbitRegime;
 use crate::models::woodpecker::map::{integrated_cell, linear_cell, ranges, MAP_PERIODS, REGIMES};
 use crate::models::woodpecker::quantity::Key;
 use crate::models::woodpecker::results::Evaluation;
 use crate::models::woodpecker::{spring_coordinate, WoodpeckerParams};
 use crate::models::LawKind;
-use crate::output::format::people;
 use crate::results::quantity::{Quantity, Registry};
 use crate::results::Applicability;
 

@@ -14,6 +14,7 @@ use std::path::Path;
 use crate::engine::{integrate, EventKind, Run, RunOptions};
 use crate::error::{Error, Result};
 use crate::fit::data::{parse, ReadOptions, Unit};
+use crate::format::people;
 use crate::models::param::{invalid, num};
 use crate::models::woodpecker::fit::synthetic::{Synthetic, EXAMPLE_FILE};
 use crate::models::woodpecker::fit::{self, FitParam};
@@ -26,7 +27,6 @@ use crate::models::woodpecker::map::{integrated_cell, linear_cell, MAP_PERIODS, 
 use crate::models::woodpecker::results::{evaluate_with_runs, linear_inputs};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::output::format::people;
 use crate::report::figures::spec::{CategoryMap, Curve, LineChart, Marker, Panel, Stroke};
 use crate::report::scene::sampling::{curve, function_curve, sample, SAMPLES};
 use crate::report::scene::{Drawing, Figure};

@@ -7,9 +7,9 @@ use super::formula::Counterpart;
 use super::results::{self as woodpecker};
 use super::{quantity as wp, WoodpeckerParams};
 use crate::error::Result;
+use crate::format::short;
 use crate::models::paper::{LAW_WORDS, LINEARIZATION};
 use crate::models::param::num as pnum;
-use crate::output::format::short;
 use crate::output::text::{
     checks_table, closed_form_table, laws_table as text_laws, not_describing, DIGITS as TEXT_DIGITS,
 };

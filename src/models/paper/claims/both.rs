@@ -10,13 +10,13 @@ use crate::claims::{
     mm_s, or_none, rel_diff, rel_text, steady_run, Claim, Integrated, Numbers, Verdict, BOTH_MODELS,
 };
 use crate::error::Result;
+use crate::format::people;
 use crate::models::pulled_mass::claims::PeriodicSet;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::formula::{self as cf, Counterpart};
 use crate::models::woodpecker::results::linear_inputs;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind, Physics};
-use crate::output::format::people;
 
 const PULLED_ID: &str = <PulledMassParams as Physics>::ID;
 const WOOD_ID: &str = <WoodpeckerParams as Physics>::ID;

@@ -14,10 +14,10 @@ use serde::Serialize;
 use crate::engine::run::Motion;
 use crate::engine::{integrate, Run, RunOptions};
 use crate::error::{Error, Result};
+use crate::format::sig;
 use crate::models::param::{invalid, num};
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{woodpecker, LawKind};
-use crate::output::format::sig;
 
 /// Periods integrated before the first tracked time.
 pub const TRANSIENT_PERIODS: u32 = 3;

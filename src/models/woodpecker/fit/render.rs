@@ -8,7 +8,7 @@ use std::path::Path;
 use super::{Axis, Estimate, Fit};
 use crate::error::{excerpt, excerpt_path, Error, Result};
 use crate::export::num;
-use crate::output::format::sig;
+use crate::format::sig;
 use crate::report::context::regime_words;
 use crate::report::figures::chart::line_chart;
 use crate::report::figures::spec::{Curve, LineChart, Panel, Stroke};

@@ -14,8 +14,8 @@ use crate::draws::Draws;
 use super::track;
 use crate::error::Result;
 use crate::fit::data::Unit;
+use crate::format::people;
 use crate::models::woodpecker::WoodpeckerParams;
-use crate::output::format::people;
 
 /// What to generate.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -2,16 +2,16 @@
 //! handouts of a scene of each model that names one (in English and Italian) and a worksheet of each model
 //! with its answer key, written under `handouts/` and `worksheets/` beside the scene pages and
 //! linked from the index with the speed and accuracy study (`bench/`, written by
-//! `stickslip bench`).
+//! `stickslip bench`). It composes the report, the handouts and the worksheets, so it sits
+//! above all three (none of them imports it).
 
 use std::path::Path;
 
-use super::render::Material;
-use super::{Format, OutFile, Scene};
 use crate::error::Result;
 use crate::lang::phrases::Translator;
 use crate::models::{with_capability, Capability, Model};
 use crate::present::Present;
+use crate::report::{Format, Material, OutFile, Scene};
 use crate::worksheet::{self, Lang, Request};
 
 /// The built-in scenes with a handout, and what each teaches: each model's
@@ -35,11 +35,11 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
     let mut files = Vec::new();
     let mut links = Vec::new();
     if formats.contains(&Format::Html) {
-        files.push(super::explorer::render(
+        files.push(crate::report::explorer::render(
             scenes,
-            super::explorer::Placement::InReport,
+            crate::report::explorer::Placement::InReport,
         )?);
-        links.push(super::explorer::material());
+        links.push(crate::report::explorer::material());
     }
     let (english, italian) = (Translator::new(Lang::En)?, Translator::new(Lang::It)?);
     for (id, what) in handouts() {
@@ -119,7 +119,7 @@ pub fn material(scenes: &[Scene], formats: &[Format]) -> Result<(Vec<OutFile>, V
 /// physics guide (written for pages beside `reports/guide.html`) made relative to the new depth.
 fn under(folder: &str, files: Vec<OutFile>) -> Vec<OutFile> {
     let up = "../".repeat(Path::new(folder).components().count());
-    let stem = super::guide::STEM;
+    let stem = crate::report::guide::STEM;
     files
         .into_iter()
         .map(|f| {
