@@ -106,7 +106,7 @@ pub fn refused(method: &str) -> Error {
         name: "method",
         value: method.to_string(),
         rule: "forces of time only: a force depending on the position needs exact, rk4, dopri5, \
-               moreau or euler_sign"
+               tanh_dopri5, moreau or euler_sign"
             .to_string(),
     }
 }

@@ -6,6 +6,7 @@
 //!
 //! ```text
 //! x' = v,   M v' = D(t) − μd N_f(t) tanh(v/ε)          (no stick state; μs is not used)
+//! belt:     M w' = D(x) − μd N_f tanh(w/ε),  w = v − v_s   (tanh_dopri5 only)
 //! ∂v'/∂v = −μd N_f sech²(v/ε) / (M ε)                   (stiff near v = 0 when ε is small)
 //! ```
 //!
@@ -25,6 +26,15 @@
 //! with the pieces of the force law) and bisects a crossing by re-integrating, to a resolution
 //! of tol·T; two crossings inside one grid cell (T/64) are missed.
 //!
+//! On the belt ([`SurfaceProblem`], taken by [`TanhAdaptive`] only: TR-BDF2's scalar Newton
+//! needs forces of time only) the band test reads w, on a grid of [`GRID_PER_PERIOD`] points
+//! per natural period 2π √(M/|∂D/∂x|). Knowing only μd, the body creeps until D reaches μd N_f
+//! (at x_d, not x_s), then oscillates harmonically about x_d with w touching 0 only at the
+//! top of each swing: a short "stick" (a visit of the creep band) per period 2π/ω, not the
+//! closed forms' stick of t_stick. The visits shrink with ε and with time (ε = 1e-4: 0.032 s
+//! first, 0.027 s after 37 swings); with ε = 1e-5 (tol 1e-8) they fall inside one grid cell
+//! and are missed from t ≈ 17.8 s on, after 28 swings.
+//!
 //! Adaptive TR-BDF2 steps are capped at T/[`GRID_PER_PERIOD`]: an L-stable method in creep
 //! samples the forcing only at its stage times, and with no cap one step of 0.17 s (ε = 1e-5,
 //! tol 1e-6, harmonic law) jumped over a whole slip phase with an error estimate of 0.25,
@@ -34,6 +44,7 @@ use serde::Serialize;
 
 use super::dopri5::try_solve_smooth;
 use super::moreau::step_count;
+use super::surface::{absolute, SurfaceProblem, System};
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
 
@@ -80,6 +91,24 @@ impl Method for TanhAdaptive {
     fn solve(&self, problem: &Problem, setting: Setting) -> Result<Solution> {
         self.states_at(problem, setting, &[]).map(|(s, _)| s)
     }
+
+    /// The belt: tanh of the relative velocity w = v − v_s, band checks on a grid of
+    /// [`GRID_PER_PERIOD`] points per natural period 2π √(M/|∂D/∂x|).
+    fn solve_surface(&self, problem: &SurfaceProblem, setting: Setting) -> Result<Solution> {
+        let law = Law::new(problem, self.epsilon)?;
+        let tol = self.tolerance(setting)?;
+        let stiffness = problem.force_gradient().abs();
+        if !(stiffness.is_finite() && stiffness > 0.0) {
+            return Err(Error::InvalidParam {
+                name: "stiffness",
+                value: stiffness.to_string(),
+                rule: "tanh_dopri5 on a moving surface: |∂D/∂x| finite and > 0 (N/m)".into(),
+            });
+        }
+        let period = 2.0 * std::f64::consts::PI * (problem.body.mass / stiffness).sqrt();
+        let stops = grid_points(problem.t_end, period / GRID_PER_PERIOD)?;
+        adaptive_run(&law, tol, &stops, period * tol.max(1e-13), &[]).map(|(s, _)| s)
+    }
 }
 
 impl Method for TanhImplicit {
@@ -92,16 +121,16 @@ impl Method for TanhImplicit {
     }
 }
 
-/// The regularized right-hand side of one problem.
-struct Law<'a> {
-    problem: &'a Problem,
+/// The regularized right-hand side of one problem, in the relative velocity w = v − v_s.
+struct Law<'a, S: System = Problem> {
+    problem: &'a S,
     epsilon: f64,
     /// Creep threshold v_c (m/s).
     v_creep: f64,
 }
 
-impl<'a> Law<'a> {
-    fn new(problem: &'a Problem, epsilon: f64) -> Result<Self> {
+impl<'a, S: System> Law<'a, S> {
+    fn new(problem: &'a S, epsilon: f64) -> Result<Self> {
         if !(epsilon.is_finite() && epsilon > 0.0) {
             return Err(Error::InvalidParam {
                 name: "epsilon",
@@ -116,23 +145,26 @@ impl<'a> Law<'a> {
         })
     }
 
-    /// v' = (D − μd N_f tanh(v/ε))/M.
-    fn accel(&self, t: f64, v: f64) -> f64 {
-        let (d, n) = self.problem.forces(t);
-        let body = &self.problem.body;
-        (d - body.mu_d * n * (v / self.epsilon).tanh()) / body.mass
+    /// w' = v' = (D(t, x) − μd N_f tanh(w/ε))/M at x = u + v_s t.
+    fn accel(&self, t: f64, u: f64, w: f64) -> f64 {
+        let x = u + self.problem.surface_speed() * t;
+        let (d, n) = System::forces(self.problem, t, x);
+        let body = self.problem.body();
+        (d - body.mu_d * n * (w / self.epsilon).tanh()) / body.mass
     }
 
+    fn band(&self, w: f64) -> i8 {
+        band_of(w, self.v_creep)
+    }
+}
+
+impl Law<'_> {
     /// ∂v'/∂v = −μd N_f sech²(v/ε)/(M ε).
     fn accel_dv(&self, t: f64, v: f64) -> f64 {
         let n = self.problem.law.normal(t);
         let body = &self.problem.body;
         let th = (v / self.epsilon).tanh();
         -body.mu_d * n * (1.0 - th * th) / (body.mass * self.epsilon)
-    }
-
-    fn band(&self, v: f64) -> i8 {
-        band_of(v, self.v_creep)
     }
 }
 
@@ -252,6 +284,15 @@ impl TanhAdaptive {
         samples: &[f64],
     ) -> Result<(Solution, Vec<[f64; 2]>)> {
         let law = Law::new(problem, self.epsilon)?;
+        let tol = self.tolerance(setting)?;
+        check_samples(samples, problem.t_end)?;
+        let period = problem.law.period;
+        let stops = stop_points(problem, samples, period / GRID_PER_PERIOD)?;
+        adaptive_run(&law, tol, &stops, period * tol.max(1e-13), samples)
+    }
+
+    /// The tolerance of an adaptive `setting`, refused otherwise.
+    fn tolerance(&self, setting: Setting) -> Result<f64> {
         let Setting::Tolerance(tol) = setting else {
             return Err(Error::InvalidParam {
                 name: "setting",
@@ -259,78 +300,116 @@ impl TanhAdaptive {
                 rule: "tanh_dopri5 is adaptive: give Setting::Tolerance(tol) with tol > 0".into(),
             });
         };
-        let tol = check_tolerance(tol)?;
-        check_samples(samples, problem.t_end)?;
-        let period = problem.law.period;
-        let resolution = period * tol.max(1e-13);
-        let rhs = |t: f64, y: [f64; 2]| [y[1], law.accel(t, y[1])];
-        let mut stats = Stats::default();
-        let mut solve = |t0: f64, y0: [f64; 2], t1: f64| -> Result<[f64; 2]> {
-            let (y, s) = try_solve_smooth(rhs, t0, y0, t1, tol)?;
-            stats.rhs_evals += s.rhs_evals;
-            stats.steps += s.steps;
-            stats.accepted += s.accepted;
-            stats.rejected += s.rejected;
-            if stats.steps > MAX_STEPS {
-                return Err(Error::Stalled {
-                    t: t1,
-                    reason: "tanh_dopri5: more than 10^7 steps",
-                });
-            }
-            Ok(y)
-        };
-        let stops = stop_points(problem, samples, period / GRID_PER_PERIOD)?;
-        let mut events = Vec::new();
-        let mut states = Vec::with_capacity(samples.len());
-        let mut next_sample = samples.iter().peekable();
-        while next_sample.next_if(|&&t| t <= 0.0).is_some() {
-            states.push([0.0, 0.0]);
-        }
-        let (mut t, mut y, mut band) = (0.0, [0.0, 0.0], 0);
-        for &tb in &stops {
-            let yb = solve(t, y, tb)?;
-            let band_b = law.band(yb[1]);
-            // Walk from (t, y) to tb one band change at a time: bisect for the first change
-            // after ta, record it, go on from just after it.
-            let (mut ta, mut ya, mut band_a) = (t, y, band);
-            let mut changes = 0;
-            while band_a != band_b {
-                changes += 1;
-                if changes > 8 {
-                    return Err(Error::Stalled {
-                        t: ta,
-                        reason: "tanh_dopri5: too many band changes in one grid cell",
-                    });
-                }
-                let (mut lo, mut y_lo) = (ta, ya);
-                let (mut hi, mut y_hi) = (tb, yb);
-                while hi - lo > resolution {
-                    let mid = 0.5 * (lo + hi);
-                    if mid <= lo || mid >= hi {
-                        break;
-                    }
-                    let y_mid = solve(lo, y_lo, mid)?;
-                    if law.band(y_mid[1]) == band_a {
-                        (lo, y_lo) = (mid, y_mid);
-                    } else {
-                        (hi, y_hi) = (mid, y_mid);
-                    }
-                }
-                let band_new = law.band(y_hi[1]);
-                events.push(MethodEvent {
-                    t: 0.5 * (lo + hi),
-                    kind: event_kind(band_a, band_new),
-                });
-                (ta, ya, band_a) = (hi, y_hi, band_new);
-            }
-            (t, y, band) = (tb, yb, band_b);
-            while next_sample.next_if(|&&s| s <= t).is_some() {
-                states.push(y);
-            }
-        }
-        let solution = Solution::new(events, y[0], y[1], stats);
-        Ok((solution, states))
+        check_tolerance(tol)
     }
+}
+
+/// Evenly spaced points ending at `t_end` (s), cells at most `max_cell` (s) long.
+fn grid_points(t_end: f64, max_cell: f64) -> Result<Vec<f64>> {
+    if !(t_end.is_finite() && t_end >= 0.0) {
+        return Err(Error::InvalidParam {
+            name: "t_end",
+            value: t_end.to_string(),
+            rule: "finite and >= 0 (s)".into(),
+        });
+    }
+    let cells = (t_end / max_cell).ceil().max(1.0);
+    if cells.is_nan() || cells > MAX_STEPS as f64 {
+        return Err(Error::Stalled {
+            t: 0.0,
+            reason: "tanh: too many checking points",
+        });
+    }
+    let cells = cells as u64;
+    Ok((1..=cells)
+        .map(|i| {
+            if i == cells {
+                t_end
+            } else {
+                t_end * i as f64 / cells as f64
+            }
+        })
+        .collect())
+}
+
+/// The adaptive integration of `law` from rest relative to the surface at t = 0 through the
+/// sorted `stops` (s, the last is t_end), band changes of w located to `resolution` (s); the
+/// states (x, v) at the `samples`, each of which is a stop.
+fn adaptive_run<S: System>(
+    law: &Law<'_, S>,
+    tol: f64,
+    stops: &[f64],
+    resolution: f64,
+    samples: &[f64],
+) -> Result<(Solution, Vec<[f64; 2]>)> {
+    let rhs = |t: f64, y: [f64; 2]| [y[1], law.accel(t, y[0], y[1])];
+    let mut stats = Stats::default();
+    let mut solve = |t0: f64, y0: [f64; 2], t1: f64| -> Result<[f64; 2]> {
+        let (y, s) = try_solve_smooth(rhs, t0, y0, t1, tol)?;
+        stats.rhs_evals += s.rhs_evals;
+        stats.steps += s.steps;
+        stats.accepted += s.accepted;
+        stats.rejected += s.rejected;
+        if stats.steps > MAX_STEPS {
+            return Err(Error::Stalled {
+                t: t1,
+                reason: "tanh_dopri5: more than 10^7 steps",
+            });
+        }
+        Ok(y)
+    };
+    let mut events = Vec::new();
+    let mut states = Vec::with_capacity(samples.len());
+    let mut next_sample = samples.iter().peekable();
+    while next_sample.next_if(|&&t| t <= 0.0).is_some() {
+        states.push([0.0, 0.0]);
+    }
+    let (mut t, mut y, mut band) = (0.0, [0.0, 0.0], 0);
+    for &tb in stops {
+        let yb = solve(t, y, tb)?;
+        let band_b = law.band(yb[1]);
+        // Walk from (t, y) to tb one band change at a time: bisect for the first change
+        // after ta, record it, go on from just after it.
+        let (mut ta, mut ya, mut band_a) = (t, y, band);
+        let mut changes = 0;
+        while band_a != band_b {
+            changes += 1;
+            if changes > 8 {
+                return Err(Error::Stalled {
+                    t: ta,
+                    reason: "tanh_dopri5: too many band changes in one grid cell",
+                });
+            }
+            let (mut lo, mut y_lo) = (ta, ya);
+            let (mut hi, mut y_hi) = (tb, yb);
+            while hi - lo > resolution {
+                let mid = 0.5 * (lo + hi);
+                if mid <= lo || mid >= hi {
+                    break;
+                }
+                let y_mid = solve(lo, y_lo, mid)?;
+                if law.band(y_mid[1]) == band_a {
+                    (lo, y_lo) = (mid, y_mid);
+                } else {
+                    (hi, y_hi) = (mid, y_mid);
+                }
+            }
+            let band_new = law.band(y_hi[1]);
+            events.push(MethodEvent {
+                t: 0.5 * (lo + hi),
+                kind: event_kind(band_a, band_new),
+            });
+            (ta, ya, band_a) = (hi, y_hi, band_new);
+        }
+        (t, y, band) = (tb, yb, band_b);
+        while next_sample.next_if(|&&s| s <= t).is_some() {
+            let (x, v) = absolute(law.problem, t, y[0], y[1]);
+            states.push([x, v]);
+        }
+    }
+    let (x_end, v_end) = absolute(law.problem, t, y[0], y[1]);
+    let solution = Solution::new(events, x_end, v_end, stats);
+    Ok((solution, states))
 }
 
 /// One TR-BDF2 step's result.
@@ -357,7 +436,7 @@ struct Trbdf2<'a> {
 impl Trbdf2<'_> {
     fn f(&mut self, t: f64, y: [f64; 2]) -> [f64; 2] {
         self.stats.rhs_evals += 1;
-        [y[1], self.law.accel(t, y[1])]
+        [y[1], self.law.accel(t, y[0], y[1])]
     }
 
     /// Solves z − c f(t, z) = ψ for z (c = d h), starting Newton from v = `guess`.
@@ -685,6 +764,7 @@ pub fn creep_per_stick(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::bench::problems::PERIODS;
     use crate::models::LawKind;
     use crate::solver::exact::Exact;
     use crate::solver::test_support::{fitted_slope, set_b};
@@ -855,6 +935,106 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn on_the_belt_it_slips_at_the_kinetic_threshold_and_settles_to_the_free_oscillation() {
+        let (p, problem) = crate::bench::belt::problem().unwrap();
+        let c = crate::models::belt::formula::evaluate(&p);
+        let s = TanhAdaptive {
+            epsilon: super::super::TANH_EPSILON,
+        }
+        .solve_surface(&problem, Setting::Tolerance(1e-8))
+        .unwrap();
+        let natural = 2.0 * std::f64::consts::PI / c.omega;
+        let slips: Vec<f64> = s
+            .events
+            .iter()
+            .filter(|e| e.kind == "slip")
+            .map(|e| e.t)
+            .collect();
+        // Slips and band visits alternate from the first slip; none reverses.
+        assert!(
+            s.events.iter().step_by(2).all(|e| e.kind == "slip"),
+            "{:?}",
+            s.events
+        );
+        assert!(s
+            .events
+            .iter()
+            .skip(1)
+            .step_by(2)
+            .all(|e| e.kind == "stick"));
+        // Measured (ε = 1e-4): first slip 0.802 s, x_d/v_b = 0.785 s, x_s/v_b = 1.177 s.
+        let kinetic = c.x_d / p.v_b;
+        println!(
+            "tanh_dopri5 on the belt: first slip {:.4} s (x_d/v_b {kinetic:.4}, x_s/v_b {:.4})",
+            slips[0], c.first_slip_time
+        );
+        assert!(slips[0] > kinetic && slips[0] < 1.05 * kinetic);
+        // Settled: slip to slip 0.62830 s = 2π/ω (0.62832 s), not the closed period 1.149 s.
+        let settled = slips[slips.len() - 1] - slips[slips.len() - 2];
+        println!(
+            "  {} slips; settled cycle {settled:.5} s, 2π/ω {natural:.5} s, closed period {:.5} s",
+            slips.len(),
+            c.period
+        );
+        assert!((settled - natural).abs() < 1e-3 * natural);
+        // One slip per natural period from the first: 37 in the 20 closed-form periods.
+        let cycles = ((problem.t_end - slips[0]) / natural).ceil() as usize;
+        assert_eq!(slips.len(), cycles);
+        assert!(cycles > PERIODS as usize);
+        // Its "stick" is a graze of the creep band: 0.032 s first, 0.027 s settled, 3.5 % of t_stick.
+        let visits: Vec<f64> = s
+            .events
+            .windows(2)
+            .filter(|w| w[0].kind == "stick")
+            .map(|w| w[1].t - w[0].t)
+            .collect();
+        println!(
+            "  band visits {:.4} … {:.4} s, t_stick {:.4} s",
+            visits[0],
+            visits[visits.len() - 1],
+            c.t_stick
+        );
+        assert!(visits.windows(2).all(|w| w[1] < w[0]), "{visits:?}");
+        assert!(visits[visits.len() - 1] < 0.05 * c.t_stick);
+        // The end state lies on the circle of radius v_b/ω about (x_d, 0), within 3 %; at the
+        // end it moves backwards (v_end −0.045 m/s), where the exact body rides at v_b.
+        let radius = ((s.x_end - c.x_d).powi(2) + (s.v_end / c.omega).powi(2)).sqrt();
+        println!(
+            "  end: x {:.5} m, v {:.5} m/s, radius {radius:.3e} m, v_b/ω {:.3e} m",
+            s.x_end,
+            s.v_end,
+            p.v_b / c.omega
+        );
+        assert!((radius - p.v_b / c.omega).abs() < 0.03 * p.v_b / c.omega);
+        assert!(s.v_end < 0.0);
+    }
+
+    #[test]
+    fn trbdf2_refuses_the_belt_and_bad_input_on_it_is_refused() {
+        let (_, problem) = crate::bench::belt::problem().unwrap();
+        let tol = Setting::Tolerance(1e-6);
+        let e = TanhImplicit { epsilon: 1e-4 }
+            .solve_surface(&problem, tol)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("tanh_trbdf2") && e.contains("forces of time only"),
+            "{e}"
+        );
+        let adaptive = TanhAdaptive { epsilon: 1e-4 };
+        assert!(adaptive
+            .solve_surface(&problem, Setting::Step(0.01))
+            .is_err());
+        assert!(TanhAdaptive { epsilon: -1.0 }
+            .solve_surface(&problem, tol)
+            .is_err());
+        let mut flat = problem.clone();
+        flat.law.stiffness = 0.0;
+        let e = adaptive.solve_surface(&flat, tol).unwrap_err().to_string();
+        assert!(e.contains("stiffness"), "{e}");
     }
 
     #[test]
