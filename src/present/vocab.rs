@@ -97,15 +97,21 @@ pub struct LawPoint {
     pub regime: &'static str,
 }
 
-/// A quantity of the model's own that `stickslip sweep` tabulates and plots at every point
-/// ([`crate::present::Present::sweep_columns`]), read from the point's evaluation `E`.
-pub struct SweepColumn<E> {
+/// How a sweep shows a quantity of the model's own: its CSV column and its plot panel.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Column {
     /// The CSV column's name with its unit suffix (`period_s`, `stick_share`).
     pub column: &'static str,
     /// The plot panel's axis label with its unit ("T (s)").
     pub label: &'static str,
     /// Factor from SI to the axis unit (1e3 for mm).
     pub scale: f64,
+}
+
+/// A quantity of the model's own that `stickslip sweep` tabulates and plots at every point
+/// ([`crate::present::Present::sweep_columns`]), read from the point's evaluation `E`.
+pub struct SweepColumn<E> {
+    pub head: Column,
     /// The value at a point (SI); `None` where it is undefined.
     pub value: fn(&E) -> Option<f64>,
 }

@@ -20,8 +20,8 @@ use rayon::prelude::*;
 use crate::error::{Error, Result};
 use crate::models::param::{invalid, num};
 use crate::models::{with_capability, with_model, Capability, Model, Physics};
-use crate::present::vocab::LawName;
 pub use crate::present::vocab::LawPoint;
+use crate::present::vocab::{Column, LawName};
 use crate::present::Present;
 
 pub use render::{render, summary_line};
@@ -87,14 +87,6 @@ pub struct Point {
     /// The model's own quantities, in the order of [`Sweep::columns`] (empty at an invalid
     /// point).
     pub own: Vec<Option<f64>>,
-}
-
-/// A column of the model's own quantities ([`Present::sweep_columns`]) without its reader.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Column {
-    pub column: &'static str,
-    pub label: &'static str,
-    pub scale: f64,
 }
 
 /// A finished sweep.
@@ -253,14 +245,7 @@ pub fn run(base: &Model, spec: &GridSpec, progress: &ProgressBar) -> Result<Swee
         }
     }
     fn laws<M: Present>(_: &M) -> (&'static [LawName], Vec<Column>) {
-        let columns = M::sweep_columns()
-            .into_iter()
-            .map(|c| Column {
-                column: c.column,
-                label: c.label,
-                scale: c.scale,
-            })
-            .collect();
+        let columns = M::sweep_columns().into_iter().map(|c| c.head).collect();
         (M::LAWS, columns)
     }
     let (laws, columns): (&[LawName], _) =

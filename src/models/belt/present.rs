@@ -17,8 +17,8 @@ use crate::format::short;
 use crate::models::Physics;
 use crate::output::text::{checks_table, closed_form_table, DIGITS as TEXT_DIGITS};
 use crate::present::vocab::{
-    Builtin, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory, Phase,
-    RegimeRow, Scene, SceneCtx, SweepColumn,
+    Builtin, Column, Figure, FigureKinds, LawName, LawPoint, LawWords, Note, OutFile, PartStory,
+    Phase, RegimeRow, Scene, SceneCtx, SweepColumn,
 };
 use crate::present::{DefaultSweep, Laws, Present, StandardScene};
 use crate::report::context::{blank, count, fill_checks, input, row};
@@ -180,21 +180,27 @@ impl Present for BeltParams {
     fn sweep_columns() -> Vec<SweepColumn<Evaluation>> {
         vec![
             SweepColumn {
-                column: "period_s",
-                label: "T (s)",
-                scale: 1.0,
+                head: Column {
+                    column: "period_s",
+                    label: "T (s)",
+                    scale: 1.0,
+                },
                 value: |e| e.integration.period,
             },
             SweepColumn {
-                column: "amplitude_m",
-                label: "A (mm)",
-                scale: 1e3,
+                head: Column {
+                    column: "amplitude_m",
+                    label: "A (mm)",
+                    scale: 1e3,
+                },
                 value: |e| e.integration.amplitude,
             },
             SweepColumn {
-                column: "stick_share",
-                label: "stick share",
-                scale: 1.0,
+                head: Column {
+                    column: "stick_share",
+                    label: "stick share",
+                    scale: 1.0,
+                },
                 value: |e| e.integration.stick_share,
             },
         ]
