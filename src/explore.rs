@@ -110,22 +110,27 @@ pub const LINEARIZED_AND_HARMONIC: &[ExploredLaw] = &[
     },
 ];
 
-/// What the page's animation draws for a model: the kind of drawing (one routine of the page
-/// each) and the geometry of the model's sketch it draws with (px).
+/// What the page's animation draws for a model: the kind of drawing, the geometry of the
+/// model's sketch it draws with (px), and the drawing itself: the model's script
+/// (`src/models/<name>/explorer.js`), which the page inserts once per kind.
 #[cfg(feature = "cli")]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Apparatus {
     pub kind: &'static str,
     pub geometry: serde_json::Value,
+    /// The body of a script function returning the drawing (see the models' explorer.js).
+    #[serde(skip)]
+    pub drawing: &'static str,
 }
 
 #[cfg(feature = "cli")]
 impl Apparatus {
-    /// The drawing `kind` with the sketch's `geometry` (a struct of numbers).
-    pub fn new(kind: &'static str, geometry: &impl Serialize) -> Self {
+    /// The drawing `kind` with the sketch's `geometry` (a struct of numbers) and its script.
+    pub fn new(kind: &'static str, geometry: &impl Serialize, drawing: &'static str) -> Self {
         Self {
             kind,
             geometry: serde_json::to_value(geometry).unwrap_or_default(),
+            drawing,
         }
     }
 }

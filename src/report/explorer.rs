@@ -102,7 +102,7 @@ pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
     ctx.insert("in_report", &(placement == Placement::InReport));
     ctx.insert("css", CSS);
     ctx.insert("style", STYLE);
-    ctx.insert("script", &script_safe(SCRIPT));
+    ctx.insert("script", &script_safe(&script(&data.models)));
     ctx.insert("data", &script_safe(&json));
     ctx.insert(
         "engine",
@@ -110,6 +110,31 @@ pub fn render(scenes: &[Scene], placement: Placement) -> Result<OutFile> {
     );
     let tera = templates(&[("explorer.html", TEMPLATE)])?;
     Ok(OutFile::new(FILE, page(&tera, "explorer.html", &ctx)?))
+}
+
+/// Where the page's script takes the models' drawings.
+const DRAWINGS_MARK: &str = "/* stickslip: the models' drawings */";
+
+/// The page's script with each kind of apparatus drawing of `models` in place of
+/// [`DRAWINGS_MARK`], once per kind, as `DRAWINGS[kind]`.
+fn script(models: &[ModelData]) -> String {
+    let mut drawings = BTreeMap::new();
+    for m in models {
+        drawings.insert(m.apparatus.kind, m.apparatus.drawing);
+    }
+    let mut inserted = String::new();
+    for (kind, body) in drawings {
+        inserted.push_str(&format!("  DRAWINGS[{kind:?}] = (() => {{\n"));
+        for line in body.lines() {
+            if !line.is_empty() {
+                inserted.push_str("    ");
+                inserted.push_str(line);
+            }
+            inserted.push('\n');
+        }
+        inserted.push_str("  })();\n");
+    }
+    SCRIPT.replacen(DRAWINGS_MARK, inserted.trim(), 1)
 }
 
 /// Text made safe inside a `<script>` element: no `</` (which could close it).
@@ -320,5 +345,35 @@ fn preset(scene: &Scene) -> Preset {
         model: scene.setup.id(),
         params,
         choices,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_kind_of_apparatus_drawing_is_inserted_once_in_place_of_the_mark() {
+        assert_eq!(SCRIPT.matches(DRAWINGS_MARK).count(), 1);
+        let page = render(&[], Placement::Alone).unwrap();
+        let page = String::from_utf8(page.bytes).unwrap();
+        assert!(!page.contains(DRAWINGS_MARK));
+        let kinds: Vec<&str> = Model::offering(Capability::Explore)
+            .iter()
+            .map(|m| {
+                let mut kind = "";
+                with_capability!(m, explore, p => kind = apparatus_kind(p), else ());
+                kind
+            })
+            .collect();
+        assert!(kinds.len() >= 3, "{kinds:?}");
+        for kind in kinds {
+            let entry = format!("DRAWINGS[{kind:?}] = (() => {{");
+            assert_eq!(page.matches(&entry).count(), 1, "{kind}");
+        }
+    }
+
+    fn apparatus_kind<M: Explore>(_: &M) -> &'static str {
+        M::apparatus().kind
     }
 }

@@ -112,7 +112,11 @@ impl Explore for BeltParams {
 
     #[cfg(feature = "cli")]
     fn apparatus() -> Apparatus {
-        Apparatus::new("belt", &super::sketch::APPARATUS)
+        Apparatus::new(
+            "belt",
+            &super::sketch::APPARATUS,
+            include_str!("explorer.js"),
+        )
     }
 
     fn map_axes(&self) -> [MapAxis; 2] {

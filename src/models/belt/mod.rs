@@ -21,6 +21,8 @@
 //! scenes.rs    the built-in scenes of the report (scenarios/belt-*.toml)
 //! lang/        its words in each language of the handouts
 //! explore.rs   what the explorer page asks (`Explore`): regime sentence, curves, map
+//! explorer.js  the explorer page's drawing of the apparatus, animated (inserted by
+//!              src/report/explorer.rs)
 //! map.rs       the (μd, v_b) regime map from the closed forms
 //! ```
 //!

@@ -72,6 +72,7 @@ impl Explore for PulledMassParams {
         Apparatus::new(
             "pulled-mass",
             &crate::models::pulled_mass::sketch::APPARATUS,
+            include_str!("explorer.js"),
         )
     }
 

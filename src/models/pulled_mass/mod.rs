@@ -9,6 +9,7 @@
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! map.rs         the (μd, μs) domain maps, cell by cell (report and explorer)
 //! explore.rs     what the explorer page asks of the model (regime sentence, apparatus)
+//! explorer.js    the explorer page's drawing of the apparatus, animated
 //! claims.rs      the paper's claims about this model (claims 1, 2)
 //! derivation.rs  the worked substitutions (formula, numbers, value) of the closed forms
 //! scene.rs       the report's figures of this model

@@ -109,6 +109,7 @@ impl Explore for WoodpeckerParams {
         Apparatus::new(
             "woodpecker",
             &crate::models::woodpecker::sketch::WOODPECKER_APPARATUS,
+            include_str!("explorer.js"),
         )
     }
 

@@ -8,6 +8,7 @@
 //! lobe.rs        the lobe engine: the periodic orbit of the linearized law in every regime
 //! map.rs         the regime maps in the (μd, z0) plane, cell by cell (report and explorer)
 //! explore.rs     what the explorer page asks of the model (regime sentence, apparatus)
+//! explorer.js    the explorer page's drawing of the apparatus, animated
 //! quantity.rs    the registry of the quantities: key, symbol, unit, equation, scope
 //! results.rs     the evaluation: closed forms, both laws integrated, checks, applicability
 //! claims.rs      the paper's claims about this model (claims 4, 6); halt.rs claim 5, lever.rs claim 8
