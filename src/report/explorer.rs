@@ -370,6 +370,8 @@ mod tests {
         for kind in kinds {
             let entry = format!("DRAWINGS[{kind:?}] = (() => {{");
             assert_eq!(page.matches(&entry).count(), 1, "{kind}");
+            // The shared script names no apparatus: a new model's drawing stays in its folder.
+            assert!(!SCRIPT.contains(kind), "templates/explorer.js names {kind}");
         }
     }
 
