@@ -30,8 +30,8 @@
 //! On the belt ([`SurfaceProblem`], both methods) the band test reads w: the adaptive
 //! method's on a grid of [`GRID_PER_PERIOD`] points per natural period 2π √(M/|∂D/∂x|),
 //! TR-BDF2's on each step, its steps capped at 1/[`GRID_PER_PERIOD`] of that period and its
-//! Newton iteration on the stage equation with ∂D/∂x in the Jacobian (the stepper `Trbdf2`; with forces
-//! of time only ∂D/∂x = 0 and the numbers are those of the time-only method, bit for bit).
+//! Newton iteration on the stage equation with ∂D/∂x in the Jacobian (the stepper `Trbdf2`;
+//! with forces of time only ∂D/∂x = 0 and the numbers are the time-only ones, bit for bit).
 //! Knowing only μd, the body creeps until D reaches μd N_f (at x_d, not x_s), then oscillates
 //! harmonically about x_d with w touching 0 only at the top of each swing: a short "stick" (a
 //! visit of the creep band) per period 2π/ω, not the closed forms' stick of t_stick. The
