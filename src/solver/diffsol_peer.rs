@@ -1,11 +1,15 @@
 //! The compiled peer of `stickslip bench` from a Rust ODE library: diffsol's explicit adaptive
 //! Runge–Kutta (Tsitouras 5(4), [`DiffsolTsit45`], `Setting::Tolerance(tol)`), driven by the
 //! stick/slip state machine of the tool's own DOPRI5 ([`super::dopri5::drive`]), so that the
-//! two differ only in the integrator and its event location.
+//! two differ only in the integrator and its event location. On a moving surface (the belt,
+//! [`Method::solve_surface`]) the machine is dopri5's generic one ([`drive_system`]), in the
+//! surface's frame u = x − v_s t, w = v − v_s: sticking is w = 0, the stick ends where the
+//! static margin |D(x)| − μs N_f of the carried body turns positive, the state y = (u, w).
 //!
 //! ```text
 //! slipping, direction s:  y = (x, v),  y' = (v, (D − s μd N_f)/M)    diffsol root_fn  g = s·v
 //! stuck:                  y = (x, 0) constant                         the dopri5 stuck walk
+//! belt:                   y = (u, w),  y' = (w, (D(u + v_s t) − s μd N_f)/M),  g = s·w
 //! ```
 //!
 //! * Slip phase: one diffsol problem and one solver per solve (rtol = tol, atol = (tol, tol)),

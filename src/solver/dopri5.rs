@@ -14,7 +14,8 @@
 //!   where the right-hand side has kinks) and at t_end.
 //! * Forces of the position ([`System`], the belt's [`SurfaceProblem`]): a generic path,
 //!   [`solve_system`], in the surface's frame u = x − v_s t, w = v − v_s, without the piece
-//!   cache below; its stuck steps are 1/16 of the free period 2π/ω, ω = √(−(∂D/∂x)/M).
+//!   cache below; its stuck steps are 1/16 of the free period 2π/ω, ω = √(−(∂D/∂x)/M). Its
+//!   state machine, [`drive_system`], also drives the diffsol peer on the belt.
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
 //!   Shampine's coefficients), which matches y and y' at both step ends; formed only on a step
 //!   whose stick check needs it ([`Accepted::dense`]).

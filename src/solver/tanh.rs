@@ -478,7 +478,7 @@ impl<S: System> Trbdf2<'_, S> {
         let (d, n) = problem.forces(t, psi[0] + problem.surface_speed() * t);
         let body = problem.body();
         let alpha = 1.0 - c * c * problem.force_gradient() / body.mass;
-        if !(alpha > 0.0) {
+        if alpha.is_nan() || alpha <= 0.0 {
             return Err(Error::Stalled {
                 t,
                 reason: "tanh_trbdf2: step too long for a force growing with the position",
