@@ -1,16 +1,16 @@
 //! The belt as a bench problem: the textbook stick-slip oscillator (docs/belt.md), a standard
 //! test for event-driven solvers, with the default set over [`PERIODS`] cycles. The force is
 //! the spring's −k x and the block sticks at the belt's speed v_b, so it is a
-//! [`SurfaceProblem`]: the exact engine, rk4, dopri5 (and dopri5_endpoints: their generic
-//! path), tanh_dopri5, moreau and euler_sign integrate it ([`Method::solve_surface`]; each
-//! method's test on it is beside its code); tanh_trbdf2 takes forces of time only and refuses
-//! it. The exact event times are those of the closed forms: first slip at x_s/v_b (B5), then
-//! slips of t_slip (B9) and sticks of t_stick (B10). tanh_dopri5 (μd only, no stick state)
-//! does not reproduce them: it slips at x_d/v_b and settles to a harmonic oscillation of
-//! period 2π/ω about x_d that only grazes the belt's speed (its test in `solver::tanh`).
+//! [`SurfaceProblem`]: every method integrates it ([`Method::solve_surface`]; each method's
+//! test on it is beside its code): the exact engine, rk4, dopri5 (and dopri5_endpoints: their
+//! generic path), moreau, tanh_dopri5, tanh_trbdf2, euler_sign and, with the `peers` feature,
+//! diffsol_tsit45 (on dopri5's generic state machine). The exact event times are those of the
+//! closed forms: first slip at x_s/v_b (B5), then slips of t_slip (B9) and sticks of t_stick
+//! (B10). The tanh methods (μd only, no stick state) do not reproduce them: they slip at
+//! x_d/v_b and settle to a harmonic oscillation of period 2π/ω about x_d that only grazes the
+//! belt's speed (their tests in `solver::tanh`).
 //!
-//! Not yet in the work-precision sweep (`stickslip bench`): tanh_trbdf2 does not take a force
-//! depending on the position, nor do the diffsol and SciPy peers.
+//! Not yet in the work-precision sweep (`stickslip bench`), nor taken by the SciPy peer.
 
 use super::problems::PERIODS;
 use crate::error::Result;
@@ -127,28 +127,40 @@ mod tests {
     }
 
     #[test]
-    fn only_the_methods_of_time_only_forces_refuse_it() {
+    fn every_method_takes_it_and_one_of_forces_of_time_only_is_refused_by_name() {
         let (p, problem) = problem().unwrap();
         let h = Setting::Step(formula::evaluate(&p).period / 100.0);
+        let tol = Setting::Tolerance(1e-6);
         for method in crate::solver::methods() {
-            match method.name() {
-                "dopri5" | "tanh_dopri5" => assert!(method
-                    .solve_surface(&problem, Setting::Tolerance(1e-6))
-                    .is_ok()),
-                "exact" | "rk4" | "moreau" | "euler_sign" => {
-                    assert!(
-                        method.solve_surface(&problem, h).is_ok(),
-                        "{}",
-                        method.name()
-                    )
-                }
-                name => {
-                    let got = method.solve_surface(&problem, Setting::Tolerance(1e-6));
-                    let e = got.unwrap_err().to_string();
-                    assert!(e.starts_with("invalid parameter method"), "{name}: {e}");
-                    assert!(e.contains(name), "{e}");
-                }
+            let setting = match method.name() {
+                "exact" | "rk4" | "moreau" | "euler_sign" => h,
+                _ => tol,
+            };
+            let got = method.solve_surface(&problem, setting);
+            assert!(got.is_ok(), "{}: {got:?}", method.name());
+        }
+        // A method that does not override `solve_surface` takes forces of time only.
+        struct TimeOnly;
+        impl Method for TimeOnly {
+            fn name(&self) -> &'static str {
+                "time_only"
+            }
+            fn solve(
+                &self,
+                problem: &crate::solver::Problem,
+                setting: Setting,
+            ) -> Result<crate::solver::Solution> {
+                Exact.solve(problem, setting)
             }
         }
+        let e = TimeOnly
+            .solve_surface(&problem, tol)
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("invalid parameter method"), "{e}");
+        assert!(
+            e.contains("time_only") && e.contains("forces of time only"),
+            "{e}"
+        );
     }
 }

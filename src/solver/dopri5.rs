@@ -14,7 +14,8 @@
 //!   where the right-hand side has kinks) and at t_end.
 //! * Forces of the position ([`System`], the belt's [`SurfaceProblem`]): a generic path,
 //!   [`solve_system`], in the surface's frame u = x − v_s t, w = v − v_s, without the piece
-//!   cache below; its stuck steps are 1/16 of the free period 2π/ω, ω = √(−(∂D/∂x)/M).
+//!   cache below; its stuck steps are 1/16 of the free period 2π/ω, ω = √(−(∂D/∂x)/M). Its
+//!   state machine, [`drive_system`], also drives the diffsol peer on the belt.
 //! * Dense output: the standard 4th-order continuous extension of DOPRI5 (Hairer's `contd5`,
 //!   Shampine's coefficients), which matches y and y' at both step ends; formed only on a step
 //!   whose stick check needs it ([`Accepted::dense`]).
@@ -884,17 +885,55 @@ fn count_at_same_time(at: &mut (f64, u32), t: f64, labels: &Labels) -> Result<()
 
 /// The generic path: the state machine of [`drive`] on any [`System`] (the belt), in the
 /// surface's frame u = x − v_s t, w = v − v_s (sticking is w = 0), without the fast path's
-/// piece cache. Slipping: y = (u, w), y' = (w, a(t, u + v_s t)) with the force read at each
-/// stage (it depends on the position, so no FSAL reuse); stick located on w's interpolant.
-/// Stuck: G(t) = |D(t, u + v_s t)| − μs N_f walked as in [`drive`], in steps of
-/// 1/[`STUCK_STEPS_PER_PERIOD`] of the free period 2π/ω, ω = √(−∂D/∂x / M), when the force
-/// pulls back (the whole span to the next breakpoint otherwise: on the belt G is then
-/// |affine in t| − constant, convex, above 0 within a step only if at its end).
+/// piece cache ([`drive_system`]). Slipping: y = (u, w), y' = (w, a(t, u + v_s t)) with the
+/// force read at each stage (it depends on the position, so no FSAL reuse); stick located on
+/// w's interpolant.
 fn solve_system(problem: &impl System, tol: f64, opts: &Options) -> Result<Solution> {
     let labels = Labels {
         recurring: "dopri5: events keep recurring at one instant",
         too_many_steps: "dopri5: too many steps",
     };
+    let (t_end, v_s) = (problem.t_end(), problem.surface_speed());
+    drive_system(problem, opts, &labels, |t, u, s, stats| {
+        let f = |t: f64, y: State| [y[1], problem.slip_acceleration(t, y[0] + v_s * t, s)];
+        let mut run = Integrator::new(&f, t, [u, 0.0], t_end, tol, stats);
+        loop {
+            let stop = problem.breakpoint_after(run.t).min(t_end);
+            let step = run.step(&f, stop, opts.h_max, stats)?;
+            if !positive(step.coefficients(1), s) {
+                let dense = step.dense();
+                let samples = if opts.interior_checks { SAMPLES } else { 1 };
+                if let Some(te) = first_stick(&dense, s, samples) {
+                    return Ok(SlipEnd::Stop {
+                        t: te,
+                        x: dense.y(te)[0],
+                    });
+                }
+            }
+            if run.t >= t_end {
+                return Ok(SlipEnd::End { y: run.y });
+            }
+        }
+    })
+}
+
+/// The stick/slip state machine of [`drive`] on any [`System`], in the surface's frame
+/// u = x − v_s t, w = v − v_s (sticking is w = 0), shared by the event-locating adaptive
+/// methods' generic paths (this file's DOPRI5 and the diffsol peer): from rest relative to
+/// the surface at u = 0, t = 0, stuck phases are walked by [`Stuck`] on
+/// G(t) = |D(t, u + v_s t)| − μs N_f, in steps of 1/[`STUCK_STEPS_PER_PERIOD`] of the free
+/// period 2π/ω, ω = √(−∂D/∂x / M), when the force pulls back (the whole span to the next
+/// breakpoint otherwise: on the belt G is then |affine in t| − constant, convex, above 0
+/// within a step only if at its end), the onset in direction sgn D. Each slip phase in
+/// direction s is integrated by `slip(t0, u0, s, stats)` from (u0, w = 0) until s·w reaches 0
+/// (`SlipEnd::Stop`, its x the u there) or t_end (`SlipEnd::End`, its y = (u, w)); the
+/// transitions are [`drive`]'s.
+pub(crate) fn drive_system(
+    problem: &impl System,
+    opts: &Options,
+    labels: &Labels,
+    mut slip: impl FnMut(f64, f64, f64, &mut Stats) -> Result<SlipEnd>,
+) -> Result<Solution> {
     let (t_end, v_s, body) = (problem.t_end(), problem.surface_speed(), *problem.body());
     let forces = |t: f64, u: f64| problem.forces(t, u + v_s * t);
     let margin = |t: f64, u: f64, stats: &mut Stats| {
@@ -916,7 +955,7 @@ fn solve_system(problem: &impl System, tol: f64, opts: &Options) -> Result<Solut
     let mut dir = 0.0_f64;
     let mut at_same_time = (t, 0u32);
     'phases: while t < t_end {
-        count_at_same_time(&mut at_same_time, t, &labels)?;
+        count_at_same_time(&mut at_same_time, t, labels)?;
         if dir == 0.0 {
             let mut stuck = Stuck::new(t, u, margin(t, u, &mut stats));
             loop {
@@ -924,7 +963,7 @@ fn solve_system(problem: &impl System, tol: f64, opts: &Options) -> Result<Solut
                     .min(problem.breakpoint_after(stuck.t))
                     .min(t_end);
                 let g = |t, stats: &mut Stats| margin(t, u, stats);
-                match stuck.advance(stop, t_end, g, &labels, &mut stats)? {
+                match stuck.advance(stop, t_end, g, labels, &mut stats)? {
                     Advance::Step => {}
                     Advance::Event { t: onset, .. } => {
                         events.push(MethodEvent {
@@ -940,20 +979,10 @@ fn solve_system(problem: &impl System, tol: f64, opts: &Options) -> Result<Solut
             }
         }
         let s = dir;
-        let f = |t: f64, y: State| [y[1], problem.slip_acceleration(t, y[0] + v_s * t, s)];
-        let mut run = Integrator::new(&f, t, [u, 0.0], t_end, tol, &mut stats);
-        let (te, ue) = loop {
-            let stop = problem.breakpoint_after(run.t).min(t_end);
-            let step = run.step(&f, stop, opts.h_max, &mut stats)?;
-            if !positive(step.coefficients(1), s) {
-                let dense = step.dense();
-                let samples = if opts.interior_checks { SAMPLES } else { 1 };
-                if let Some(te) = first_stick(&dense, s, samples) {
-                    break (te, dense.y(te)[0]);
-                }
-            }
-            if run.t >= t_end {
-                (u, w_end) = (run.y[0], run.y[1]);
+        let (te, ue) = match slip(t, u, s, &mut stats)? {
+            SlipEnd::Stop { t, x } => (t, x),
+            SlipEnd::End { y } => {
+                (u, w_end) = (y[0], y[1]);
                 break 'phases;
             }
         };

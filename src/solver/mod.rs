@@ -16,11 +16,13 @@
 //! Its name, [`DIFFSOL_PEER`], is known without it, so a build without the peer can say so.
 //!
 //! Every method integrates the same [`Problem`]: one body under D(t) and N_f(t) from a
-//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`. The exact engine, rk4,
-//! dopri5, tanh_dopri5, moreau and euler_sign also integrate a [`surface::SurfaceProblem`]
-//! (the belt: a force affine in x, sticking at the surface's speed), stepping it as a
-//! [`surface::System`] (dopri5 through a generic path beside its fast path of forces of time
-//! only; tanh_dopri5 with the relative velocity in the tanh); tanh_trbdf2 refuses it.
+//! [`ForceLaw`], starting stuck at rest at x = 0, t = 0, up to `t_end`. Every method, the
+//! diffsol peer included, also integrates a [`surface::SurfaceProblem`] (the belt: a force
+//! affine in x, sticking at the surface's speed), stepping it as a [`surface::System`]
+//! (dopri5 and the diffsol peer through a generic state machine beside their fast path of
+//! forces of time only; the tanh methods with the relative velocity in the tanh, TR-BDF2's
+//! Newton with ∂D/∂x in its Jacobian); [`Method::solve_surface`]'s default refuses it, for a
+//! method of forces of time only.
 
 use serde::Serialize;
 

@@ -106,7 +106,7 @@ pub fn refused(method: &str) -> Error {
         name: "method",
         value: method.to_string(),
         rule: "forces of time only: a force depending on the position needs exact, rk4, dopri5, \
-               tanh_dopri5, moreau or euler_sign"
+               moreau, tanh_dopri5, tanh_trbdf2, euler_sign or diffsol_tsit45"
             .to_string(),
     }
 }
