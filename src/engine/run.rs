@@ -692,12 +692,11 @@ impl PreparedPiece<'_> {
             trig.map_or((0.0, 0.0), |((_, cos_start), cos_end)| (cos_start, cos_end)),
         );
         let accel = Self::accel_of_same(earlier, piece);
-        let onset = |s: i8| Self::onsets(body, piece, s, (b_min, b_max), snap);
+        let same = Self::earlier_like(earlier, piece, 1.0);
         let slope = |s: f64| {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
         };
-        let onsets = [onset(1), onset(-1)];
         // On a cos basis the zeros of a are located once, in two parts; on a linear one each
         // arc finds its own (see [`ArcMotion::sign_changes`]).
         let sign_changes = |s: f64| match piece.basis {
@@ -728,18 +727,21 @@ impl PreparedPiece<'_> {
                 _ => None,
             },
             end_cos: trig.map(|(_, end)| end),
-            onsets,
+            onsets: [None, None],
             slope: [slope(1.0), slope(-1.0)],
             accel,
             known: KnownAngles::new(),
         });
+        for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
+            *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
+        }
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
         if let Basis::Cos { omega, .. } = piece.basis {
             let roots = prepared.onsets.iter().flat_map(|onsets| match onsets {
-                Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
-                _ => [None, None],
+                Some((crossings, _)) => crossings.crossings(),
+                None => [None, None],
             });
             let mut starts = [None; 5];
             starts[0] = Some(Dd::from(piece.start));
@@ -767,6 +769,22 @@ impl PreparedPiece<'_> {
     /// On a linear basis there is nothing to share ([`SignChanges::UNKNOWN`]).
     #[inline]
     fn accel_of_same(earlier: &[Option<PreparedPiece>], piece: &Piece) -> [Option<SignChanges>; 2] {
+        if let Some(same) = Self::earlier_like(earlier, piece, 1.0) {
+            return same.accel.map(Some);
+        }
+        Self::earlier_like(earlier, piece, -1.0).map_or([None, None], |flipped| {
+            [flipped.accel[1].negated(), flipped.accel[0].negated()]
+        })
+    }
+
+    /// An `earlier` piece on the same cos basis as `piece` with the same drive and the normal
+    /// force times `normal` (±1), bit for bit; none on a linear basis.
+    #[inline]
+    fn earlier_like<'e, 'a>(
+        earlier: &'e [Option<PreparedPiece<'a>>],
+        piece: &Piece,
+        normal: f64,
+    ) -> Option<&'e PreparedPiece<'a>> {
         let bits = |p: &Piece, normal: f64| match p.basis {
             Basis::Linear { .. } => None,
             Basis::Cos { omega, shift } => Some(
@@ -781,22 +799,17 @@ impl PreparedPiece<'_> {
                 .map(f64::to_bits),
             ),
         };
-        let Some(key) = bits(piece, 1.0) else {
-            return [None, None];
-        };
-        let earlier = || earlier.iter().flatten();
-        if let Some(same) = earlier().find(|p| bits(p.piece, 1.0) == Some(key)) {
-            return same.accel.map(Some);
-        }
-        earlier()
-            .find(|p| bits(p.piece, -1.0) == Some(key))
-            .map_or([None, None], |flipped| {
-                [flipped.accel[1].negated(), flipped.accel[0].negated()]
-            })
+        let key = bits(piece, normal)?;
+        earlier
+            .iter()
+            .flatten()
+            .find(|p| bits(p.piece, 1.0) == Some(key))
     }
 
     /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
-    /// [`PreparedPiece::prepare`]); inlined into the place they are stored in.
+    /// [`PreparedPiece::prepare`]); inlined into the place they are stored in. Those of an
+    /// earlier piece with the same basis, drive and normal force (`same`) are `piece`'s with
+    /// its end ([`UpCrossings::ending_at`]), with the same acceleration at the root.
     #[inline(always)]
     fn onsets(
         body: &Body,
@@ -804,6 +817,7 @@ impl PreparedPiece<'_> {
         s: i8,
         (b_min, b_max): (f64, f64),
         snap: f64,
+        same: Option<&PreparedPiece>,
     ) -> Option<Onsets> {
         // g > 0 ⇔ the static friction cannot hold the body in direction s.
         let sf = f64::from(s);
@@ -813,6 +827,12 @@ impl PreparedPiece<'_> {
             8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
         if g_lo.max(g_hi) < -rounding {
             return None;
+        }
+        if let Some(shared) = same.and_then(|same| {
+            let (crossings, at_root) = same.onsets[side(s)]?;
+            Some((crossings.ending_at(piece.end, snap)?, at_root))
+        }) {
+            return Some(shared);
         }
         let exact = || {
             let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
