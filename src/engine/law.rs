@@ -111,8 +111,17 @@ impl Piece {
                 // cos θ = ±1 at θ = kπ inside: +1 for even k, −1 for odd k.
                 let pi = std::f64::consts::PI;
                 let (k_first, k_last) = ((theta_start / pi).ceil(), (theta_end / pi).floor());
+                // k_first mod 2 (0 or 1, NaN for NaN and ±∞), as k_first.rem_euclid(2.0) but
+                // without fmod: doubles from 2^53 on are even integers.
+                let k_first_mod_2 = if k_first.abs() < 9_007_199_254_740_992.0 {
+                    ((k_first as i64) & 1) as f64
+                } else if k_first.is_finite() {
+                    0.0
+                } else {
+                    f64::NAN
+                };
                 let has = |parity: f64| {
-                    let k = if k_first.rem_euclid(2.0) == parity {
+                    let k = if k_first_mod_2 == parity {
                         k_first
                     } else {
                         k_first + 1.0

@@ -205,7 +205,8 @@ pub fn sample(run: &Run, t0: f64, t1: f64, n: usize) -> Vec<[f64; 4]> {
 /// Keeps the events that are needed and merges a stick and a slip at the same instant.
 pub(super) struct Recorder {
     events: Vec<Event>,
-    periods: u32,
+    /// The first of the last `KEEP_LAST` periods (0 for fewer periods).
+    keep_from: u32,
     period: f64,
     snap: f64,
     last_transition: Option<Event>,
@@ -216,7 +217,7 @@ pub(super) struct Recorder {
 
 impl Recorder {
     pub(super) fn keeps(&self, n: u32) -> bool {
-        n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
+        n < KEEP_FIRST || n >= self.keep_from
     }
 
     /// Takes back a slip onset at absolute time `t` that led to no motion.
@@ -319,7 +320,7 @@ pub fn integrate_with(
     let kept_periods = periods.min(KEEP_FIRST + KEEP_LAST) as usize;
     let mut rec = Recorder {
         events: Vec::with_capacity(EVENTS_RESERVED_PER_PERIOD * kept_periods),
-        periods,
+        keep_from: periods.saturating_sub(KEEP_LAST),
         period,
         snap,
         last_transition: None,
@@ -785,25 +786,22 @@ impl PreparedPiece<'_> {
         piece: &Piece,
         normal: f64,
     ) -> Option<&'e PreparedPiece<'a>> {
-        let bits = |p: &Piece, normal: f64| match p.basis {
-            Basis::Linear { .. } => None,
-            Basis::Cos { omega, shift } => Some(
-                [
-                    omega,
-                    shift,
-                    p.drive.c0,
-                    p.drive.c1,
-                    normal * p.normal.c0,
-                    normal * p.normal.c1,
-                ]
-                .map(f64::to_bits),
-            ),
+        if let Basis::Linear { .. } = piece.basis {
+            return None;
+        }
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        let like = |p: &Piece| match (p.basis, piece.basis) {
+            (Basis::Cos { omega, shift }, Basis::Cos { omega: o, shift: h }) => {
+                same(omega, o)
+                    && same(shift, h)
+                    && same(p.drive.c0, piece.drive.c0)
+                    && same(p.drive.c1, piece.drive.c1)
+                    && same(normal * p.normal.c0, piece.normal.c0)
+                    && same(normal * p.normal.c1, piece.normal.c1)
+            }
+            _ => false,
         };
-        let key = bits(piece, normal)?;
-        earlier
-            .iter()
-            .flatten()
-            .find(|p| bits(p.piece, 1.0) == Some(key))
+        earlier.iter().flatten().find(|p| like(p.piece))
     }
 
     /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
