@@ -750,9 +750,10 @@ impl PreparedPiece<'_> {
                 *place = root.map(|c| c.t);
             }
             let zeros = prepared.accel.iter().flat_map(|a| a.zeros());
-            for end in std::iter::once(piece.end).chain(zeros) {
+            let ends = std::iter::once(piece.end).chain(zeros);
+            for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
                 for t_c in starts.into_iter().flatten() {
-                    if t_c.hi < end && end > piece.start && end <= piece.end {
+                    if t_c.hi < end {
                         prepared.known.push_between(omega, t_c, end);
                     }
                 }
