@@ -67,21 +67,22 @@
 //!
 //! Against the exact engine (benches/engine_instructions.rs, the same problems over 20 periods),
 //! ours per run (collected / 200 runs, `set-b TOL 200` resp. `woodpecker TOL 200`) and the
-//! largest event-time error, at c8fb77c:
+//! largest event-time error against the exact engine, with the engine's instructions per run at
+//! c8fb77c and after the preparation work of src/engine/run.rs:
 //!
 //! ```text
 //!                 tol      error       ours/run   steps      engine/run         ratio
 //!                                                 acc.+rej.  c8fb77c → now      c8fb77c → now
-//! set B           1e-10    3.6e-10 s   608,430    561 + 0    10,905 → 11,027    55.8× → 55.2×
-//! set B           3e-11    8.1e-11 s   711,334    660 + 0    10,905 → 11,027    65.2× → 64.5×
-//! woodpecker      1e-10    5.5e-11 s   971,557    782 + 20   23,433 → 22,672    41.5× → 42.9×
+//! set B           1e-10    3.6e-10 s   608,430    561 + 0    10,905 → 10,241    55.8× → 59.4×
+//! set B           3e-11    8.1e-11 s   711,334    660 + 0    10,905 → 10,241    65.2× → 69.5×
+//! woodpecker      1e-10    5.5e-11 s   971,557    782 + 20   23,433 → 19,897    41.5× → 48.8×
 //! ```
 //!
 //! The tolerance whose event-time error is at most 1e-10 s: 3e-11 on set B (1e-10 gives 3.6e-10
 //! s), 1e-10 on the woodpecker (1.5e-10 gives 1.5e-10 s). Ours takes the textbook's steps and
-//! about 1.1–1.2× its instructions per step (above), so the textbook's ratio is about that much
-//! lower; the woodpecker is below the 50× of issue 31 either way.
-//!
+//! about 1.1–1.2× its instructions per step (above), so a ratio against the textbook is lower
+//! by about that factor.
+
 //! At e009c57 the stage states, y1, the error estimate and r5 of the interpolant are formed as the
 //! textbook forms them, y + h·Σ a_ij k_j: one product by h per sum instead of one per coefficient
 //! (the (h·a_ij)·k_j products below), 64–73 instructions less per step; a run at 1e-4 takes 48,800.

@@ -10,19 +10,27 @@
 //!                          pulled mass   pulled mass   woodpecker   woodpecker
 //!                          linear        harmonic      linear       harmonic
 //! c8fb77c                  10,545        10,905        14,931       23,433
-//! now                      10,646        11,027        15,039       22,672
+//! now                       9,750        10,241        13,843       19,897
 //! ```
 //!
-//! Both woodpecker laws and set B repeat from the first period, so a run is one integrated
-//! period, 19 replayed ones ([`super::replay`]) and the preparation of the pieces, which on the
-//! harmonic woodpecker was about a quarter of the run. Now a piece prepared after one with the
-//! same basis and drive and the normal force negated bit for bit (the woodpecker's middle lobe)
-//! takes that one's sign changes of the acceleration, negated, instead of locating them (2 of
-//! the 4 `SignChanges::cos` per run), and sin and cos of ωt at a piece boundary are evaluated
-//! once for the basis range of both pieces and the start phase (7 libm calls instead of 12):
-//! −761 on the harmonic woodpecker; the other three problems +0.9 to +1.1 % (the preparation's
-//! code inlined differently, not analysed further). Every output is the same bit for bit
-//! (`engine_instructions fingerprint`: the same four hashes before and after).
+//! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
+//! ([`super::replay`]) and the preparation of the pieces, which on the harmonic woodpecker was
+//! about a quarter of the run. Since c8fb77c: a piece is prepared in its place after the ones
+//! before it (no copy of a few hundred bytes, two per piece before); a piece on the same cos
+//! basis with the same drive and normal force as an earlier one (the woodpecker's third lobe)
+//! takes that one's acceleration sign changes and slip-onset crossings (located over the
+//! period, limited to the piece's end where read, [`UpCrossings::ending_at`]), one whose normal
+//! force is the earlier one's negated (the middle lobe) its sign changes negated
+//! ([`SignChanges::negated`]); sin and cos of ωt at a piece boundary are evaluated once for the
+//! basis range of both pieces and the start phase (7 libm calls instead of 12 on the woodpecker);
+//! the known half angles skip the ends outside the piece before looking at the starts; the
+//! recorder's kept periods are one comparison. Every output is the same bit for bit
+//! (`engine_instructions fingerprint`: the same four hashes before and after, and
+//! `shared_sign_changes_and_boundary_cosines_are_located_ones` below). The rest of the
+//! harmonic woodpecker's run: the replayed periods through the recorder (about 4,000: 13 of
+//! the 19 replayed periods are kept or next to a kept one), the run's four allocations with
+//! their frees (about 1,000), the two sign-change searches left (900), the two crossing
+//! searches and the one integrated period.
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
