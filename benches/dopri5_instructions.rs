@@ -37,7 +37,9 @@
 //! Arguments: `ours`, `textbook`, `smooth` (the tool's plain DOPRI5, `try_solve_smooth`, with
 //! the textbook's right-hand side from 0 to t_end: the integrator without the stick/slip
 //! machinery; no stops, so its steps differ slightly), `set-b` (ours on the stick-slip set B,
-//! harmonic law, 20 periods, 40 events: the stick checks at work) or `fingerprint` (bits of
+//! harmonic law, 20 periods, 40 events: the stick checks at work), `woodpecker` (ours on the
+//! woodpecker's Fig. 15 set, harmonic law, 20 periods, 80 events; `set-b` and `woodpecker`
+//! print the largest event-time error against the exact engine) or `fingerprint` (bits of
 //! dopri5's results on 6 problems × 11 tolerances, to check that a change keeps them); then
 //! the tolerance (default 1e-8) and the runs (default 200).
 //!
@@ -63,6 +65,24 @@
 //!     per accepted step (342 + 19 steps)
 //! ```
 //!
+//! Against the exact engine (benches/engine_instructions.rs, the same problems over 20 periods),
+//! ours per run (collected / 200 runs, `set-b TOL 200` resp. `woodpecker TOL 200`) and the
+//! largest event-time error against the exact engine, with the engine's instructions per run at
+//! c8fb77c and after the preparation work of src/engine/run.rs:
+//!
+//! ```text
+//!                 tol      error       ours/run   steps      engine/run         ratio
+//!                                                 acc.+rej.  c8fb77c → now      c8fb77c → now
+//! set B           1e-10    3.6e-10 s   608,430    561 + 0    10,905 → 10,241    55.8× → 59.4×
+//! set B           3e-11    8.1e-11 s   711,334    660 + 0    10,905 → 10,241    65.2× → 69.5×
+//! woodpecker      1e-10    5.5e-11 s   971,557    782 + 20   23,433 → 19,897    41.5× → 48.8×
+//! ```
+//!
+//! The tolerance whose event-time error is at most 1e-10 s: 3e-11 on set B (1e-10 gives 3.6e-10
+//! s), 1e-10 on the woodpecker (1.5e-10 gives 1.5e-10 s). Ours takes the textbook's steps and
+//! about 1.1–1.2× its instructions per step (above), so a ratio against the textbook is lower
+//! by about that factor.
+
 //! At e009c57 the stage states, y1, the error estimate and r5 of the interpolant are formed as the
 //! textbook forms them, y + h·Σ a_ij k_j: one product by h per sum instead of one per coefficient
 //! (the (h·a_ij)·k_j products below), 64–73 instructions less per step; a run at 1e-4 takes 48,800.
@@ -120,9 +140,11 @@ use std::hint::black_box;
 
 use stickslip::engine::{Basis, Body, Piece};
 use stickslip::models::pulled_mass::{self, PulledMassParams};
+use stickslip::models::woodpecker::{self, WoodpeckerParams};
 use stickslip::models::LawKind;
 use stickslip::solver::dopri5::tableau::*;
 use stickslip::solver::dopri5::{try_solve_smooth, Dopri5};
+use stickslip::solver::exact::Exact;
 use stickslip::solver::{Method, Problem, Setting, Solution, Stats};
 
 /// Periods per run.
@@ -310,7 +332,6 @@ fn textbook_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats)
 /// meant to keep the method's results bit for bit is checked by comparing the output before
 /// and after it.
 fn fingerprints() {
-    use stickslip::models::woodpecker::{self, WoodpeckerParams};
     let mut problems = vec![
         ("slide".to_string(), pulled(0.5)),
         ("late stick".to_string(), pulled(0.185)),
@@ -426,13 +447,52 @@ fn main() {
     if mode == "fingerprint" {
         fingerprints();
     }
-    if mode == "set-b" {
-        let s = ours_repeatedly(&pulled(0.10), tol, runs);
-        println!(
-            "ours, set B: {} events, x_end {:e} m, {:?}",
-            s.events.len(),
-            s.x_end,
-            s.stats
+    for (name, problem) in [("set-b", pulled(0.10)), ("woodpecker", woodpecker_fig_15())] {
+        if mode == name {
+            let s = ours_repeatedly(&problem, tol, runs);
+            println!(
+                "ours, {name}: {} events, max event-time error {}, x_end {:e} m, {:?}",
+                s.events.len(),
+                event_error(&s, &problem),
+                s.x_end,
+                s.stats
+            );
+        }
+    }
+}
+
+/// The woodpecker of the paper's Fig. 15 (the default set, harmonic law) over 20 periods: two
+/// slips and two sticks per period, the engine's `woodpecker-harmonic` of
+/// benches/engine_instructions.rs.
+fn woodpecker_fig_15() -> Problem {
+    let w = WoodpeckerParams::default();
+    let law = woodpecker::force_law(&w, LawKind::Harmonic).expect("a valid force law");
+    Problem {
+        body: woodpecker::body(&w),
+        t_end: PERIODS * law.period,
+        law,
+    }
+}
+
+/// The largest event-time error (s) of `solution` against the exact engine on `problem`, or
+/// why there is none (the events differ in kind or number).
+fn event_error(solution: &Solution, problem: &Problem) -> String {
+    let exact = Exact
+        .solve(problem, Setting::Step(1.0))
+        .expect("the exact engine integrates the problem");
+    let kinds = |s: &Solution| s.events.iter().map(|e| e.kind).collect::<Vec<_>>();
+    if kinds(solution) != kinds(&exact) {
+        return format!(
+            "undefined ({} events, the exact engine has {} of other kinds or order)",
+            solution.events.len(),
+            exact.events.len()
         );
     }
+    let error = solution
+        .events
+        .iter()
+        .zip(&exact.events)
+        .map(|(a, b)| (a.t - b.t).abs())
+        .fold(0.0, f64::max);
+    format!("{error:.2e} s")
 }

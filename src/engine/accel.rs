@@ -78,6 +78,19 @@ impl SignChanges {
         }
     }
 
+    /// The sign changes of −h where these are h's and h has two zeros (`None` otherwise): the
+    /// same zeros, the opposite signs. [`SignChanges::cos`] of the coefficients of h negated
+    /// bit for bit gives the same bits (its arithmetic is symmetric under negation); with no
+    /// zero the sign of h may be that of a zero (c0 − c1·shift = +0 for both h and −h), so
+    /// that case is not shared.
+    #[inline]
+    pub fn negated(self) -> Option<SignChanges> {
+        self.zeros[1].is_finite().then_some(SignChanges {
+            before: -self.before,
+            ..self
+        })
+    }
+
     /// The zeros, ascending, +∞ for the missing ones.
     #[inline(always)]
     pub fn zeros(&self) -> [f64; 2] {

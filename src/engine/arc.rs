@@ -587,9 +587,15 @@ impl Arc {
 /// (sin θ, cos θ) at θ = ωt, t in two parts: the rounding of ω·t.hi and the low part of t, which
 /// a first-order correction of sin and cos takes in.
 pub fn phase(omega: f64, t: Dd) -> (f64, f64) {
+    phase_from(omega, t, fmath::sin_cos(omega * t.hi))
+}
+
+/// [`phase`] from (sin, cos) of ω·t.hi (the double ω·t.hi, as [`fmath::sin_cos`] gives them),
+/// where they are known.
+#[inline]
+pub fn phase_from(omega: f64, t: Dd, (sin, cos): (f64, f64)) -> (f64, f64) {
     let theta = omega * t.hi;
     let theta_lo = omega.mul_add(t.hi, -theta) + omega * t.lo;
-    let (sin, cos) = fmath::sin_cos(theta);
     (sin + cos * theta_lo, cos - sin * theta_lo)
 }
 

@@ -90,16 +90,38 @@ impl Piece {
     /// An interval [b_min, b_max] that holds b(t) for t in [start − before, end], b computed in
     /// floating point included: the exact range widened by |db/dt|·`before` and a few ulps.
     pub fn basis_range(&self, before: f64) -> (f64, f64) {
+        let cos_ends = match self.basis {
+            Basis::Linear { .. } => (0.0, 0.0),
+            Basis::Cos { omega, .. } => {
+                (fmath::cos(omega * self.start), fmath::cos(omega * self.end))
+            }
+        };
+        self.basis_range_from(before, cos_ends)
+    }
+
+    /// [`Piece::basis_range`] from cos(ω·start) and cos(ω·end) (the doubles ω·start and ω·end,
+    /// as [`fmath::cos`] gives them) on a cos basis, where they are known (a run prepares its
+    /// pieces in order, and one's end is the next one's start); unused on a linear basis.
+    #[inline]
+    pub fn basis_range_from(&self, before: f64, (b_start, b_end): (f64, f64)) -> (f64, f64) {
         let (lo, hi, rate) = match self.basis {
             Basis::Linear { t_ref } => (self.start - t_ref, self.end - t_ref, 1.0),
             Basis::Cos { omega, shift } => {
                 let (theta_start, theta_end) = (omega * self.start, omega * self.end);
-                let (b_start, b_end) = (fmath::cos(theta_start), fmath::cos(theta_end));
                 // cos θ = ±1 at θ = kπ inside: +1 for even k, −1 for odd k.
                 let pi = std::f64::consts::PI;
                 let (k_first, k_last) = ((theta_start / pi).ceil(), (theta_end / pi).floor());
+                // k_first mod 2 (0 or 1, NaN for NaN and ±∞), as k_first.rem_euclid(2.0) but
+                // without fmod: doubles from 2^53 on are even integers.
+                let k_first_mod_2 = if k_first.abs() < 9_007_199_254_740_992.0 {
+                    ((k_first as i64) & 1) as f64
+                } else if k_first.is_finite() {
+                    0.0
+                } else {
+                    f64::NAN
+                };
                 let has = |parity: f64| {
-                    let k = if k_first.rem_euclid(2.0) == parity {
+                    let k = if k_first_mod_2 == parity {
                         k_first
                     } else {
                         k_first + 1.0

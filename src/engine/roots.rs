@@ -73,9 +73,11 @@ pub enum UpCrossings {
         omega: f64,
         shift: f64,
         g: Affine,
-        /// The crossings of g = 0 before the end of the piece (less `snap`) at which g rises,
-        /// in time order, located with their phase.
-        crossings: [Option<Crossing>; 2],
+        /// The crossings of g = 0 at which g rises in the period 2π/ω, in time order, located
+        /// with their phase; those before `limit` are the piece's ([`UpCrossings::crossings`]).
+        all: [Option<Crossing>; 2],
+        /// The end of the piece less `snap` (s).
+        limit: f64,
     },
 }
 
@@ -126,8 +128,8 @@ impl UpCrossings {
                 // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
                 let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
                 let mut index = 0;
-                let crossings =
-                    cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, to - snap).map(|c| {
+                let all =
+                    cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY).map(|c| {
                         let sin = if index == 0 { sin } else { -sin };
                         index += 1;
                         c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
@@ -141,9 +143,51 @@ impl UpCrossings {
                     omega,
                     shift,
                     g,
-                    crossings,
+                    all,
+                    limit: to - snap,
                 }
             }
+        }
+    }
+
+    /// On a cos basis, the same crossings for a piece of the same basis and switching function
+    /// that ends at `to` (they are located over all time, not the piece's span); `None` on a
+    /// linear basis, whose located crossing depends on the end.
+    #[inline]
+    pub fn ending_at(self, to: f64, snap: f64) -> Option<UpCrossings> {
+        match self {
+            UpCrossings::Linear { .. } => None,
+            UpCrossings::Never => Some(UpCrossings::Never),
+            UpCrossings::Cos {
+                omega,
+                shift,
+                g,
+                all,
+                ..
+            } => Some(UpCrossings::Cos {
+                omega,
+                shift,
+                g,
+                all,
+                limit: to - snap,
+            }),
+        }
+    }
+
+    /// On a cos basis, the crossings of g = 0 before the end of the piece (less `snap`) at
+    /// which g rises, in time order; none on a linear basis.
+    #[inline(always)]
+    pub fn crossings(&self) -> [Option<Crossing>; 2] {
+        match *self {
+            UpCrossings::Cos {
+                all: [first, second],
+                limit,
+                ..
+            } => {
+                let before_limit = |c: &Crossing| c.t.value() < limit;
+                [first.filter(before_limit), second.filter(before_limit)]
+            }
+            _ => [None, None],
         }
     }
 
@@ -154,7 +198,7 @@ impl UpCrossings {
                 rising: Some((_, located)),
                 ..
             } => located,
-            UpCrossings::Cos { crossings, .. } => crossings.into_iter().flatten().next(),
+            UpCrossings::Cos { .. } => self.crossings().into_iter().flatten().next(),
             _ => None,
         }
     }
@@ -182,7 +226,8 @@ impl UpCrossings {
                 omega,
                 shift,
                 g,
-                crossings,
+                all,
+                limit,
             } => {
                 // At g = 0, look at the slope, and at the curvature where the slope vanishes too
                 // (a tangency from above, e.g. F = 2μsW at t = 0 for the pulled mass).
@@ -200,10 +245,12 @@ impl UpCrossings {
                 }
                 // An up-crossing within snap before `from` happens at `from`.
                 let lo = from - snap;
-                let c = crossings
+                // The crossings are in time order: the first after `lo` is the piece's if any is.
+                let c = all
                     .into_iter()
                     .flatten()
-                    .find(|c| c.t.value() >= lo)?;
+                    .find(|c| c.t.value() >= lo)
+                    .filter(|c| c.t.value() < limit)?;
                 if c.t.value() < from {
                     return Some(Crossing::at_once(from, phase));
                 }

@@ -1,14 +1,45 @@
 //! The driver: walks the force law piece by piece through the requested periods, switching
 //! between STUCK and SLIP at located events, and records events, per-period positions and (when
 //! asked for) friction dissipation.
+//!
+//! Cost, in instructions per 20-period run of the four bench problems (`valgrind
+//! --tool=callgrind --toggle-collect='*engine_instructions*integrate_repeatedly*'
+//! engine_instructions-<hash> PROBLEM 1000`, collected / 1000; benches/engine_instructions.rs):
+//!
+//! ```text
+//!                          pulled mass   pulled mass   woodpecker   woodpecker
+//!                          linear        harmonic      linear       harmonic
+//! c8fb77c                  10,545        10,905        14,931       23,433
+//! now                       9,750        10,241        13,843       19,897
+//! ```
+//!
+//! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
+//! ([`super::replay`]) and the preparation of the pieces, which on the harmonic woodpecker was
+//! about a quarter of the run. Since c8fb77c: a piece is prepared in its place after the ones
+//! before it (no copy of a few hundred bytes, two per piece before); a piece on the same cos
+//! basis with the same drive and normal force as an earlier one (the woodpecker's third lobe)
+//! takes that one's acceleration sign changes and slip-onset crossings (located over the
+//! period, limited to the piece's end where read, [`UpCrossings::ending_at`]), one whose normal
+//! force is the earlier one's negated (the middle lobe) its sign changes negated
+//! ([`SignChanges::negated`]); sin and cos of ωt at a piece boundary are evaluated once for the
+//! basis range of both pieces and the start phase (7 libm calls instead of 12 on the woodpecker);
+//! the known half angles skip the ends outside the piece before looking at the starts; the
+//! recorder's kept periods are one comparison. Every output is the same bit for bit
+//! (`engine_instructions fingerprint`: the same four hashes before and after, and
+//! `shared_sign_changes_and_boundary_cosines_are_located_ones` below). The rest of the
+//! harmonic woodpecker's run: the replayed periods through the recorder (about 4,000: 13 of
+//! the 19 replayed periods are kept or next to a kept one), the run's four allocations with
+//! their frees (about 1,000), the two sign-change searches left (900), the two crossing
+//! searches and the one integrated period.
 
 use super::accel::SignChanges;
-use super::arc::{phase, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
+use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::replay::{Compact, Outputs, Replay, StartState, Tape};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
 use crate::error::{Error, Result};
+use crate::fmath;
 
 /// Events of the first `KEEP_FIRST` and the last `KEEP_LAST` periods are kept; that is all the
 /// checks (first cycle) and the steady-state analysis (multiplicity ≤ 4) read, and it bounds
@@ -182,7 +213,8 @@ pub fn sample(run: &Run, t0: f64, t1: f64, n: usize) -> Vec<[f64; 4]> {
 /// Keeps the events that are needed and merges a stick and a slip at the same instant.
 pub(super) struct Recorder {
     events: Vec<Event>,
-    periods: u32,
+    /// The first of the last `KEEP_LAST` periods (0 for fewer periods).
+    keep_from: u32,
     period: f64,
     snap: f64,
     last_transition: Option<Event>,
@@ -193,7 +225,7 @@ pub(super) struct Recorder {
 
 impl Recorder {
     pub(super) fn keeps(&self, n: u32) -> bool {
-        n < KEEP_FIRST || n.saturating_add(KEEP_LAST) >= self.periods
+        n < KEEP_FIRST || n >= self.keep_from
     }
 
     /// Takes back a slip onset at absolute time `t` that led to no motion.
@@ -296,7 +328,7 @@ pub fn integrate_with(
     let kept_periods = periods.min(KEEP_FIRST + KEEP_LAST) as usize;
     let mut rec = Recorder {
         events: Vec::with_capacity(EVENTS_RESERVED_PER_PERIOD * kept_periods),
-        periods,
+        keep_from: periods.saturating_sub(KEEP_LAST),
         period,
         snap,
         last_transition: None,
@@ -311,24 +343,20 @@ pub fn integrate_with(
     let mut compact = None;
     // The prepared pieces live on the stack when there are few of them (the models' laws have
     // at most `INLINE_PIECES`): a run then allocates only what it returns. Each is prepared in
-    // its place (a prepared piece is a few hundred bytes).
+    // its place (a prepared piece is a few hundred bytes), after the ones before it.
     let mut inline: [Option<PreparedPiece>; INLINE_PIECES] = [None, None, None, None];
-    let heap: Vec<Option<PreparedPiece>>;
-    let prepared: &[Option<PreparedPiece>] = if law.pieces.len() <= INLINE_PIECES {
-        for (i, piece) in law.pieces.iter().enumerate() {
-            let accel = PreparedPiece::accel_of_same(&inline[..i], piece);
-            inline[i] = Some(PreparedPiece::new(body, piece, snap, accel));
-        }
-        &inline[..law.pieces.len()]
+    let mut heap = Vec::new();
+    let places: &mut [Option<PreparedPiece>] = if law.pieces.len() <= INLINE_PIECES {
+        &mut inline[..law.pieces.len()]
     } else {
-        let mut all: Vec<Option<PreparedPiece>> = Vec::with_capacity(law.pieces.len());
-        for piece in &law.pieces {
-            let accel = PreparedPiece::accel_of_same(&all, piece);
-            all.push(Some(PreparedPiece::new(body, piece, snap, accel)));
-        }
-        heap = all;
-        &heap
+        heap.resize_with(law.pieces.len(), || None);
+        &mut heap
     };
+    for (i, piece) in law.pieces.iter().enumerate() {
+        let (earlier, place) = places.split_at_mut(i);
+        PreparedPiece::prepare(body, piece, snap, earlier, &mut place[0]);
+    }
+    let prepared: &[Option<PreparedPiece>] = places;
     let mut state = State {
         x: 0.0,
         v: 0.0,
@@ -603,6 +631,9 @@ struct PreparedPiece<'a> {
     /// (sin θ, cos θ) of the phase θ = ω·start of the piece's start on a cos basis, for the
     /// arcs and the searches for a slip onset that start there.
     start_phase: Option<(f64, f64)>,
+    /// On a cos basis: cos(ω·end), the double ω·end as [`fmath::cos`](crate::fmath::cos) gives
+    /// it; the next piece starts there.
+    end_cos: Option<f64>,
     /// Per direction of slip (+1, −1, see [`side`]): the slip onsets; none where the switching
     /// function stays below zero over the piece.
     onsets: [Option<Onsets>; 2],
@@ -630,25 +661,51 @@ fn side(dir: i8) -> usize {
 }
 
 impl PreparedPiece<'_> {
-    /// The piece with its start's phase and the searches for a slip onset in either direction.
+    /// Prepares `piece` in `place`: its start's phase and the searches for a slip onset in either direction.
     /// A direction in which g stays below zero by more than its rounding over the whole range of
     /// the basis over the piece, widened by `snap` before its start ([`Piece::basis_range`]),
-    /// is not searched (the direction opposite to the drive). `accel`: the sign changes of the
-    /// acceleration when an earlier piece has them ([`PreparedPiece::accel_of_same`]).
+    /// is not searched (the direction opposite to the drive). From the pieces prepared before
+    /// it (`earlier`, in order): the sign changes of the acceleration where one has them
+    /// ([`PreparedPiece::accel_of_same`]), and cos ωt at its start where the last one ends
+    /// there on the same basis (sin and cos of a boundary are evaluated once per run).
     #[inline(always)]
-    fn new<'a>(
+    fn prepare<'a>(
         body: &Body,
         piece: &'a Piece,
         snap: f64,
-        accel: Option<[SignChanges; 2]>,
-    ) -> PreparedPiece<'a> {
-        let (b_min, b_max) = piece.basis_range(snap);
-        let onset = |s: i8| Self::onsets(body, piece, s, (b_min, b_max), snap);
+        earlier: &[Option<PreparedPiece<'a>>],
+        place: &mut Option<PreparedPiece<'a>>,
+    ) {
+        // On a cos basis: (sin, cos) of ω·start and cos of ω·end.
+        let trig = match piece.basis {
+            Basis::Linear { .. } => None,
+            Basis::Cos { omega, .. } => {
+                let carried = earlier.last().and_then(|last| {
+                    let last = last.as_ref()?;
+                    let same_basis = matches!(last.piece.basis,
+                        Basis::Cos { omega: o, .. } if o.to_bits() == omega.to_bits());
+                    (same_basis && last.piece.end.to_bits() == piece.start.to_bits())
+                        .then_some(last.end_cos)
+                        .flatten()
+                });
+                let theta = omega * piece.start;
+                let cos_start = carried.unwrap_or_else(|| fmath::cos(theta));
+                Some((
+                    (fmath::sin(theta), cos_start),
+                    fmath::cos(omega * piece.end),
+                ))
+            }
+        };
+        let (b_min, b_max) = piece.basis_range_from(
+            snap,
+            trig.map_or((0.0, 0.0), |((_, cos_start), cos_end)| (cos_start, cos_end)),
+        );
+        let accel = Self::accel_of_same(earlier, piece);
+        let same = Self::earlier_like(earlier, piece, 1.0);
         let slope = |s: f64| {
             body.slip_acceleration_affine(piece.drive, piece.normal, s)
                 .c1
         };
-        let onsets = [onset(1), onset(-1)];
         // On a cos basis the zeros of a are located once, in two parts; on a linear one each
         // arc finds its own (see [`ArcMotion::sign_changes`]).
         let sign_changes = |s: f64| match piece.basis {
@@ -666,74 +723,100 @@ impl PreparedPiece<'_> {
                 SignChanges::cos(omega, shift, h, exact)
             }
         };
-        let accel = accel.unwrap_or_else(|| [sign_changes(1.0), sign_changes(-1.0)]);
+        let accel = [
+            accel[0].unwrap_or_else(|| sign_changes(1.0)),
+            accel[1].unwrap_or_else(|| sign_changes(-1.0)),
+        ];
+        let prepared = place.insert(PreparedPiece {
+            piece,
+            start_phase: match (piece.basis, trig) {
+                (Basis::Cos { omega, .. }, Some((start, _))) => {
+                    Some(phase_from(omega, Dd::from(piece.start), start))
+                }
+                _ => None,
+            },
+            end_cos: trig.map(|(_, end)| end),
+            onsets: [None, None],
+            slope: [slope(1.0), slope(-1.0)],
+            accel,
+            known: KnownAngles::new(),
+        });
+        for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
+            *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
+        }
         // The kernels are a function of the angle only: one list serves the arcs in either
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
-        let mut known = KnownAngles::new();
         if let Basis::Cos { omega, .. } = piece.basis {
-            let roots = onsets.iter().flat_map(|onsets| match onsets {
-                Some((UpCrossings::Cos { crossings, .. }, _)) => *crossings,
-                _ => [None, None],
+            let roots = prepared.onsets.iter().flat_map(|onsets| match onsets {
+                Some((crossings, _)) => crossings.crossings(),
+                None => [None, None],
             });
             let mut starts = [None; 5];
             starts[0] = Some(Dd::from(piece.start));
             for (place, root) in starts[1..].iter_mut().zip(roots) {
                 *place = root.map(|c| c.t);
             }
-            let zeros = accel.iter().flat_map(|a| a.zeros());
-            for end in std::iter::once(piece.end).chain(zeros) {
+            let zeros = prepared.accel.iter().flat_map(|a| a.zeros());
+            let ends = std::iter::once(piece.end).chain(zeros);
+            for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
                 for t_c in starts.into_iter().flatten() {
-                    if t_c.hi < end && end > piece.start && end <= piece.end {
-                        known.push_between(omega, t_c, end);
+                    if t_c.hi < end {
+                        prepared.known.push_between(omega, t_c, end);
                     }
                 }
             }
         }
-        PreparedPiece {
-            piece,
-            start_phase: match piece.basis {
-                Basis::Linear { .. } => None,
-                Basis::Cos { omega, .. } => Some(phase(omega, Dd::from(piece.start))),
-            },
-            onsets,
-            slope: [slope(1.0), slope(-1.0)],
-            accel,
-            known,
-        }
     }
 
-    /// The sign changes of the acceleration of an `earlier` piece with the same basis, drive and
-    /// normal force as `piece`, bit for bit (the woodpecker's lobes before and after the
-    /// middle one): they are a function of those alone (over all time, not the piece's span),
-    /// so the same as `piece`'s own.
+    /// The sign changes of the acceleration per direction where an `earlier` piece has them
+    /// (they are a function of the basis, drive and normal force alone, over all time, not of
+    /// the piece's span): one with the same basis, drive and normal force as `piece`, bit for
+    /// bit (the woodpecker's lobes before and after the middle one), has the same; one whose
+    /// normal force is `piece`'s negated bit for bit (the middle lobe: N_f = 2λ|F_e| with F_e
+    /// of the other sign) has h = s·D − μd·N_f in direction −s that is −h in direction s: the
+    /// same zeros with the opposite signs ([`SignChanges::negated`]).
     /// On a linear basis there is nothing to share ([`SignChanges::UNKNOWN`]).
     #[inline]
-    fn accel_of_same(earlier: &[Option<PreparedPiece>], piece: &Piece) -> Option<[SignChanges; 2]> {
-        let bits = |p: &Piece| match p.basis {
-            Basis::Linear { .. } => None,
-            Basis::Cos { omega, shift } => Some(
-                [
-                    omega,
-                    shift,
-                    p.drive.c0,
-                    p.drive.c1,
-                    p.normal.c0,
-                    p.normal.c1,
-                ]
-                .map(f64::to_bits),
-            ),
+    fn accel_of_same(earlier: &[Option<PreparedPiece>], piece: &Piece) -> [Option<SignChanges>; 2] {
+        if let Some(same) = Self::earlier_like(earlier, piece, 1.0) {
+            return same.accel.map(Some);
+        }
+        Self::earlier_like(earlier, piece, -1.0).map_or([None, None], |flipped| {
+            [flipped.accel[1].negated(), flipped.accel[0].negated()]
+        })
+    }
+
+    /// An `earlier` piece on the same cos basis as `piece` with the same drive and the normal
+    /// force times `normal` (±1), bit for bit; none on a linear basis.
+    #[inline]
+    fn earlier_like<'e, 'a>(
+        earlier: &'e [Option<PreparedPiece<'a>>],
+        piece: &Piece,
+        normal: f64,
+    ) -> Option<&'e PreparedPiece<'a>> {
+        if let Basis::Linear { .. } = piece.basis {
+            return None;
+        }
+        let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
+        let like = |p: &Piece| match (p.basis, piece.basis) {
+            (Basis::Cos { omega, shift }, Basis::Cos { omega: o, shift: h }) => {
+                same(omega, o)
+                    && same(shift, h)
+                    && same(p.drive.c0, piece.drive.c0)
+                    && same(p.drive.c1, piece.drive.c1)
+                    && same(normal * p.normal.c0, piece.normal.c0)
+                    && same(normal * p.normal.c1, piece.normal.c1)
+            }
+            _ => false,
         };
-        let key = bits(piece)?;
-        earlier
-            .iter()
-            .flatten()
-            .find(|p| bits(p.piece) == Some(key))
-            .map(|p| p.accel)
+        earlier.iter().flatten().find(|p| like(p.piece))
     }
 
     /// The slip onsets in direction `s` on `piece`, whose basis stays within `b_range` (see
-    /// [`PreparedPiece::new`]); inlined into the place they are stored in.
+    /// [`PreparedPiece::prepare`]); inlined into the place they are stored in. Those of an
+    /// earlier piece with the same basis, drive and normal force (`same`) are `piece`'s with
+    /// its end ([`UpCrossings::ending_at`]), with the same acceleration at the root.
     #[inline(always)]
     fn onsets(
         body: &Body,
@@ -741,6 +824,7 @@ impl PreparedPiece<'_> {
         s: i8,
         (b_min, b_max): (f64, f64),
         snap: f64,
+        same: Option<&PreparedPiece>,
     ) -> Option<Onsets> {
         // g > 0 ⇔ the static friction cannot hold the body in direction s.
         let sf = f64::from(s);
@@ -750,6 +834,12 @@ impl PreparedPiece<'_> {
             8.0 * f64::EPSILON * (g.c0.abs() + (g.c1 * b_min.abs().max(b_max.abs())).abs());
         if g_lo.max(g_hi) < -rounding {
             return None;
+        }
+        if let Some(shared) = same.and_then(|same| {
+            let (crossings, at_root) = same.onsets[side(s)]?;
+            Some((crossings.ending_at(piece.end, snap)?, at_root))
+        }) {
+            return Some(shared);
         }
         let exact = || {
             let coefficient = |d: f64, n: f64| Dd::from(sf * d) + Dd::prod(-body.mu_s, n);
@@ -778,7 +868,7 @@ impl PreparedPiece<'_> {
 
 /// Earliest slip onset in [from, piece.end) from rest, with its direction. The switching
 /// function g = s·D − μs·N_f is formed exactly (in two parts), so that its root is located to
-/// better than its ulp (see [`PreparedPiece::new`]). `phase` is (sin ωt, cos ωt) at `from` on a
+/// better than its ulp (see [`PreparedPiece::prepare`]). `phase` is (sin ωt, cos ωt) at `from` on a
 /// cos basis where known. `M`, the kind of arc of the piece's basis, is not used: it makes one
 /// copy per kind, each inlined or not into its walk on its own (shared, it was called out of
 /// line from both).
@@ -990,5 +1080,76 @@ fn slide<M: ArcMotion>(
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::models::woodpecker::{self, WoodpeckerParams};
+    use crate::models::LawKind;
+    use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    /// `piece` prepared after `earlier`.
+    fn prepared<'a>(
+        body: &Body,
+        piece: &'a Piece,
+        snap: f64,
+        earlier: &[Option<PreparedPiece<'a>>],
+    ) -> Option<PreparedPiece<'a>> {
+        let mut place = None;
+        PreparedPiece::prepare(body, piece, snap, earlier, &mut place);
+        place
+    }
+
+    /// Random pieces with the woodpecker's shape on a cos basis: the lobes' normal force is the
+    /// middle one's negated, and their sign changes taken from the middle one negated are those
+    /// located from scratch, bit for bit; so is a piece's start phase, its cos taken from the
+    /// piece before.
+    #[test]
+    fn shared_sign_changes_and_boundary_cosines_are_located_ones() {
+        let mut rng = StdRng::seed_from_u64(31);
+        let mut shared = 0;
+        for i in 0..2000 {
+            let body = Body {
+                mass: rng.gen_range(0.001..1.0),
+                mu_s: rng.gen_range(0.1..1.0),
+                mu_d: rng.gen_range(0.05..0.6),
+            };
+            let (omega, shift) = (rng.gen_range(1.0..100.0), rng.gen_range(-0.99..0.99));
+            let (f1, friction) = (rng.gen_range(-1.0..1.0), rng.gen_range(0.1..5.0));
+            let (w, f0) = (rng.gen_range(0.0..0.5), if i % 2 == 0 { 0.0 } else { 0.1 });
+            let basis = Basis::Cos { omega, shift };
+            let period = std::f64::consts::TAU / omega;
+            let cut = rng.gen_range(0.1..0.9) * period;
+            let piece = |start: f64, end: f64, sign: f64| Piece {
+                start,
+                end,
+                basis,
+                drive: Affine::new(w + f0, f1),
+                normal: Affine::new(sign * friction * f0, sign * friction * f1),
+            };
+            let pieces = [piece(0.0, cut, -1.0), piece(cut, period, 1.0)];
+            let snap = 8.0 * f64::EPSILON * period;
+            let [first, alone] = [0, 1].map(|i| prepared(&body, &pieces[i], snap, &[]));
+            let after = prepared(&body, &pieces[1], snap, &[first]);
+            shared +=
+                PreparedPiece::accel_of_same(&[prepared(&body, &pieces[0], snap, &[])], &pieces[1])
+                    .iter()
+                    .flatten()
+                    .count();
+            let (alone, after) = (alone.expect("prepared"), after.expect("prepared"));
+            assert_eq!(format!("{:?}", alone.accel), format!("{:?}", after.accel));
+            let bits = |p: Option<(f64, f64)>| p.map(|(s, c)| (s.to_bits(), c.to_bits()));
+            assert_eq!(bits(alone.start_phase), bits(after.start_phase));
+        }
+        assert!(shared > 1000, "only {shared} directions shared");
+        // The model's law: the middle lobe takes the first one's, negated.
+        let p = WoodpeckerParams::default();
+        let law = woodpecker::force_law(&p, LawKind::Harmonic).expect("a valid law");
+        let body = woodpecker::body(&p);
+        let first = prepared(&body, &law.pieces[0], 1e-16, &[]);
+        let shared = PreparedPiece::accel_of_same(&[first], &law.pieces[1]);
+        assert!(shared.iter().any(Option::is_some));
     }
 }
