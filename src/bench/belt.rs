@@ -16,7 +16,8 @@
 //!
 //! tanh_dopri5 (μd only, no stick state) does not reproduce the events: it slips at x_d/v_b
 //! and settles to a harmonic oscillation of period 2π/ω about x_d that only grazes the belt's
-//! speed (its test in `solver::tanh`). The SciPy peer receives the belt's law as data.
+//! speed (its test in `solver::tanh`). The SciPy peer receives the belt's law as data (D0,
+//! c = ∂D/∂x, N_f, v_s) and integrates its slips in the belt's frame ([`super::peer`]).
 //! The failure studies and long runs are defined on the paper's problems only.
 
 use serde::Serialize;

@@ -246,9 +246,9 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         Some(PeerChoice::Scipy) => {
             let t0 = Instant::now();
             let peered: Vec<_> = if config.quick {
-                pairs[..1].to_vec()
+                swept[..1].to_vec()
             } else {
-                pairs.clone()
+                swept.clone()
             };
             let report = peer::run(&mut machine, &peered, &grid.tolerances, repeats);
             eprintln!(
