@@ -270,6 +270,27 @@ def sign(x):
     return 1.0 if x > 0.0 else -1.0
 
 
+def slip_phase(rhs, t0, t_stop, y0, direction, method, tol):
+    """One slip in `direction` (+-1): solve_ivp on y = [x, speed relative to the surface] from
+    t0, stopped where y[1] crosses 0 (direction -direction) or at t_stop. Returns (stopped, t,
+    y, rhs evaluations, steps) with y[1] = 0 at a stop."""
+
+    # The switching function is given the sign it is leaving at the restart time itself:
+    # a zero there would be taken for a crossing (with a tiny first step, y barely moves).
+    def stop(tt, y):
+        return y[1] if tt > t0 else direction
+
+    stop.terminal, stop.direction = True, -direction
+    sol = solve_ivp(rhs, (t0, t_stop), y0, method=method, rtol=tol, atol=tol, events=stop)
+    steps = len(sol.t) - 1
+    if sol.status == 1:
+        te = float(sol.t_events[0][0])
+        return True, te, [float(sol.y_events[0][0][0]), 0.0], sol.nfev, steps
+    if sol.status == 0:
+        return False, t_stop, [float(sol.y[0, -1]), float(sol.y[1, -1])], sol.nfev, steps
+    raise RuntimeError(sol.message)
+
+
 def simulate(law, method, tol, t_end):
     """Event-restart integration; returns (events [(t, kind)], x_end, counts) with counts the
     rhs evaluations, solve_ivp steps (all, and while stuck) and margin evaluations."""
@@ -298,38 +319,21 @@ def simulate(law, method, tol, t_end):
             continue
         while stops[i] <= t:
             i += 1
-        t_stop = stops[i]
-        # The switching function is given the sign it is leaving at the restart time itself:
-        # a zero there would be taken for a crossing (with a tiny first step, y barely moves).
-        t_start, direction = t, s
+        direction = s
 
         def rhs(tt, y):
             return [y[1], (law.drive(tt) - direction * mu_d * law.normal(tt)) / mass]
 
-        def stop(tt, y):
-            return y[1] if tt > t_start else direction
-
-        stop.terminal, stop.direction = True, -direction
-        sol = solve_ivp(rhs, (t, t_stop), [x, v], method=method, rtol=tol, atol=tol,
-                        events=stop)
-        nfev += sol.nfev
-        steps += len(sol.t) - 1
-        if sol.status == 1:
-            te = float(sol.t_events[0][0])
-            x = float(sol.y_events[0][0][0])
-            t, v = te, 0.0
+        stopped, t, (x, v), n, k = slip_phase(rhs, t, stops[i], [x, v], direction, method, tol)
+        nfev, steps = nfev + n, steps + k
+        if stopped:
             margin_evals[0] += 1
-            if margin(te) <= 0.0:
+            if margin(t) <= 0.0:
                 s = 0.0
-                events.append((te, "stick"))
+                events.append((t, "stick"))
             else:
                 margin_evals[0] += 1
-                s = sign(law.drive(te))
-        elif sol.status == 0:
-            t = t_stop
-            x, v = float(sol.y[0, -1]), float(sol.y[1, -1])
-        else:
-            raise RuntimeError(sol.message)
+                s = sign(law.drive(t))
     # No solve_ivp call is made while stuck: steps_stuck stays 0 and is reported as measured.
     counts = {"nfev": nfev, "steps": steps, "steps_stuck": 0, "margin_evals": margin_evals[0]}
     return events, x, counts
@@ -360,35 +364,21 @@ def simulate_surface(law, method, tol, t_end):
             events.append((te, "slip"))
             t = te
             continue
-        t_start, direction = t, s
+        direction = s
 
         def rhs(tt, y):
             return [y[1] + v_s, (law.d0 + law.c * y[0] - direction * mu_d * n_f) / mass]
 
-        def stop(tt, y):
-            return y[1] if tt > t_start else direction
-
-        stop.terminal, stop.direction = True, -direction
-        sol = solve_ivp(rhs, (t, t_end), [x, w], method=method, rtol=tol, atol=tol,
-                        events=stop)
-        nfev += sol.nfev
-        steps += len(sol.t) - 1
-        if sol.status == 1:
-            te = float(sol.t_events[0][0])
-            x = float(sol.y_events[0][0][0])
-            t, w = te, 0.0
+        stopped, t, (x, w), n, k = slip_phase(rhs, t, t_end, [x, w], direction, method, tol)
+        nfev, steps = nfev + n, steps + k
+        if stopped:
             margin_evals += 1
             if law.margin(x) <= 0.0:
                 s = 0.0
-                events.append((te, "stick"))
+                events.append((t, "stick"))
             else:
                 margin_evals += 1
                 s = sign(law.drive(x))
-        elif sol.status == 0:
-            t = t_end
-            x, w = float(sol.y[0, -1]), float(sol.y[1, -1])
-        else:
-            raise RuntimeError(sol.message)
     counts = {"nfev": nfev, "steps": steps, "steps_stuck": 0, "margin_evals": margin_evals}
     return events, x, counts
 
