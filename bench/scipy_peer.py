@@ -33,6 +33,19 @@ and evaluates D(t) and N_f(t) from them (periodic extension, piece lookup). Ever
 restarted at the period starts and at the piece boundaries, the kinks of the force law, so no
 solver steps over a corner of its right-hand side.
 
+A problem may instead send a surface law (the belt: a block held by a spring on a belt moving at
+constant speed), "surface_law": {"drive": D0, "stiffness": c, "normal": N_f, "surface_speed": v_s},
+with D = D0 + c x (c = dD/dx < 0), constant N_f, and the body sticking at the surface's speed, from
+rest relative to it at x = 0, t = 0, up to "t_end" (s; "period", the cycle's, sets the window of
+the missed events). Its phases, in the surface frame w = v - v_s:
+
+    STUCK (w = 0)   no integration: x = x0 + v_s (t - t0), so D and the static margin
+                    |D0 + c x| - mu_s N_f are affine in t; the end of the stick, where D reaches
+                    sgn(c v_s) mu_s N_f, is solved for directly -> SLIP in direction s = sgn D
+    SLIP (s = +-1)  solve_ivp on dx/dt = w + v_s, M dw/dt = D0 + c x - s mu_d N_f until w
+                    crosses 0 (direction -s) -> STUCK if |D| <= mu_s N_f, else SLIP in
+                    direction sgn D
+
 Input (JSON, a file path or '-' for stdin): {"repeats": N, "long_run_s": 1.0,
 "tolerances": [...], "methods": [...], "problems": [{"id", "model", "law", "periods",
 "body": {"mass", "mu_s", "mu_d"},
@@ -198,8 +211,45 @@ class Law:
         return None
 
 
+class SurfaceLaw:
+    """The body (M, mu_s, mu_d) under D = D0 + c x and a constant N_f on a surface moving at
+    v_s, as the tool sends them (its engine::SurfaceLaw)."""
+
+    def __init__(self, body, surface_law, period):
+        self.mass, self.mu_s, self.mu_d = body["mass"], body["mu_s"], body["mu_d"]
+        self.d0, self.c = surface_law["drive"], surface_law["stiffness"]
+        self.n, self.v_s = surface_law["normal"], surface_law["surface_speed"]
+        self.period = period
+
+    def drive(self, x):
+        """D at position x (N)."""
+        return self.d0 + self.c * x
+
+    def margin(self, x):
+        """The static margin |D| - mu_s N_f at position x (N)."""
+        return abs(self.drive(x)) - self.mu_s * self.n
+
+    def stick_end(self, t0, x0, t_end):
+        """The end of the stick that began at (t0, x0), or None if it outlasts t_end: carried
+        at v_s, D(t) = D(x0) + c v_s (t - t0) is affine in t and reaches sgn(c v_s) mu_s N_f
+        (the margin crossing 0 upward) at a time solved for directly."""
+        slope = self.c * self.v_s
+        if slope == 0.0:
+            return None
+        target = sign(slope) * self.mu_s * self.n
+        te = t0 + max(0.0, (target - self.drive(x0)) / slope)
+        return te if te < t_end else None
+
+
 def build_law(problem):
+    if "surface_law" in problem:
+        return SurfaceLaw(problem["body"], problem["surface_law"], problem["period"])
     return Law(problem["body"], problem["force_law"])
+
+
+def t_end_of(problem, law):
+    """The final time (s): sent with a surface law, else a whole number of periods."""
+    return problem.get("t_end", problem["periods"] * law.period)
 
 
 def breakpoints(law, t_end):
@@ -218,6 +268,27 @@ def breakpoints(law, t_end):
 
 def sign(x):
     return 1.0 if x > 0.0 else -1.0
+
+
+def slip_phase(rhs, t0, t_stop, y0, direction, method, tol):
+    """One slip in `direction` (+-1): solve_ivp on y = [x, speed relative to the surface] from
+    t0, stopped where y[1] crosses 0 (direction -direction) or at t_stop. Returns (stopped, t,
+    y, rhs evaluations, steps) with y[1] = 0 at a stop."""
+
+    # The switching function is given the sign it is leaving at the restart time itself:
+    # a zero there would be taken for a crossing (with a tiny first step, y barely moves).
+    def stop(tt, y):
+        return y[1] if tt > t0 else direction
+
+    stop.terminal, stop.direction = True, -direction
+    sol = solve_ivp(rhs, (t0, t_stop), y0, method=method, rtol=tol, atol=tol, events=stop)
+    steps = len(sol.t) - 1
+    if sol.status == 1:
+        te = float(sol.t_events[0][0])
+        return True, te, [float(sol.y_events[0][0][0]), 0.0], sol.nfev, steps
+    if sol.status == 0:
+        return False, t_stop, [float(sol.y[0, -1]), float(sol.y[1, -1])], sol.nfev, steps
+    raise RuntimeError(sol.message)
 
 
 def simulate(law, method, tol, t_end):
@@ -248,40 +319,67 @@ def simulate(law, method, tol, t_end):
             continue
         while stops[i] <= t:
             i += 1
-        t_stop = stops[i]
-        # The switching function is given the sign it is leaving at the restart time itself:
-        # a zero there would be taken for a crossing (with a tiny first step, y barely moves).
-        t_start, direction = t, s
+        direction = s
 
         def rhs(tt, y):
             return [y[1], (law.drive(tt) - direction * mu_d * law.normal(tt)) / mass]
 
-        def stop(tt, y):
-            return y[1] if tt > t_start else direction
-
-        stop.terminal, stop.direction = True, -direction
-        sol = solve_ivp(rhs, (t, t_stop), [x, v], method=method, rtol=tol, atol=tol,
-                        events=stop)
-        nfev += sol.nfev
-        steps += len(sol.t) - 1
-        if sol.status == 1:
-            te = float(sol.t_events[0][0])
-            x = float(sol.y_events[0][0][0])
-            t, v = te, 0.0
+        stopped, t, (x, v), n, k = slip_phase(rhs, t, stops[i], [x, v], direction, method, tol)
+        nfev, steps = nfev + n, steps + k
+        if stopped:
             margin_evals[0] += 1
-            if margin(te) <= 0.0:
+            if margin(t) <= 0.0:
                 s = 0.0
-                events.append((te, "stick"))
+                events.append((t, "stick"))
             else:
                 margin_evals[0] += 1
-                s = sign(law.drive(te))
-        elif sol.status == 0:
-            t = t_stop
-            x, v = float(sol.y[0, -1]), float(sol.y[1, -1])
-        else:
-            raise RuntimeError(sol.message)
+                s = sign(law.drive(t))
     # No solve_ivp call is made while stuck: steps_stuck stays 0 and is reported as measured.
     counts = {"nfev": nfev, "steps": steps, "steps_stuck": 0, "margin_evals": margin_evals[0]}
+    return events, x, counts
+
+
+def simulate_surface(law, method, tol, t_end):
+    """Event-restart integration of a surface law in the surface frame; returns (events
+    [(t, kind)], x_end, counts) as `simulate`. Autonomous: no breakpoints."""
+    mu_s, mu_d, mass, v_s, n_f = law.mu_s, law.mu_d, law.mass, law.v_s, law.n
+    t, x, w, s = 0.0, 0.0, 0.0, 0.0
+    events, nfev, steps, margin_evals = [], 0, 0, 0
+    while t < t_end:
+        if s == 0.0:
+            # Stuck, carried at v_s: the slip starts where the margin, affine in t, crosses 0
+            # upward (at once if it is already positive).
+            margin_evals += 1
+            if law.margin(x) > 0.0:
+                te = t
+            else:
+                te = law.stick_end(t, x, t_end)
+                if te is None:
+                    x += v_s * (t_end - t)
+                    t = t_end
+                    break
+                x += v_s * (te - t)
+            margin_evals += 1
+            s = sign(law.drive(x))
+            events.append((te, "slip"))
+            t = te
+            continue
+        direction = s
+
+        def rhs(tt, y):
+            return [y[1] + v_s, (law.d0 + law.c * y[0] - direction * mu_d * n_f) / mass]
+
+        stopped, t, (x, w), n, k = slip_phase(rhs, t, t_end, [x, w], direction, method, tol)
+        nfev, steps = nfev + n, steps + k
+        if stopped:
+            margin_evals += 1
+            if law.margin(x) <= 0.0:
+                s = 0.0
+                events.append((t, "stick"))
+            else:
+                margin_evals += 1
+                s = sign(law.drive(x))
+    counts = {"nfev": nfev, "steps": steps, "steps_stuck": 0, "margin_evals": margin_evals}
     return events, x, counts
 
 
@@ -305,7 +403,8 @@ def missed_events(got, exact, window):
 
 
 def run_point(problem, law, method, tol, repeats, long_run_s):
-    t_end = problem["periods"] * law.period
+    t_end = t_end_of(problem, law)
+    run = simulate_surface if isinstance(law, SurfaceLaw) else simulate
     exact = problem["exact"]
     point = {"problem": problem["id"], "method": method, "tol": tol, "status": "ok",
              "error": None, "time_s": None, "runs": 0, "nfev": None, "steps": None,
@@ -315,13 +414,13 @@ def run_point(problem, law, method, tol, repeats, long_run_s):
              "first_missed_kind": None}
     try:
         start = time.perf_counter()
-        events, x_end, counts = simulate(law, method, tol, t_end)
+        events, x_end, counts = run(law, method, tol, t_end)
         first = time.perf_counter() - start
         n = 1 if first > long_run_s else max(1, repeats)
         best = math.inf
         for _ in range(n):
             start = time.perf_counter()
-            simulate(law, method, tol, t_end)
+            run(law, method, tol, t_end)
             took = time.perf_counter() - start
             best = min(best, took)
             point["runs"] += 1

@@ -10,7 +10,7 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 use assert_cmd::Command;
-use serde_json::Value;
+use serde_json::{json, Value};
 
 use stickslip::bench::render::CSV_HEADER;
 use stickslip::bench::sweep::SweepPoint;
@@ -106,7 +106,11 @@ fn quick_bench_writes_json_with_every_key_csv_with_units_and_the_pages() {
         );
     }
     assert_eq!(run.json["quick"], Value::Bool(true));
-    assert_eq!(array(&run.json, "problems").len(), 4);
+    assert_eq!(
+        array(&run.json, "problems").len(),
+        5,
+        "the paper's four and the belt"
+    );
 
     let csv = std::fs::read_to_string(run.out.join("results.csv")).expect("results.csv");
     let mut lines = csv.lines();
@@ -128,7 +132,7 @@ fn quick_bench_writes_json_with_every_key_csv_with_units_and_the_pages() {
         .count();
     assert_eq!(
         svgs,
-        4 * 3 + 3 + 4,
+        5 * 3 + 3 + 4,
         "work-precision, work and order per problem, 3 failures, 4 long runs"
     );
 }
@@ -170,8 +174,16 @@ fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
         .iter()
         .filter(|p| p["method"] == peer)
         .collect();
-    assert_eq!(points.len(), 4 * 3, "4 problems × 3 quick tolerances");
-    assert!(points.iter().all(|p| p["status"] == "ok"), "{points:?}");
+    // The paper's 4 problems × 3 quick tolerances, and the belt: 3 runs, or one refusal.
+    let (belt, paper): (Vec<&Value>, Vec<&Value>) =
+        points.iter().partition(|p| p["problem"] == "belt_default");
+    assert_eq!(paper.len(), 4 * 3, "4 problems × 3 quick tolerances");
+    assert!(paper.iter().all(|p| p["status"] == "ok"), "{paper:?}");
+    let refused = belt.len() == 1 && belt[0]["status"] == "refused";
+    assert!(
+        refused || (belt.len() == 3 && belt.iter().all(|p| p["status"] == "ok")),
+        "{belt:?}"
+    );
     // At tolerance 1e-9 every exact event is found (measured: ≤ 2e-9 s off).
     for p in points.iter().filter(|p| p["tolerance"] == 1e-9) {
         assert_eq!(p["n_events"], p["n_events_exact"], "{p}");
@@ -188,7 +200,7 @@ fn the_diffsol_peer_is_swept_and_the_headline_names_a_compiled_peer() {
         .and_then(|s| s.split("\n## ").next())
         .expect("cost section");
     let headline: Vec<&str> = section.lines().filter(|l| l.starts_with("- ")).collect();
-    assert_eq!(headline.len(), 4, "{section}");
+    assert_eq!(headline.len(), 5, "{section}");
     for h in headline {
         assert!(!h.contains("SciPy"), "{h}");
         if h.contains("the fastest compiled peer") {
@@ -298,6 +310,64 @@ fn a_sweep_point_round_trips_through_json() {
     assert_eq!(&serde_json::to_value(&point).expect("serializes"), original);
 }
 
+/// The belt is in the sweep: its reference agrees with the closed forms, it has no v̄, and a
+/// method that does not take it is listed as refusing it, with its reason, once.
+#[test]
+fn the_belt_is_swept_against_its_closed_forms_and_a_refusal_is_listed() {
+    let run = quick();
+    let belt = array(&run.json, "problems")
+        .iter()
+        .find(|p| p["id"] == "belt_default")
+        .expect("the belt is a problem of the sweep");
+    assert_eq!(
+        (&belt["model"], &belt["law"]),
+        (&json!("belt"), &json!("spring"))
+    );
+    let c = &belt["closed_form_check"];
+    assert_eq!(
+        (&c["events_exact"], &c["events_closed_form"]),
+        (&json!(40), &json!(40))
+    );
+    assert_eq!(c["same_pattern"], true, "{c}");
+    let t_end = belt["t_end_s"].as_f64().expect("t_end");
+    assert!(
+        c["max_event_err_s"].as_f64().expect("dt") <= 1e-12 * t_end,
+        "{c}"
+    );
+    assert!(c["x_end_err_m"].as_f64().expect("dx") <= 1e-14, "{c}");
+    assert_eq!(belt["exact"]["vbar_m_s"], Value::Null);
+    let why = belt["vbar_not_applicable"].as_str().expect("a reason");
+    let page = std::fs::read_to_string(run.out.join("bench.md")).expect("bench.md");
+    assert!(page.contains(why), "the page says why there is no v̄");
+
+    let points: Vec<&Value> = array(&run.json, "sweep")
+        .iter()
+        .filter(|p| p["problem"] == "belt_default")
+        .collect();
+    assert!(points.iter().all(|p| p["err_vbar_m_s"].is_null()));
+    for m in array(&run.json, "methods") {
+        let name = m["name"].as_str().expect("name");
+        let mine: Vec<&&Value> = points.iter().filter(|p| p["method"] == name).collect();
+        if mine.iter().any(|p| p["status"] == "refused") {
+            assert_eq!(mine.len(), 1, "{name}: one refusal, whatever the setting");
+            let reason = mine[0]["error"].as_str().expect("its reason");
+            assert!(reason.contains(name), "{reason}");
+            let line = format!("| Belt oscillator, default set | {name} | ");
+            assert!(page.contains(&line), "{name}'s refusal is listed");
+        } else {
+            assert!(mine.iter().all(|p| p["status"] == "ok"), "{name}: {mine:?}");
+            assert!(!mine.is_empty(), "{name}");
+        }
+    }
+    // rk4 at T/10⁴: event times within 1e-9 s of the closed forms' (measured 1.7e-13).
+    let rk4 = points
+        .iter()
+        .find(|p| p["method"] == "rk4" && p["steps_per_period"].as_f64() > Some(9e3))
+        .expect("rk4 at T/10^4");
+    assert_eq!(rk4["n_events"], 40);
+    assert!(rk4["err_event_s"].as_f64().expect("error") < 1e-9, "{rk4}");
+}
+
 #[test]
 fn without_peer_the_report_says_scipy_was_not_run() {
     let run = quick();
@@ -321,7 +391,11 @@ fn the_references_agree_with_a_40_digit_integration_when_mpmath_is_there() {
     }
     assert_eq!(check["status"], "ok");
     let rows = array(check, "rows");
-    assert_eq!(rows.len(), 4, "every problem is checked");
+    assert_eq!(
+        rows.len(),
+        4,
+        "every paper problem (the belt: by its closed forms)"
+    );
     for r in rows {
         assert_eq!(r["same_pattern"], true, "{r}");
         assert_eq!(r["events"], r["events_mp"], "{r}");

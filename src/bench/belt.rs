@@ -1,29 +1,66 @@
 //! The belt as a bench problem: the textbook stick-slip oscillator (docs/belt.md), a standard
-//! test for event-driven solvers, with the default set over [`PERIODS`] cycles. The force is
+//! test for event-driven solvers, with the default set over [`PERIODS`] cycles, in the
+//! work-precision sweep of `stickslip bench` beside the paper's four problems. The force is
 //! the spring's −k x and the block sticks at the belt's speed v_b, so it is a
-//! [`SurfaceProblem`]: every method integrates it ([`Method::solve_surface`]; each method's
-//! test on it is beside its code): the exact engine, rk4, dopri5 (and dopri5_endpoints: their
-//! generic path), moreau, tanh_dopri5, tanh_trbdf2, euler_sign and, with the `peers` feature,
-//! diffsol_tsit45 (on dopri5's generic state machine). The exact event times are those of the
-//! closed forms: first slip at x_s/v_b (B5), then slips of t_slip (B9) and sticks of t_stick
-//! (B10). The tanh methods (μd only, no stick state) do not reproduce them: they slip at
-//! x_d/v_b and settle to a harmonic oscillation of period 2π/ω about x_d that only grazes the
-//! belt's speed (their tests in `solver::tanh`).
+//! [`SurfaceProblem`], handed to each method by [`Method::solve_surface`]: every method
+//! integrates it (each method's test on it is beside its code): the exact engine, rk4, dopri5
+//! (and dopri5_endpoints: their generic path), moreau, tanh_dopri5, tanh_trbdf2, euler_sign
+//! and, with the `peers` feature, diffsol_tsit45 (on dopri5's generic state machine). A method
+//! that took forces of time only would refuse it, and the sweep would list the refusal with
+//! its reason.
 //!
-//! Not yet in the work-precision sweep (`stickslip bench`), nor taken by the SciPy peer.
+//! ```text
+//! reference   the exact engine's solve_surface, checked against the closed forms' events
+//!             (first slip at x_s/v_b (B5), then slips of t_slip (B9), sticks of t_stick (B10))
+//!             and x(t_end) = x_e + v_b (t_end − t_stick,last) (the end lies mid-stick)
+//! errors      event times and x(t_end); no v̄: the block returns to the same place each cycle
+//! ```
+//!
+//! The tanh methods (μd only, no stick state) do not reproduce the events: they slip at
+//! x_d/v_b and settle to a harmonic oscillation of period 2π/ω about x_d that only grazes the
+//! belt's speed (their tests in `solver::tanh`). The SciPy peer receives the belt's law as data
+//! (D0, c = ∂D/∂x, N_f, v_s) and integrates its slips in the belt's frame ([`super::peer`]).
+//! The failure studies and long runs are defined on the paper's problems only.
 
-use super::problems::PERIODS;
+use serde::Serialize;
+
+use super::problems::{transitions, Reference, PERIODS};
+use super::sweep::match_events;
 use crate::error::Result;
 use crate::models::belt::body::{body, surface_law};
 use crate::models::belt::formula::{self, ClosedForm};
 use crate::models::belt::BeltParams;
+use crate::solver::exact::Exact;
 use crate::solver::surface::SurfaceProblem;
-#[cfg(test)]
-use crate::solver::Method;
-use crate::solver::MethodEvent;
+use crate::solver::{Method, MethodEvent, Setting};
 
 /// The problem's id in the bench's tables.
 pub const ID: &str = "belt_default";
+/// Its title in tables and charts.
+pub const TITLE: &str = "Belt oscillator, default set";
+/// Its "law" in the bench's JSON: the spring's force −k x, with no forcing law.
+pub const LAW: &str = "spring";
+/// Why the mean speed of the last cycle is not compared on the belt.
+pub const VBAR_NOT_APPLICABLE: &str =
+    "not applicable: the block returns to the same place each cycle (mean speed 0)";
+
+/// The belt's bench problem: its parameters, closed forms and surface problem.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BeltBench {
+    pub params: BeltParams,
+    pub closed: ClosedForm,
+    pub problem: SurfaceProblem,
+}
+
+/// The belt's bench problem of [`problem`].
+pub fn bench() -> Result<BeltBench> {
+    let (params, problem) = problem()?;
+    Ok(BeltBench {
+        params,
+        closed: formula::evaluate(&params),
+        problem,
+    })
+}
 
 /// The belt's default set (m 0.5 kg, k 50 N/m, v_b 50 mm/s, μs 0.6, μd 0.4) over
 /// [`PERIODS`] cycles after the first slip, the end in the middle of a stick.
@@ -62,6 +99,68 @@ pub fn closed_form_events(c: &ClosedForm, t_end: f64) -> Vec<MethodEvent> {
     out
 }
 
+/// The exact engine's run of the belt: the reference of the sweep's errors (no v̄:
+/// [`VBAR_NOT_APPLICABLE`]).
+pub fn reference(b: &BeltBench) -> Result<Reference> {
+    let full = Exact.solve_surface(
+        &b.problem,
+        Setting::Tolerance(super::problems::REFERENCE_TOLERANCE),
+    )?;
+    Ok(Reference {
+        events: transitions(&full.events),
+        x_end_m: full.x_end,
+        v_end_m_s: full.v_end,
+        vbar_m_s: None,
+    })
+}
+
+/// The exact reference of the belt against its closed forms.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[cfg_attr(feature = "cli", derive(schemars::JsonSchema))]
+pub struct ClosedFormCheck {
+    /// Slip and stick events of the closed forms and of the exact engine up to t_end.
+    pub events_closed_form: usize,
+    pub events_exact: usize,
+    /// Same kinds in the same order.
+    pub same_pattern: bool,
+    /// Largest |t_exact − t_closed form| over the events (s).
+    pub max_event_err_s: Option<f64>,
+    /// x(t_end) of the closed forms (m): x_e + v_b (t_end − t of the last stick), the run
+    /// ending mid-stick; `None` if it ends in a slip.
+    pub x_end_closed_form_m: Option<f64>,
+    /// |x_exact(t_end) − x_closed form(t_end)| (m).
+    pub x_end_err_m: Option<f64>,
+}
+
+impl ClosedFormCheck {
+    /// The reference agrees with the closed forms: same events, times and end position
+    /// within 1e-12 relative (the project's tolerance for the belt).
+    pub fn agrees(&self, t_end: f64, x_scale: f64) -> bool {
+        self.same_pattern
+            && self.events_closed_form == self.events_exact
+            && self.max_event_err_s.is_some_and(|e| e <= 1e-12 * t_end)
+            && self.x_end_err_m.is_some_and(|e| e <= 1e-12 * x_scale)
+    }
+}
+
+/// Checks the exact reference `r` of `b` against the closed forms.
+pub fn closed_form_check(b: &BeltBench, r: &Reference) -> ClosedFormCheck {
+    let want = closed_form_events(&b.closed, b.problem.t_end);
+    let m = match_events(&r.events, &want);
+    let x_end = want
+        .last()
+        .filter(|e| e.kind == "stick")
+        .map(|e| b.closed.x_slip_end + b.params.v_b * (b.problem.t_end - e.t));
+    ClosedFormCheck {
+        events_closed_form: want.len(),
+        events_exact: r.events.len(),
+        same_pattern: m.n_method == m.n_exact && m.kind_mismatches == 0,
+        max_event_err_s: m.max_err,
+        x_end_closed_form_m: x_end,
+        x_end_err_m: x_end.map(|x| (r.x_end_m - x).abs()),
+    }
+}
+
 /// Largest event-time error (s) against `want`, after checking the kinds agree (the methods'
 /// tests on the belt).
 #[cfg(test)]
@@ -78,9 +177,23 @@ pub(crate) fn error(got: &crate::solver::Solution, want: &[MethodEvent]) -> f64 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::solver::exact::Exact;
     use crate::solver::rk4::Rk4;
-    use crate::solver::Setting;
+
+    #[test]
+    fn the_reference_agrees_with_the_closed_forms() {
+        let b = bench().unwrap();
+        let r = reference(&b).unwrap();
+        let c = closed_form_check(&b, &r);
+        assert_eq!((c.events_closed_form, c.events_exact), (40, 40));
+        assert!(c.agrees(b.problem.t_end, b.closed.x_max.abs()), "{c:?}");
+        assert_eq!(r.vbar_m_s, None);
+        // A reference with one event moved by 1 µs is caught.
+        let mut moved = r.clone();
+        moved.events[7].t += 1e-6;
+        let c = closed_form_check(&b, &moved);
+        assert!(!c.agrees(b.problem.t_end, b.closed.x_max.abs()), "{c:?}");
+        assert!((c.max_event_err_s.unwrap() - 1e-6).abs() < 1e-9);
+    }
 
     #[test]
     fn the_exact_engine_gives_the_closed_forms_event_times() {

@@ -81,6 +81,7 @@ pub fn work_precision<'a>(
     sweep: &'a [SweepPoint],
     peer: &[PeerPoint],
     by_work: bool,
+    vbar: bool,
 ) -> LineChart {
     let cost = |p: &SweepPoint| {
         if by_work {
@@ -94,7 +95,7 @@ pub fn work_precision<'a>(
             .iter()
             .filter(move |p| p.problem == problem && p.method == m)
     };
-    let metrics: &[Metric] = if by_work {
+    let metrics: &[Metric] = if by_work || !vbar {
         &[Metric::EventTime, Metric::XEnd]
     } else {
         &Metric::ALL
@@ -115,7 +116,12 @@ pub fn work_precision<'a>(
                 .filter_map(|p| Some((cost(p)?, log_err(metric.of(p)?))))
                 .collect();
             xs.extend(pts.iter().map(|p| p.0));
-            curves.push(curve(label(m.clone()), pts, style(i)));
+            let name = if mine(m).any(SweepPoint::refused) {
+                format!("{m} (refuses it)")
+            } else {
+                m.clone()
+            };
+            curves.push(curve(label(name), pts, style(i)));
         }
         if !by_work && metric != Metric::VBar {
             for (j, sm) in SCIPY_METHODS.iter().enumerate() {

@@ -27,6 +27,11 @@ pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
     let at = |problem: &str, method: &str, metric: Metric| {
         at_level(problem, method, metric, HEADLINE_LEVEL)
     };
+    let refuses = |problem: &str, method: &str| {
+        r.sweep
+            .iter()
+            .any(|p| p.problem == problem && p.method == method && p.refused())
+    };
     let mut header = vec!["method".to_string()];
     header.extend(r.problems.iter().map(|p| p.title.clone()));
     let mut tables = Vec::new();
@@ -51,6 +56,7 @@ pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
                                 exact.map_or("—".into(), |e| sig(Some(t / e), 3))
                             )
                         }
+                        None if refuses(&p.id, &m.name) => "refuses it (see the refusals)".into(),
                         None => "not reached".into(),
                     });
                 }
@@ -119,10 +125,11 @@ pub fn cost_table(r: &BenchResults) -> (Vec<Table>, Vec<String>) {
         };
         // The target against the compiled peers: the exact engine ≥ 10× the fastest that
         // misses no event at 1e-10 (a peer that misses events solves an easier problem), where
-        // the arcs are not polynomials that an RK method of order ≥ 3 integrates exactly.
+        // the arcs are not polynomials that an RK method of order ≥ 3 integrates exactly (the
+        // harmonic laws and the belt, whose slips are harmonic arcs).
         let exact_at_target =
             at_level(&p.id, "exact", Metric::EventTime, TARGET_LEVEL).and_then(|c| c.time_s);
-        if p.id.contains("harmonic") {
+        if p.law != "linear" {
             sentence.push_str(&match (exact_at_target, fastest_peer(TARGET_LEVEL, true)) {
                 (Some(e), Some((t, name))) => {
                     format!(

@@ -78,9 +78,13 @@ fn method_rows(m: &str, sweep: &[SweepPoint], s: &Studies) -> Vec<FailureRow> {
     let ok: Vec<&SweepPoint> = pts.iter().copied().filter(|p| p.ok()).collect();
     let mut rows = Vec::new();
 
-    let errors: Vec<&&SweepPoint> = pts.iter().filter(|p| !p.ok()).collect();
+    // A refusal (a problem the method does not take) is listed with the problems, not here.
+    let errors: Vec<&&SweepPoint> = pts.iter().filter(|p| !p.ok() && !p.refused()).collect();
     let measured = match errors.first() {
-        None => format!("none in {} sweep runs", pts.len()),
+        None => format!(
+            "none in {} sweep runs",
+            pts.iter().filter(|p| !p.refused()).count()
+        ),
         Some(p) => format!(
             "{} of {} sweep runs returned an error, e.g. {}",
             errors.len(),

@@ -219,7 +219,7 @@ mod tests {
                 .collect(),
             x_end_m,
             v_end_m_s: 0.0,
-            vbar_m_s: 0.0,
+            vbar_m_s: Some(0.0),
         }
     }
 

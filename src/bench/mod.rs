@@ -2,7 +2,8 @@
 //! against the exact engine, and where each method fails.
 //!
 //! ```text
-//! problems (pulled mass set B, woodpecker Fig. 15; both laws; 20 periods) → exact references
+//! problems (pulled mass set B, woodpecker Fig. 15; both laws; 20 periods; the belt, 20 cycles)
+//!   → exact references (the belt's checked against its closed forms)
 //!   → timed sweep (sequential: nothing else runs while a method is timed)
 //!   → SciPy peer (optional, sequential)
 //!   → failure studies (untimed, in parallel) → orders, costs at equal error, failures table
@@ -11,7 +12,9 @@
 //! ```
 //!
 //! The sweep reads only each method's [`crate::solver::Solution`]: events, final state and
-//! statistics. A method that returns an error is a measured failure, never a crash.
+//! statistics. A method that returns an error is a measured failure, never a crash; a method
+//! that does not take a problem (the belt, for a method of forces of time only) is listed as
+//! refusing it. The failure studies and long runs are defined on the paper's problems only.
 
 use std::time::Instant;
 
@@ -50,12 +53,13 @@ pub use render::render;
 
 use crate::models::Model;
 use analysis::{cost_rows, CostRow};
+use belt::ClosedFormCheck;
 use failure_table::{failure_table, FailureRow, ENDPOINTS};
 use independent::ReferenceCheck;
 use long_runs::LongRuns;
 use machine::Machine;
 use peer::PeerReport;
-use problems::{BenchProblem, Reference, PERIODS};
+use problems::{BenchProblem, Reference, SweepProblem, PERIODS};
 pub use studies::Studies;
 use sweep::{measure, method_kind, Grid, MethodKind, SweepPoint};
 
@@ -99,6 +103,7 @@ pub struct NotBuiltIn {
 pub struct ProblemInfo {
     pub id: String,
     pub model: &'static str,
+    /// "linear" or "harmonic" (the paper's force laws), "spring" (the belt).
     pub law: &'static str,
     pub title: String,
     pub params: Model,
@@ -106,6 +111,12 @@ pub struct ProblemInfo {
     pub periods: u32,
     pub t_end_s: f64,
     pub exact: Reference,
+    /// Why the error in the mean speed of the last period is not compared on this problem
+    /// (the belt); `None` where it is.
+    pub vbar_not_applicable: Option<&'static str>,
+    /// The exact reference against the closed forms (the belt; the paper's problems are
+    /// checked by a second program: [`BenchResults::reference_check`]).
+    pub closed_form_check: Option<ClosedFormCheck>,
 }
 
 /// The failures: the table and the studies behind it.
@@ -190,13 +201,18 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         eprintln!("bench: {}", m.message);
     }
     let all: Vec<&dyn Method> = registry.iter().map(|(m, _)| m.as_ref()).collect();
-    let problems = problems::sweep_problems()?;
+    let problems = problems::sweep()?;
     let references = problems
         .iter()
-        .map(problems::reference)
+        .map(problems::sweep_reference)
         .collect::<Result<Vec<_>>>()?;
 
-    let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+    let swept: Vec<(&SweepProblem, &Reference)> = problems.iter().zip(&references).collect();
+    // The studies, the peer and the 40-digit check take the paper's problems.
+    let pairs: Vec<(&BenchProblem, &Reference)> = swept
+        .iter()
+        .filter_map(|(sp, r)| Some((sp.paper()?, *r)))
+        .collect();
     let reference_check = independent::check(&pairs);
     eprintln!(
         "bench: 40-digit check of the references {:.2} s {}",
@@ -209,12 +225,18 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         for m in &all {
             let t0 = Instant::now();
             for setting in grid.settings(method_kind(m.name()), bp.period()) {
-                sweep.push(measure(*m, bp, reference, setting, repeats));
+                let point = measure(*m, bp, reference, setting, repeats);
+                let refused = point.refused();
+                sweep.push(point);
+                if refused {
+                    // A refusal does not depend on the setting: one point says it.
+                    break;
+                }
             }
             eprintln!(
                 "bench: {:<16} {:<28} {:6.2} s",
                 m.name(),
-                bp.id,
+                bp.id(),
                 t0.elapsed().as_secs_f64()
             );
         }
@@ -224,9 +246,9 @@ pub fn run(config: &Config) -> Result<BenchResults> {
         Some(PeerChoice::Scipy) => {
             let t0 = Instant::now();
             let peered: Vec<_> = if config.quick {
-                pairs[..1].to_vec()
+                swept[..1].to_vec()
             } else {
-                pairs.clone()
+                swept.clone()
             };
             let report = peer::run(&mut machine, &peered, &grid.tolerances, repeats);
             eprintln!(
@@ -244,9 +266,9 @@ pub fn run(config: &Config) -> Result<BenchResults> {
     };
 
     let t0 = Instant::now();
-    let ids: Vec<String> = problems.iter().map(|p| p.id.clone()).collect();
+    let ids: Vec<String> = problems.iter().map(|p| p.id().to_string()).collect();
     let names: Vec<String> = all.iter().map(|m| m.name().to_string()).collect();
-    let studies = studies::run(&all, &pairs, &grid, &sweep, config.quick)?;
+    let studies = studies::run(&all, &swept, &grid, &sweep, config.quick)?;
     eprintln!("bench: failure studies {:.2} s", t0.elapsed().as_secs_f64());
     let costs = cost_rows(&sweep, &ids, &names);
     peer::compare(&mut peer, &sweep, &ids, &names);
@@ -271,18 +293,23 @@ pub fn run(config: &Config) -> Result<BenchResults> {
             })
             .collect(),
         not_built_in,
-        problems: pairs
+        problems: swept
             .iter()
             .map(|(bp, r)| ProblemInfo {
-                id: bp.id.clone(),
-                model: bp.model,
+                id: bp.id().to_string(),
+                model: bp.model(),
                 law: bp.law_id(),
-                title: bp.title.clone(),
-                params: bp.params,
+                title: bp.title(),
+                params: bp.params(),
                 period_s: bp.period(),
                 periods: PERIODS,
-                t_end_s: bp.problem.t_end,
+                t_end_s: bp.t_end(),
                 exact: (*r).clone(),
+                vbar_not_applicable: bp.vbar_not_applicable(),
+                closed_form_check: match bp {
+                    SweepProblem::Belt(b) => Some(belt::closed_form_check(b, r)),
+                    SweepProblem::Paper(_) => None,
+                },
             })
             .collect(),
         reference_check,

@@ -23,6 +23,16 @@
 //!                "basis": {"kind": "linear", "t_ref"} | {"kind": "cos", "omega"},
 //!                "drive": {"c0", "c1"}, "normal": {"c0", "c1"}}]}
 //! ```
+//!
+//! The belt sends its surface law instead (the engine's
+//! [`SurfaceLaw`](crate::engine::SurfaceLaw)), with its final time and cycle period:
+//!
+//! ```text
+//! "surface_law": {"drive": D0, "stiffness": c = ∂D/∂x, "normal": N_f, "surface_speed": v_s}
+//! "t_end", "period"
+//! ```
+//! and the script integrates its slips in the surface frame (w = v − v_s), the end of a stick
+//! solved for on the margin |D0 + c x| − μs N_f, affine in t while x = x0 + v_s (t − t0).
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -33,7 +43,7 @@ use serde_json::json;
 
 use super::analysis::{cost_at, time_curve, Metric};
 use super::machine::Machine;
-use super::problems::{BenchProblem, Reference, PERIODS};
+use super::problems::{Reference, SweepProblem, PERIODS};
 use super::sweep::{SweepPoint, LONG_RUN};
 
 /// The script's name in the repository (it is compiled into the binary: [`SCRIPT_TEXT`]).
@@ -262,23 +272,45 @@ pub fn probe(machine: &mut Machine) -> Result<(), String> {
 /// The script's input: problems with their body, force law and exact events, tolerances,
 /// SciPy's methods, repeats.
 fn input(
-    problems: &[(&BenchProblem, &Reference)],
+    problems: &[(&SweepProblem, &Reference)],
     tolerances: &[f64],
     methods: &[&str],
     repeats: u32,
 ) -> String {
     let problems: Vec<serde_json::Value> = problems
         .iter()
-        .map(|(bp, r)| {
-            json!({
-                "id": bp.id,
-                "model": bp.model,
-                "law": bp.law_id(),
-                "body": bp.problem.body,
-                "force_law": bp.problem.law,
+        .map(|(sp, r)| {
+            let mut problem = json!({
+                "id": sp.id(),
+                "model": sp.model(),
+                "law": sp.law_id(),
                 "periods": PERIODS,
                 "exact": { "events": r.events, "x_end_m": r.x_end_m },
-            })
+            });
+            let law = match sp {
+                SweepProblem::Paper(bp) => json!({
+                    "body": bp.problem.body,
+                    "force_law": bp.problem.law,
+                }),
+                SweepProblem::Belt(b) => {
+                    let law = &b.problem.law;
+                    json!({
+                        "body": b.problem.body,
+                        "surface_law": {
+                            "drive": law.drive,
+                            "stiffness": law.stiffness,
+                            "normal": law.normal,
+                            "surface_speed": law.surface_speed,
+                        },
+                        "t_end": b.problem.t_end,
+                        "period": b.closed.period,
+                    })
+                }
+            };
+            if let (Some(problem), Some(law)) = (problem.as_object_mut(), law.as_object()) {
+                problem.extend(law.clone());
+            }
+            problem
         })
         .collect();
     json!({
@@ -294,7 +326,7 @@ fn input(
 /// Runs the script (sequentially: nothing else runs while it times).
 pub fn run(
     machine: &mut Machine,
-    problems: &[(&BenchProblem, &Reference)],
+    problems: &[(&SweepProblem, &Reference)],
     tolerances: &[f64],
     repeats: u32,
 ) -> PeerReport {
@@ -492,7 +524,9 @@ fn targets(ratios: &[RatioRow], problems: &[&String]) -> Vec<TargetRow> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::bench::problems::{boundary_problems, reference, sweep_problems};
+    use crate::bench::problems::{
+        boundary_problems, reference, sweep_problems, sweep_reference, BenchProblem,
+    };
     use crate::engine::Affine;
     use serde_json::Value;
 
@@ -501,7 +535,8 @@ mod tests {
         let mut problems = sweep_problems().unwrap();
         problems.extend(boundary_problems().unwrap());
         let references: Vec<Reference> = problems.iter().map(|bp| reference(bp).unwrap()).collect();
-        let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+        let swept: Vec<SweepProblem> = problems.iter().cloned().map(SweepProblem::Paper).collect();
+        let pairs: Vec<(&SweepProblem, &Reference)> = swept.iter().zip(&references).collect();
         let text = input(&pairs, &[1e-6], &SCIPY_METHODS, 1);
         (problems, text)
     }
@@ -606,8 +641,45 @@ mod tests {
         }
     }
 
-    /// RK45 at tolerance 1e-8 on the four sweep problems finds every exact slip and stick, to
-    /// within 1e-7 s (measured: 1.6e-8 s at most), and takes no solve_ivp step while stuck: the
+    #[test]
+    fn the_belt_is_sent_as_its_surface_law_with_its_final_time() {
+        let b = crate::bench::belt::bench().unwrap();
+        let r = crate::bench::belt::reference(&b).unwrap();
+        let sp = SweepProblem::Belt(b.clone());
+        let text = input(&[(&sp, &r)], &[1e-6], &["RK45"], 1);
+        let sent: Value = serde_json::from_str(&text).unwrap();
+        let p = &sent["problems"][0];
+        assert_eq!(
+            (&p["id"], &p["model"], &p["law"]),
+            (&json!("belt_default"), &json!("belt"), &json!("spring"))
+        );
+        assert!(p.get("force_law").is_none(), "{p}");
+        let law = &p["surface_law"];
+        let l = b.problem.law;
+        for (key, want) in [
+            ("drive", l.drive),
+            ("stiffness", l.stiffness),
+            ("normal", l.normal),
+            ("surface_speed", l.surface_speed),
+        ] {
+            assert!(
+                close(number(law, key), want, want.abs().max(1.0)),
+                "{key}: {law}"
+            );
+        }
+        // c = −k, N_f = m g, v_s = v_b (docs/belt.md (B6)).
+        assert_eq!(l.stiffness, -b.params.k);
+        assert_eq!(l.surface_speed, b.params.v_b);
+        assert!(close(number(p, "t_end"), b.problem.t_end, b.problem.t_end));
+        assert!(close(number(p, "period"), b.closed.period, b.closed.period));
+        assert_eq!(p["exact"]["events"].as_array().unwrap().len(), 40);
+        let body = &p["body"];
+        assert!(close(number(body, "mass"), b.params.mass, 1.0));
+    }
+
+    /// RK45 at tolerance 1e-8 on the five sweep problems (the belt too) finds every exact slip
+    /// and stick, to within 1e-7 s on the paper's (measured: 1.6e-8 s at most) and 1e-5 s on
+    /// the belt, and takes no solve_ivp step while stuck: the
     /// stick ends come from the static margin, whose evaluations are counted (skipped without
     /// python3 and SciPy).
     #[test]
@@ -615,19 +687,31 @@ mod tests {
         let Some(script) = script_if_scipy() else {
             return;
         };
-        let problems = sweep_problems().unwrap();
-        assert_eq!(problems.len(), 4);
-        let references: Vec<Reference> = problems.iter().map(|bp| reference(bp).unwrap()).collect();
-        let pairs: Vec<(&BenchProblem, &Reference)> = problems.iter().zip(&references).collect();
+        let problems = crate::bench::problems::sweep().unwrap();
+        assert_eq!(problems.len(), 5, "the paper's four and the belt");
+        let references: Vec<Reference> = problems
+            .iter()
+            .map(|sp| sweep_reference(sp).unwrap())
+            .collect();
+        let pairs: Vec<(&SweepProblem, &Reference)> = problems.iter().zip(&references).collect();
         let out = execute(&script, &input(&pairs, &[1e-8], &["RK45"], 1)).expect("the script runs");
-        assert_eq!(out.points.len(), 4);
+        assert_eq!(out.points.len(), 5);
         for (p, bp) in out.points.iter().zip(&problems) {
-            assert_eq!(p.problem, bp.id);
+            assert_eq!(p.problem, bp.id());
             assert!(p.ok(), "{}: {:?}", p.problem, p.error);
             assert_eq!(p.n_events, Some(p.n_events_exact), "{}", p.problem);
             assert_eq!(p.n_missed, Some(0), "{}", p.problem);
+            // On the belt a stick ends where the carried position reaches x_s, so a slip's
+            // time inherits the position error of the stick before it over v_b (×20 here) and
+            // the error grows over the cycles (measured 9.6e-7 s over 20 cycles; the tool's
+            // dopri5 does the same: 6.7e-5 s at 1e-6 against SciPy RK45's 6.6e-5 s).
+            let bound = if p.problem == crate::bench::belt::ID {
+                1e-5
+            } else {
+                1e-7
+            };
             assert!(
-                p.err_event_s.unwrap() < 1e-7,
+                p.err_event_s.unwrap() < bound,
                 "{}: {:?}",
                 p.problem,
                 p.err_event_s

@@ -70,7 +70,10 @@ fn protocol(points: &[PeerPoint]) -> String {
          law. Only the slips are integrated: the end of each stick is located on the static \
          margin |D| − μs N_f, known in closed form from the force law — solved on the linear \
          pieces, sampled 16 times per piece and refined by brentq (xtol 10⁻¹⁵ t) on the harmonic \
-         ones, instead of integrating y′ = 0 through the stick. All runs: {} rhs evaluations in {} \
+         ones, instead of integrating y′ = 0 through the stick. The belt is sent as its law \
+         D = D0 + c x, N_f and the belt's speed v_s: its slips are integrated in the belt's frame \
+         (w = v − v_s), and while stuck x = x0 + v_s (t − t0), so the margin is affine in t and \
+         the end of the stick is solved for. All runs: {} rhs evaluations in {} \
          steps ({}), and {} margin evaluations, counted apart.",
         total(points, |p| p.nfev),
         total(points, |p| p.steps),

@@ -6,18 +6,21 @@
 //! pulled mass set B:   μs 0.4, μd 0.35, m 0.06 kg, k 45 N/m, F 0.10 N   (one slip-stick per period)
 //! woodpecker Fig. 15:  the paper's default set, λ = l/h, counterpart `zeros` (two per period)
 //! ```
-//! The reference of every comparison is the exact engine on the same force law.
+//! The reference of every comparison is the exact engine on the same force law. The sweep
+//! also takes the belt ([`super::belt`]): a [`SweepProblem`] is one of the paper's problems or
+//! the belt's, and [`SweepProblem::solve`] hands each to a method as it takes it.
 
 use serde::Serialize;
 
+use super::belt::BeltBench;
 use crate::engine::{Body, ForceLaw};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::models::pulled_mass::formula::phi_continuous;
 use crate::models::pulled_mass::PulledMassParams;
 use crate::models::woodpecker::WoodpeckerParams;
 use crate::models::{LawKind, Model};
 use crate::solver::exact::Exact;
-use crate::solver::{Method, MethodEvent, Problem, Setting};
+use crate::solver::{Method, MethodEvent, Problem, Setting, Solution};
 
 /// Periods integrated by every method on every problem.
 pub const PERIODS: u32 = 20;
@@ -109,7 +112,133 @@ pub fn wood(id: &str, title: &str, p: WoodpeckerParams, law: LawKind) -> Result<
     of(id, title, Model::Woodpecker(p), law)
 }
 
-/// The four problems of the work-precision sweep.
+/// A problem of the work-precision sweep: one of the paper's (forces of time only, a
+/// [`Problem`]) or the belt (a force of the position on a moving surface, a
+/// [`crate::solver::surface::SurfaceProblem`]).
+#[derive(Clone, Debug, PartialEq)]
+pub enum SweepProblem {
+    Paper(BenchProblem),
+    Belt(BeltBench),
+}
+
+impl SweepProblem {
+    /// Identifier, e.g. "pulled_mass_b_linear" or "belt_default".
+    pub fn id(&self) -> &str {
+        match self {
+            SweepProblem::Paper(bp) => &bp.id,
+            SweepProblem::Belt(_) => super::belt::ID,
+        }
+    }
+
+    /// Human-readable title for tables and charts.
+    pub fn title(&self) -> String {
+        match self {
+            SweepProblem::Paper(bp) => bp.title.clone(),
+            SweepProblem::Belt(_) => super::belt::TITLE.to_string(),
+        }
+    }
+
+    /// The model's id ("pulled-mass", "woodpecker", "belt").
+    pub fn model(&self) -> &'static str {
+        self.params().id()
+    }
+
+    /// "linear" or "harmonic" for the paper's force laws, "spring" for the belt (its force is
+    /// the spring's −k x, with no forcing law).
+    pub fn law_id(&self) -> &'static str {
+        match self {
+            SweepProblem::Paper(bp) => bp.law_id(),
+            SweepProblem::Belt(_) => super::belt::LAW,
+        }
+    }
+
+    pub fn params(&self) -> Model {
+        match self {
+            SweepProblem::Paper(bp) => bp.params,
+            SweepProblem::Belt(b) => Model::Belt(b.params),
+        }
+    }
+
+    /// The period T (s): of the forcing, or of the belt's stick-slip cycle.
+    pub fn period(&self) -> f64 {
+        match self {
+            SweepProblem::Paper(bp) => bp.period(),
+            SweepProblem::Belt(b) => b.closed.period,
+        }
+    }
+
+    /// Final time (s).
+    pub fn t_end(&self) -> f64 {
+        match self {
+            SweepProblem::Paper(bp) => bp.problem.t_end,
+            SweepProblem::Belt(b) => b.problem.t_end,
+        }
+    }
+
+    /// The paper's problem, `None` for the belt (the studies defined on the paper's problems).
+    pub fn paper(&self) -> Option<&BenchProblem> {
+        match self {
+            SweepProblem::Paper(bp) => Some(bp),
+            SweepProblem::Belt(_) => None,
+        }
+    }
+
+    /// Why the mean speed of the last period is not compared, `None` where it is.
+    pub fn vbar_not_applicable(&self) -> Option<&'static str> {
+        match self {
+            SweepProblem::Paper(_) => None,
+            SweepProblem::Belt(_) => Some(super::belt::VBAR_NOT_APPLICABLE),
+        }
+    }
+
+    /// The one dispatch of the sweep: [`Method::solve`] on a paper problem,
+    /// [`Method::solve_surface`] on the belt (refused by a method that takes forces of time
+    /// only: see [`is_refusal`]).
+    pub fn solve(&self, method: &dyn Method, setting: Setting) -> Result<Solution> {
+        match self {
+            SweepProblem::Paper(bp) => method.solve(&bp.problem, setting),
+            SweepProblem::Belt(b) => method.solve_surface(&b.problem, setting),
+        }
+    }
+
+    /// The work the sweep times: [`Method::solve_timed`] on a paper problem,
+    /// [`Method::solve_surface`] on the belt.
+    pub fn solve_timed(&self, method: &dyn Method, setting: Setting) -> Result<()> {
+        match self {
+            SweepProblem::Paper(bp) => method.solve_timed(&bp.problem, setting),
+            SweepProblem::Belt(b) => method.solve_surface(&b.problem, setting).map(drop),
+        }
+    }
+
+    /// The run one period shorter (for the mean speed of the last period), `None` where that
+    /// speed is not compared.
+    pub fn solve_one_period_shorter(
+        &self,
+        method: &dyn Method,
+        setting: Setting,
+    ) -> Option<Result<Solution>> {
+        self.paper()
+            .map(|bp| method.solve(&bp.one_period_shorter(), setting))
+    }
+}
+
+/// True for a method's refusal of a problem it does not take (a force depending on the
+/// position, for a method of forces of time only): the error names the parameter "method".
+pub fn is_refusal(e: &Error) -> bool {
+    matches!(e, Error::InvalidParam { name: "method", .. })
+}
+
+/// The problems of the work-precision sweep: the paper's four, then the belt.
+pub fn sweep() -> Result<Vec<SweepProblem>> {
+    let mut out: Vec<SweepProblem> = sweep_problems()?
+        .into_iter()
+        .map(SweepProblem::Paper)
+        .collect();
+    out.push(SweepProblem::Belt(super::belt::bench()?));
+    Ok(out)
+}
+
+/// The four problems of the paper in the work-precision sweep.
 pub fn sweep_problems() -> Result<Vec<BenchProblem>> {
     let laws = [LawKind::Linear, LawKind::Harmonic];
     let mut out = Vec::with_capacity(4);
@@ -167,11 +296,14 @@ pub fn title(id: &str) -> String {
     static TITLES: std::sync::OnceLock<Vec<(String, String)>> = std::sync::OnceLock::new();
     let titles = TITLES.get_or_init(|| {
         let all = [sweep_problems(), boundary_problems()];
-        all.into_iter()
+        let mut titles: Vec<(String, String)> = all
+            .into_iter()
             .flatten()
             .flatten()
             .map(|bp| (bp.id, bp.title))
-            .collect()
+            .collect();
+        titles.push((super::belt::ID.to_string(), super::belt::TITLE.to_string()));
+        titles
     });
     titles
         .iter()
@@ -196,8 +328,9 @@ pub struct Reference {
     /// Position (m) and velocity (m/s) at t_end.
     pub x_end_m: f64,
     pub v_end_m_s: f64,
-    /// Mean speed over the last period (m/s).
-    pub vbar_m_s: f64,
+    /// Mean speed over the last period (m/s); `None` where it is not compared (the belt:
+    /// [`SweepProblem::vbar_not_applicable`]).
+    pub vbar_m_s: Option<f64>,
 }
 
 /// Slip and stick events only: reversals are counted apart (see [`super::sweep`]).
@@ -218,8 +351,16 @@ pub fn reference(bp: &BenchProblem) -> Result<Reference> {
         events: transitions(&full.events),
         x_end_m: full.x_end,
         v_end_m_s: full.v_end,
-        vbar_m_s: (full.x_end - shorter.x_end) / bp.period(),
+        vbar_m_s: Some((full.x_end - shorter.x_end) / bp.period()),
     })
+}
+
+/// The exact reference of a problem of the sweep.
+pub fn sweep_reference(sp: &SweepProblem) -> Result<Reference> {
+    match sp {
+        SweepProblem::Paper(bp) => reference(bp),
+        SweepProblem::Belt(b) => super::belt::reference(b),
+    }
 }
 
 /// The setting handed to the exact engine (which ignores it).
@@ -239,6 +380,7 @@ mod tests {
             title("woodpecker_halt_below_harmonic"),
             "Woodpecker, z0 = 7.0646 mm, harmonic law"
         );
+        assert_eq!(title("belt_default"), super::super::belt::TITLE);
         assert_eq!(title("no_such_problem"), "no_such_problem");
     }
 
@@ -249,11 +391,12 @@ mod tests {
         for bp in &problems[..2] {
             let r = reference(bp).unwrap();
             assert_eq!(r.events.len(), 2 * PERIODS as usize, "{}", bp.id);
-            assert!(r.vbar_m_s > 0.0);
+            assert!(r.vbar_m_s.unwrap() > 0.0);
         }
         // Set B, linear law: v̄ = 5.396971 mm/s (guide §13).
         let r = reference(&problems[0]).unwrap();
-        assert!((r.vbar_m_s - 5.396971e-3).abs() < 1e-8, "{}", r.vbar_m_s);
+        let vbar = r.vbar_m_s.unwrap();
+        assert!((vbar - 5.396971e-3).abs() < 1e-8, "{vbar}");
     }
 
     #[test]

@@ -11,7 +11,7 @@ use super::analysis::{fit_order, Metric, OrderFit};
 use super::crowding::{self, CrowdPoint};
 use super::failures::{self, CreepPoint, MissedPoint, RegimePoint, ReversalPoint, EPSILONS};
 use super::near_tangent::{self, TangentPoint};
-use super::problems::{self, BenchProblem, Reference};
+use super::problems::{self, BenchProblem, Reference, SweepProblem};
 use super::step_boundary::{self, BoundaryPoint};
 use super::sweep::{is_compiled_peer, method_kind, Grid, MethodKind, SweepPoint};
 use crate::error::Result;
@@ -37,40 +37,53 @@ pub struct Studies {
     pub crowding: Vec<CrowdPoint>,
 }
 
-/// The fitted orders of the fixed-step methods on every problem and metric.
+/// The fitted orders of the fixed-step methods on every problem of the sweep and metric it
+/// compares (no v̄ on the belt), for the methods that take the problem.
 fn orders(
     methods: &[&dyn Method],
-    pairs: &[(&BenchProblem, &Reference)],
+    swept: &[(&SweepProblem, &Reference)],
     sweep: &[SweepPoint],
 ) -> Vec<OrderFit> {
     let mut out = Vec::new();
-    for (bp, r) in pairs {
+    for (bp, r) in swept {
+        let refused = |m: &str| {
+            sweep
+                .iter()
+                .any(|p| p.problem == bp.id() && p.method == m && p.refused())
+        };
         for m in methods
             .iter()
-            .filter(|m| method_kind(m.name()) == MethodKind::FixedStep)
+            .filter(|m| method_kind(m.name()) == MethodKind::FixedStep && !refused(m.name()))
         {
             for metric in Metric::ALL {
                 let scale = match metric {
-                    Metric::EventTime => bp.problem.t_end,
-                    Metric::XEnd => r.x_end_m,
+                    Metric::EventTime => Some(bp.t_end()),
+                    Metric::XEnd => Some(r.x_end_m),
                     Metric::VBar => r.vbar_m_s,
                 };
-                out.push(fit_order(sweep, &bp.id, m.name(), metric, scale));
+                if let Some(scale) = scale {
+                    out.push(fit_order(sweep, bp.id(), m.name(), metric, scale));
+                }
             }
         }
     }
     out
 }
 
-/// Runs the untimed failure studies (in parallel).
+/// Runs the untimed failure studies (in parallel): the fitted orders on every problem of the
+/// sweep `swept`, the rest on the paper's problems (they are defined by its regimes).
 pub fn run(
     methods: &[&dyn Method],
-    pairs: &[(&BenchProblem, &Reference)],
+    swept: &[(&SweepProblem, &Reference)],
     grid: &Grid,
     sweep: &[SweepPoint],
     quick: bool,
 ) -> Result<Studies> {
-    let find = |id: &str| pairs.iter().find(|(bp, _)| bp.id == id).copied();
+    let find = |id: &str| {
+        swept
+            .iter()
+            .find_map(|(sp, r)| sp.paper().filter(|bp| bp.id == id).map(|bp| (bp, *r)))
+    };
     // Creep: one problem per model.
     let creep_cases: Vec<(&BenchProblem, &Reference, (f64, f64))> =
         ["pulled_mass_b_linear", "woodpecker_fig15_harmonic"]
@@ -161,7 +174,7 @@ pub fn run(
         creep_epsilon,
         missed,
         regime,
-        orders: orders(methods, pairs, sweep),
+        orders: orders(methods, swept, sweep),
         near_tangent: near_tangent::run(methods)?,
         step_boundary: step_boundary::run(methods)?,
         crowding: crowding::run(methods)?,

@@ -7,6 +7,9 @@
 //! fixed-step   steps per period n = 10^(1 + k/2), k = 0…8  (10 … 10^5), h = T/n
 //! errors       max |t_i − t_i,exact| over events matched in order (slip/stick only),
 //!              |x(t_end) − x_exact|,  |v̄ − v̄_exact| with v̄ = (x(t_end) − x(t_end − T))/T
+//!              (not on the belt, which returns to the same place each cycle)
+//! refusal      a method that does not take a problem (the belt, for a method of forces of
+//!              time only) gives one point of status "refused" with its reason
 //! time         warm-up, then min of N runs (one run when a run exceeds 1 s)
 //! ```
 //! `std::time::Instant` is used here only: this is the tool's benchmark command, and timings
@@ -17,8 +20,11 @@ use std::time::{Duration, Instant};
 
 use serde::{Deserialize, Serialize};
 
-use super::problems::{transitions, BenchProblem, Reference};
-use crate::solver::{Method, MethodEvent, Problem, Setting, Solution};
+use super::problems::{is_refusal, transitions, Reference, SweepProblem};
+use crate::solver::{Method, MethodEvent, Setting, Solution};
+
+/// The status of a point whose method does not take its problem.
+pub const REFUSED: &str = "refused";
 
 /// A run longer than this is timed once (the protocol's "fewer if one run exceeds 1 s").
 pub const LONG_RUN: Duration = Duration::from_secs(1);
@@ -124,7 +130,8 @@ pub struct SweepPoint {
     pub tolerance: Option<f64>,
     pub h_s: Option<f64>,
     pub steps_per_period: Option<f64>,
-    /// "ok", or "error" with the method's message in `error`.
+    /// "ok"; "error" with the method's message in `error`; or "refused" with its reason there
+    /// (a problem the method does not take: one point, whatever the setting).
     pub status: String,
     pub error: Option<String>,
     /// Median wall time over `runs` timed runs (s); for the exact engine, of `integrate`
@@ -159,6 +166,11 @@ impl SweepPoint {
     /// True when the method returned a solution.
     pub fn ok(&self) -> bool {
         self.status == "ok"
+    }
+
+    /// True when the method does not take the problem.
+    pub fn refused(&self) -> bool {
+        self.status == REFUSED
     }
 
     /// Events found differ in number from the exact ones.
@@ -223,7 +235,7 @@ pub struct Timing {
 /// run longer than [`LONG_RUN`] ends the series.
 fn time_runs(
     method: &dyn Method,
-    problem: &Problem,
+    problem: &SweepProblem,
     setting: Setting,
     first: Duration,
     repeats: u32,
@@ -232,7 +244,7 @@ fn time_runs(
     let mut times = Vec::with_capacity(n as usize);
     for _ in 0..n {
         let start = Instant::now();
-        let out = method.solve_timed(black_box(problem), black_box(setting));
+        let out = black_box(problem).solve_timed(method, black_box(setting));
         let took = start.elapsed();
         black_box(out).ok();
         times.push(took.as_secs_f64());
@@ -260,10 +272,11 @@ fn summarize(mut times: Vec<f64>) -> Timing {
     }
 }
 
-/// Runs one point of the sweep. A method's error is recorded in the point, never propagated.
+/// Runs one point of the sweep. A method's error is recorded in the point, never propagated;
+/// a refusal is recorded as such ([`REFUSED`]).
 pub fn measure(
     method: &dyn Method,
-    bp: &BenchProblem,
+    bp: &SweepProblem,
     reference: &Reference,
     setting: Setting,
     repeats: u32,
@@ -271,7 +284,7 @@ pub fn measure(
     let kind = method_kind(method.name());
     let (setting_kind, tolerance, h_s, steps_per_period) = describe(kind, setting, bp.period());
     let mut point = SweepPoint {
-        problem: bp.id.clone(),
+        problem: bp.id().to_string(),
         method: method.name().to_string(),
         setting_kind: setting_kind.to_string(),
         tolerance,
@@ -299,17 +312,22 @@ pub fn measure(
         v_end_m_s: None,
     };
     let start = Instant::now();
-    let first = method.solve(&bp.problem, setting);
+    let first = bp.solve(method, setting);
     let took = start.elapsed();
     let sol = match first {
         Ok(sol) => sol,
         Err(e) => {
+            if is_refusal(&e) {
+                point.status = REFUSED.to_string();
+            }
             point.error = Some(e.to_string());
             return point;
         }
     };
-    let timing = time_runs(method, &bp.problem, setting, took, repeats);
-    let shorter = method.solve(&bp.one_period_shorter(), setting).ok();
+    let timing = time_runs(method, bp, setting, took, repeats);
+    let shorter = bp
+        .solve_one_period_shorter(method, setting)
+        .and_then(|r| r.ok());
     fill(&mut point, &sol, shorter.as_ref(), reference, bp.period());
     point.time_s = Some(timing.median_s);
     point.time_min_s = Some(timing.min_s);
@@ -338,8 +356,9 @@ fn fill(
     point.reversals = Some(reversals(sol));
     point.err_event_s = m.max_err;
     point.err_x_m = finite((sol.x_end - reference.x_end_m).abs());
-    point.err_vbar_m_s =
-        shorter.and_then(|s| finite(((sol.x_end - s.x_end) / period - reference.vbar_m_s).abs()));
+    point.err_vbar_m_s = shorter
+        .zip(reference.vbar_m_s)
+        .and_then(|(s, vbar)| finite(((sol.x_end - s.x_end) / period - vbar).abs()));
     point.x_end_m = finite(sol.x_end);
     point.v_end_m_s = finite(sol.v_end);
 }
@@ -380,10 +399,10 @@ mod tests {
         fn name(&self) -> &'static str {
             "slower"
         }
-        fn solve(&self, _: &Problem, _: Setting) -> crate::error::Result<Solution> {
+        fn solve(&self, _: &crate::solver::Problem, _: Setting) -> crate::error::Result<Solution> {
             unreachable!("only the timed runs are called")
         }
-        fn solve_timed(&self, _: &Problem, _: Setting) -> crate::error::Result<()> {
+        fn solve_timed(&self, _: &crate::solver::Problem, _: Setting) -> crate::error::Result<()> {
             let n = self.0.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
             std::thread::sleep(Duration::from_millis(10 * n));
             Ok(())
@@ -403,13 +422,69 @@ mod tests {
         // The timed runs: five of them, each timed (a sleep lasts at least what it asks, and at
         // least three of the five ask for 30 ms or more). No upper bound: a loaded machine may
         // stretch any run, and a test must not fail from load.
-        let problem = crate::solver::test_support::set_b(crate::models::LawKind::Linear, 1.0);
+        let problem = SweepProblem::Paper(
+            super::super::problems::pulled(
+                "set_b",
+                "set B",
+                super::super::problems::set_b(),
+                crate::models::LawKind::Linear,
+            )
+            .unwrap(),
+        );
         let method = Slower(0.into());
         let t = time_runs(&method, &problem, Setting::Step(1.0), Duration::ZERO, 5);
         assert_eq!(t.runs, 5);
         assert_eq!(method.0.load(std::sync::atomic::Ordering::Relaxed), 5);
         assert!(t.min_s >= 1e-2 && t.min_s <= t.median_s && t.median_s <= t.max_s);
         assert!(t.median_s >= 3e-2 && t.max_s >= 5e-2, "{t:?}");
+    }
+
+    /// A method of forces of time only: it keeps the default `solve_surface`, a refusal.
+    struct TimeOnly;
+
+    impl Method for TimeOnly {
+        fn name(&self) -> &'static str {
+            "time_only"
+        }
+        fn solve(
+            &self,
+            problem: &crate::solver::Problem,
+            setting: Setting,
+        ) -> crate::error::Result<Solution> {
+            crate::solver::rk4::Rk4.solve(problem, setting)
+        }
+    }
+
+    #[test]
+    fn the_belt_is_refused_by_a_method_of_forces_of_time_only_and_has_no_vbar_error() {
+        let belt = SweepProblem::Belt(super::super::belt::bench().unwrap());
+        let r = super::super::problems::sweep_reference(&belt).unwrap();
+        let h = Setting::Step(belt.period() / 1000.0);
+        let p = measure(&TimeOnly, &belt, &r, h, 1);
+        assert!(p.refused() && !p.ok(), "{p:?}");
+        assert!(p.error.as_deref().unwrap().contains("time_only"), "{p:?}");
+        assert_eq!((p.err_event_s, p.time_s, p.runs), (None, None, 0));
+        let p = measure(&crate::solver::rk4::Rk4, &belt, &r, h, 1);
+        assert!(p.ok() && !p.refused(), "{p:?}");
+        assert_eq!(p.n_events, Some(p.n_events_exact));
+        assert_eq!(p.n_events_exact, 40);
+        assert!(
+            p.err_event_s.unwrap() < 1e-6 && p.err_x_m.unwrap() < 1e-6,
+            "{p:?}"
+        );
+        assert_eq!(p.err_vbar_m_s, None);
+        // The same method on a paper problem is measured in every metric.
+        let paper =
+            SweepProblem::Paper(super::super::problems::sweep_problems().unwrap().remove(0));
+        let r = super::super::problems::sweep_reference(&paper).unwrap();
+        let p = measure(
+            &TimeOnly,
+            &paper,
+            &r,
+            Setting::Step(paper.period() / 1000.0),
+            1,
+        );
+        assert!(p.ok() && p.err_vbar_m_s.is_some(), "{p:?}");
     }
 
     #[test]

@@ -76,7 +76,10 @@ pub fn problems(r: &BenchResults) -> Table {
                         p.periods.to_string(),
                         p.exact.events.len().to_string(),
                         sig(Some(p.exact.x_end_m), 7),
-                        sig(Some(p.exact.vbar_m_s), 7),
+                        match (p.exact.vbar_m_s, p.vbar_not_applicable) {
+                            (_, Some(why)) => why.to_string(),
+                            (v, None) => sig(v, 7),
+                        },
                         e2(exact_time(&p.id)),
                     ],
                     "",
@@ -140,6 +143,76 @@ pub fn reference_check(r: &BenchResults) -> (String, Table) {
         })
         .collect();
     (note, table(&header, rows))
+}
+
+/// The exact references against the closed forms (the belt): a sentence and a table.
+pub fn closed_form_check(r: &BenchResults) -> (String, Table) {
+    let checked: Vec<_> = r
+        .problems
+        .iter()
+        .filter_map(|p| Some((p, p.closed_form_check.as_ref()?)))
+        .collect();
+    let rows: Vec<Row> = checked
+        .iter()
+        .map(|(p, c)| {
+            let agrees = c.agrees(p.t_end_s, p.exact.x_end_m.abs());
+            row(
+                vec![
+                    p.title.clone(),
+                    format!("{} · {}", c.events_exact, c.events_closed_form),
+                    if c.same_pattern { "yes" } else { "no" }.to_string(),
+                    e2(c.max_event_err_s),
+                    e2(c.x_end_err_m),
+                ],
+                if agrees { "pass" } else { "fail" },
+            )
+        })
+        .collect();
+    let all = checked
+        .iter()
+        .all(|(p, c)| c.agrees(p.t_end_s, p.exact.x_end_m.abs()));
+    let note = match (checked.is_empty(), all) {
+        (true, _) => String::new(),
+        (false, true) => format!(
+            "The belt's reference (the exact engine's run) against its closed forms (first slip \
+             at x_s/v_b, slips of t_slip, sticks of t_stick over {} cycles; x(t_end) carried at \
+             v_b from the last stick): the same slips and sticks, event times and end position \
+             within 1e-12 relative. The 40-digit check above covers the paper's problems.",
+            r.periods
+        ),
+        (false, false) => {
+            "The belt's reference DISAGREES with its closed forms (marked below).".to_string()
+        }
+    };
+    let header = [
+        "problem",
+        "events (exact · closed forms)",
+        "same slips and sticks in order",
+        "max |Δt| (s)",
+        "|Δx_end| (m)",
+    ];
+    (note, table(&header, rows))
+}
+
+/// The methods that do not take a problem of the sweep, with their reasons.
+pub fn refusals(r: &BenchResults) -> Table {
+    table(
+        &["problem", "method", "reason"],
+        r.sweep
+            .iter()
+            .filter(|p| p.refused())
+            .map(|p| {
+                row(
+                    vec![
+                        super::problems::title(&p.problem),
+                        p.method.clone(),
+                        p.error.clone().unwrap_or_default(),
+                    ],
+                    "na",
+                )
+            })
+            .collect(),
+    )
 }
 
 /// The fitted orders of the fixed-step methods.
