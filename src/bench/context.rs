@@ -240,9 +240,14 @@ fn protocol(r: &BenchResults) -> Vec<String> {
              {} periods each, starting stuck at rest; the exact event-driven engine on the same law is the reference. \
              The belt oscillator (the textbook block on a moving belt, default set: the spring's force −k x, \
              sticking at the belt's speed) over {} stick-slip cycles, starting carried by the belt at x = 0, its T \
-             the cycle's period; its reference is the exact engine's run, checked against the closed forms. A \
-             method that takes forces of time only refuses the belt and is listed so.",
-            r.periods, r.periods
+             the cycle's period; its reference is the exact engine's run, checked against the closed forms. {}",
+            r.periods,
+            r.periods,
+            if r.sweep.iter().any(|p| p.refused()) {
+                "A method that does not take a problem is listed with its reason."
+            } else {
+                "Every method takes every problem (a force depending on the position included)."
+            }
         ),
         format!(
             "Adaptive methods: tolerance (rtol = atol) {}; fixed-step methods: {} steps per period (h = T/n).",
