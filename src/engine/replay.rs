@@ -298,7 +298,7 @@ impl Tape {
         let Outputs {
             x_at_period_start,
             v_at_period_start,
-            mut dissipation,
+            dissipation,
             segments,
         } = out;
         let v = self.recording.map_or(0.0, |start| f64::from_bits(start.v));
@@ -319,9 +319,14 @@ impl Tape {
             .ops
             .iter()
             .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
+        // Every replayed period starts at the recorded v and dissipates the recorded total.
+        let replayed = periods.saturating_sub(from) as usize;
+        v_at_period_start.resize(v_at_period_start.len() + replayed, v);
+        if let Some(d) = dissipation {
+            d.resize(d.len() + replayed, self.dissipation);
+        }
         for m in from..periods {
             x_at_period_start.push(x);
-            v_at_period_start.push(v);
             let through_recorder = materialize
                 || !own_last_transition
                 || m == from
@@ -333,9 +338,6 @@ impl Tape {
                     if let Op::Move { dx } = *op {
                         x += dx;
                     }
-                }
-                if let Some(d) = dissipation.as_deref_mut() {
-                    d.push(self.dissipation);
                 }
                 continue;
             }
@@ -353,9 +355,6 @@ impl Tape {
                         }
                     }
                 }
-            }
-            if let Some(d) = dissipation.as_deref_mut() {
-                d.push(self.dissipation);
             }
         }
         let compact =
