@@ -72,10 +72,20 @@
 //!
 //! ```text
 //!                 tol      error       ours/run   steps      engine/run         ratio
-//!                                                 acc.+rej.  c8fb77c → now      c8fb77c → now
+//!                                                 acc.+rej.  c8fb77c → perf     c8fb77c → perf
 //! set B           1e-10    3.6e-10 s   608,430    561 + 0    10,905 → 10,241    55.8× → 59.4×
 //! set B           3e-11    8.1e-11 s   711,334    660 + 0    10,905 → 10,241    65.2× → 69.5×
 //! woodpecker      1e-10    5.5e-11 s   971,557    782 + 20   23,433 → 19,897    41.5× → 48.8×
+//! ```
+//!
+//! Measured again at perf2 (ours unchanged in code; the engine after src/engine/replay.rs's
+//! smaller tape steps; engine/run from b33a971, the main branch it started from, to perf2):
+//!
+//! ```text
+//!                 tol      error       ours/run   engine/run          ratio
+//! set B           1e-10    3.6e-10 s   608,326    10,438 → 10,044     58.3× → 60.6×
+//! set B           3e-11    8.1e-11 s   711,230    10,438 → 10,044     68.1× → 70.8×
+//! woodpecker      1e-10    5.5e-11 s   971,456    20,318 → 19,798     47.8× → 49.1×
 //! ```
 //!
 //! The tolerance whose event-time error is at most 1e-10 s: 3e-11 on set B (1e-10 gives 3.6e-10

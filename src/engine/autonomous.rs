@@ -728,7 +728,7 @@ pub fn integrate_surface_with(
 /// The cycle recorded on `tape`, cycle `first` of the run, which started at `frame` and lasted
 /// `period` (s, local).
 fn recorded(tape: &CycleTape, first: u32, frame: Frame, period: f64) -> SurfaceCycle {
-    let (ops, start, ledger) = tape.recorded();
+    let (ops, motions, start, ledger) = tape.recorded();
     let x_on = start.map_or(0.0, |s| f64::from_bits(s.x));
     let mut cycle = SurfaceCycle {
         first,
@@ -758,7 +758,7 @@ fn recorded(tape: &CycleTape, first: u32, frame: Frame, period: f64) -> SurfaceC
                 });
                 cycle.event_ledger.push(extra);
             }
-            Op::Segment { motion, .. } => cycle.segments.push(motion),
+            Op::Segment { motion, .. } => cycle.segments.push(motions[motion]),
             Op::Move { .. } | Op::Retract { .. } => {}
         }
     }

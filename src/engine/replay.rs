@@ -49,13 +49,13 @@ pub enum Replay {
     Compact,
 }
 
-/// One step of a recorded period, in the order the integration took it; `M` is what a segment
-/// holds (the forced engine's motion, placed at the current position; the belt's segment in
-/// local time, at its own x since its cycle returns to the same x), `E` what an event carries
-/// besides its time, kind, place and speed (nothing for the forced models, the friction's
-/// ledger since the cycle's onset for the belt).
+/// One step of a recorded period, in the order the integration took it; `E` is what an event
+/// carries besides its time, kind, place and speed (nothing for the forced models, the
+/// friction's ledger since the cycle's onset for the belt). A segment's motion is kept apart
+/// ([`Tape::recorded`]), so that a step is a few words and the tape of a run that records no
+/// segments stays small (one allocation on the allocator's fast path).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Op<M = Motion, E = ()> {
+pub(super) enum Op<E = ()> {
     /// An event at local time `t`: at the current position, or `dx` (m) beyond it.
     Event {
         t: f64,
@@ -68,8 +68,9 @@ pub(super) enum Op<M = Motion, E = ()> {
     Retract { t: f64 },
     /// The body moved by `dx` (m) along an arc.
     Move { dx: f64 },
-    /// A recorded segment over local [t0, t1]; its motion starts at the current position.
-    Segment { t0: f64, t1: f64, motion: M },
+    /// A recorded segment over local [t0, t1]: the motion with index `motion` in the tape's
+    /// motions, started at the current position.
+    Segment { t0: f64, t1: f64, motion: usize },
 }
 
 /// The segments of replayed periods, rebuilt on demand ([`Replay::Compact`]).
@@ -77,8 +78,9 @@ pub(super) enum Op<M = Motion, E = ()> {
 pub struct Compact {
     /// First replayed period.
     pub(super) from: u32,
-    /// The recorded period's steps.
+    /// The recorded period's steps and its segments' motions.
     ops: Vec<Op>,
+    motions: Vec<Motion>,
 }
 
 impl Compact {
@@ -97,7 +99,7 @@ impl Compact {
                 match *op {
                     Op::Move { dx } => x += dx,
                     Op::Segment { t0, t1, motion } => {
-                        let seg = segment(m, period, t0, t1, motion, x);
+                        let seg = segment(m, period, t0, t1, self.motions[motion], x);
                         if seg.t1 >= t {
                             return Some(seg);
                         }
@@ -140,14 +142,18 @@ pub(super) struct StartState {
 }
 
 /// The steps of the current period, recorded while it may become the template: `S` is the
-/// start state a repeat is detected on, `P` the period's total the replay hands on (the
-/// friction dissipation for the forced models, the ledger for the belt).
+/// start state a repeat is detected on, `M` what a segment holds (the forced engine's motion,
+/// placed at the current position; the belt's segment in local time, at its own x since its
+/// cycle returns to the same x), `P` the period's total the replay hands on (the friction
+/// dissipation for the forced models, the ledger for the belt).
 pub(super) struct Tape<S = StartState, M = Motion, E = (), P = f64> {
     mode: Replay,
     segments: bool,
     /// Record (and detect) also with [`Replay::Off`]: the belt reads its cycle from the tape.
     always: bool,
-    ops: Vec<Op<M, E>>,
+    ops: Vec<Op<E>>,
+    /// The motions of the recorded segments, in order (empty unless segments are recorded).
+    motions: Vec<M>,
     /// The current period is being recorded, from this start state.
     recording: Option<S>,
     /// The last period was recorded in full and ended in its start state: the next periods
@@ -181,6 +187,7 @@ impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> 
                 Replay::Off => Vec::new(),
                 Replay::Segments | Replay::Compact => Vec::with_capacity(OPS_RESERVED),
             },
+            motions: Vec::new(),
             recording: None,
             complete: false,
             dissipation: P::default(),
@@ -218,6 +225,7 @@ impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> 
     #[inline]
     pub(super) fn begin(&mut self, start: S) {
         self.ops.clear();
+        self.motions.clear();
         self.recording = (self.always || self.mode != Replay::Off).then_some(start);
     }
 
@@ -229,9 +237,10 @@ impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> 
         self.dissipation = dissipation;
     }
 
-    /// The recorded steps of the last period, its start state and its total.
-    pub(super) fn recorded(&self) -> (&[Op<M, E>], Option<S>, P) {
-        (&self.ops, self.recording, self.dissipation)
+    /// The recorded steps of the last period, the motions its segments index, its start state
+    /// and its total.
+    pub(super) fn recorded(&self) -> (&[Op<E>], &[M], Option<S>, P) {
+        (&self.ops, &self.motions, self.recording, self.dissipation)
     }
 
     #[inline]
@@ -264,7 +273,12 @@ impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> 
     #[inline]
     pub(super) fn segment(&mut self, t0: f64, t1: f64, motion: M) {
         if self.segments && self.recording.is_some() && t1 > t0 {
-            self.ops.push(Op::Segment { t0, t1, motion });
+            self.ops.push(Op::Segment {
+                t0,
+                t1,
+                motion: self.motions.len(),
+            });
+            self.motions.push(motion);
         }
     }
 }
@@ -284,7 +298,7 @@ impl Tape {
         let Outputs {
             x_at_period_start,
             v_at_period_start,
-            mut dissipation,
+            dissipation,
             segments,
         } = out;
         let v = self.recording.map_or(0.0, |start| f64::from_bits(start.v));
@@ -305,9 +319,14 @@ impl Tape {
             .ops
             .iter()
             .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
+        // Every replayed period starts at the recorded v and dissipates the recorded total.
+        let replayed = periods.saturating_sub(from) as usize;
+        v_at_period_start.resize(v_at_period_start.len() + replayed, v);
+        if let Some(d) = dissipation {
+            d.resize(d.len() + replayed, self.dissipation);
+        }
         for m in from..periods {
             x_at_period_start.push(x);
-            v_at_period_start.push(v);
             let through_recorder = materialize
                 || !own_last_transition
                 || m == from
@@ -320,9 +339,6 @@ impl Tape {
                         x += dx;
                     }
                 }
-                if let Some(d) = dissipation.as_deref_mut() {
-                    d.push(self.dissipation);
-                }
                 continue;
             }
             for op in &self.ops {
@@ -334,19 +350,18 @@ impl Tape {
                     Op::Move { dx } => x += dx,
                     Op::Segment { t0, t1, motion } => {
                         if materialize {
+                            let motion = self.motions[motion];
                             segments.push(segment(m, period, t0, t1, motion, x));
                         }
                     }
                 }
-            }
-            if let Some(d) = dissipation.as_deref_mut() {
-                d.push(self.dissipation);
             }
         }
         let compact =
             (self.segments && self.mode == Replay::Compact && from < periods).then_some(Compact {
                 from,
                 ops: self.ops,
+                motions: self.motions,
             });
         (x, compact)
     }

@@ -10,7 +10,9 @@
 //!                          pulled mass   pulled mass   woodpecker   woodpecker
 //!                          linear        harmonic      linear       harmonic
 //! c8fb77c                  10,545        10,905        14,931       23,433
-//! now                       9,750        10,241        13,843       19,897
+//! perf (its branch)         9,750        10,241        13,843       19,897
+//! b33a971 (main, again)     9,780        10,438        13,913       20,318
+//! now                       9,346        10,044        13,418       19,798
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -31,6 +33,17 @@
 //! the 19 replayed periods are kept or next to a kept one), the run's four allocations with
 //! their frees (about 1,000), the two sign-change searches left (900), the two crossing
 //! searches and the one integrated period.
+//!
+//! Since b33a971: a tape step (`Op` of src/engine/replay.rs) holds a recorded segment's motion by
+//! index into a list of its own (empty when no segments are recorded), so a step is 40 bytes
+//! instead of one sized for an arc and the tape's 16 reserved steps fit the allocator's fast
+//! path (glibc's tcache, ≤ 1032 bytes); the replayed periods' start speeds and dissipations are
+//! appended at once. Fingerprints unchanged. What is left on the harmonic woodpecker: the
+//! replayed periods through the recorder (about 4,000: 13 × 6 events, each about 50
+//! instructions with its time, merge check, last transition and the kept event), the event
+//! list's allocation and free (72 events of 32 bytes, beyond the fast path, about 300), the
+//! driver's drop of the run it returned (about 360, in the count), the two sign-change
+//! searches (900) and the preparation and the one integrated period (the rest).
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
