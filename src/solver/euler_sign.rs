@@ -22,7 +22,7 @@
 //! Events: "slip" when v first leaves 0, then "reversal" at the end of every step where the
 //! sign of v differs from its last non-zero sign; all of them are counted in `Stats::events`.
 
-use super::moreau::step_count;
+use super::moreau::{step_count, step_grid};
 use super::surface::{absolute, SurfaceProblem, System};
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
@@ -56,13 +56,7 @@ pub fn solve_step(problem: &impl System, h: f64) -> Result<Solution> {
     let (mut u, mut w) = (0.0_f64, 0.0_f64);
     // Last non-zero sign of w (0 before the body first moves).
     let mut last_sign = 0.0_f64;
-    for k in 0..n {
-        let t0 = k as f64 * h;
-        let t1 = if k + 1 == n {
-            t_end
-        } else {
-            (k + 1) as f64 * h
-        };
+    for (t0, t1) in step_grid(n, h, t_end) {
         let hk = t1 - t0;
         let (d, n_f) = problem.forces(t0, u + v_s * t0);
         stats.rhs_evals += 1;

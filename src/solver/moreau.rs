@@ -64,8 +64,21 @@ impl Method for Moreau {
 }
 
 /// The uniform step grid of the fixed-step methods of this family (Moreau, Euler-sign, the
-/// implicit tanh method with a step): `n` steps of `h`, the last one shortened to end exactly
-/// on `t_end`; more than [`MAX_STEPS`] is refused.
+/// implicit tanh method with a step): the steps (t0, t1) (s) of `n` steps of `h`
+/// ([`step_count`]), the last one shortened to end exactly on `t_end`.
+pub(super) fn step_grid(n: u64, h: f64, t_end: f64) -> impl Iterator<Item = (f64, f64)> {
+    (0..n).map(move |k| {
+        let t1 = if k + 1 == n {
+            t_end
+        } else {
+            (k + 1) as f64 * h
+        };
+        (k as f64 * h, t1)
+    })
+}
+
+/// The number of steps of [`step_grid`]: `t_end / h` rounded up; more than [`MAX_STEPS`] is
+/// refused.
 pub(super) fn step_count(h: f64, t_end: f64) -> Result<u64> {
     if !(h.is_finite() && h > 0.0) {
         return Err(Error::InvalidParam {
@@ -115,13 +128,8 @@ pub fn solve_theta(problem: &impl System, h: f64, theta: f64) -> Result<Solution
     // force law per step.
     let (mut d0, mut n0) = problem.forces(0.0, 0.0);
     stats.rhs_evals += 1;
-    for k in 0..n {
-        let t1 = if k + 1 == n {
-            t_end
-        } else {
-            (k + 1) as f64 * h
-        };
-        let hk = t1 - k as f64 * h;
+    for (t0, t1) in step_grid(n, h, t_end) {
+        let hk = t1 - t0;
         // The predictor x* = x_k + h v_k, i.e. u* = u_k + h w_k.
         let (d1, n1) = problem.forces(t1, u + hk * w + v_s * t1);
         stats.rhs_evals += 1;

@@ -49,7 +49,7 @@
 use serde::Serialize;
 
 use super::dopri5::try_solve_smooth;
-use super::moreau::step_count;
+use super::moreau::{step_count, step_grid};
 use super::surface::{absolute, SurfaceProblem, System};
 use super::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 use crate::error::{Error, Result};
@@ -678,13 +678,7 @@ fn implicit_run<S: System>(
     match setting {
         Setting::Step(h) => {
             let n = step_count(h, t_end)?;
-            for k in 0..n {
-                let t0 = k as f64 * h;
-                let t1 = if k + 1 == n {
-                    t_end
-                } else {
-                    (k + 1) as f64 * h
-                };
+            for (t0, t1) in step_grid(n, h, t_end) {
                 let out = st.step(t0, y, f0, t1 - t0)?;
                 on_step(t0, t1 - t0, y, f0, out.y1, out.f1);
                 while let Some(&&ts) = next_sample.peek() {
