@@ -275,9 +275,15 @@ fn stop_points(problem: &Problem, samples: &[f64], max_cell: f64) -> Result<Vec<
         .collect();
     points.sort_by(f64::total_cmp);
     points.dedup();
+    subdivide(&points, max_cell)
+}
+
+/// The sorted `points` (s) with each gap from the previous one (from 0 for the first) cut
+/// into equal cells at most `max_cell` (s) long; points at or before 0 are dropped.
+fn subdivide(points: &[f64], max_cell: f64) -> Result<Vec<f64>> {
     let mut out = Vec::with_capacity(points.len());
     let mut prev = 0.0;
-    for &t in &points {
+    for &t in points {
         if t <= prev {
             continue;
         }
@@ -328,7 +334,8 @@ impl TanhAdaptive {
     }
 }
 
-/// Evenly spaced points ending at `t_end` (s), cells at most `max_cell` (s) long.
+/// Evenly spaced points ending at `t_end` (s), cells at most `max_cell` (s) long ([`subdivide`]
+/// of t_end alone: none for t_end = 0).
 fn grid_points(t_end: f64, max_cell: f64) -> Result<Vec<f64>> {
     if !(t_end.is_finite() && t_end >= 0.0) {
         return Err(Error::InvalidParam {
@@ -337,23 +344,7 @@ fn grid_points(t_end: f64, max_cell: f64) -> Result<Vec<f64>> {
             rule: "finite and >= 0 (s)".into(),
         });
     }
-    let cells = (t_end / max_cell).ceil().max(1.0);
-    if cells.is_nan() || cells > MAX_STEPS as f64 {
-        return Err(Error::Stalled {
-            t: 0.0,
-            reason: "tanh: too many checking points",
-        });
-    }
-    let cells = cells as u64;
-    Ok((1..=cells)
-        .map(|i| {
-            if i == cells {
-                t_end
-            } else {
-                t_end * i as f64 / cells as f64
-            }
-        })
-        .collect())
+    subdivide(&[t_end], max_cell)
 }
 
 /// The adaptive integration of `law` from rest relative to the surface at t = 0 through the
