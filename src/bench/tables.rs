@@ -130,19 +130,38 @@ pub fn reference_check(r: &BenchResults) -> (String, Table) {
         .rows
         .iter()
         .map(|c| {
-            row(
-                vec![
-                    c.problem.clone(),
-                    format!("{} · {}", c.events, c.events_mp),
-                    if c.same_pattern { "yes" } else { "no" }.to_string(),
-                    e2(c.max_event_err_s),
-                    e2(Some(c.x_end_err_m)),
-                ],
-                if c.same_pattern { "pass" } else { "fail" },
+            agreement_row(
+                &c.problem,
+                (c.events, c.events_mp),
+                c.same_pattern,
+                (c.max_event_err_s, Some(c.x_end_err_m)),
+                c.same_pattern,
             )
         })
         .collect();
     (note, table(&header, rows))
+}
+
+/// A row of a table comparing the exact references with another account of the same events:
+/// the problem, both event counts, whether the slips and sticks come in the same order, the
+/// largest event-time and end-position errors (s, m), and the row's verdict.
+fn agreement_row(
+    problem: &str,
+    (events, events_other): (usize, usize),
+    same_pattern: bool,
+    (event_err_s, x_end_err_m): (Option<f64>, Option<f64>),
+    pass: bool,
+) -> Row {
+    row(
+        vec![
+            problem.to_string(),
+            format!("{events} · {events_other}"),
+            if same_pattern { "yes" } else { "no" }.to_string(),
+            e2(event_err_s),
+            e2(x_end_err_m),
+        ],
+        if pass { "pass" } else { "fail" },
+    )
 }
 
 /// The exact references against the closed forms (the belt): a sentence and a table.
@@ -150,27 +169,24 @@ pub fn closed_form_check(r: &BenchResults) -> (String, Table) {
     let checked: Vec<_> = r
         .problems
         .iter()
-        .filter_map(|p| Some((p, p.closed_form_check.as_ref()?)))
+        .filter_map(|p| {
+            let c = p.closed_form_check.as_ref()?;
+            Some((p, c, c.agrees(p.t_end_s, p.exact.x_end_m.abs())))
+        })
         .collect();
     let rows: Vec<Row> = checked
         .iter()
-        .map(|(p, c)| {
-            let agrees = c.agrees(p.t_end_s, p.exact.x_end_m.abs());
-            row(
-                vec![
-                    p.title.clone(),
-                    format!("{} · {}", c.events_exact, c.events_closed_form),
-                    if c.same_pattern { "yes" } else { "no" }.to_string(),
-                    e2(c.max_event_err_s),
-                    e2(c.x_end_err_m),
-                ],
-                if agrees { "pass" } else { "fail" },
+        .map(|(p, c, agrees)| {
+            agreement_row(
+                &p.title,
+                (c.events_exact, c.events_closed_form),
+                c.same_pattern,
+                (c.max_event_err_s, c.x_end_err_m),
+                *agrees,
             )
         })
         .collect();
-    let all = checked
-        .iter()
-        .all(|(p, c)| c.agrees(p.t_end_s, p.exact.x_end_m.abs()));
+    let all = checked.iter().all(|(_, _, agrees)| *agrees);
     let note = match (checked.is_empty(), all) {
         (true, _) => String::new(),
         (false, true) => format!(
