@@ -12,7 +12,9 @@
 //! c8fb77c                  10,545        10,905        14,931       23,433
 //! perf (its branch)         9,750        10,241        13,843       19,897
 //! b33a971 (main, again)     9,780        10,438        13,913       20,318
-//! now                       9,346        10,044        13,418       19,798
+//! f1b6f71 (perf2)           9,346        10,044        13,418       19,798
+//! e97c72c (main, again)     9,328         9,867        13,392       19,431
+//! now                       7,792         8,486        10,740       17,106
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -38,12 +40,17 @@
 //! index into a list of its own (empty when no segments are recorded), so a step is 40 bytes
 //! instead of one sized for an arc and the tape's 16 reserved steps fit the allocator's fast
 //! path (glibc's tcache, ≤ 1032 bytes); the replayed periods' start speeds and dissipations are
-//! appended at once. Fingerprints unchanged. What is left on the harmonic woodpecker: the
-//! replayed periods through the recorder (about 4,000: 13 × 6 events, each about 50
-//! instructions with its time, merge check, last transition and the kept event), the event
-//! list's allocation and free (72 events of 32 bytes, beyond the fast path, about 300), the
-//! driver's drop of the run it returned (about 360, in the count), the two sign-change
-//! searches (900) and the preparation and the one integrated period (the rest).
+//! appended at once. Fingerprints unchanged.
+//!
+//! Since e97c72c: a replayed period no longer passes through the recorder where the recorder
+//! would only keep its events (no slip onset taken back, none within the merge tolerance of a
+//! stick before it, [`Recorder::apart`]): the kept periods' events are appended directly and
+//! the others only move x, instead of 13 periods × 6 events of about 50 instructions each on
+//! the harmonic woodpecker. Fingerprints unchanged. What is left there: the event list's
+//! allocation and free (72 events of 32 bytes, beyond the fast path, about 300), the driver's
+//! drop of the run it returned (about 360, in the count), the two sign-change searches (900),
+//! the kept events themselves (66 appended) and the preparation and the one integrated period
+//! (the rest).
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
@@ -257,6 +264,20 @@ impl Recorder {
             self.first_slip = None;
         }
         self.last_transition = None;
+    }
+
+    /// Whether a stick and a slip onset `gap` (s) after it are two events in every period
+    /// before `periods`: the merge tolerance of [`Recorder::push`] in the last of them, twice
+    /// over for the rounding of the absolute times.
+    pub(super) fn apart(&self, gap: f64, periods: u32) -> bool {
+        gap > 2.0 * self.snap * (1.0 + f64::from(periods))
+    }
+
+    /// Keeps `event` as it is: one that [`Recorder::push`] would neither merge nor drop
+    /// ([`Tape::replay`]'s periods whose events are known to be only kept).
+    #[inline(always)]
+    pub(super) fn keep(&mut self, event: Event) {
+        self.events.push(event);
     }
 
     #[inline(always)]
@@ -1102,6 +1123,68 @@ mod tests {
     use crate::models::woodpecker::{self, WoodpeckerParams};
     use crate::models::LawKind;
     use rand::{rngs::StdRng, Rng, SeedableRng};
+
+    /// A recorded period of length 1 s with the given steps (local times).
+    fn tape(steps: &[(f64, Option<EventKind>)]) -> Tape {
+        let mut tape = Tape::new(Replay::Compact, false);
+        tape.begin(StartState {
+            dir: 0,
+            v: 0,
+            accel_sign: 0,
+        });
+        for &(t, kind) in steps {
+            match kind {
+                Some(kind) => tape.event(t, kind, None, 0.0, ()),
+                None => tape.retract(t),
+            }
+        }
+        tape
+    }
+
+    /// The replay appends a period's events directly only where the recorder would keep them
+    /// as they come: not with a slip onset taken back, nor with a stick and a slip onset at one
+    /// instant in any period (the tolerance grows with the period's index), within the period
+    /// or across its end.
+    #[test]
+    fn replayed_events_skip_the_recorder_only_where_it_would_merge_or_retract_none() {
+        let rec = Recorder {
+            events: Vec::new(),
+            keep_from: 990,
+            period: 1.0,
+            snap: 8.0 * f64::EPSILON,
+            last_transition: None,
+            first_slip: None,
+            tape: Tape::new(Replay::Compact, false),
+        };
+        let (slip, stick, max) = (
+            Some(EventKind::Slip { dir: 1 }),
+            Some(EventKind::Stick { dir: 1 }),
+            Some(EventKind::SpeedMax),
+        );
+        // Two slip-stick cycles: the second slip onset `gap` after the first stick, the last
+        // stick at `end`.
+        let cycles = |gap: f64, end: f64| {
+            tape(&[
+                (0.0, slip),
+                (0.2, max),
+                (0.4, stick),
+                (0.4 + gap, slip),
+                (0.6, max),
+                (end, stick),
+            ])
+        };
+        let direct = |tape: &Tape, periods| tape.only_kept_events(&rec, 1.0, periods);
+        assert!(direct(&cycles(0.1, 0.8), 1000));
+        assert!(direct(&tape(&[(0.3, max)]), 1000));
+        // A stick and a slip onset 1e-13 s apart are one event from period 56 on (snap·57 >
+        // 1e-13); the check keeps a margin of two.
+        assert!(direct(&cycles(1e-13, 0.8), 20));
+        assert!(!direct(&cycles(1e-13, 0.8), 60));
+        assert!(!direct(&cycles(0.0, 0.8), 2));
+        // The last stick at the period's end and the next period's first slip onset.
+        assert!(!direct(&cycles(0.1, 1.0), 2));
+        assert!(!direct(&tape(&[(0.1, slip), (0.1, None), (0.3, slip)]), 2));
+    }
 
     /// `piece` prepared after `earlier`.
     fn prepared<'a>(
