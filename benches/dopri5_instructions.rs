@@ -88,6 +88,16 @@
 //! woodpecker      1e-10    5.5e-11 s   971,456    20,318 → 19,798     47.8× → 49.1×
 //! ```
 //!
+//! Measured again at engine50 (ours unchanged; the engine's replay appends the kept periods'
+//! events directly where the recorder would only keep them; engine/run from e97c72c, the main
+//! branch it started from, to engine50):
+//!
+//! ```text
+//!                 tol      error       ours/run   engine/run          ratio
+//! set B           3e-11    8.1e-11 s   711,334     9,867 → 8,486      72.1× → 83.8×
+//! woodpecker      1e-10    5.5e-11 s   971,557    19,431 → 17,106     50.0× → 56.8×
+//! ```
+//!
 //! The tolerance whose event-time error is at most 1e-10 s: 3e-11 on set B (1e-10 gives 3.6e-10
 //! s), 1e-10 on the woodpecker (1.5e-10 gives 1.5e-10 s). Ours takes the textbook's steps and
 //! about 1.1–1.2× its instructions per step (above), so a ratio against the textbook is lower
