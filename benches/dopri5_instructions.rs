@@ -94,8 +94,8 @@
 //!
 //! ```text
 //!                 tol      error       ours/run   engine/run          ratio
-//! set B           3e-11    8.1e-11 s   711,334     9,867 → 8,486      72.1× → 83.8×
-//! woodpecker      1e-10    5.5e-11 s   971,557    19,431 → 17,106     50.0× → 56.8×
+//! set B           3e-11    8.1e-11 s   711,334     9,867 → 8,424      72.1× → 84.4×
+//! woodpecker      1e-10    5.5e-11 s   971,557    19,431 → 16,953     50.0× → 57.3×
 //! ```
 //!
 //! The tolerance whose event-time error is at most 1e-10 s: 3e-11 on set B (1e-10 gives 3.6e-10

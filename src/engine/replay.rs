@@ -20,9 +20,9 @@
 //! onset and has no slip onset within the recorder's merge tolerance of a stick before it (it
 //! grows with the period's index), the recorder would only keep the events of its kept
 //! periods as they come: those are appended directly, and the other periods only move x (on
-//! the harmonic woodpecker 17,100 instructions per 20-period run instead of 19,400). Orbits whose start states differ (multi-period
-//! orbits, transients, a continuous slip whose v at the period start still changes in its last
-//! bits) are integrated period by period as before.
+//! the harmonic woodpecker 17,000 instructions per 20-period run instead of 19,400). Orbits
+//! whose start states differ (multi-period orbits, transients, a continuous slip whose v at the
+//! period start still changes in its last bits) are integrated period by period as before.
 //!
 //! The autonomous belt ([`super::autonomous`]) uses the same tape for its cycle: there the
 //! "period" runs from a slip onset to the next, its start state is the onset's (direction, x and
@@ -303,7 +303,7 @@ impl Tape {
             Op::Event { t, kind, .. } if kind != EventKind::SpeedMax => Some((t, kind)),
             _ => None,
         });
-        let Some((t_last, last)) = transitions.clone().last() else {
+        let Some((t_last, last)) = transitions.clone().next_back() else {
             return true;
         };
         let mut before = (t_last - period, last);

@@ -14,7 +14,7 @@
 //! b33a971 (main, again)     9,780        10,438        13,913       20,318
 //! f1b6f71 (perf2)           9,346        10,044        13,418       19,798
 //! e97c72c (main, again)     9,328         9,867        13,392       19,431
-//! now                       7,792         8,486        10,740       17,106
+//! now                       7,702         8,424        10,587       16,953
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
