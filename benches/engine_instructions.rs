@@ -90,9 +90,12 @@ fn integrate_repeatedly(body: &Body, law: &ForceLaw, runs: u32) -> Run {
 /// start of each period, continuing from `h`.
 fn fingerprint(h: u64, run: &Run) -> u64 {
     let events = run.events.iter().flat_map(|e| [e.t, e.x, e.v]);
-    let periods = run.x_at_period_start.iter().chain(&run.v_at_period_start);
+    let periods = run
+        .x_at_period_start
+        .iter()
+        .chain(run.v_at_period_start.iter());
     events
-        .chain(periods.copied())
+        .chain(periods)
         .fold(h, |h, x| (h ^ x.to_bits()).wrapping_mul(0x0100_0000_01b3))
 }
 

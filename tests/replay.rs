@@ -157,6 +157,73 @@ fn replayed_periods_are_bit_identical_to_full_integration_in_every_regime() {
     }
 }
 
+#[test]
+fn a_replay_of_1e5_periods_is_bit_identical_and_stores_a_bounded_amount() {
+    // x at the start of replayed periods is kept as exact steps of whole spacings within each
+    // binade of |x| (src/engine/series.rs): runs long enough to cross many binades, on sets of
+    // both models and both laws, compared value by value with full integration.
+    let mut rng = Rng(0x1e5_5eed);
+    let periods = 100_000;
+    let opts = RunOptions {
+        periods,
+        record_segments: false,
+        dissipation: true,
+    };
+    let mut replayed_runs = 0;
+    for i in 0..8 {
+        let law = [LawKind::Harmonic, LawKind::Linear][i % 2];
+        let (body, law_data) = if i < 4 {
+            let mu_s = rng.between(0.2, 1.0);
+            let base = PulledMassParams::default();
+            let p = PulledMassParams {
+                mu_s,
+                mu_d: mu_s * rng.between(0.5, 1.0),
+                force: 2.0 * mu_s * base.mass * base.g * rng.between(0.1, 0.3),
+                ..base
+            };
+            (pulled_mass::body(&p), pulled_mass::force_law(&p, law))
+        } else {
+            let mu_s = rng.between(0.2, 1.0);
+            let p = WoodpeckerParams {
+                mu_s,
+                mu_d: mu_s * rng.between(0.3, 1.0),
+                z0: rng.between(0.001, 0.012),
+                ..WoodpeckerParams::default()
+            };
+            (woodpecker::body(&p), woodpecker::force_law(&p, law))
+        };
+        let law_data = law_data.expect("force law");
+        let run = |replay| integrate_with(&body, &law_data, &opts, replay).expect("integration");
+        let (full, compact) = (run(Replay::Off), run(Replay::Compact));
+        let bits = |run: &Run| {
+            [
+                &run.x_at_period_start,
+                &run.v_at_period_start,
+                &run.dissipation,
+            ]
+            .map(|series| series.iter().map(f64::to_bits).collect::<Vec<_>>())
+        };
+        assert_eq!(bits(&full), bits(&compact), "set {i}: {law:?}");
+        assert_eq!(
+            format!("{:?} {:?}", full.events, analyse(&full)),
+            format!("{:?} {:?}", compact.events, analyse(&compact)),
+            "set {i}"
+        );
+        // A periodic orbit that moves on is replayed: x crosses binades, and little is stored.
+        let regime = analyse(&full).regime().id();
+        let stored = compact.x_at_period_start.stored();
+        eprintln!("set {i} {law:?}: {regime}, {stored} values stored");
+        if regime.ends_with("slip_stick") || regime == "no_slip" {
+            replayed_runs += 1;
+            assert!(
+                stored < 2_000,
+                "set {i}: {stored} of {periods} values stored"
+            );
+        }
+    }
+    assert!(replayed_runs >= 5, "only {replayed_runs} periodic runs");
+}
+
 /// (x, v, a) of a belt run at `samples`, written bit for bit.
 fn belt_states(run: &SurfaceRun, samples: &[f64]) -> String {
     let states: Vec<_> = samples.iter().map(|&t| run.state_at(t)).collect();

@@ -24,6 +24,7 @@ pub mod law;
 pub mod replay;
 pub mod roots;
 pub mod run;
+pub mod series;
 pub mod steady;
 
 pub use autonomous::{
@@ -33,4 +34,5 @@ pub use autonomous::{
 pub use law::{Affine, Basis, Body, ForceLaw, Piece};
 pub use replay::Replay;
 pub use run::{integrate, integrate_with, Event, EventKind, Run, RunOptions, Segment};
+pub use series::Series;
 pub use steady::{analyse, IntegrationRegime, OrbitKind, Steady};

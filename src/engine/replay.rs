@@ -24,6 +24,12 @@
 //! whose start states differ (multi-period orbits, transients, a continuous slip whose v at the
 //! period start still changes in its last bits) are integrated period by period as before.
 //!
+//! A stretch of at least [`SHORT`] replayed periods that only move x (not kept, and not next to
+//! a kept one where they go through the recorder) is not walked period by period: its positions
+//! are the same additions in the same order, taken as exact whole-spacing steps within each
+//! binade of |x| ([`Gap::push_periods`]), and its speeds and dissipations are one repeated value
+//! each ([`Stretch`]), so a run of 10⁶ periods stores and costs about what one of 10³ does.
+//!
 //! The autonomous belt ([`super::autonomous`]) uses the same tape for its cycle: there the
 //! "period" runs from a slip onset to the next, its start state is the onset's (direction, x and
 //! y = x − x_eq bit for bit), its times are local (from the onset) and its per-event extra is the
@@ -39,6 +45,7 @@
 //! from the tape's ops (`SurfaceCycle`, the cycle the run exposes).
 
 use super::run::{absolute_time, Event, EventKind, Motion, Recorder, Segment};
+use super::series::{Gap, Series, SHORT};
 
 /// What a run does with the periods of an orbit that repeats exactly ([`super::integrate_with`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -93,12 +100,12 @@ impl Compact {
     pub(super) fn first_ending_after(
         &self,
         periods: std::ops::Range<u32>,
-        x_at_period_start: &[f64],
+        x_at_period_start: &Series,
         period: f64,
         t: f64,
     ) -> Option<Segment> {
         for m in periods {
-            let mut x = x_at_period_start[m as usize];
+            let mut x = x_at_period_start.get(m as usize)?;
             for op in &self.ops {
                 match *op {
                     Op::Move { dx } => x += dx,
@@ -165,6 +172,73 @@ pub(super) struct Tape<S = StartState, M = Motion, E = (), P = f64> {
     complete: bool,
     /// The recorded period's total: friction dissipation (J) or the belt's ledger.
     dissipation: P,
+}
+
+/// A long stretch of replayed periods that go through no recorder and only move x, kept as
+/// pieces ([`Gap`]): x as exact steps, v and the dissipation as one repeated value each.
+pub(super) struct Stretch {
+    /// The first period of the stretch.
+    at: usize,
+    x: Gap,
+    v: f64,
+    dissipation: f64,
+}
+
+impl Stretch {
+    /// The stretch of `periods` from position `x` (m) of the recorded period `ops`, which start
+    /// at speed v and dissipate the recorded total; and x at its end. The same additions in the
+    /// same order as the replay's loop, in whole steps where exact. Out of line: only runs of
+    /// many periods come here, and the loop it is called from is hot in short ones.
+    #[cold]
+    #[inline(never)]
+    fn take(
+        ops: &[Op],
+        x: f64,
+        periods: std::ops::Range<u32>,
+        (v, dissipation): (f64, f64),
+    ) -> (f64, Stretch) {
+        let moves = ops.iter().filter_map(|op| match *op {
+            Op::Move { dx } => Some(dx),
+            _ => None,
+        });
+        let mut x_gap = Gap::default();
+        let end = x_gap.push_periods(x, moves, periods.len());
+        let stretch = Stretch {
+            at: periods.start as usize,
+            x: x_gap,
+            v,
+            dissipation,
+        };
+        (end, stretch)
+    }
+
+    /// The series of a run whose explicit values are `x`, `v` and `dissipation` (the latter
+    /// empty when not integrated), with the stretch, if any, between them.
+    pub(super) fn series(
+        stretch: Option<Stretch>,
+        [x, v, dissipation]: [Vec<f64>; 3],
+    ) -> [Series; 3] {
+        let Some(Stretch {
+            at,
+            x: x_gap,
+            v: v_value,
+            dissipation: d_value,
+        }) = stretch
+        else {
+            return [x, v, dissipation].map(Series::from);
+        };
+        let n = x_gap.len();
+        let d_series = if dissipation.is_empty() {
+            Series::from(dissipation)
+        } else {
+            Series::with_gap(dissipation, at, Gap::repeated(d_value, n))
+        };
+        [
+            Series::with_gap(x, at, x_gap),
+            Series::with_gap(v, at, Gap::repeated(v_value, n)),
+            d_series,
+        ]
+    }
 }
 
 /// The outputs of a run that replayed periods extend.
@@ -319,15 +393,16 @@ impl Tape {
     }
 
     /// Replays the recorded period for periods `from..periods` starting at position `x` (m),
-    /// through the recorder and into the outputs; returns the position at the end and, in
-    /// [`Replay::Compact`] mode, what rebuilds the replayed segments.
+    /// through the recorder and into the outputs; returns the position at the end, in
+    /// [`Replay::Compact`] mode what rebuilds the replayed segments, and the long stretch of
+    /// periods kept as pieces, if any (the outputs have no values for its periods).
     pub(super) fn replay(
         self,
         (from, periods, period): (u32, u32, f64),
         mut x: f64,
         rec: &mut Recorder,
         out: Outputs,
-    ) -> (f64, Option<Compact>) {
+    ) -> (f64, Option<Compact>, Option<Stretch>) {
         let materialize = self.segments && self.mode == Replay::Segments;
         let Outputs {
             x_at_period_start,
@@ -353,17 +428,43 @@ impl Tape {
             .ops
             .iter()
             .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
+        // When the recorder would only keep the kept periods' events, as they come, they are
+        // appended directly, and the other periods just move x.
+        let direct = !materialize && self.only_kept_events(rec, period, periods);
+        // The periods that only move x: with the direct path every period that is not kept;
+        // else those that are not the first replayed one and are not next to a kept one. When
+        // many, they are taken at once as a stretch of pieces.
+        let (first_kept, last_kept) = (rec.keeps_first(), rec.keeps_from());
+        let only_moving = if direct {
+            from.max(first_kept)..last_kept
+        } else if !materialize && own_last_transition {
+            from.saturating_add(1).max(first_kept + 1)..last_kept.saturating_sub(1)
+        } else {
+            0..0
+        };
+        let long = if only_moving.len() >= SHORT {
+            only_moving
+        } else {
+            periods..periods
+        };
         // Every replayed period starts at the recorded v and dissipates the recorded total.
-        let replayed = periods.saturating_sub(from) as usize;
-        v_at_period_start.resize(v_at_period_start.len() + replayed, v);
+        let explicit = periods.saturating_sub(from) as usize - long.len();
+        v_at_period_start.resize(v_at_period_start.len() + explicit, v);
         if let Some(d) = dissipation {
-            d.resize(d.len() + replayed, self.dissipation);
+            d.resize(d.len() + explicit, self.dissipation);
         }
-        if !materialize && self.only_kept_events(rec, period, periods) {
-            // The recorder would only keep the kept periods' events, as they come: they are
-            // appended directly, and the other periods just move x.
-            for m in from..periods {
-                x_at_period_start.push(x);
+        let mut stretch = None;
+        let mut m = from;
+        while m < periods {
+            if m == long.start {
+                let taken;
+                (x, taken) = Stretch::take(&self.ops, x, long.clone(), (v, self.dissipation));
+                stretch = Some(taken);
+                m = long.end;
+                continue;
+            }
+            x_at_period_start.push(x);
+            if direct {
                 let kept = rec.keeps(m);
                 let start = f64::from(m) * period;
                 for op in &self.ops {
@@ -379,17 +480,9 @@ impl Tape {
                         Op::Event { .. } | Op::Retract { .. } | Op::Segment { .. } => {}
                     }
                 }
+                m += 1;
+                continue;
             }
-            let compact = (self.segments && self.mode == Replay::Compact && from < periods)
-                .then_some(Compact {
-                    from,
-                    ops: self.ops,
-                    motions: self.motions,
-                });
-            return (x, compact);
-        }
-        for m in from..periods {
-            x_at_period_start.push(x);
             let through_recorder = materialize
                 || !own_last_transition
                 || m == from
@@ -402,6 +495,7 @@ impl Tape {
                         x += dx;
                     }
                 }
+                m += 1;
                 continue;
             }
             for op in &self.ops {
@@ -419,6 +513,7 @@ impl Tape {
                     }
                 }
             }
+            m += 1;
         }
         let compact =
             (self.segments && self.mode == Replay::Compact && from < periods).then_some(Compact {
@@ -426,6 +521,6 @@ impl Tape {
                 ops: self.ops,
                 motions: self.motions,
             });
-        (x, compact)
+        (x, compact, stretch)
     }
 }

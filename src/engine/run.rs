@@ -14,7 +14,8 @@
 //! b33a971 (main, again)     9,780        10,438        13,913       20,318
 //! f1b6f71 (perf2)           9,346        10,044        13,418       19,798
 //! e97c72c (main, again)     9,328         9,867        13,392       19,431
-//! now                       7,702         8,424        10,587       16,953
+//! engine50                  7,702         8,424        10,587       16,953
+//! now                       7,852         8,833        10,896       17,411
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -51,13 +52,20 @@
 //! drop of the run it returned (about 360, in the count), the two sign-change searches (900),
 //! the kept events themselves (66 appended) and the preparation and the one integrated period
 //! (the rest).
+//!
+//! Since engine50: the per-period values are [`Series`], whose long stretch of replayed periods
+//! that only move x is kept as exact steps ([`super::series`]), so that 10⁶ periods cost what 10³
+//! do. The 20-period runs take no such stretch (fewer than 64 periods); their counts above moved
+//! by 2–4 % with how the compiler inlines the root searches into the larger run (`UpCrossings::new`
+//! and a second `cos_level_crossings_dd` are now calls). Fingerprints unchanged.
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
-use super::replay::{Compact, Outputs, Replay, StartState, Tape};
+use super::replay::{Compact, Outputs, Replay, StartState, Stretch, Tape};
 use super::roots::{monotone_zero, Crossing, UpCrossings};
+use super::series::Series;
 use crate::error::{Error, Result};
 use crate::fmath;
 
@@ -155,11 +163,11 @@ pub struct Run {
     /// Events of the first and the last periods, in time order (see `KEEP_FIRST`, `KEEP_LAST`).
     pub events: Vec<Event>,
     /// Position (m) and velocity (m/s) at the start of each period and at the end (periods + 1).
-    pub x_at_period_start: Vec<f64>,
-    pub v_at_period_start: Vec<f64>,
+    pub x_at_period_start: Series,
+    pub v_at_period_start: Series,
     /// Friction dissipation ∫ μd N_f |v| dt in each period (J); empty unless asked for
     /// ([`RunOptions::dissipation`]).
-    pub dissipation: Vec<f64>,
+    pub dissipation: Series,
     /// Recorded segments (empty unless asked for); with [`Replay::Compact`], only up to the
     /// first replayed period ([`Run::state_at`] covers the rest).
     pub segments: Vec<Segment>,
@@ -246,6 +254,16 @@ pub(super) struct Recorder {
 impl Recorder {
     pub(super) fn keeps(&self, n: u32) -> bool {
         n < KEEP_FIRST || n >= self.keep_from
+    }
+
+    /// The periods `0..keeps_first()` are kept, and those from [`Self::keeps_from`] on.
+    pub(super) fn keeps_first(&self) -> u32 {
+        KEEP_FIRST
+    }
+
+    /// The first of the last kept periods.
+    pub(super) fn keeps_from(&self) -> u32 {
+        self.keep_from
     }
 
     /// Takes back a slip onset at absolute time `t` that led to no motion.
@@ -375,6 +393,7 @@ pub fn integrate_with(
     let mut dissipation = Vec::with_capacity(if opts.dissipation { cap } else { 0 });
     let mut segments = Vec::new();
     let mut compact = None;
+    let mut stretch = None;
     // The prepared pieces live on the stack when there are few of them (the models' laws have
     // at most `INLINE_PIECES`): a run then allocates only what it returns. Each is prepared in
     // its place (a prepared piece is a few hundred bytes), after the ones before it.
@@ -410,7 +429,7 @@ pub fn integrate_with(
                 dissipation: opts.dissipation.then_some(&mut dissipation),
                 segments: &mut segments,
             };
-            (state.x, compact) = tape.replay((n, periods, period), state.x, &mut rec, out);
+            (state.x, compact, stretch) = tape.replay((n, periods, period), state.x, &mut rec, out);
             break;
         }
         rec.tape.begin(state.start());
@@ -463,6 +482,8 @@ pub fn integrate_with(
         }
         rec.tape.end(body.mu_d * state.normal_work, state.start());
     }
+    let [mut x_at_period_start, mut v_at_period_start, dissipation] =
+        Stretch::series(stretch, [x_at_period_start, v_at_period_start, dissipation]);
     x_at_period_start.push(state.x);
     v_at_period_start.push(state.v);
     Ok(Run {

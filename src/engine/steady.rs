@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use super::run::{Event, EventKind, Run};
+use super::series::Series;
 
 /// Two event patterns match when their times agree to this fraction of the period.
 const PHASE_TOL: f64 = 1e-9;
@@ -207,7 +208,7 @@ pub fn analyse(run: &Run) -> Steady {
         steady.friction_power = Some(0.0);
         return steady;
     }
-    let moving_at_end = run.v_at_period_start.last().is_some_and(|&v| v != 0.0);
+    let moving_at_end = run.v_at_period_start.last().is_some_and(|v| v != 0.0);
     if slips + sticks == 0 && moving_at_end {
         steady.kind = OrbitKind::ContinuousSlip;
         steady.events.clear();
@@ -217,12 +218,15 @@ pub fn analyse(run: &Run) -> Steady {
     if let Some(n) = (1..=MAX_MULTIPLICITY).find(|&n| 2 * n <= big_n && repeats(run, n)) {
         let n_usize = n as usize;
         let xs = &run.x_at_period_start;
-        let advance = (xs[xs.len() - 1] - xs[xs.len() - 1 - n_usize]) / f64::from(n);
+        let k = xs.len() - 1;
+        let advance = (at(xs, k) - at(xs, k - n_usize)) / f64::from(n);
         steady.kind = OrbitKind::Periodic { multiplicity: n };
         steady.advance_per_period = Some(advance);
         steady.v_avg = Some(advance / run.period);
         if let Some(last) = run.dissipation.len().checked_sub(n_usize) {
-            let energy: f64 = run.dissipation[last..].iter().sum();
+            let energy: f64 = (last..run.dissipation.len())
+                .map(|i| at(&run.dissipation, i))
+                .sum();
             steady.friction_power = Some(energy / (f64::from(n) * run.period));
         }
     }
@@ -248,10 +252,16 @@ fn repeats(run: &Run, n: u32) -> bool {
     let xs = &run.x_at_period_start;
     let k = xs.len() - 1;
     let n = n as usize;
-    let (d_recent, d_before) = (xs[k] - xs[k - n], xs[k - n] - xs[k - 2 * n]);
+    let (d_recent, d_before) = (at(xs, k) - at(xs, k - n), at(xs, k - n) - at(xs, k - 2 * n));
     let vs = &run.v_at_period_start;
-    let v_scale = vs[k - 2 * n..].iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+    let v_scale = (k - 2 * n..=k).fold(0.0_f64, |m, i| m.max(at(vs, i).abs()));
     same_events
         && (d_recent - d_before).abs() <= PHASE_TOL * d_recent.abs().max(d_before.abs())
-        && (vs[k] - vs[k - n]).abs() <= PHASE_TOL * v_scale
+        && (at(vs, k) - at(vs, k - n)).abs() <= PHASE_TOL * v_scale
+}
+
+/// Value `i` of a run's per-period series, which has periods + 1 values (NaN past its end, which
+/// no comparison passes).
+fn at(series: &Series, i: usize) -> f64 {
+    series.get(i).unwrap_or(f64::NAN)
 }

@@ -316,11 +316,7 @@ fn linear_run(p: &WoodpeckerParams, n: u32) -> Result<Run> {
 /// shifted back by n periods, position measured from its value at the start of the period.
 fn period_samples(run: &Run, n: u32, (t0, t1): (f64, f64)) -> Vec<[f64; 4]> {
     let shift = f64::from(n) * run.period;
-    let x0 = run
-        .x_at_period_start
-        .get(n as usize)
-        .copied()
-        .unwrap_or(0.0);
+    let x0 = run.x_at_period_start.get(n as usize).unwrap_or(0.0);
     sample(run, shift + t0, shift + t1, SAMPLES)
         .into_iter()
         .map(|[t, x, v, a]| [t - shift, x - x0, v, a])

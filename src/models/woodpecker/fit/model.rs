@@ -87,12 +87,12 @@ pub fn track(p: &WoodpeckerParams, shift: f64, dt: &[f64]) -> Result<Track> {
     };
     let steady = run(TRANSIENT_PERIODS + 2)?;
     let sliding;
-    let (run, fold) = match steady_from(&steady) {
-        Some(from) => {
-            let k = TRANSIENT_PERIODS as usize;
-            let advance = steady.x_at_period_start[k + 1] - steady.x_at_period_start[k];
-            (&steady, Some((from, advance)))
-        }
+    // The steady run has TRANSIENT_PERIODS + 3 period starts: the advance of the last period.
+    let k = TRANSIENT_PERIODS as usize;
+    let xs = &steady.x_at_period_start;
+    let advance = xs.get(k + 1).zip(xs.get(k)).map(|(end, start)| end - start);
+    let (run, fold) = match steady_from(&steady).zip(advance) {
+        Some((from, advance)) => (&steady, Some((from, advance))),
         None => {
             let periods = ((start + span) / period).floor() + 1.0;
             if !periods.is_finite() || periods > f64::from(MAX_SLIDING_PERIODS) {
