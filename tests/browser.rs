@@ -13,7 +13,7 @@ use common::find;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use stickslip::handout::{self, pdf::HEADLESS_FLAGS};
+use stickslip::handout::{self, pdf, pdf::HEADLESS_FLAGS};
 use stickslip::lang::phrases::Translator;
 use stickslip::report::context::scene_tables;
 use stickslip::report::{builtin_scenes, render, write_all, Format, Scene};
@@ -125,24 +125,22 @@ fn every_page_renders_in_chromium_and_prints_to_pdf() {
                     let profile = dir.join(format!("profile-{page}-{i}"));
                     let url = format!("file://{}", dir.join(page).display());
                     let shot = dir.join(format!("{page}.png"));
+                    let pdf = dir.join(format!("{page}.pdf"));
+                    // One browser start writes both: the screenshot of the 1200-px window
+                    // and the print (whose layout follows the A4 sheet, not the window).
                     let out = chromium(
                         browser,
                         &profile,
                         &[
                             "--window-size=1200,1600".into(),
                             format!("--screenshot={}", shot.display()),
-                            url.clone(),
+                            format!("--print-to-pdf={}", pdf.display()),
+                            url,
                         ],
                     );
                     assert!(shot.exists(), "{page}: no screenshot: {out:?}");
                     let ink = ink_share(&shot);
                     assert!(ink > 0.01, "{page}: blank screenshot (ink {ink})");
-                    let pdf = dir.join(format!("{page}.pdf"));
-                    let out = chromium(
-                        browser,
-                        &profile,
-                        &[format!("--print-to-pdf={}", pdf.display()), url],
-                    );
                     assert!(pdf.exists(), "{page}: no PDF: {out:?}");
                     let pages = print_pages(pdfinfo, &pdf);
                     assert!(
@@ -287,9 +285,12 @@ fn no_page_references_the_network() {
     }
 }
 
-/// `stickslip handout SCENE --pdf` for every built-in scene and every scenario file, in English
-/// and Italian: exactly two A4 pages, page 2 filled, holding the scene's title and a result of
-/// its chain of formulas.
+/// Every handout of every built-in scene and every scenario file, in English and Italian,
+/// printed as `stickslip handout SCENE --pdf` prints it: exactly two A4 pages, page 2 filled,
+/// holding the scene's title and a result of its chain of formulas. Each thread prints its
+/// share with one browser ([`pdf::Printer`], the printer of `handout --pdf`, fed the HTML of
+/// [`handout::render`]); the first built-in scene and the first scenario file of each language
+/// in each thread also go through the command itself, whose PDF must hold the same text.
 #[test]
 fn every_handout_prints_to_exactly_two_a4_pages() {
     let Some((browser, pdftotext, pdfinfo)) = print_tools() else {
@@ -314,24 +315,52 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
         .iter()
         .flat_map(|&lang| scenes.iter().map(move |(arg, scene)| (lang, arg, scene)))
         .collect();
+    let text_of = |pdf: &Path| {
+        let text = Command::new(&pdftotext).arg(pdf).arg("-").output().unwrap();
+        let text = String::from_utf8_lossy(&text.stdout);
+        text.split_whitespace().collect::<Vec<_>>().join(" ")
+    };
     // Two browsers at a time on this 2-core machine.
     std::thread::scope(|scope| {
         for chunk in runs.chunks(runs.len().div_ceil(2)) {
-            let (browser, pdfinfo, pdftotext) = (&browser, &pdfinfo, &pdftotext);
+            let (browser, pdfinfo, text_of) = (&browser, &pdfinfo, &text_of);
             let dir = dir.path();
             scope.spawn(move || {
+                let mut printer = pdf::Printer::new(browser).unwrap();
+                // (language, scenario file or not) of the handouts the command has printed.
+                let mut by_command = Vec::new();
                 for &(lang, arg, scene) in chunk {
                     let out = dir.join(format!("{}-{}", scene.id, lang.code()));
-                    let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
-                        .args(["handout", arg, "--pdf", "--format", "md", "--lang"])
-                        .arg(lang.code())
-                        .arg("--out")
-                        .arg(&out)
-                        .env("STICKSLIP_CHROMIUM", browser)
-                        .output()
-                        .unwrap();
-                    assert!(run.status.success(), "{arg}: {run:?}");
+                    std::fs::create_dir_all(&out).unwrap();
+                    let words = Translator::new(lang).unwrap();
+                    let files = handout::render(scene, &[Format::Html], None, &words).unwrap();
+                    let name = format!("{}.html", scene.id);
+                    let html = files.iter().find(|f| f.path == Path::new(&name)).unwrap();
+                    let html = String::from_utf8(html.bytes.clone()).unwrap();
+                    let bytes = printer
+                        .print(&name, &html, handout::HANDOUT_PAGES)
+                        .unwrap_or_else(|e| panic!("{arg}: {e}"));
                     let pdf = out.join(format!("{}.pdf", scene.id));
+                    std::fs::write(&pdf, bytes).unwrap();
+                    let kind = (lang, arg.ends_with(".toml"));
+                    if !by_command.contains(&kind) {
+                        by_command.push(kind);
+                        let cli = out.join("command");
+                        let run = Command::new(env!("CARGO_BIN_EXE_stickslip"))
+                            .args(["handout", arg, "--pdf", "--format", "md", "--lang"])
+                            .arg(lang.code())
+                            .arg("--out")
+                            .arg(&cli)
+                            .env("STICKSLIP_CHROMIUM", browser)
+                            .output()
+                            .unwrap();
+                        assert!(run.status.success(), "{arg}: {run:?}");
+                        assert_eq!(
+                            text_of(&cli.join(format!("{}.pdf", scene.id))),
+                            text_of(&pdf),
+                            "{arg}: the command prints another handout"
+                        );
+                    }
                     let info = Command::new(pdfinfo).arg(&pdf).output().unwrap();
                     let info = String::from_utf8_lossy(&info.stdout);
                     let field = |name: &str| {
@@ -357,10 +386,7 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                         bottom >= 0.7,
                         "{arg}: page 2 ends {bottom:.2} down the sheet"
                     );
-                    let text = Command::new(pdftotext).arg(&pdf).arg("-").output().unwrap();
-                    let text = String::from_utf8_lossy(&text.stdout);
-                    let text = text.split_whitespace().collect::<Vec<_>>().join(" ");
-                    let words = Translator::new(lang).unwrap();
+                    let text = text_of(&pdf);
                     let title = words.text(&scene.title);
                     let title = title.split_whitespace().collect::<Vec<_>>().join(" ");
                     assert!(
@@ -373,6 +399,7 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                         "{arg}: result {result} not in the PDF"
                     );
                 }
+                printer.close();
             });
         }
     });

@@ -44,7 +44,7 @@ const TEMPLATES: &[(&str, &str)] = &[
 ];
 const HANDOUT_CSS: &str = include_str!("../../templates/handout.css");
 /// Pages of a printed handout, at most (for the time its print is allowed, [`pdf::print`]).
-const HANDOUT_PAGES: u32 = 4;
+pub const HANDOUT_PAGES: u32 = 4;
 
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
