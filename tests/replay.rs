@@ -35,6 +35,23 @@ impl Rng {
     }
 }
 
+/// A pulled-mass set: μs, μd/μs and F/(2 μs m g) drawn uniformly from the given ranges.
+fn pulled_mass_set(
+    rng: &mut Rng,
+    mu_s: (f64, f64),
+    mu_d_share: (f64, f64),
+    pull: (f64, f64),
+) -> PulledMassParams {
+    let mu_s = rng.between(mu_s.0, mu_s.1);
+    let base = PulledMassParams::default();
+    PulledMassParams {
+        mu_s,
+        mu_d: mu_s * rng.between(mu_d_share.0, mu_d_share.1),
+        force: 2.0 * mu_s * base.mass * base.g * rng.between(pull.0, pull.1),
+        ..base
+    }
+}
+
 /// Every output of a run, written so that two runs compare bit for bit (`{:?}` writes −0.0
 /// and every digit of an f64).
 fn outputs(run: &Run, samples: &[f64]) -> String {
@@ -102,15 +119,8 @@ fn replayed_periods_are_bit_identical_to_full_integration_in_every_regime() {
             LawKind::Linear
         };
         if i % 4 < 2 {
-            let mu_s = rng.between(0.05, 1.0);
-            let base = PulledMassParams::default();
             // F from below the threshold of any slip to beyond that of continuous slip.
-            let p = PulledMassParams {
-                mu_s,
-                mu_d: mu_s * rng.between(0.02, 1.0),
-                force: 2.0 * mu_s * base.mass * base.g * rng.between(0.3, 1.3),
-                ..base
-            };
+            let p = pulled_mass_set(&mut rng, (0.05, 1.0), (0.02, 1.0), (0.3, 1.3));
             let Ok(law_data) = pulled_mass::force_law(&p, law) else {
                 continue;
             };
@@ -173,14 +183,8 @@ fn a_replay_of_1e5_periods_is_bit_identical_and_stores_a_bounded_amount() {
     for i in 0..8 {
         let law = [LawKind::Harmonic, LawKind::Linear][i % 2];
         let (body, law_data) = if i < 4 {
-            let mu_s = rng.between(0.2, 1.0);
-            let base = PulledMassParams::default();
-            let p = PulledMassParams {
-                mu_s,
-                mu_d: mu_s * rng.between(0.5, 1.0),
-                force: 2.0 * mu_s * base.mass * base.g * rng.between(0.1, 0.3),
-                ..base
-            };
+            // Slip-stick: F well below the threshold of continuous slip.
+            let p = pulled_mass_set(&mut rng, (0.2, 1.0), (0.5, 1.0), (0.1, 0.3));
             (pulled_mass::body(&p), pulled_mass::force_law(&p, law))
         } else {
             let mu_s = rng.between(0.2, 1.0);
