@@ -2,7 +2,7 @@
 //! replayed periods of a long run cost no memory and little time, with every value the one
 //! full integration gives, bit for bit.
 //!
-//! Replayed periods repeat one start value (v, the dissipation: [`Series::push_repeated`]) or
+//! Replayed periods repeat one start value (v, the dissipation: [`Gap::repeated`]) or
 //! move x by the same displacements Δx₁ … Δx_k in the same order each period: x ← ((x + Δx₁) +
 //! Δx₂) + … Within one binade of |x| (spacing u = ulp), as long as every partial sum stays at
 //! least one u inside it and no Δx_i/u is a half-integer, each addition is exact rounding to a
