@@ -30,6 +30,8 @@
 //!     target/release/deps/dopri5_instructions-<hash> smooth 1e-8 200
 //! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*ours_repeatedly*' \
 //!     target/release/deps/dopri5_instructions-<hash> set-b 1e-8 200
+//! valgrind --tool=callgrind --toggle-collect='*dopri5_instructions*lean_repeatedly*' \
+//!     target/release/deps/dopri5_instructions-<hash> lean-woodpecker 1e-10 200
 //! target/release/deps/dopri5_instructions-<hash> fingerprint
 //! callgrind_annotate --inclusive=yes callgrind.out.<pid>
 //! ```
@@ -39,7 +41,9 @@
 //! machinery; no stops, so its steps differ slightly), `set-b` (ours on the stick-slip set B,
 //! harmonic law, 20 periods, 40 events: the stick checks at work), `woodpecker` (ours on the
 //! woodpecker's Fig. 15 set, harmonic law, 20 periods, 80 events; `set-b` and `woodpecker`
-//! print the largest event-time error against the exact engine) or `fingerprint` (bits of
+//! print the largest event-time error against the exact engine), `lean-set-b` and
+//! `lean-woodpecker` (the same two problems by a lean event-locating DOPRI5, [`Lean`]) or
+//! `fingerprint` (bits of
 //! dopri5's results on 6 problems × 11 tolerances, to check that a change keeps them); then
 //! the tolerance (default 1e-8) and the runs (default 200).
 //!
@@ -106,6 +110,26 @@
 //! s), 1e-10 on the woodpecker (1.5e-10 gives 1.5e-10 s). Ours takes the textbook's steps and
 //! about 1.1–1.2× its instructions per step (above), so a ratio against the textbook is lower
 //! by about that factor.
+//!
+//! That estimate was too kind to the engine. Measured against a lean event-locating DOPRI5
+//! ([`Lean`]: the textbook's steps with no stops at the period boundaries, a stick checked by
+//! two sign tests per step, the slip onset from rest solved by `acos` instead of sampled), at
+//! the same tolerances, collected in `lean_repeatedly` / 200 runs, engine/run of main at
+//! c426ece:
+//!
+//! ```text
+//!                 tol      error       lean/run   steps      engine/run   ratio
+//!                                                 acc.+rej.
+//! set B           3e-11    8.1e-11 s   482,153    480 + 0     8,833       54.6×
+//! woodpecker      1e-10    5.5e-11 s   677,524    601 + 20   17,411       38.9×
+//! ```
+//!
+//! The lean method takes fewer steps than ours (480 against 660 on set B, 621 against 802 on the
+//! woodpecker: ours ends a step at every period boundary) and no right-hand side while stuck
+//! (ours samples G at 4 points per T/16 there). Nearby tolerances do not meet 1e-10 s: on set
+//! B 5e-11 and 4e-11 give 1.02e-10 and 1.16e-10 s, on the woodpecker 1.2e-10 gives 1.08e-10 s.
+//! Without landing on the kinks of N_f (the woodpecker's F_e = 0) the lean method stalls at
+//! 5.9e-10 s (1591 steps at 3e-11 and 1683 at 1e-11, a quarter of them rejected).
 
 //! At e009c57 the stage states, y1, the error estimate and r5 of the interpolant are formed as the
 //! textbook forms them, y + h·Σ a_ij k_j: one product by h per sum instead of one per coefficient
@@ -169,7 +193,7 @@ use stickslip::models::LawKind;
 use stickslip::solver::dopri5::tableau::*;
 use stickslip::solver::dopri5::{try_solve_smooth, Dopri5};
 use stickslip::solver::exact::Exact;
-use stickslip::solver::{Method, Problem, Setting, Solution, Stats};
+use stickslip::solver::{Method, MethodEvent, Problem, Setting, Solution, Stats};
 
 /// Periods per run.
 const PERIODS: f64 = 20.0;
@@ -351,6 +375,367 @@ fn textbook_repeatedly(problem: &Problem, tol: f64, runs: u32) -> (State, Stats)
     last
 }
 
+/// A lean event-locating DOPRI5 for the stick/slip problem of a harmonic law, what a careful
+/// hand-written C program would do: D(t) = d0 + d1 cos ωt and N_f(t) = |n0 + n1 cos ωt| folded
+/// once (the woodpecker's N_f = 2λ|F_e| changes its formula where F_e changes sign; the pulled
+/// mass's never does); while slipping in direction s, y' = (v, (D − s μd N_f)/M), one cosine per
+/// evaluation; the textbook's steps (tableau, FSAL, error norm, controller, first step by
+/// Hairer's heuristic at each slip onset) with no stops at period boundaries; the stick located on v of the dense output (Hairer's
+/// `contd5`, formed only where a stick is found) by Illinois regula falsi, and a dip of s·v
+/// below zero inside a step looked for only where s·a goes from − to + across it (8 samples
+/// of the interpolant); steps land on the kinks of N_f (where the controller alone, stepping
+/// across them, stalls at event-time errors of 6e-10 s on the woodpecker: 1591 steps at 3e-11,
+/// 383 of them rejected); the slip onset from rest not integrated but solved on the law by
+/// `acos`. Its work per accepted step is the textbook's plus two sign tests, so the exact
+/// engine's ratio against it bounds from below its ratio against lean implementations of the
+/// same method.
+struct Lean {
+    omega: f64,
+    period: f64,
+    drive: [f64; 2],
+    normal: [f64; 2],
+    /// Times within the period (s) where N_f has a kink (the signed normal force's pieces change
+    /// sign).
+    kinks: Vec<f64>,
+    inv_mass: f64,
+    mu_s: f64,
+    mu_d: f64,
+}
+
+impl Lean {
+    /// The lean form of `problem`: a harmonic law whose pieces share their basis and drive
+    /// and whose normal forces are one affine function up to its sign.
+    fn new(problem: &Problem) -> Self {
+        let (piece, omega) = harmonic_piece(problem);
+        let shift = piece.basis.shift();
+        for other in &problem.law.pieces {
+            let same_up_to_sign = other.normal == piece.normal
+                || (other.normal.c0 == -piece.normal.c0 && other.normal.c1 == -piece.normal.c1);
+            assert!(
+                other.basis == piece.basis && other.drive == piece.drive && same_up_to_sign,
+                "one harmonic formula for the whole law"
+            );
+        }
+        let fold = |a: stickslip::engine::Affine| [a.c0 - a.c1 * shift, a.c1];
+        let pieces = &problem.law.pieces;
+        let kinks = (0..pieces.len())
+            .filter(|&i| pieces[i].normal != pieces[(i + pieces.len() - 1) % pieces.len()].normal)
+            .map(|i| pieces[i].start)
+            .collect();
+        Lean {
+            kinks,
+            omega,
+            period: problem.law.period,
+            drive: fold(piece.drive),
+            normal: fold(piece.normal),
+            inv_mass: 1.0 / problem.body.mass,
+            mu_s: problem.body.mu_s,
+            mu_d: problem.body.mu_d,
+        }
+    }
+
+    /// (D, N_f) at cos ωt = c (N).
+    fn forces(&self, c: f64) -> (f64, f64) {
+        (
+            self.drive[0] + self.drive[1] * c,
+            (self.normal[0] + self.normal[1] * c).abs(),
+        )
+    }
+
+    /// The first kink of N_f after t, or `t_end` if none comes before it.
+    fn next_stop(&self, t: f64, t_end: f64) -> f64 {
+        let after = t + 8.0 * f64::EPSILON * t.abs();
+        self.kinks
+            .iter()
+            .map(|&phase| {
+                let next = phase + ((after - phase) / self.period).ceil() * self.period;
+                if next <= after {
+                    next + self.period
+                } else {
+                    next
+                }
+            })
+            .fold(t_end, f64::min)
+    }
+
+    /// True while stuck at time t (|D| ≤ μs N_f).
+    fn holds(&self, t: f64) -> bool {
+        let (d, n) = self.forces((self.omega * t).cos());
+        d.abs() <= self.mu_s * n
+    }
+
+    /// The next time after t at which c0 + c1 cos ωt crosses 0 upwards (none where it never
+    /// changes sign).
+    fn up_crossing(&self, c: [f64; 2], t: f64) -> Option<f64> {
+        let r = -c[0] / c[1];
+        if r.is_nan() || r.abs() >= 1.0 {
+            return None;
+        }
+        let theta = r.acos();
+        let phase = if c[1] < 0.0 {
+            theta
+        } else {
+            std::f64::consts::TAU - theta
+        } / self.omega;
+        let mut t_up = phase + ((t - phase) / self.period).ceil() * self.period;
+        if t_up < t {
+            t_up += self.period;
+        }
+        Some(t_up)
+    }
+
+    /// The next slip onset at or after t and its direction s: t itself where s·D > μs N_f
+    /// already, else the earliest up-crossing of s·D − μs N_f = min(s·D − μs n, s·D + μs n)
+    /// (n the signed normal force), an up-crossing of one of the two where the other is
+    /// positive; one per period each, so the next period's are the same phases.
+    fn onset(&self, t: f64) -> Option<(f64, f64)> {
+        let (d, n, mu) = (self.drive, self.normal, self.mu_s);
+        let mut first: Option<(f64, f64)> = None;
+        for s in [1.0, -1.0] {
+            let g = |sigma: f64| [s * d[0] - sigma * mu * n[0], s * d[1] - sigma * mu * n[1]];
+            let at = |g: [f64; 2], t: f64| g[0] + g[1] * (self.omega * t).cos();
+            if at(g(1.0), t) > 0.0 && at(g(-1.0), t) > 0.0 {
+                return Some((t, s));
+            }
+            for sigma in [1.0, -1.0] {
+                if let Some(t_up) = self.up_crossing(g(sigma), t) {
+                    if at(g(-sigma), t_up) > 0.0 && first.is_none_or(|(t_first, _)| t_up < t_first)
+                    {
+                        first = Some((t_up, s));
+                    }
+                }
+            }
+        }
+        first
+    }
+
+    /// Integrates from rest at t = 0 to `t_end`; events into `events`; returns (x, v) at t_end.
+    fn solve(
+        &self,
+        t_end: f64,
+        tol: f64,
+        stats: &mut Stats,
+        events: &mut Vec<MethodEvent>,
+    ) -> State {
+        let (mut t, mut y) = (0.0, [0.0; 2]);
+        'stuck: loop {
+            let Some((t_slip, s)) = self.onset(t).filter(|&(t_slip, _)| t_slip < t_end) else {
+                return y;
+            };
+            events.push(MethodEvent {
+                t: t_slip,
+                kind: "slip",
+            });
+            let mut s = s;
+            t = t_slip;
+            'slip: loop {
+                let friction = s * self.mu_d;
+                let f = |t: f64, y: State| {
+                    let (d, n) = self.forces((self.omega * t).cos());
+                    [y[1], (d - friction * n) * self.inv_mass]
+                };
+                let mut k1 = f(t, y);
+                let span = t_end - t;
+                let (d0, d1) = (norm(y, [0.0; 2], y, tol), norm(k1, [0.0; 2], y, tol));
+                let h0 = if d0 < 1e-5 || d1 < 1e-5 {
+                    1e-6 * span
+                } else {
+                    (0.01 * d0 / d1).min(span)
+                };
+                let k2 = f(t + h0, [y[0] + h0 * k1[0], y[1] + h0 * k1[1]]);
+                let d2 = norm([k2[0] - k1[0], k2[1] - k1[1]], [0.0; 2], y, tol) / h0;
+                let h1 = if d1.max(d2) <= 1e-15 {
+                    (h0 * 1e-3).max(1e-6 * span)
+                } else {
+                    (0.01 / d1.max(d2)).powf(0.2)
+                };
+                let mut h_next = (100.0 * h0).min(h1).min(span);
+                stats.rhs_evals += 2;
+                let mut stop = self.next_stop(t, t_end);
+                while t_end - t > 8.0 * f64::EPSILON * t_end {
+                    if stop - t <= 8.0 * f64::EPSILON * t {
+                        stop = self.next_stop(t, t_end);
+                    }
+                    let mut h = h_next;
+                    let mut rejected_last = false;
+                    let (t1, y1, k) = loop {
+                        let last = t + 1.01 * h >= stop;
+                        if last {
+                            h = stop - t;
+                        }
+                        stats.steps += 1;
+                        let k2 = f(t + C2 * h, [y[0] + h * A21 * k1[0], y[1] + h * A21 * k1[1]]);
+                        let k3 = f(
+                            t + C3 * h,
+                            std::array::from_fn(|i| y[i] + h * (A31 * k1[i] + A32 * k2[i])),
+                        );
+                        let k4 = f(
+                            t + C4 * h,
+                            std::array::from_fn(|i| {
+                                y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
+                            }),
+                        );
+                        let k5 = f(
+                            t + C5 * h,
+                            std::array::from_fn(|i| {
+                                y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+                            }),
+                        );
+                        let t1 = if last { stop } else { t + h };
+                        let k6 = f(
+                            t1,
+                            std::array::from_fn(|i| {
+                                y[i] + h
+                                    * (A61 * k1[i]
+                                        + A62 * k2[i]
+                                        + A63 * k3[i]
+                                        + A64 * k4[i]
+                                        + A65 * k5[i])
+                            }),
+                        );
+                        let y1: State = std::array::from_fn(|i| {
+                            y[i] + h
+                                * (A71 * k1[i]
+                                    + A73 * k3[i]
+                                    + A74 * k4[i]
+                                    + A75 * k5[i]
+                                    + A76 * k6[i])
+                        });
+                        let k7 = f(t1, y1);
+                        stats.rhs_evals += 6;
+                        let e: State = std::array::from_fn(|i| {
+                            h * (E1 * k1[i]
+                                + E3 * k3[i]
+                                + E4 * k4[i]
+                                + E5 * k5[i]
+                                + E6 * k6[i]
+                                + E7 * k7[i])
+                        });
+                        let err = norm(e, y, y1, tol);
+                        let mut fac = (SAFETY * err.max(1e-300).powf(-0.2)).clamp(FAC_MIN, FAC_MAX);
+                        if err <= 1.0 {
+                            stats.accepted += 1;
+                            if rejected_last {
+                                fac = fac.min(1.0);
+                            }
+                            h_next = if last && h < h_next {
+                                h_next.max(h * fac)
+                            } else {
+                                h * fac
+                            };
+                            break (t1, y1, [k1, k3, k4, k5, k6, k7]);
+                        }
+                        stats.rejected += 1;
+                        rejected_last = true;
+                        h *= fac.min(1.0);
+                    };
+                    let h = t1 - t;
+                    // A stick at the step's end, or a dip of s·v below zero inside it.
+                    let dip = s * k[0][1] < 0.0 && s * k[5][1] > 0.0;
+                    if s * y1[1] <= 0.0 || dip {
+                        let dense = |i: usize| {
+                            let r2 = y1[i] - y[i];
+                            let r3 = h * k[0][i] - r2;
+                            let r4 = r2 - h * k[5][i] - r3;
+                            let r5 = h
+                                * (D1 * k[0][i]
+                                    + D3 * k[1][i]
+                                    + D4 * k[2][i]
+                                    + D5 * k[3][i]
+                                    + D6 * k[4][i]
+                                    + D7 * k[5][i]);
+                            let y0 = y[i];
+                            move |th: f64| {
+                                y0 + th * (r2 + (1.0 - th) * (r3 + th * (r4 + (1.0 - th) * r5)))
+                            }
+                        };
+                        let v = dense(1);
+                        let end = if s * y1[1] <= 0.0 {
+                            Some(1.0)
+                        } else {
+                            (1..8)
+                                .map(|j| f64::from(j) / 8.0)
+                                .find(|&th| s * v(th) <= 0.0)
+                        };
+                        if let Some(end) = end {
+                            let th = illinois(|th| s * v(th), 0.0, end, h, t);
+                            let t_stick = t + th * h;
+                            y = [dense(0)(th), 0.0];
+                            t = t_stick;
+                            if self.holds(t) {
+                                events.push(MethodEvent { t, kind: "stick" });
+                                continue 'stuck;
+                            }
+                            events.push(MethodEvent {
+                                t,
+                                kind: "reversal",
+                            });
+                            s = -s;
+                            continue 'slip;
+                        }
+                    }
+                    (t, y, k1) = (t1, y1, k[5]);
+                }
+                return y;
+            }
+        }
+    }
+}
+
+/// The root in (lo, hi] of g (g(lo) > 0 ≥ g(hi)) on θ ∈ [0, 1] of a step of length h from t, by
+/// Illinois regula falsi to within 2 ulps of the time t + θh.
+fn illinois(g: impl Fn(f64) -> f64, mut lo: f64, mut hi: f64, h: f64, t: f64) -> f64 {
+    let (mut g_lo, mut g_hi) = (g(lo), g(hi));
+    let width = 2.0 * f64::EPSILON * (t + h).abs() / h;
+    let mut side = 0;
+    for _ in 0..100 {
+        if hi - lo <= width || g_hi == 0.0 {
+            break;
+        }
+        let mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        let mid = if mid > lo && mid < hi {
+            mid
+        } else {
+            0.5 * (lo + hi)
+        };
+        let g_mid = g(mid);
+        if g_mid > 0.0 {
+            (lo, g_lo) = (mid, g_mid);
+            if side == -1 {
+                g_hi *= 0.5;
+            }
+            side = -1;
+        } else {
+            (hi, g_hi) = (mid, g_mid);
+            if side == 1 {
+                g_lo *= 0.5;
+            }
+            side = 1;
+        }
+    }
+    hi
+}
+
+/// `runs` integrations of `problem` by the lean DOPRI5 ([`Lean`]); the function callgrind
+/// collects in.
+#[inline(never)]
+fn lean_repeatedly(problem: &Problem, tol: f64, runs: u32) -> Solution {
+    let lean = Lean::new(problem);
+    let mut last = None;
+    for _ in 0..runs {
+        let mut stats = Stats::default();
+        let mut events = Vec::new();
+        let y = black_box(&lean).solve(
+            black_box(problem.t_end),
+            black_box(tol),
+            &mut stats,
+            &mut events,
+        );
+        last = Some(Solution::new(events, y[0], y[1], stats));
+    }
+    last.expect("at least one run")
+}
+
 /// FNV-1a over the bits of every event time, the final state and the work counters of `dopri5`
 /// on both models, both laws and the tolerances 1e-2 … 1e-12, printed per problem: a change
 /// meant to keep the method's results bit for bit is checked by comparing the output before
@@ -476,6 +861,16 @@ fn main() {
             let s = ours_repeatedly(&problem, tol, runs);
             println!(
                 "ours, {name}: {} events, max event-time error {}, x_end {:e} m, {:?}",
+                s.events.len(),
+                event_error(&s, &problem),
+                s.x_end,
+                s.stats
+            );
+        }
+        if mode.strip_prefix("lean-") == Some(name) {
+            let s = lean_repeatedly(&problem, tol, runs);
+            println!(
+                "lean, {name}: {} events, max event-time error {}, x_end {:e} m, {:?}",
                 s.events.len(),
                 event_error(&s, &problem),
                 s.x_end,

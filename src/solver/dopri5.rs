@@ -56,8 +56,8 @@ pub type State = [f64; 2];
 /// Most steps one integration may take before it is declared stalled.
 pub(crate) const MAX_STEPS: u64 = 10_000_000;
 
-/// The method's constants, shared with the textbook DOPRI5 of benches/dopri5_instructions.rs,
-/// which integrates with exactly these.
+/// The method's constants, shared with the textbook and lean DOPRI5s of
+/// benches/dopri5_instructions.rs, which integrate with exactly these.
 pub mod tableau {
     /// Step-size controller: safety factor and limits of the factor h_new/h.
     pub const SAFETY: f64 = 0.9;
@@ -97,16 +97,15 @@ pub mod tableau {
     pub const E5: f64 = -17253.0 / 339200.0;
     pub const E6: f64 = 22.0 / 525.0;
     pub const E7: f64 = -1.0 / 40.0;
+    // Dense output of order 4 (Hairer's `contd5`, Shampine 1986).
+    pub const D1: f64 = -12715105075.0 / 11282082432.0;
+    pub const D3: f64 = 87487479700.0 / 32700410799.0;
+    pub const D4: f64 = -10690763975.0 / 1880347072.0;
+    pub const D5: f64 = 701980252875.0 / 199316789632.0;
+    pub const D6: f64 = -1453857185.0 / 822651844.0;
+    pub const D7: f64 = 69997945.0 / 29380423.0;
 }
 use tableau::*;
-
-// Dense output of order 4 (Hairer's `contd5`, Shampine 1986).
-const D1: f64 = -12715105075.0 / 11282082432.0;
-const D3: f64 = 87487479700.0 / 32700410799.0;
-const D4: f64 = -10690763975.0 / 1880347072.0;
-const D5: f64 = 701980252875.0 / 199316789632.0;
-const D6: f64 = -1453857185.0 / 822651844.0;
-const D7: f64 = 69997945.0 / 29380423.0;
 
 /// Σ_j w_j k_j, component by component, summed from the first term: a combination of the
 /// stages with tableau weights. The two components are written out (with `array::from_fn`
