@@ -361,6 +361,138 @@ impl<S: Copy + PartialEq, M: Copy, E: Copy, P: Copy + Default> Tape<S, M, E, P> 
     }
 }
 
+/// At most this many moves and as many events of a recorded period are replayed from a
+/// [`Split`] (the models' periods have up to about ten of each).
+const SPLIT_MAX: usize = 16;
+
+/// The recorded period of the direct path (its events only kept, see
+/// [`Tape::only_kept_events`]) split into its moves and its events, each event with the number
+/// of moves before it: a kept period adds the moves in order, as the loop over the steps does,
+/// and appends its events at once; any other period only adds the moves.
+struct Split {
+    moves: [f64; SPLIT_MAX],
+    n_moves: usize,
+    events: [SplitEvent; SPLIT_MAX],
+    n_events: usize,
+    /// x (m) after 0, 1, … of the moves of the current period.
+    at: [f64; SPLIT_MAX + 1],
+}
+
+/// An event of a [`Split`]: local time t (s), kind, offset dx (m) from the position after the
+/// first `after` moves, and speed v (m/s).
+#[derive(Clone, Copy)]
+struct SplitEvent {
+    t: f64,
+    dx: Option<f64>,
+    v: f64,
+    kind: EventKind,
+    after: u8,
+}
+
+impl Split {
+    const EMPTY: Split = Split {
+        moves: [0.0; SPLIT_MAX],
+        n_moves: 0,
+        events: [SplitEvent {
+            t: 0.0,
+            dx: None,
+            v: 0.0,
+            // All bits zero (no copy of a constant to start from).
+            kind: EventKind::Slip { dir: 0 },
+            after: 0,
+        }; SPLIT_MAX],
+        n_events: 0,
+        at: [0.0; SPLIT_MAX + 1],
+    };
+
+    /// Splits `ops` into this (empty) split; false when they have more than [`SPLIT_MAX`]
+    /// moves or events.
+    fn fill(&mut self, ops: &[Op]) -> bool {
+        for op in ops {
+            match *op {
+                Op::Move { dx } => {
+                    let Some(place) = self.moves.get_mut(self.n_moves) else {
+                        return false;
+                    };
+                    *place = dx;
+                    self.n_moves += 1;
+                }
+                Op::Event { t, kind, dx, v, .. } => {
+                    let Some(place) = self.events.get_mut(self.n_events) else {
+                        return false;
+                    };
+                    *place = SplitEvent {
+                        t,
+                        dx,
+                        v,
+                        kind,
+                        after: self.n_moves as u8,
+                    };
+                    self.n_events += 1;
+                }
+                Op::Retract { .. } | Op::Segment { .. } => {}
+            }
+        }
+        true
+    }
+
+    /// Replays `periods` (of length `period`, s) from `x` (m): their starts appended to
+    /// `x_at_period_start`, the kept ones' events to the recorder's; x after them. Out of line,
+    /// so that the loops are compiled for this alone.
+    #[inline(never)]
+    fn replay(
+        &mut self,
+        mut x: f64,
+        periods: std::ops::Range<u32>,
+        period: f64,
+        rec: &mut Recorder,
+        x_at_period_start: &mut Vec<f64>,
+    ) -> f64 {
+        for m in periods {
+            x_at_period_start.push(x);
+            x = if rec.keeps(m) {
+                self.kept_period(x, m, period, rec)
+            } else {
+                self.moved(x)
+            };
+        }
+        x
+    }
+
+    /// x (m) after a period from `x` that is not kept: the moves in order.
+    #[inline(always)]
+    fn moved(&self, mut x: f64) -> f64 {
+        for dx in &self.moves[..self.n_moves] {
+            x += dx;
+        }
+        x
+    }
+
+    /// Period `m` (of length `period`, s) from `x` (m), kept: its events appended to the
+    /// recorder's at once, each at the position the moves before it reach; x after it.
+    #[inline(always)]
+    fn kept_period(&mut self, mut x: f64, m: u32, period: f64, rec: &mut Recorder) -> f64 {
+        self.at[0] = x;
+        for (dx, at) in self.moves[..self.n_moves].iter().zip(&mut self.at[1..]) {
+            x += dx;
+            *at = x;
+        }
+        let start = f64::from(m) * period;
+        let at = &self.at;
+        rec.keep_all(self.events[..self.n_events].iter().map(|e| {
+            let x = at[usize::from(e.after)];
+            Event {
+                t: start + e.t,
+                period: m,
+                kind: e.kind,
+                x: e.dx.map_or(x, |dx| x + dx),
+                v: e.v,
+            }
+        }));
+        x
+    }
+}
+
 impl Tape {
     /// Whether the recorder, fed the recorded period's events in every period up to `periods`
     /// (s, of length `period`), would do no more than keep those of the kept periods: the
@@ -454,6 +586,9 @@ impl Tape {
             d.resize(d.len() + explicit, self.dissipation);
         }
         let mut stretch = None;
+        // The direct path's period split into its moves and its events, where they fit.
+        let mut split = Split::EMPTY;
+        let mut split = (direct && split.fill(&self.ops)).then_some(&mut split);
         let mut m = from;
         while m < periods {
             if m == long.start {
@@ -461,6 +596,12 @@ impl Tape {
                 (x, taken) = Stretch::take(&self.ops, x, long.clone(), (v, self.dissipation));
                 stretch = Some(taken);
                 m = long.end;
+                continue;
+            }
+            if let Some(split) = &mut split {
+                let end = if long.start > m { long.start } else { periods };
+                x = split.replay(x, m..end, period, rec, x_at_period_start);
+                m = end;
                 continue;
             }
             x_at_period_start.push(x);
