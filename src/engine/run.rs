@@ -707,8 +707,9 @@ struct PreparedPiece<'a> {
     accel: [SignChanges; 2],
     /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
     /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
-    /// of the acceleration: the same in every period, where a slide evaluates its arc.
-    known: KnownAngles,
+    /// of the acceleration: the same in every period, where a slide evaluates its arc. None on
+    /// a linear basis (not set up: it is a few hundred bytes).
+    known: Option<KnownAngles>,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -801,7 +802,7 @@ impl PreparedPiece<'_> {
             onsets: [None, None],
             slope: [slope(1.0), slope(-1.0)],
             accel,
-            known: KnownAngles::new(),
+            known: None,
         });
         for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
             *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
@@ -810,6 +811,7 @@ impl PreparedPiece<'_> {
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
         if let Basis::Cos { omega, .. } = piece.basis {
+            let known = prepared.known.insert(KnownAngles::new());
             let roots = prepared.onsets.iter().flat_map(|onsets| match onsets {
                 Some((crossings, _)) => crossings.crossings(),
                 None => [None, None],
@@ -824,7 +826,7 @@ impl PreparedPiece<'_> {
             for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
                 for t_c in starts.into_iter().flatten() {
                     if t_c.hi < end {
-                        prepared.known.push_between(omega, t_c, end);
+                        known.push_between(omega, t_c, end);
                     }
                 }
             }
@@ -1040,7 +1042,7 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
-    let known = &prepared.known;
+    let known = prepared.known.as_ref();
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
