@@ -298,13 +298,6 @@ impl Recorder {
         self.events.push(event);
     }
 
-    /// Keeps `events` as they are, as [`Recorder::keep`] does: an iterator of known length (a
-    /// period's events mapped from a slice) is appended with one check of the capacity.
-    #[inline(always)]
-    pub(super) fn keep_all(&mut self, events: impl IntoIterator<Item = Event>) {
-        self.events.extend(events);
-    }
-
     #[inline(always)]
     pub(super) fn push(&mut self, n: u32, t_local: f64, kind: EventKind, x: f64, v: f64) {
         let t = f64::from(n) * self.period + t_local;
