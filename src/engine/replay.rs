@@ -700,9 +700,12 @@ mod tests {
             .map(|e| (e.t, e.after, e.dx))
             .collect();
         assert_eq!(after, [(0.1, 0, None), (0.2, 2, Some(0.05))]);
-        let many = vec![Op::Move { dx: 0.1 }; SPLIT_MAX + 1];
-        assert!(!Split::EMPTY.fill(&many));
-        let many = vec![event(0.1, None); SPLIT_MAX + 1];
-        assert!(!Split::EMPTY.fill(&many));
+        for many in [
+            vec![Op::Move { dx: 0.1 }; SPLIT_MAX + 1],
+            vec![event(0.1, None); SPLIT_MAX + 1],
+        ] {
+            let mut split = Split::EMPTY;
+            assert!(!split.fill(&many));
+        }
     }
 }
