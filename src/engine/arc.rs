@@ -132,8 +132,8 @@ pub trait ArcMotion: Copy {
     /// (worked out once for the times a run meets in every period, see run.rs): then from it,
     /// with the bits of sin and cos. The seed is the last half angle whose sin and cos were
     /// evaluated or known, not one reached by addition, so that the additions' rounding does not
-    /// accumulate along a search.
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &KnownAngles) -> Point;
+    /// accumulate along a search. A linear arc has no angles (`None`).
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: Option<&KnownAngles>) -> Point;
 
     /// [`ArcMotion::at_near`] at an iterate of a root search or at the root it ends on: where
     /// δ/2 turned by at most [`SHORT_TURN_MAX`] from the half angle of an earlier iterate
@@ -247,7 +247,12 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>, _known: &KnownAngles) -> Point {
+    fn at_near(
+        &self,
+        t: f64,
+        _seed: &mut Option<HalfAngle>,
+        _known: Option<&KnownAngles>,
+    ) -> Point {
         self.at(t)
     }
 
@@ -432,9 +437,9 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &KnownAngles) -> Point {
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: Option<&KnownAngles>) -> Point {
         let w = self.w(t);
-        self.at_kernels(w, Kernels::near(self.omega * w, seed, Some(known)))
+        self.at_kernels(w, Kernels::near(self.omega * w, seed, known))
     }
 
     #[inline(always)]
@@ -547,7 +552,12 @@ impl Arc {
 
     /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
-    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: &KnownAngles) -> Point {
+    pub fn at_near(
+        &self,
+        t: f64,
+        seed: &mut Option<HalfAngle>,
+        known: Option<&KnownAngles>,
+    ) -> Point {
         either!(self, arc => arc.at_near(t, seed, known))
     }
 
@@ -1043,7 +1053,10 @@ mod tests {
         let mut seed = None;
         let times = [0.0944, 0.0893, 0.08887, 0.088_871_2, 0.088_871_136, 0.03];
         for t in times {
-            let (near, direct) = (arc.at_near(t, &mut seed, &KnownAngles::new()), arc.at(t));
+            let (near, direct) = (
+                arc.at_near(t, &mut seed, Some(&KnownAngles::new())),
+                arc.at(t),
+            );
             let scale = |d: f64| 8.0 * f64::EPSILON * d.abs().max(1.0);
             assert!((near.v - direct.v).abs() <= scale(direct.v), "v at {t}");
             assert!((near.a - direct.a).abs() <= scale(direct.a), "a at {t}");
@@ -1055,7 +1068,7 @@ mod tests {
         }
         // The last step (δ/2 moves by about 1.1) is evaluated afresh.
         assert_eq!(
-            arc.at_near(0.03, &mut seed, &KnownAngles::new()),
+            arc.at_near(0.03, &mut seed, Some(&KnownAngles::new())),
             arc.at(0.03)
         );
         // As a root search's iterates: the 4th and 5th turn by less than SHORT_TURN_MAX from the

@@ -15,7 +15,9 @@
 //! f1b6f71 (perf2)           9,346        10,044        13,418       19,798
 //! e97c72c (main, again)     9,328         9,867        13,392       19,431
 //! engine50                  7,702         8,424        10,587       16,953
-//! now                       7,852         8,833        10,896       17,411
+//! c426ece (main)            7,852         8,833        10,896       17,411
+//! c426ece (again, linear)   7,846         8,717        10,884       17,181
+//! c9e0e1a (linear)          6,829         8,182         9,371       15,927
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -58,6 +60,26 @@
 //! do. The 20-period runs take no such stretch (fewer than 64 periods); their counts above moved
 //! by 2–4 % with how the compiler inlines the root searches into the larger run (`UpCrossings::new`
 //! and a second `cos_level_crossings_dd` are now calls). Fingerprints unchanged.
+//!
+//! Since c426ece (branch linear): the replayed periods of the direct path are taken from the
+//! recorded period split once into its moves and its events ([`super::replay`]'s `Split`):
+//! a period that is not kept adds its moves in a loop of its own, a kept one adds them and
+//! pushes each event as it passes it, in one function out of line for the whole stretch
+//! (before, a loop over the steps inside this large function dispatched on each step's kind,
+//! about 11 instructions a step and 30 an event, with the run's state spilled); a piece's
+//! known half angles (440 bytes cleared per piece, about 42 instructions) are set up only on a
+//! cos basis. Fingerprints unchanged. On the harmonic woodpecker that is 7 % less, so that the
+//! run is within 16,300 instructions (50 × a lean DOPRI5 at the worst per-step overhead); the
+//! linear laws' runs are 6,829 and 9,371 (341 and 469 per period). Tried and dropped:
+//! appending a kept period's events with `Vec::extend` from a slice mapped to events (one
+//! call out of line per kept period; better on the woodpecker by 90, worse on the pulled mass
+//! by 340–410), the same split inside this function (the loop over the steps' cost again, from
+//! spills), and `Option<KnownAngles>` set in the struct literal (the prepared piece was then
+//! built aside and copied into place, 600 bytes twice per piece). What is left on the
+//! harmonic woodpecker: the replay (about 3,200: 66 kept events at about 30 each, the 19
+//! periods' moves and starts), the run's four allocations and frees (about 700, the event
+//! list's beyond glibc's fast path), the searches prepared per run (sign changes 400, slip
+//! onsets 500, their arccosines and divisions 550, 7 libm calls) and the one integrated period.
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
@@ -700,8 +722,9 @@ struct PreparedPiece<'a> {
     accel: [SignChanges; 2],
     /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
     /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
-    /// of the acceleration: the same in every period, where a slide evaluates its arc.
-    known: KnownAngles,
+    /// of the acceleration: the same in every period, where a slide evaluates its arc. None on
+    /// a linear basis (not set up: it is a few hundred bytes).
+    known: Option<KnownAngles>,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -794,7 +817,7 @@ impl PreparedPiece<'_> {
             onsets: [None, None],
             slope: [slope(1.0), slope(-1.0)],
             accel,
-            known: KnownAngles::new(),
+            known: None,
         });
         for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
             *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
@@ -803,6 +826,7 @@ impl PreparedPiece<'_> {
         // direction. The most used first (a full list drops the rest): from the piece's start
         // and from the located onsets to the end of the piece, then to the zeros of a.
         if let Basis::Cos { omega, .. } = piece.basis {
+            let known = prepared.known.insert(KnownAngles::new());
             let roots = prepared.onsets.iter().flat_map(|onsets| match onsets {
                 Some((crossings, _)) => crossings.crossings(),
                 None => [None, None],
@@ -817,7 +841,7 @@ impl PreparedPiece<'_> {
             for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
                 for t_c in starts.into_iter().flatten() {
                     if t_c.hi < end {
-                        prepared.known.push_between(omega, t_c, end);
+                        known.push_between(omega, t_c, end);
                     }
                 }
             }
@@ -1033,7 +1057,7 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
-    let known = &prepared.known;
+    let known = prepared.known.as_ref();
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
