@@ -124,6 +124,11 @@
 //! woodpecker      1e-10    5.5e-11 s   677,524    601 + 20   17,411       38.9×
 //! ```
 //!
+//! After the engine work of branch linear (src/engine/run.rs, the replay's kept periods split
+//! into moves and events; lean/run measured again, unchanged to 30 instructions): set B 482,163
+//! / 8,182 = **58.9×**, woodpecker 677,494 / 15,927 = **42.5×**. The issue's 50× holds on set B;
+//! on the woodpecker it needs about 13,550 instructions per run.
+//!
 //! The lean method takes fewer steps than ours (480 against 660 on set B, 621 against 802 on the
 //! woodpecker: ours ends a step at every period boundary) and no right-hand side while stuck
 //! (ours samples G at 4 points per T/16 there). Nearby tolerances do not meet 1e-10 s: on set
