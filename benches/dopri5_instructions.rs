@@ -125,9 +125,11 @@
 //! ```
 //!
 //! After the engine work of branch linear (src/engine/run.rs, the replay's kept periods split
-//! into moves and events; lean/run measured again, unchanged to 30 instructions): set B 482,163
-//! / 8,182 = **58.9×**, woodpecker 677,494 / 15,927 = **42.5×**. The issue's 50× holds on set B;
-//! on the woodpecker it needs about 13,550 instructions per run.
+//! into moves and events) and with the lean and textbook methods sharing their steps
+//! ([`first_step`], [`accepted_step`]; the same results, the textbook's instructions per step
+//! unchanged at 894, 979 and 880): set B 481,158 / 8,182 = **58.8×**, woodpecker 676,058 / 15,927
+//! = **42.4×**. The issue's 50× holds on set B; on the woodpecker it needs about 13,520
+//! instructions per run.
 //!
 //! The lean method takes fewer steps than ours (480 against 660 on set B, 621 against 802 on the
 //! woodpecker: ours ends a step at every period boundary) and no right-hand side while stuck
@@ -251,8 +253,28 @@ fn textbook(
     let t_end = *stops.last().expect("a stop");
     let (mut t, mut y) = (t0, y0);
     let mut k1 = f(t, y);
-    // First step (HNW I, II.4).
-    let span = t_end - t0;
+    let mut h_next = first_step(&f, t, y, k1, t_end - t0, tol, stats);
+    for &stop in stops {
+        while stop - t > 8.0 * f64::EPSILON * t.abs().max(stop.abs()) {
+            let (_, t1, y1, k) = accepted_step(&f, (t, y, k1), stop, tol, &mut h_next, stats);
+            (t, y, k1) = (t1, y1, k[5]);
+        }
+    }
+    y
+}
+
+/// The first step from (t, y) with k1 = f(t, y) over `span` (s) (Hairer, Nørsett & Wanner I,
+/// II.4).
+#[inline(always)]
+fn first_step(
+    f: &impl Fn(f64, State) -> State,
+    t: f64,
+    y: State,
+    k1: State,
+    span: f64,
+    tol: f64,
+    stats: &mut Stats,
+) -> f64 {
     let (d0, d1) = (norm(y, [0.0; 2], y, tol), norm(k1, [0.0; 2], y, tol));
     let h0 = if d0 < 1e-5 || d1 < 1e-5 {
         1e-6 * span
@@ -266,76 +288,79 @@ fn textbook(
     } else {
         (0.01 / d1.max(d2)).powf(0.2)
     };
-    let mut h_next = (100.0 * h0).min(h1).min(span);
     stats.rhs_evals += 2;
-    for &stop in stops {
-        while stop - t > 8.0 * f64::EPSILON * t.abs().max(stop.abs()) {
-            let mut h = h_next;
-            let mut rejected_last = false;
-            loop {
-                let last = t + 1.01 * h >= stop;
-                if last {
-                    h = stop - t;
-                }
-                stats.steps += 1;
-                let k2 = f(t + C2 * h, [y[0] + h * A21 * k1[0], y[1] + h * A21 * k1[1]]);
-                let k3 = f(
-                    t + C3 * h,
-                    std::array::from_fn(|i| y[i] + h * (A31 * k1[i] + A32 * k2[i])),
-                );
-                let k4 = f(
-                    t + C4 * h,
-                    std::array::from_fn(|i| y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])),
-                );
-                let k5 = f(
-                    t + C5 * h,
-                    std::array::from_fn(|i| {
-                        y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
-                    }),
-                );
-                let t1 = if last { stop } else { t + h };
-                let k6 = f(
-                    t1,
-                    std::array::from_fn(|i| {
-                        y[i] + h
-                            * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
-                    }),
-                );
-                let y1: State = std::array::from_fn(|i| {
-                    y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i])
-                });
-                let k7 = f(t1, y1);
-                stats.rhs_evals += 6;
-                let e: State = std::array::from_fn(|i| {
-                    h * (E1 * k1[i]
-                        + E3 * k3[i]
-                        + E4 * k4[i]
-                        + E5 * k5[i]
-                        + E6 * k6[i]
-                        + E7 * k7[i])
-                });
-                let err = norm(e, y, y1, tol);
-                let mut fac = (SAFETY * err.max(1e-300).powf(-0.2)).clamp(FAC_MIN, FAC_MAX);
-                if err <= 1.0 {
-                    stats.accepted += 1;
-                    if rejected_last {
-                        fac = fac.min(1.0);
-                    }
-                    h_next = if last && h < h_next {
-                        h_next.max(h * fac)
-                    } else {
-                        h * fac
-                    };
-                    (t, y, k1) = (t1, y1, k7);
-                    break;
-                }
-                stats.rejected += 1;
-                rejected_last = true;
-                h *= fac.min(1.0);
-            }
+    (100.0 * h0).min(h1).min(span)
+}
+
+/// One accepted step from (t, y) with k1 = f(t, y) towards `stop`, landing on it when within 1 %
+/// of it, trying `h_next` first and shrinking it after each rejection; sets `h_next` for the
+/// next step. Returns the step's length h, its end t1 and y1 there, and the stages k1, k3 … k7
+/// (for the dense output; k7 = f(t1, y1) is the next step's k1).
+#[inline(always)]
+fn accepted_step(
+    f: &impl Fn(f64, State) -> State,
+    (t, y, k1): (f64, State, State),
+    stop: f64,
+    tol: f64,
+    h_next: &mut f64,
+    stats: &mut Stats,
+) -> (f64, f64, State, [State; 6]) {
+    let mut h = *h_next;
+    let mut rejected_last = false;
+    loop {
+        let last = t + 1.01 * h >= stop;
+        if last {
+            h = stop - t;
         }
+        stats.steps += 1;
+        let k2 = f(t + C2 * h, [y[0] + h * A21 * k1[0], y[1] + h * A21 * k1[1]]);
+        let k3 = f(
+            t + C3 * h,
+            std::array::from_fn(|i| y[i] + h * (A31 * k1[i] + A32 * k2[i])),
+        );
+        let k4 = f(
+            t + C4 * h,
+            std::array::from_fn(|i| y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])),
+        );
+        let k5 = f(
+            t + C5 * h,
+            std::array::from_fn(|i| {
+                y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
+            }),
+        );
+        let t1 = if last { stop } else { t + h };
+        let k6 = f(
+            t1,
+            std::array::from_fn(|i| {
+                y[i] + h * (A61 * k1[i] + A62 * k2[i] + A63 * k3[i] + A64 * k4[i] + A65 * k5[i])
+            }),
+        );
+        let y1: State = std::array::from_fn(|i| {
+            y[i] + h * (A71 * k1[i] + A73 * k3[i] + A74 * k4[i] + A75 * k5[i] + A76 * k6[i])
+        });
+        let k7 = f(t1, y1);
+        stats.rhs_evals += 6;
+        let e: State = std::array::from_fn(|i| {
+            h * (E1 * k1[i] + E3 * k3[i] + E4 * k4[i] + E5 * k5[i] + E6 * k6[i] + E7 * k7[i])
+        });
+        let err = norm(e, y, y1, tol);
+        let mut fac = (SAFETY * err.max(1e-300).powf(-0.2)).clamp(FAC_MIN, FAC_MAX);
+        if err <= 1.0 {
+            stats.accepted += 1;
+            if rejected_last {
+                fac = fac.min(1.0);
+            }
+            *h_next = if last && h < *h_next {
+                h_next.max(h * fac)
+            } else {
+                h * fac
+            };
+            return (h, t1, y1, [k1, k3, k4, k5, k6, k7]);
+        }
+        stats.rejected += 1;
+        rejected_last = true;
+        h *= fac.min(1.0);
     }
-    y
 }
 
 /// The single piece of the harmonic law of `problem`, with its ω (rad/s).
@@ -540,101 +565,14 @@ impl Lean {
                     [y[1], (d - friction * n) * self.inv_mass]
                 };
                 let mut k1 = f(t, y);
-                let span = t_end - t;
-                let (d0, d1) = (norm(y, [0.0; 2], y, tol), norm(k1, [0.0; 2], y, tol));
-                let h0 = if d0 < 1e-5 || d1 < 1e-5 {
-                    1e-6 * span
-                } else {
-                    (0.01 * d0 / d1).min(span)
-                };
-                let k2 = f(t + h0, [y[0] + h0 * k1[0], y[1] + h0 * k1[1]]);
-                let d2 = norm([k2[0] - k1[0], k2[1] - k1[1]], [0.0; 2], y, tol) / h0;
-                let h1 = if d1.max(d2) <= 1e-15 {
-                    (h0 * 1e-3).max(1e-6 * span)
-                } else {
-                    (0.01 / d1.max(d2)).powf(0.2)
-                };
-                let mut h_next = (100.0 * h0).min(h1).min(span);
-                stats.rhs_evals += 2;
+                let mut h_next = first_step(&f, t, y, k1, t_end - t, tol, stats);
                 let mut stop = self.next_stop(t, t_end);
                 while t_end - t > 8.0 * f64::EPSILON * t_end {
                     if stop - t <= 8.0 * f64::EPSILON * t {
                         stop = self.next_stop(t, t_end);
                     }
-                    let mut h = h_next;
-                    let mut rejected_last = false;
-                    let (t1, y1, k) = loop {
-                        let last = t + 1.01 * h >= stop;
-                        if last {
-                            h = stop - t;
-                        }
-                        stats.steps += 1;
-                        let k2 = f(t + C2 * h, [y[0] + h * A21 * k1[0], y[1] + h * A21 * k1[1]]);
-                        let k3 = f(
-                            t + C3 * h,
-                            std::array::from_fn(|i| y[i] + h * (A31 * k1[i] + A32 * k2[i])),
-                        );
-                        let k4 = f(
-                            t + C4 * h,
-                            std::array::from_fn(|i| {
-                                y[i] + h * (A41 * k1[i] + A42 * k2[i] + A43 * k3[i])
-                            }),
-                        );
-                        let k5 = f(
-                            t + C5 * h,
-                            std::array::from_fn(|i| {
-                                y[i] + h * (A51 * k1[i] + A52 * k2[i] + A53 * k3[i] + A54 * k4[i])
-                            }),
-                        );
-                        let t1 = if last { stop } else { t + h };
-                        let k6 = f(
-                            t1,
-                            std::array::from_fn(|i| {
-                                y[i] + h
-                                    * (A61 * k1[i]
-                                        + A62 * k2[i]
-                                        + A63 * k3[i]
-                                        + A64 * k4[i]
-                                        + A65 * k5[i])
-                            }),
-                        );
-                        let y1: State = std::array::from_fn(|i| {
-                            y[i] + h
-                                * (A71 * k1[i]
-                                    + A73 * k3[i]
-                                    + A74 * k4[i]
-                                    + A75 * k5[i]
-                                    + A76 * k6[i])
-                        });
-                        let k7 = f(t1, y1);
-                        stats.rhs_evals += 6;
-                        let e: State = std::array::from_fn(|i| {
-                            h * (E1 * k1[i]
-                                + E3 * k3[i]
-                                + E4 * k4[i]
-                                + E5 * k5[i]
-                                + E6 * k6[i]
-                                + E7 * k7[i])
-                        });
-                        let err = norm(e, y, y1, tol);
-                        let mut fac = (SAFETY * err.max(1e-300).powf(-0.2)).clamp(FAC_MIN, FAC_MAX);
-                        if err <= 1.0 {
-                            stats.accepted += 1;
-                            if rejected_last {
-                                fac = fac.min(1.0);
-                            }
-                            h_next = if last && h < h_next {
-                                h_next.max(h * fac)
-                            } else {
-                                h * fac
-                            };
-                            break (t1, y1, [k1, k3, k4, k5, k6, k7]);
-                        }
-                        stats.rejected += 1;
-                        rejected_last = true;
-                        h *= fac.min(1.0);
-                    };
-                    let h = t1 - t;
+                    let (h, t1, y1, k) =
+                        accepted_step(&f, (t, y, k1), stop, tol, &mut h_next, stats);
                     // A stick at the step's end, or a dip of s·v below zero inside it.
                     let dip = s * k[0][1] < 0.0 && s * k[5][1] > 0.0;
                     if s * y1[1] <= 0.0 || dip {
