@@ -68,10 +68,9 @@
 //! (before, a loop over the steps inside this large function dispatched on each step's kind,
 //! about 11 instructions a step and 30 an event, with the run's state spilled); a piece's
 //! known half angles (440 bytes cleared per piece, about 42 instructions) are set up only on a
-//! cos basis. Fingerprints unchanged. On the harmonic woodpecker that is 7 % less: 42.4× the
-//! instructions of a lean event-locating DOPRI5 measured on the same run (`Lean` of
-//! benches/dopri5_instructions.rs; 50× would need about 13,520); the linear laws' runs are
-//! 6,829 and 9,371 (341 and 469 per period). Tried and dropped:
+//! cos basis. Fingerprints unchanged. Harmonic woodpecker 7 % less: 42.4× a lean DOPRI5's
+//! instructions (`Lean`, benches/dopri5_instructions.rs; 50× needs about 13,520); the linear
+//! laws' runs are 6,829 and 9,371 (341 and 469 per period). Tried and dropped:
 //! appending a kept period's events with `Vec::extend` from a slice mapped to events (one
 //! call out of line per kept period; better on the woodpecker by 90, worse on the pulled mass
 //! by 340–410), the same split inside this function (the loop over the steps' cost again, from
