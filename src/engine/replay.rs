@@ -369,37 +369,34 @@ const SPLIT_MAX: usize = 16;
 /// The recorded period of the direct path (its events only kept, see
 /// [`Tape::only_kept_events`]) split into its moves and its events, each event with the number
 /// of moves before it: a kept period adds the moves in order, as the loop over the steps does,
-/// and appends each event as it passes it; any other period only adds the moves.
+/// and appends its events, each at the position the moves before it reach; any other period
+/// only adds the moves.
 struct Split {
     moves: [f64; SPLIT_MAX],
     n_moves: usize,
-    events: [SplitEvent; SPLIT_MAX],
+    /// The events as a kept period appends them before placing them: local time t (s),
+    /// period 0, and for x the offset (m) from the position the moves before it reach (0 for
+    /// an event at that position: 0 + x is x bit for bit, x being a sum that starts from +0
+    /// and so never −0).
+    events: [Event; SPLIT_MAX],
+    /// The number of moves before each event.
+    after: [u8; SPLIT_MAX],
     n_events: usize,
-}
-
-/// An event of a [`Split`]: local time t (s), kind, offset dx (m) from the position after the
-/// first `after` moves, and speed v (m/s).
-#[derive(Clone, Copy)]
-struct SplitEvent {
-    t: f64,
-    dx: Option<f64>,
-    v: f64,
-    kind: EventKind,
-    after: u8,
 }
 
 impl Split {
     const EMPTY: Split = Split {
         moves: [0.0; SPLIT_MAX],
         n_moves: 0,
-        events: [SplitEvent {
+        events: [Event {
             t: 0.0,
-            dx: None,
-            v: 0.0,
+            period: 0,
             // All bits zero (no copy of a constant to start from).
             kind: EventKind::Slip { dir: 0 },
-            after: 0,
+            x: 0.0,
+            v: 0.0,
         }; SPLIT_MAX],
+        after: [0; SPLIT_MAX],
         n_events: 0,
     };
 
@@ -419,13 +416,14 @@ impl Split {
                     let Some(place) = self.events.get_mut(self.n_events) else {
                         return false;
                     };
-                    *place = SplitEvent {
+                    *place = Event {
                         t,
-                        dx,
-                        v,
+                        period: 0,
                         kind,
-                        after: self.n_moves as u8,
+                        x: dx.unwrap_or(0.0),
+                        v,
                     };
+                    self.after[self.n_events] = self.n_moves as u8;
                     self.n_events += 1;
                 }
                 Op::Retract { .. } | Op::Segment { .. } => {}
@@ -446,10 +444,12 @@ impl Split {
         rec: &mut Recorder,
         x_at_period_start: &mut Vec<f64>,
     ) -> f64 {
+        // The positions of a kept period after each number of moves (from none).
+        let mut positions = [0.0; SPLIT_MAX + 1];
         for m in periods {
             x_at_period_start.push(x);
             x = if rec.keeps(m) {
-                self.kept_period(x, m, period, rec)
+                self.kept_period(x, m, period, &mut positions, &mut rec.events)
             } else {
                 self.moved(x)
             };
@@ -466,30 +466,34 @@ impl Split {
         x
     }
 
-    /// Period `m` (of length `period`, s) from `x` (m), kept: the moves in order, and each
-    /// event appended to the recorder's at the position the moves before it reach; x after it.
+    /// Period `m` (of length `period`, s) from `x` (m), kept: the positions after each move in
+    /// order, and the events appended to `events`, each placed at the position the moves
+    /// before it reach (t₀ + t and x + Δx, the recorder's sums with their operands swapped);
+    /// x after it.
     #[inline(always)]
-    fn kept_period(&self, mut x: f64, m: u32, period: f64, rec: &mut Recorder) -> f64 {
+    fn kept_period(
+        &self,
+        x: f64,
+        m: u32,
+        period: f64,
+        positions: &mut [f64; SPLIT_MAX + 1],
+        events: &mut Vec<Event>,
+    ) -> f64 {
+        positions[0] = x;
+        let mut at = x;
+        for (place, dx) in positions[1..].iter_mut().zip(&self.moves[..self.n_moves]) {
+            at += dx;
+            *place = at;
+        }
         let start = f64::from(m) * period;
-        let moves = &self.moves[..self.n_moves];
-        let mut k = 0;
-        for e in &self.events[..self.n_events] {
-            while k < usize::from(e.after) {
-                x += moves[k];
-                k += 1;
-            }
-            rec.keep(Event {
-                t: start + e.t,
-                period: m,
-                kind: e.kind,
-                x: e.dx.map_or(x, |dx| x + dx),
-                v: e.v,
-            });
+        let first = events.len();
+        events.extend_from_slice(&self.events[..self.n_events]);
+        for (e, &after) in events[first..].iter_mut().zip(&self.after) {
+            e.t += start;
+            e.period = m;
+            e.x += positions[usize::from(after)];
         }
-        for dx in &moves[k..] {
-            x += dx;
-        }
-        x
+        at
     }
 }
 
@@ -561,8 +565,11 @@ impl Tape {
             .iter()
             .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
         // When the recorder would only keep the kept periods' events, as they come, they are
-        // appended directly, and the other periods just move x.
-        let direct = !materialize && self.only_kept_events(rec, period, periods);
+        // appended directly from the period split into its moves and its events (where they
+        // fit: more go through the recorder), and the other periods just move x.
+        let mut split = Split::EMPTY;
+        let direct =
+            !materialize && self.only_kept_events(rec, period, periods) && split.fill(&self.ops);
         // The periods that only move x: with the direct path every period that is not kept;
         // else those that are not the first replayed one and are not next to a kept one. When
         // many, they are taken at once as a stretch of pieces.
@@ -586,9 +593,6 @@ impl Tape {
             d.resize(d.len() + explicit, self.dissipation);
         }
         let mut stretch = None;
-        // The direct path's period split into its moves and its events, where they fit.
-        let mut split = Split::EMPTY;
-        let split = (direct && split.fill(&self.ops)).then_some(&split);
         let mut m = from;
         while m < periods {
             if m == long.start {
@@ -598,32 +602,13 @@ impl Tape {
                 m = long.end;
                 continue;
             }
-            if let Some(split) = split {
+            if direct {
                 let end = if long.start > m { long.start } else { periods };
                 x = split.replay(x, m..end, period, rec, x_at_period_start);
                 m = end;
                 continue;
             }
             x_at_period_start.push(x);
-            if direct {
-                let kept = rec.keeps(m);
-                let start = f64::from(m) * period;
-                for op in &self.ops {
-                    match *op {
-                        Op::Event { t, kind, dx, v, .. } if kept => rec.keep(Event {
-                            t: start + t,
-                            period: m,
-                            kind,
-                            x: dx.map_or(x, |dx| x + dx),
-                            v,
-                        }),
-                        Op::Move { dx } => x += dx,
-                        Op::Event { .. } | Op::Retract { .. } | Op::Segment { .. } => {}
-                    }
-                }
-                m += 1;
-                continue;
-            }
             let through_recorder = materialize
                 || !own_last_transition
                 || m == from
@@ -671,7 +656,7 @@ mod tests {
     use super::*;
 
     /// A split holds the moves in order and each event with the number of moves before it; a
-    /// period of more steps than it holds is not split (the loop over the steps replays it).
+    /// period of more steps than it holds is not split (its periods go through the recorder).
     #[test]
     fn a_split_keeps_the_order_of_the_moves_and_events() {
         let event = |t: f64, dx: Option<f64>| Op::Event {
@@ -695,11 +680,10 @@ mod tests {
             split.moved(x).to_bits(),
             (((x + 0.1) + 0.2) + 0.3).to_bits()
         );
-        let after: Vec<_> = split.events[..split.n_events]
-            .iter()
-            .map(|e| (e.t, e.after, e.dx))
+        let after: Vec<_> = (0..split.n_events)
+            .map(|i| (split.events[i].t, split.after[i], split.events[i].x))
             .collect();
-        assert_eq!(after, [(0.1, 0, None), (0.2, 2, Some(0.05))]);
+        assert_eq!(after, [(0.1, 0, 0.0), (0.2, 2, 0.05)]);
         for many in [
             vec![Op::Move { dx: 0.1 }; SPLIT_MAX + 1],
             vec![event(0.1, None); SPLIT_MAX + 1],

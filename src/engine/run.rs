@@ -262,7 +262,7 @@ pub fn sample(run: &Run, t0: f64, t1: f64, n: usize) -> Vec<[f64; 4]> {
 
 /// Keeps the events that are needed and merges a stick and a slip at the same instant.
 pub(super) struct Recorder {
-    events: Vec<Event>,
+    pub(super) events: Vec<Event>,
     /// The first of the last `KEEP_LAST` periods (0 for fewer periods).
     keep_from: u32,
     period: f64,
@@ -311,13 +311,6 @@ impl Recorder {
     /// over for the rounding of the absolute times.
     pub(super) fn apart(&self, gap: f64, periods: u32) -> bool {
         gap > 2.0 * self.snap * (1.0 + f64::from(periods))
-    }
-
-    /// Keeps `event` as it is: one that [`Recorder::push`] would neither merge nor drop
-    /// ([`Tape::replay`]'s periods whose events are known to be only kept).
-    #[inline(always)]
-    pub(super) fn keep(&mut self, event: Event) {
-        self.events.push(event);
     }
 
     #[inline(always)]
