@@ -78,8 +78,8 @@ enum Link {
     #[cfg(unix)]
     Pipe(File),
     /// Writes only: the socket's clone in the reader thread reads (Chromium sends no pings, so
-    /// that one writes nothing before the connection ends).
-    WebSocket(WebSocket<TcpStream>),
+    /// that one writes nothing before the connection ends). Boxed: one per session, 264 bytes.
+    WebSocket(Box<WebSocket<TcpStream>>),
 }
 
 impl Link {
@@ -292,7 +292,11 @@ impl Session {
                 Err(_) => return None,
             }
         });
-        let link = Link::WebSocket(WebSocket::from_raw_socket(writer, Role::Client, None));
+        let link = Link::WebSocket(Box::new(WebSocket::from_raw_socket(
+            writer,
+            Role::Client,
+            None,
+        )));
         Ok((link, messages))
     }
 

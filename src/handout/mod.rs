@@ -26,7 +26,6 @@ use crate::report::render::{
 use crate::report::{builtin_scenes, Format, OutFile, Scene};
 use physics::Note;
 
-#[cfg(unix)]
 pub mod cdp;
 mod layout;
 pub mod pdf;
