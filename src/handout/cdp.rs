@@ -44,8 +44,8 @@ pub const STALL: Duration = Duration::from_secs(60);
 /// Bytes of PDF asked for per `IO.read` (its answer is about 1.4 MB of base64: one WebSocket
 /// message, well under tungstenite's default limit of 64 MiB per message).
 const CHUNK: u32 = 1 << 20;
-/// How often the profile folder is looked at for `DevToolsActivePort` while the browser starts.
-const PORT_POLL: Duration = Duration::from_millis(20);
+/// How often a starting browser's `DevToolsActivePort`, or a quitting one's status, is looked at.
+const POLL: Duration = Duration::from_millis(20);
 /// Time a browser that closed its end of the connection is given to exit before it is killed.
 const EXIT_GRACE: Duration = Duration::from_secs(2);
 /// The file in the profile folder where the browser writes its port and WebSocket path.
@@ -267,7 +267,7 @@ impl Session {
                     STALL.as_secs()
                 ));
             }
-            std::thread::sleep(PORT_POLL);
+            std::thread::sleep(POLL);
         };
         let url = format!("ws://127.0.0.1:{port}{path}");
         let failed = |e: &dyn std::fmt::Display| format!("{url}: {e}");
@@ -318,7 +318,7 @@ impl Session {
         loop {
             match self.child.try_wait() {
                 Ok(Some(status)) => return format!("the browser quit ({status})"),
-                Ok(None) if started.elapsed() < EXIT_GRACE => std::thread::sleep(PORT_POLL),
+                Ok(None) if started.elapsed() < EXIT_GRACE => std::thread::sleep(POLL),
                 Ok(None) => {
                     let _ = self.child.kill();
                     let _ = self.child.wait();
