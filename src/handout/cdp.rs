@@ -511,7 +511,7 @@ mod tests {
     }
 
     #[test]
-    fn a_browser_killed_mid_session_is_an_error_not_a_hang() {
+    fn a_browser_killed_mid_session_is_an_error_not_a_hang_and_the_next_one_prints() {
         let browser = crate::handout::pdf::locate().expect("Chromium for the PDF tests");
         let dir = tempfile::tempdir().unwrap();
         let flags = crate::handout::pdf::session_flags();
@@ -526,6 +526,13 @@ mod tests {
                 .print(&page(dir.path(), "b.html", "two"))
                 .unwrap_err();
             assert!(err.contains("quit"), "{transport:?}: {err}");
+            drop(session);
+            // The next browser on the same profile is not misled by the killed one's port file.
+            let log = File::create(dir.path().join(format!("{transport:?}-2.log"))).unwrap();
+            let mut session = Session::start(&browser, &flags, &profile, log, transport).unwrap();
+            let pdf = session.print(&page(dir.path(), "c.html", "three")).unwrap();
+            assert!(pdf.starts_with(b"%PDF"), "{transport:?}");
+            session.close();
         }
     }
 }
