@@ -257,9 +257,7 @@ impl Session {
                 break (port, path.to_string());
             }
             if let Ok(Some(status)) = child.try_wait() {
-                return Err(format!(
-                    "the browser quit ({status}) before opening its port"
-                ));
+                return Err(format!("the browser quit ({status}) at start"));
             }
             if started.elapsed() > STALL {
                 return Err(format!(
@@ -344,9 +342,10 @@ impl Session {
         if let Some(s) = session {
             message["sessionId"] = json!(s);
         }
-        if let Err(e) = self.link.send(&message) {
-            // A connection that cannot be written to: say why, as a receive would.
-            return Err(format!("{method}: {e}; {}", self.ended()));
+        if self.link.send(&message).is_err() {
+            // A connection that cannot be written to (a broken pipe, a reset): the browser's
+            // end says why, as for a receive.
+            return Err(self.ended());
         }
         loop {
             let v = self.receive()?;

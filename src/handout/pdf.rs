@@ -297,8 +297,10 @@ impl Printer {
         };
         let page = self.work.path().join(name);
         fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
+        let log = self.work.path().join("chromium.log");
+        // The browser's own last words say why it quit (no display, a missing library).
+        let browser_fail = |reason: String| fail(format!("{reason}{}", last_message(&log)));
         if self.session.is_none() {
-            let log = self.work.path().join("chromium.log");
             let log_file =
                 fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
             let profile = self.work.path().join("profile");
@@ -311,7 +313,7 @@ impl Printer {
                     log_file,
                     self.transport,
                 )
-                .map_err(&fail)?,
+                .map_err(browser_fail)?,
             );
         }
         let printed = match self.session.as_mut() {
@@ -325,7 +327,7 @@ impl Printer {
             Err(reason) => {
                 // A browser that failed once is not trusted with the next page.
                 self.session = None;
-                Err(fail(reason))
+                Err(browser_fail(reason))
             }
         }
     }
@@ -336,6 +338,16 @@ impl Printer {
             session.close();
         }
     }
+}
+
+/// "; last message: …" with the last line the browser wrote to `log`, or nothing.
+fn last_message(log: &Path) -> String {
+    fs::read_to_string(log)
+        .unwrap_or_default()
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .map_or(String::new(), |l| format!("; last message: {}", l.trim()))
 }
 
 /// The `file:` URL of an absolute path: `file:///tmp/x.html`, `file:///C:/Users/x.html`.
@@ -449,7 +461,7 @@ mod tests {
     fn executable(dir: &Path, name: &str) -> PathBuf {
         use std::os::unix::fs::PermissionsExt;
         let path = dir.join(name);
-        fs::write(&path, "#!/bin/sh\nexit 3\n").unwrap();
+        fs::write(&path, "#!/bin/sh\necho 'cannot open display' >&2\nexit 3\n").unwrap();
         fs::set_permissions(&path, fs::Permissions::from_mode(0o755)).unwrap();
         path
     }
@@ -490,6 +502,11 @@ mod tests {
             assert!(err.to_string().contains("fake-chromium"), "{err}");
             // Said as soon as it exits, not after a silence of `STALL`.
             assert!(err.to_string().contains("quit (exit status: 3)"), "{err}");
+            assert!(
+                err.to_string()
+                    .ends_with("; last message: cannot open display"),
+                "{err}"
+            );
         }
     }
 
