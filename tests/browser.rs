@@ -338,7 +338,7 @@ fn every_handout_prints_to_exactly_two_a4_pages() {
                     let html = files.iter().find(|f| f.path == Path::new(&name)).unwrap();
                     let html = String::from_utf8(html.bytes.clone()).unwrap();
                     let bytes = printer
-                        .print(&name, &html, handout::HANDOUT_PAGES)
+                        .print(&name, &html)
                         .unwrap_or_else(|e| panic!("{arg}: {e}"));
                     let pdf = out.join(format!("{}.pdf", scene.id));
                     std::fs::write(&pdf, bytes).unwrap();

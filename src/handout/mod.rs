@@ -26,7 +26,6 @@ use crate::report::render::{
 use crate::report::{builtin_scenes, Format, OutFile, Scene};
 use physics::Note;
 
-#[cfg(unix)]
 pub mod cdp;
 mod layout;
 pub mod pdf;
@@ -43,8 +42,6 @@ const TEMPLATES: &[(&str, &str)] = &[
     ),
 ];
 const HANDOUT_CSS: &str = include_str!("../../templates/handout.css");
-/// Pages of a printed handout, at most (for the time its print is allowed, [`pdf::print`]).
-pub const HANDOUT_PAGES: u32 = 4;
 
 /// One step of the chain: symbol = formula = numbers substituted = result, and what it says.
 #[derive(Clone, Debug, Serialize)]
@@ -335,7 +332,7 @@ pub fn render(
         if let Some(browser) = browser {
             let name = format!("{id}.html");
             let mut printer = pdf::Printer::new(browser)?;
-            let pdf = printer.print(&name, &html, HANDOUT_PAGES)?;
+            let pdf = printer.print(&name, &html)?;
             printer.close();
             files.push(OutFile::new(format!("{id}.pdf"), pdf));
         }

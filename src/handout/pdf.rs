@@ -6,28 +6,13 @@
 use std::ffi::OsString;
 use std::fs;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
+use super::cdp::{Session, Transport};
 use crate::error::{Error, Result};
 
 /// Environment variable naming the browser binary; it wins over the search.
 pub const BROWSER_ENV: &str = "STICKSLIP_CHROMIUM";
-/// A handout prints in 1–3 s, the answer key of 500 students (13 MB of HTML) in about 65 s on
-/// an idle machine: a print is given this much time, plus [`TIMEOUT_PER_PAGE`] per page, before
-/// the browser is taken for stuck and killed.
-const TIMEOUT_BASE: Duration = Duration::from_secs(60);
-/// Time allowed per printed page (about 8× what a page of a 500-student key takes at load 1,
-/// room for a second build running beside it).
-const TIMEOUT_PER_PAGE: Duration = Duration::from_secs(1);
-
-/// The time a print of `pages` pages may take before the browser is killed.
-fn timeout(pages: u32) -> Duration {
-    TIMEOUT_BASE + TIMEOUT_PER_PAGE * pages
-}
-/// How often the running browser is polled.
-const POLL: Duration = Duration::from_millis(50);
-
 /// The operating systems whose browser install folders are known.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Os {
@@ -187,6 +172,17 @@ pub const HEADLESS_FLAGS: &[&str] = &[
     "--no-pdf-header-footer",
 ];
 
+/// [`HEADLESS_FLAGS`] for a DevTools session: `--no-pdf-header-footer` puts the browser in its
+/// one-shot print mode, which ends the session; the print command says
+/// `displayHeaderFooter: false`.
+pub(super) fn session_flags() -> Vec<String> {
+    HEADLESS_FLAGS
+        .iter()
+        .filter(|f| **f != "--no-pdf-header-footer")
+        .map(|f| f.to_string())
+        .collect()
+}
+
 /// Prefix of the private temporary folder of one print (page, profile, PDF, log).
 const WORK_PREFIX: &str = "stickslip-pdf-";
 /// An unlocked work folder untouched for this long is a killed print's.
@@ -247,81 +243,29 @@ fn work_folder() -> std::io::Result<(tempfile::TempDir, fs::File)> {
     Ok((work, lock))
 }
 
-/// Prints `html` (a self-contained page of about `pages` A4 pages, saved as `name` in a temporary
-/// folder) with `browser` and returns the PDF's bytes; the time allowed grows with `pages`.
-pub fn print(browser: &Path, name: &str, html: &str, pages: u32) -> Result<Vec<u8>> {
-    let limit = timeout(pages);
-    let fail = |reason: String| Error::Pdf {
-        path: name.to_string(),
-        browser: browser.display().to_string(),
-        reason,
-    };
-    let (work, _work_lock) = work_folder().map_err(|e| fail(format!("temporary folder: {e}")))?;
-    let page = work.path().join(name);
-    let pdf = work.path().join("out.pdf");
-    let log = work.path().join("chromium.log");
-    fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
-    let log_file = fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
-    let mut child = Command::new(browser)
-        .args(HEADLESS_FLAGS)
-        .arg(format!(
-            "--user-data-dir={}",
-            work.path().join("profile").display()
-        ))
-        .arg(format!("--print-to-pdf={}", pdf.display()))
-        .arg(file_url(&page))
-        .stdin(Stdio::null())
-        .stdout(Stdio::null())
-        // A file, not a pipe: a chatty browser cannot block on a full pipe while we wait.
-        .stderr(log_file)
-        .spawn()
-        .map_err(|e| fail(format!("cannot start: {e}")))?;
-    let started = Instant::now();
-    let status = loop {
-        match child.try_wait() {
-            Ok(Some(status)) => break status,
-            Ok(None) if started.elapsed() > limit => {
-                let _ = child.kill();
-                let _ = child.wait();
-                return Err(fail(format!(
-                    "no answer within {} s, stopped",
-                    limit.as_secs()
-                )));
-            }
-            Ok(None) => std::thread::sleep(POLL),
-            Err(e) => return Err(fail(e.to_string())),
-        }
-    };
-    let bytes = fs::read(&pdf).unwrap_or_default();
-    if status.success() && bytes.starts_with(b"%PDF") {
-        return Ok(bytes);
-    }
-    let last_line = fs::read_to_string(&log)
-        .unwrap_or_default()
-        .lines()
-        .rev()
-        .find(|l| !l.trim().is_empty())
-        .map_or(String::new(), |l| format!("; last message: {}", l.trim()));
-    Err(fail(format!("{status}, no PDF written{last_line}")))
-}
-
-/// One browser for every PDF of a run. On Unix one Chromium process prints them all over the
-/// DevTools pipe ([`super::cdp`]), each page in its own tab closed after it, with a time limit
-/// that follows progress; elsewhere each PDF starts its own browser ([`print`]).
+/// One browser for every PDF of a run: one Chromium process prints them all over the DevTools
+/// protocol ([`super::cdp`]; the pipe on Unix, a WebSocket on 127.0.0.1 elsewhere), each page in
+/// its own tab closed after it, with a time limit that follows progress.
 pub struct Printer {
     browser: PathBuf,
     /// Private folder of the pages and the profile, locked while in use.
     work: tempfile::TempDir,
     _lock: fs::File,
-    #[cfg(unix)]
-    session: Option<super::cdp::Session>,
+    transport: Transport,
+    session: Option<Session>,
     /// Browser processes started so far.
     starts: u32,
 }
 
 impl Printer {
-    /// A printer with `browser`, started at its first page.
+    /// A printer with `browser` over the system's [`Transport::default`], started at its first
+    /// page.
     pub fn new(browser: &Path) -> Result<Self> {
+        Self::with_transport(browser, Transport::default())
+    }
+
+    /// A printer with `browser` over `transport`, started at its first page.
+    pub fn with_transport(browser: &Path, transport: Transport) -> Result<Self> {
         let (work, lock) = work_folder().map_err(|e| Error::Pdf {
             path: String::new(),
             browser: browser.display().to_string(),
@@ -331,7 +275,7 @@ impl Printer {
             browser: browser.to_path_buf(),
             work,
             _lock: lock,
-            #[cfg(unix)]
+            transport,
             session: None,
             starts: 0,
         })
@@ -342,11 +286,10 @@ impl Printer {
         self.starts
     }
 
-    /// Prints `html` (saved as `name`, about `pages` A4 pages) and returns the PDF's bytes. The
+    /// Prints `html` (a self-contained page, saved as `name`) and returns the PDF's bytes. The
     /// time allowed follows the browser's progress ([`super::cdp::STALL`] of silence at most),
     /// whatever the number of pages.
-    #[cfg(unix)]
-    pub fn print(&mut self, name: &str, html: &str, _pages: u32) -> Result<Vec<u8>> {
+    pub fn print(&mut self, name: &str, html: &str) -> Result<Vec<u8>> {
         let fail = |reason: String| Error::Pdf {
             path: name.to_string(),
             browser: self.browser.display().to_string(),
@@ -354,24 +297,24 @@ impl Printer {
         };
         let page = self.work.path().join(name);
         fs::write(&page, html).map_err(|e| fail(format!("{}: {e}", page.display())))?;
+        let log = self.work.path().join("chromium.log");
+        // The browser's own last words say why it quit (no display, a missing library).
+        let browser_fail = |reason: String| fail(format!("{reason}{}", last_message(&log)));
         if self.session.is_none() {
-            let log = self.work.path().join("chromium.log");
             let log_file =
                 fs::File::create(&log).map_err(|e| fail(format!("{}: {e}", log.display())))?;
-            // `--no-pdf-header-footer` puts the browser in its one-shot print mode, which ends
-            // the DevTools session; the print command says `displayHeaderFooter: false`.
-            let mut flags: Vec<String> = HEADLESS_FLAGS
-                .iter()
-                .filter(|f| **f != "--no-pdf-header-footer")
-                .map(|f| f.to_string())
-                .collect();
-            flags.push(format!(
-                "--user-data-dir={}",
-                self.work.path().join("profile").display()
-            ));
+            let profile = self.work.path().join("profile");
             self.starts += 1;
-            self.session =
-                Some(super::cdp::Session::start(&self.browser, &flags, log_file).map_err(&fail)?);
+            self.session = Some(
+                Session::start(
+                    &self.browser,
+                    &session_flags(),
+                    &profile,
+                    log_file,
+                    self.transport,
+                )
+                .map_err(browser_fail)?,
+            );
         }
         let printed = match self.session.as_mut() {
             Some(session) => session.print(&file_url(&page)),
@@ -384,25 +327,27 @@ impl Printer {
             Err(reason) => {
                 // A browser that failed once is not trusted with the next page.
                 self.session = None;
-                Err(fail(reason))
+                Err(browser_fail(reason))
             }
         }
     }
 
-    /// Prints `html` (saved as `name`, about `pages` A4 pages) and returns the PDF's bytes.
-    #[cfg(not(unix))]
-    pub fn print(&mut self, name: &str, html: &str, pages: u32) -> Result<Vec<u8>> {
-        self.starts += 1;
-        print(&self.browser, name, html, pages)
-    }
-
     /// Quits the browser.
     pub fn close(self) {
-        #[cfg(unix)]
         if let Some(session) = self.session {
             session.close();
         }
     }
+}
+
+/// "; last message: …" with the last line the browser wrote to `log`, or nothing.
+fn last_message(log: &Path) -> String {
+    fs::read_to_string(log)
+        .unwrap_or_default()
+        .lines()
+        .rev()
+        .find(|l| !l.trim().is_empty())
+        .map_or(String::new(), |l| format!("; last message: {}", l.trim()))
 }
 
 /// The `file:` URL of an absolute path: `file:///tmp/x.html`, `file:///C:/Users/x.html`.
@@ -516,7 +461,7 @@ mod tests {
     fn executable(dir: &Path, name: &str) -> PathBuf {
         use std::os::unix::fs::PermissionsExt;
         let path = dir.join(name);
-        fs::write(&path, "#!/bin/sh\nexit 3\n").unwrap();
+        fs::write(&path, "#!/bin/sh\necho 'cannot open display' >&2\nexit 3\n").unwrap();
         fs::set_permissions(&path, fs::Permissions::from_mode(0o755)).unwrap();
         path
     }
@@ -547,39 +492,104 @@ mod tests {
     }
 
     #[test]
-    fn a_browser_that_prints_nothing_is_an_error() {
-        let dir = tempfile::tempdir().unwrap();
-        let fake = executable(dir.path(), "fake-chromium");
-        let err = print(&fake, "x.html", "<p>x</p>", 1).unwrap_err();
-        assert!(matches!(err, Error::Pdf { .. }), "{err}");
-        assert!(err.to_string().contains("no PDF written"), "{err}");
-    }
-
-    #[test]
     fn a_browser_that_quits_is_an_error_of_the_printer() {
         let dir = tempfile::tempdir().unwrap();
         let fake = executable(dir.path(), "fake-chromium");
-        let mut printer = Printer::new(&fake).unwrap();
-        let err = printer.print("x.html", "<p>x</p>", 1).unwrap_err();
-        assert!(matches!(err, Error::Pdf { .. }), "{err}");
-        assert!(err.to_string().contains("fake-chromium"), "{err}");
+        for transport in [Transport::Pipe, Transport::WebSocket] {
+            let mut printer = Printer::with_transport(&fake, transport).unwrap();
+            let err = printer.print("x.html", "<p>x</p>").unwrap_err();
+            assert!(matches!(err, Error::Pdf { .. }), "{err}");
+            assert!(err.to_string().contains("fake-chromium"), "{err}");
+            // Said as soon as it exits, not after a silence of `STALL`.
+            assert!(err.to_string().contains("quit (exit status: 3)"), "{err}");
+            assert!(
+                err.to_string()
+                    .ends_with("; last message: cannot open display"),
+                "{err}"
+            );
+        }
+    }
+
+    /// The text of a PDF, by pdftotext (poppler-utils, as the PDF tests of tests/ need).
+    fn pdf_text(pdf: &[u8]) -> String {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("x.pdf");
+        fs::write(&file, pdf).unwrap();
+        let out = std::process::Command::new("pdftotext")
+            .arg(&file)
+            .arg("-")
+            .output()
+            .expect("pdftotext for the PDF tests");
+        String::from_utf8_lossy(&out.stdout).into_owned()
     }
 
     /// Needs Chromium, as the PDF tests of tests/handout.rs and tests/worksheet.rs do.
+    /// A page with an image of noise (a BMP of 1024 × 768 pixels from a fixed sequence), which
+    /// no compression shrinks: its PDF is several [`super::super::cdp`] chunks long.
+    fn noise_page() -> String {
+        use base64::Engine;
+        let (w, h) = (1024u32, 768u32);
+        let size = 54 + 3 * w * h;
+        let mut bmp = Vec::with_capacity(size as usize);
+        bmp.extend_from_slice(b"BM");
+        for v in [size, 0, 54, 40] {
+            bmp.extend_from_slice(&v.to_le_bytes());
+        }
+        bmp.extend_from_slice(&w.to_le_bytes());
+        bmp.extend_from_slice(&h.to_le_bytes());
+        bmp.extend_from_slice(&1u16.to_le_bytes());
+        bmp.extend_from_slice(&24u16.to_le_bytes());
+        bmp.extend_from_slice(&[0; 24]);
+        let mut x = 12345u32;
+        bmp.extend((0..3 * w * h).map(|_| {
+            x = x.wrapping_mul(1_103_515_245).wrapping_add(12_345);
+            (x >> 24) as u8
+        }));
+        let data = base64::engine::general_purpose::STANDARD.encode(bmp);
+        format!(
+            "<!doctype html><title>noise</title><p>marker-noise</p>\
+             <img style=\"width:160mm\" src=\"data:image/bmp;base64,{data}\">"
+        )
+    }
+
     #[test]
-    fn one_browser_prints_every_pdf_of_a_run() {
+    fn a_pdf_of_several_chunks_arrives_whole_over_either_transport() {
         let browser = locate().expect("Chromium for the PDF tests");
-        let mut printer = Printer::new(&browser).unwrap();
-        let one = printer
-            .print("a.html", "<!doctype html><title>a</title><p>one</p>", 1)
-            .unwrap();
-        let two = printer
-            .print("b.html", "<!doctype html><title>b</title><p>two</p>", 2)
-            .unwrap();
-        assert!(one.starts_with(b"%PDF") && two.starts_with(b"%PDF"));
-        // Each tab prints its own page, not the first one's.
-        assert_ne!(one, two);
-        assert_eq!(printer.starts(), 1);
-        printer.close();
+        for transport in [Transport::Pipe, Transport::WebSocket] {
+            let mut printer = Printer::with_transport(&browser, transport).unwrap();
+            let pdf = printer.print("noise.html", &noise_page()).unwrap();
+            assert!(pdf.len() > 2 << 20, "{transport:?}: {} bytes", pdf.len());
+            assert!(pdf.starts_with(b"%PDF") && pdf.trim_ascii_end().ends_with(b"%%EOF"));
+            assert!(pdf_text(&pdf).contains("marker-noise"), "{transport:?}");
+            printer.close();
+        }
+    }
+
+    #[test]
+    fn one_browser_prints_every_pdf_of_a_run_over_either_transport() {
+        let browser = locate().expect("Chromium for the PDF tests");
+        assert_eq!(Transport::default(), Transport::Pipe);
+        for transport in [Transport::Pipe, Transport::WebSocket] {
+            let mut printer = Printer::with_transport(&browser, transport).unwrap();
+            let one = printer
+                .print("a.html", "<!doctype html><title>a</title><p>marker-one</p>")
+                .unwrap();
+            let two = printer
+                .print("b.html", "<!doctype html><title>b</title><p>marker-two</p>")
+                .unwrap();
+            assert!(one.starts_with(b"%PDF") && two.starts_with(b"%PDF"));
+            // Each tab prints its own page, not the first one's.
+            let (one, two) = (pdf_text(&one), pdf_text(&two));
+            assert!(
+                one.contains("marker-one") && !one.contains("marker-two"),
+                "{one}"
+            );
+            assert!(
+                two.contains("marker-two") && !two.contains("marker-one"),
+                "{two}"
+            );
+            assert_eq!(printer.starts(), 1, "{transport:?}");
+            printer.close();
+        }
     }
 }

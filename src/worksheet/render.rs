@@ -456,9 +456,7 @@ pub fn pdf(w: &Worksheets, lang: Lang, browser: &std::path::Path) -> Result<Vec<
         for f in html {
             let name = f.path.display().to_string();
             let text = String::from_utf8_lossy(&f.bytes);
-            // One student per page (a key's page can run over).
-            let pages = u32::try_from(part.len()).unwrap_or(u32::MAX);
-            let bytes = printer.print(&name, &text, pages)?;
+            let bytes = printer.print(&name, &text)?;
             let path = match (parts.len(), part.first(), part.last()) {
                 (2.., Some(first), Some(last)) => {
                     let stem = f.path.file_stem().unwrap_or_default().to_string_lossy();
