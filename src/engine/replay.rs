@@ -547,29 +547,30 @@ impl Tape {
             segments,
         } = out;
         let v = self.recording.map_or(0.0, |start| f64::from_bits(start.v));
-        // A period whose events are not kept leaves the recorder as it found it, except for the
-        // last transition, which the next period's first slip is merged with when at the same
-        // instant. When the period has a stick or a retraction (or no transition at all), the
-        // last transition at its end is its own, whatever it was before: then only the periods
-        // next to a kept one go through the recorder, and the others just move x.
-        let own_last_transition = self.ops.iter().any(|op| {
-            matches!(
-                op,
-                Op::Event {
-                    kind: EventKind::Stick { .. },
-                    ..
-                } | Op::Retract { .. }
-            )
-        }) || !self
-            .ops
-            .iter()
-            .any(|op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)));
         // When the recorder would only keep the kept periods' events, as they come, they are
         // appended directly from the period split into its moves and its events (where they
         // fit: more go through the recorder), and the other periods just move x.
         let mut split = Split::EMPTY;
         let direct =
             !materialize && self.only_kept_events(rec, period, periods) && split.fill(&self.ops);
+        // A period whose events are not kept leaves the recorder as it found it, except for the
+        // last transition, which the next period's first slip is merged with when at the same
+        // instant. When the period has a stick or a retraction (or no transition at all), the
+        // last transition at its end is its own, whatever it was before: then only the periods
+        // next to a kept one go through the recorder, and the others just move x. (Read off
+        // the direct path only.)
+        let own_last_transition = !direct
+            && (self.ops.iter().any(|op| {
+                matches!(
+                    op,
+                    Op::Event {
+                        kind: EventKind::Stick { .. },
+                        ..
+                    } | Op::Retract { .. }
+                )
+            }) || !self.ops.iter().any(
+                |op| matches!(op, Op::Event { kind, .. } if !matches!(kind, EventKind::SpeedMax)),
+            ));
         // The periods that only move x: with the direct path every period that is not kept;
         // else those that are not the first replayed one and are not next to a kept one. When
         // many, they are taken at once as a stretch of pieces.

@@ -82,7 +82,7 @@
 //! onsets 500, their arccosines and divisions 550, 7 libm calls) and the one integrated period.
 
 use super::accel::SignChanges;
-use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
+use super::arc::{phase_from, Arc, ArcMotion, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::replay::{Compact, Outputs, Replay, StartState, Stretch, Tape};
@@ -713,11 +713,6 @@ struct PreparedPiece<'a> {
     /// Per direction of slip, on a cos basis: where the acceleration changes sign on the piece
     /// (the same for every arc in that direction).
     accel: [SignChanges; 2],
-    /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
-    /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
-    /// of the acceleration: the same in every period, where a slide evaluates its arc. None on
-    /// a linear basis (not set up: it is a few hundred bytes).
-    known: Option<KnownAngles>,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -810,34 +805,9 @@ impl PreparedPiece<'_> {
             onsets: [None, None],
             slope: [slope(1.0), slope(-1.0)],
             accel,
-            known: None,
         });
         for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
             *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
-        }
-        // The kernels are a function of the angle only: one list serves the arcs in either
-        // direction. The most used first (a full list drops the rest): from the piece's start
-        // and from the located onsets to the end of the piece, then to the zeros of a.
-        if let Basis::Cos { omega, .. } = piece.basis {
-            let known = prepared.known.insert(KnownAngles::new());
-            let roots = prepared.onsets.iter().flat_map(|onsets| match onsets {
-                Some((crossings, _)) => crossings.crossings(),
-                None => [None, None],
-            });
-            let mut starts = [None; 5];
-            starts[0] = Some(Dd::from(piece.start));
-            for (place, root) in starts[1..].iter_mut().zip(roots) {
-                *place = root.map(|c| c.t);
-            }
-            let zeros = prepared.accel.iter().flat_map(|a| a.zeros());
-            let ends = std::iter::once(piece.end).chain(zeros);
-            for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
-                for t_c in starts.into_iter().flatten() {
-                    if t_c.hi < end {
-                        known.push_between(omega, t_c, end);
-                    }
-                }
-            }
         }
     }
 
@@ -1050,7 +1020,6 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
-    let known = prepared.known.as_ref();
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
@@ -1095,7 +1064,7 @@ fn slide<M: ArcMotion>(
             (p, speed_p) = (q, None);
             continue;
         }
-        let mut point_p = || arc.at_near(p, &mut seed, known);
+        let mut point_p = || arc.at_near(p, &mut seed);
         let at_p = if at_max {
             let point = arc.at_accel_zero(p).unwrap_or_else(point_p);
             on_max(p, point);
@@ -1103,14 +1072,13 @@ fn slide<M: ArcMotion>(
         } else {
             speed_p.unwrap_or_else(|| s * point_p().v)
         };
-        let point_q = arc.at_near(q, &mut seed, known);
+        let point_q = arc.at_near(q, &mut seed);
         let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
-                // The iterates are no piece's known times.
                 let at = arc.at_iterate(t, &mut seed, &mut iterate);
                 (s * at.v, s * at.a, s * at.jerk)
             };
@@ -1147,7 +1115,7 @@ fn slide<M: ArcMotion>(
         end: if iterate.is_some() {
             arc.at_iterate(end, &mut seed, &mut iterate)
         } else {
-            arc.at_near(end, &mut seed, known)
+            arc.at_near(end, &mut seed)
         },
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
