@@ -825,10 +825,11 @@ pub fn cos_level_crossings_dd(r: Dd, omega: f64, lo: f64, hi: f64) -> [Option<(D
     };
     let first = theta.div_f64(omega);
     let second = (Dd::TAU + -theta).div_f64(omega);
-    [(first, -1), (second, 1)].map(|(t, dir)| {
+    let within = |t: Dd, dir: i8| {
         let v = t.value();
         (v >= lo && v < hi).then_some((t, dir))
-    })
+    };
+    [within(first, -1), within(second, 1)]
 }
 
 /// Node of the two-point Gauss–Legendre rule on [−1, 1] (weights 1).

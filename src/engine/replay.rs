@@ -374,10 +374,9 @@ const SPLIT_MAX: usize = 16;
 struct Split {
     moves: [f64; SPLIT_MAX],
     n_moves: usize,
-    /// The events as a kept period appends them before placing them: local time t (s),
-    /// period 0, and for x the offset (m) from the position the moves before it reach (0 for
-    /// an event at that position: 0 + x is x bit for bit, x being a sum that starts from +0
-    /// and so never −0).
+    /// The events with their local time t (s), and for x the offset (m) from the position the
+    /// moves before it reach (0 for an event at that position: 0 + x is x bit for bit, x being
+    /// a sum that starts from +0 and so never −0); their periods are set where placed.
     events: [Event; SPLIT_MAX],
     /// The number of moves before each event.
     after: [u8; SPLIT_MAX],
@@ -446,8 +445,10 @@ impl Split {
     ) -> f64 {
         // The positions of a kept period after each number of moves (from none).
         let mut positions = [0.0; SPLIT_MAX + 1];
-        for m in periods {
-            x_at_period_start.push(x);
+        let first = x_at_period_start.len();
+        x_at_period_start.resize(first + periods.len(), 0.0);
+        for (x_start, m) in x_at_period_start[first..].iter_mut().zip(periods) {
+            *x_start = x;
             x = if rec.keeps(m) {
                 self.kept_period(x, m, period, &mut positions, &mut rec.events)
             } else {
@@ -467,9 +468,10 @@ impl Split {
     }
 
     /// Period `m` (of length `period`, s) from `x` (m), kept: the positions after each move in
-    /// order, and the events appended to `events`, each placed at the position the moves
-    /// before it reach (t₀ + t and x + Δx, the recorder's sums with their operands swapped);
-    /// x after it.
+    /// order (into `positions`), and the events appended to `events`, each placed at the
+    /// position the moves before it reach (t + t₀ and Δx + x, the recorder's sums with their
+    /// operands swapped), written in place (a copy and then a pass over the copies took about
+    /// 40 instructions more per period); x after it.
     #[inline(always)]
     fn kept_period(
         &self,
@@ -486,13 +488,20 @@ impl Split {
             *place = at;
         }
         let start = f64::from(m) * period;
-        let first = events.len();
-        events.extend_from_slice(&self.events[..self.n_events]);
-        for (e, &after) in events[first..].iter_mut().zip(&self.after) {
-            e.t += start;
-            e.period = m;
-            e.x += positions[usize::from(after)];
+        let n = self.n_events;
+        events.reserve(n);
+        let places = &mut events.spare_capacity_mut()[..n];
+        for ((place, e), &after) in places.iter_mut().zip(&self.events[..n]).zip(&self.after) {
+            place.write(Event {
+                t: e.t + start,
+                period: m,
+                kind: e.kind,
+                x: e.x + positions[usize::from(after)],
+                v: e.v,
+            });
         }
+        // SAFETY: the `n` places after the events were reserved and have just been written.
+        unsafe { events.set_len(events.len() + n) };
         at
     }
 }

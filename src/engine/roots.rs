@@ -127,18 +127,17 @@ impl UpCrossings {
                 // sin ωt > 0 at the first crossing θ/ω, < 0 at the second (2π − θ)/ω;
                 // |sin| = √((1 − b)(1 + b)) with both factors formed from both parts of b.
                 let sin = ((1.0 - b.hi - b.lo) * (1.0 + b.hi + b.lo)).sqrt();
-                let mut index = 0;
-                let all =
-                    cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY).map(|c| {
-                        let sin = if index == 0 { sin } else { -sin };
-                        index += 1;
-                        c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
-                            .map(|(t, _)| Crossing {
-                                t,
-                                root_b: Some(root),
-                                phase: Some((sin, b.value())),
-                            })
-                    });
+                let rising = |c: Option<(Dd, i8)>, sin: f64| {
+                    c.filter(|&(_, dir)| g.c1 * f64::from(dir) > 0.0)
+                        .map(|(t, _)| Crossing {
+                            t,
+                            root_b: Some(root),
+                            phase: Some((sin, b.value())),
+                        })
+                };
+                let [first, second] =
+                    cos_level_crossings_dd(b, omega, f64::NEG_INFINITY, f64::INFINITY);
+                let all = [rising(first, sin), rising(second, -sin)];
                 UpCrossings::Cos {
                     omega,
                     shift,
