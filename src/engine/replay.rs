@@ -21,7 +21,8 @@
 //! grows with the period's index), the recorder would only keep the events of its kept
 //! periods as they come: those are appended directly, and the other periods only move x (on
 //! the harmonic woodpecker 17,000 instructions per 20-period run instead of 19,400; from the
-//! period split once into its moves and its events, `Split`, 15,900 instead of 17,200). Orbits
+//! period split once into its moves and its events, `Split`, 15,900 instead of 17,200; each
+//! kept period's events written in place, 15,100 instead of 15,900). Orbits
 //! whose start states differ (multi-period orbits, transients, a continuous slip whose v at the
 //! period start still changes in its last bits) are integrated period by period as before.
 //!

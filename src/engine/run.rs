@@ -18,6 +18,7 @@
 //! c426ece (main)            7,852         8,833        10,896       17,411
 //! c426ece (again, linear)   7,846         8,717        10,884       17,181
 //! c9e0e1a (linear)          6,829         8,182         9,371       15,927
+//! 05a63b9                   6,502         7,373         8,423       13,487
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -80,6 +81,16 @@
 //! periods' moves and starts), the run's four allocations and frees (about 700, the event
 //! list's beyond glibc's fast path), the searches prepared per run (sign changes 400, slip
 //! onsets 500, their arccosines and divisions 550, 7 libm calls) and the one integrated period.
+//! Since c9e0e1a (05a63b9): the known half angles are gone: a cache of sin and cos of δ/2 at
+//! the times every period meets, whose set-up and libm calls (about 1,400 on the harmonic
+//! woodpecker) paid off only over many integrated periods, and a replayed orbit integrates
+//! one; arcs evaluate from their seed as elsewhere (the harmonic laws' last bits changed; the
+//! random sets' mix of `engine_instructions fingerprint` 2 % fewer instructions). A kept
+//! replayed period's events are written into the event list's reserved room in place (before:
+//! a push each, then a copy and a pass over it); two-element arrays are built without
+//! `array::map`, which one build left out of line. Harmonic woodpecker 50.1× a lean DOPRI5,
+//! set B 65.3×: margins of a few hundred instructions, about what the compiler's layout moves
+//! a run between unrelated changes (1–2 %).
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, Point, PolyArc, Start, TrigArc};
