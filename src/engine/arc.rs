@@ -17,6 +17,8 @@
 //! so a slip of duration φT with accelerations O(φ g) loses nothing to the O(μd g) terms that
 //! make up A0 and A1 b: the old form A0 w + (A1/ω)(sin ωt − sin ωt_c) lost eps·μd/φ.
 
+use std::cell::Cell;
+
 use super::accel::{sign_of, SignChanges};
 use super::dd::{self, Dd};
 use super::law::{Affine, Basis};
@@ -126,17 +128,19 @@ pub trait ArcMotion: Copy {
     /// [`ArcMotion::at`] at a time close to the last one evaluated with the same `seed`, as in a
     /// root search: where the half angle δ/2 moved by at most [`ADDITION_MAX`] since, the
     /// kernels follow from the seed's by the angle-addition formulas, without sin and cos (each
-    /// addition adds about an ulp to them). The seed is the last half angle whose sin and cos
-    /// were evaluated, not one reached by addition, so that the additions' rounding does not
+    /// addition adds about an ulp to them), unless δ/2 is one of the `known` half angles
+    /// (worked out once for the times a run meets in every period, see run.rs): then from it,
+    /// with the bits of sin and cos. The seed is the last half angle whose sin and cos were
+    /// evaluated or known, not one reached by addition, so that the additions' rounding does not
     /// accumulate along a search. A linear arc has no angles (`None`).
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point;
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: Option<&KnownAngles>) -> Point;
 
     /// [`ArcMotion::at_near`] at an iterate of a root search or at the root it ends on: where
     /// δ/2 turned by at most [`SHORT_TURN_MAX`] from the half angle of an earlier iterate
     /// (`iterate`), the kernels follow from that one's by the angle-addition formulas with the
-    /// Taylor sums to e⁴; else from the `seed` as by [`ArcMotion::at_near`], and that half
-    /// angle becomes `iterate`. An iterate's half angle is one addition from sin and cos
-    /// evaluated, so the rounding of the additions still does not accumulate beyond two.
+    /// Taylor sums to e⁴; else from the `seed` as by [`ArcMotion::at_near`] without known
+    /// angles (the iterates are no piece's known times), and that half angle becomes `iterate`. An iterate's half angle is one addition from sin and cos evaluated or
+    /// known, so the rounding of the additions still does not accumulate beyond two.
     fn at_iterate(
         &self,
         t: f64,
@@ -243,7 +247,12 @@ impl ArcMotion for PolyArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, _seed: &mut Option<HalfAngle>) -> Point {
+    fn at_near(
+        &self,
+        t: f64,
+        _seed: &mut Option<HalfAngle>,
+        _known: Option<&KnownAngles>,
+    ) -> Point {
         self.at(t)
     }
 
@@ -428,9 +437,9 @@ impl ArcMotion for TrigArc {
     }
 
     #[inline(always)]
-    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
+    fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>, known: Option<&KnownAngles>) -> Point {
         let w = self.w(t);
-        self.at_kernels(w, Kernels::near(self.omega * w, seed))
+        self.at_kernels(w, Kernels::near(self.omega * w, seed, known))
     }
 
     #[inline(always)]
@@ -447,7 +456,7 @@ impl ArcMotion for TrigArc {
                 Kernels::turned(delta, x, short_turn(0.5 * delta - x.angle))
             }
             _ => {
-                let kernels = Kernels::near(delta, seed);
+                let kernels = Kernels::near(delta, seed, None);
                 *iterate = Some(kernels.half);
                 kernels
             }
@@ -543,8 +552,13 @@ impl Arc {
 
     /// [`ArcMotion::at_near`] on either kind of arc.
     #[inline]
-    pub fn at_near(&self, t: f64, seed: &mut Option<HalfAngle>) -> Point {
-        either!(self, arc => arc.at_near(t, seed))
+    pub fn at_near(
+        &self,
+        t: f64,
+        seed: &mut Option<HalfAngle>,
+        known: Option<&KnownAngles>,
+    ) -> Point {
+        either!(self, arc => arc.at_near(t, seed, known))
     }
 
     /// Acceleration a(t) (m/s²).
@@ -619,6 +633,60 @@ pub struct HalfAngle {
     cos: f64,
 }
 
+/// The half angles whose sin and cos a run works out once (see [`ArcMotion::at_near`]), with
+/// their kernels (the series of δ − sin δ and δ²/2 − (1 − cos δ) summed once too): at most
+/// [`KnownAngles::CAPACITY`], the later ones dropped. Which half angles are known is settled
+/// when they are added; the kernels of one are worked out when an evaluation first meets it
+/// (the same bits as at once: many are never met in a run that replays its periods).
+#[derive(Clone, Debug, PartialEq)]
+pub struct KnownAngles {
+    angles: [f64; KnownAngles::CAPACITY],
+    /// The kernels of each, once worked out.
+    kernels: [Cell<Option<Kernels>>; KnownAngles::CAPACITY],
+    len: usize,
+}
+
+impl KnownAngles {
+    pub const CAPACITY: usize = 6;
+
+    pub const fn new() -> KnownAngles {
+        KnownAngles {
+            angles: [f64::NAN; KnownAngles::CAPACITY],
+            kernels: [const { Cell::new(None) }; KnownAngles::CAPACITY],
+            len: 0,
+        }
+    }
+
+    /// Adds (when there is room) the half angle δ/2, where δ = ω·(t − t_c) is the angle an arc
+    /// of angular frequency ω (rad/s) that starts at t_c (s, in two parts) has turned through
+    /// at t (s): the same δ and bits as the arc's own evaluation at t.
+    pub fn push_between(&mut self, omega: f64, t_c: Dd, t: f64) {
+        if self.len < KnownAngles::CAPACITY {
+            self.angles[self.len] = 0.5 * (omega * since(t, t_c));
+            self.len += 1;
+        }
+    }
+
+    /// The kernels of the known half angle `angle`, if it is one: those of twice it (exactly),
+    /// from sin and cos of it, worked out the first time.
+    #[inline(always)]
+    fn get(&self, angle: f64) -> Option<Kernels> {
+        let i = self.angles[..self.len].iter().position(|&a| a == angle)?;
+        let kernels = self.kernels[i].get().unwrap_or_else(|| {
+            let (sin, cos) = fmath::sin_cos(angle);
+            Kernels::from_half(2.0 * angle, HalfAngle { angle, sin, cos })
+        });
+        self.kernels[i].set(Some(kernels));
+        Some(kernels)
+    }
+}
+
+impl Default for KnownAngles {
+    fn default() -> Self {
+        KnownAngles::new()
+    }
+}
+
 /// w = t − t_c (s): t − t_c.hi is exact near the start (Sterbenz), and t_c.lo is then
 /// subtracted.
 #[inline(always)]
@@ -689,13 +757,18 @@ impl Kernels {
         Kernels::from_half(delta, HalfAngle { angle, sin, cos })
     }
 
-    /// The kernels at δ from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
+    /// The kernels at δ from the `known` half angle equal to δ/2 (the same bits as
+    /// [`Kernels::new`]); else from those of a `seed` within [`ADDITION_MAX`] of δ/2, by
     /// sin(x + e) = sin x + (cos x sin e − sin x (1 − cos e)) and
     /// cos(x + e) = cos x − (sin x sin e + cos x (1 − cos e)); else by [`Kernels::new`]. A
-    /// newly evaluated half angle becomes the seed.
+    /// known or newly evaluated half angle becomes the seed.
     #[inline(always)]
-    fn near(delta: f64, seed: &mut Option<HalfAngle>) -> Kernels {
+    fn near(delta: f64, seed: &mut Option<HalfAngle>, known: Option<&KnownAngles>) -> Kernels {
         let angle = 0.5 * delta;
+        if let Some(kernels) = known.and_then(|known| known.get(angle)) {
+            *seed = Some(kernels.half);
+            return kernels;
+        }
         match *seed {
             Some(x) if (angle - x.angle).abs() <= ADDITION_MAX => {
                 let e = angle - x.angle;
@@ -840,6 +913,34 @@ mod tests {
     use super::*;
 
     /// Numerical derivative check: x' = v and v' = a for both kinds of arc.
+    /// A known half angle's kernels, worked out when first met, are those of evaluating the
+    /// angle at once (bit for bit), the second time as the first; other angles are not known.
+    #[test]
+    fn known_angles_are_worked_out_when_met_with_the_same_bits() {
+        let mut known = KnownAngles::new();
+        let omega = 37.796_447_300_922_72;
+        let starts = [
+            Dd::from(0.0),
+            Dd::from(0.058_980_868_686_954_37),
+            Dd::from(0.1),
+        ];
+        for (i, &t_c) in starts.iter().enumerate() {
+            known.push_between(omega, t_c, 0.065_136_249_845_933_19 + 0.01 * i as f64);
+        }
+        for (i, &t_c) in starts.iter().enumerate() {
+            let delta = omega * since(0.065_136_249_845_933_19 + 0.01 * i as f64, t_c);
+            let direct = Kernels::new(delta);
+            for _ in 0..2 {
+                let got = known.get(0.5 * delta).expect("a known angle");
+                assert_eq!(format!("{got:?}"), format!("{direct:?}"));
+                assert_eq!(got.sin.to_bits(), direct.sin.to_bits());
+                assert_eq!(got.half.cos.to_bits(), direct.half.cos.to_bits());
+            }
+        }
+        assert!(known.get(0.123).is_none());
+        assert!(KnownAngles::new().get(f64::NAN).is_none());
+    }
+
     #[test]
     fn arcs_are_consistent_derivatives() {
         let arcs = [
@@ -953,7 +1054,10 @@ mod tests {
         let mut seed = None;
         let times = [0.0944, 0.0893, 0.08887, 0.088_871_2, 0.088_871_136, 0.03];
         for t in times {
-            let (near, direct) = (arc.at_near(t, &mut seed), arc.at(t));
+            let (near, direct) = (
+                arc.at_near(t, &mut seed, Some(&KnownAngles::new())),
+                arc.at(t),
+            );
             let scale = |d: f64| 8.0 * f64::EPSILON * d.abs().max(1.0);
             assert!((near.v - direct.v).abs() <= scale(direct.v), "v at {t}");
             assert!((near.a - direct.a).abs() <= scale(direct.a), "a at {t}");
@@ -964,7 +1068,10 @@ mod tests {
             );
         }
         // The last step (δ/2 moves by about 1.1) is evaluated afresh.
-        assert_eq!(arc.at_near(0.03, &mut seed), arc.at(0.03));
+        assert_eq!(
+            arc.at_near(0.03, &mut seed, Some(&KnownAngles::new())),
+            arc.at(0.03)
+        );
         // As a root search's iterates: the 4th and 5th turn by less than SHORT_TURN_MAX from the
         // 3rd (by 2e-5 and 1e-5), by the short Taylor sums, and agree as well.
         let Arc::Trig(trig) = arc else {

@@ -18,7 +18,7 @@
 //! c426ece (main)            7,852         8,833        10,896       17,411
 //! c426ece (again, linear)   7,846         8,717        10,884       17,181
 //! c9e0e1a (linear)          6,829         8,182         9,371       15,927
-//! 05a63b9                   6,502         7,373         8,423       13,487
+//! lazy known angles         6,541         7,398         8,459       13,515
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -81,19 +81,21 @@
 //! periods' moves and starts), the run's four allocations and frees (about 700, the event
 //! list's beyond glibc's fast path), the searches prepared per run (sign changes 400, slip
 //! onsets 500, their arccosines and divisions 550, 7 libm calls) and the one integrated period.
-//! Since c9e0e1a (05a63b9): the known half angles are gone: a cache of sin and cos of δ/2 at
-//! the times every period meets, whose set-up and libm calls (about 1,400 on the harmonic
-//! woodpecker) paid off only over many integrated periods, and a replayed orbit integrates
-//! one; arcs evaluate from their seed as elsewhere (the harmonic laws' last bits changed; the
-//! random sets' mix of `engine_instructions fingerprint` 2 % fewer instructions). A kept
-//! replayed period's events are written into the event list's reserved room in place (before:
-//! a push each, then a copy and a pass over it); two-element arrays are built without
-//! `array::map`, which one build left out of line. Harmonic woodpecker 50.1× a lean DOPRI5,
-//! set B 65.3×: margins of a few hundred instructions, about what the compiler's layout moves
-//! a run between unrelated changes (1–2 %).
+//! Since c9e0e1a: the known half angles (a cache of sin and cos of δ/2 at the times every
+//! period meets, whose set-up and libm calls cost about 1,400 on the harmonic woodpecker) are
+//! set up from a run's second integrated period on, which an orbit that repeats from the first
+//! (and is replayed) never reaches: its one period evaluates the arcs from their seed (the last
+//! bits of such runs changed; without the cache at all, runs integrated period by period took
+//! 13 % more). A kept replayed period's events are written into the event list's reserved room
+//! in place (before: a push each, then a copy and a pass over it); two-element arrays are built
+//! without `array::map`, which one build left out of line. The random sets' mix of
+//! `engine_instructions fingerprint` takes 123.7 M instructions (129.5 M with the cache from
+//! the first period, 125.3 M without it). Harmonic woodpecker 50.0× a lean DOPRI5, set B
+//! 65.0×: the woodpecker's margin is a few instructions, less than what the compiler's layout
+//! moves a run between unrelated changes (1–2 %).
 
 use super::accel::SignChanges;
-use super::arc::{phase_from, Arc, ArcMotion, Point, PolyArc, Start, TrigArc};
+use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
 use super::dd::Dd;
 use super::law::{Affine, Basis, Body, ForceLaw, Piece};
 use super::replay::{Compact, Outputs, Replay, StartState, Stretch, Tape};
@@ -435,7 +437,6 @@ pub fn integrate_with(
         let (earlier, place) = places.split_at_mut(i);
         PreparedPiece::prepare(body, piece, snap, earlier, &mut place[0]);
     }
-    let prepared: &[Option<PreparedPiece>] = places;
     let mut state = State {
         x: 0.0,
         v: 0.0,
@@ -446,6 +447,11 @@ pub fn integrate_with(
         normal_work: 0.0,
     };
 
+    // The start state of the last period, and whether the pieces know their half angles: they
+    // do from the first period that starts in another state than the one before it, which an
+    // orbit that repeats from the first never does (the same periods with and without replay).
+    let mut last_start = None;
+    let mut knows_angles = false;
     for n in 0..periods {
         if rec.tape.repeats() {
             let tape = std::mem::replace(&mut rec.tape, Tape::new(Replay::Off, false));
@@ -458,7 +464,17 @@ pub fn integrate_with(
             (state.x, compact, stretch) = tape.replay((n, periods, period), state.x, &mut rec, out);
             break;
         }
-        rec.tape.begin(state.start());
+        let start = state.start();
+        if !knows_angles && last_start.is_some_and(|last| last != start) {
+            places
+                .iter_mut()
+                .flatten()
+                .for_each(PreparedPiece::know_angles);
+            knows_angles = true;
+        }
+        last_start = Some(start);
+        let prepared: &[Option<PreparedPiece>] = places;
+        rec.tape.begin(start);
         let period_start = f64::from(n) * period;
         let next_start = f64::from(n + 1) * period;
         let absolute = |t: f64| absolute_time(period_start, next_start, period, t);
@@ -724,6 +740,12 @@ struct PreparedPiece<'a> {
     /// Per direction of slip, on a cos basis: where the acceleration changes sign on the piece
     /// (the same for every arc in that direction).
     accel: [SignChanges; 2],
+    /// On a cos basis: the half angles δ/2 (with their sin and cos) of the arcs that start at
+    /// the piece's start or at a located slip onset, at the end of the piece and at the zeros
+    /// of the acceleration: the same in every period, where a slide evaluates its arc. None
+    /// until the run's second integrated period ([`PreparedPiece::know_angles`]), and on a
+    /// linear basis (not set up: it is a few hundred bytes).
+    known: Option<KnownAngles>,
 }
 
 /// The slip onsets in one direction s on one piece: the up-crossings of the switching function
@@ -816,9 +838,42 @@ impl PreparedPiece<'_> {
             onsets: [None, None],
             slope: [slope(1.0), slope(-1.0)],
             accel,
+            known: None,
         });
         for (place, s) in prepared.onsets.iter_mut().zip([1, -1]) {
             *place = Self::onsets(body, piece, s, (b_min, b_max), snap, same);
+        }
+    }
+
+    /// Sets up the known half angles of a piece on a cos basis (see [`PreparedPiece::known`]).
+    /// A run does so from its second integrated period on (see [`integrate_with`]): an orbit that
+    /// repeats from the first is replayed and meets each angle once, where the cache's set-up
+    /// and its sin and cos cost more than the arcs' own evaluation from their seed.
+    fn know_angles(&mut self) {
+        let piece = self.piece;
+        // The kernels are a function of the angle only: one list serves the arcs in either
+        // direction. The most used first (a full list drops the rest): from the piece's start
+        // and from the located onsets to the end of the piece, then to the zeros of a.
+        if let Basis::Cos { omega, .. } = piece.basis {
+            let known = self.known.insert(KnownAngles::new());
+            let roots = self.onsets.iter().flat_map(|onsets| match onsets {
+                Some((crossings, _)) => crossings.crossings(),
+                None => [None, None],
+            });
+            let mut starts = [None; 5];
+            starts[0] = Some(Dd::from(piece.start));
+            for (place, root) in starts[1..].iter_mut().zip(roots) {
+                *place = root.map(|c| c.t);
+            }
+            let zeros = self.accel.iter().flat_map(|a| a.zeros());
+            let ends = std::iter::once(piece.end).chain(zeros);
+            for end in ends.filter(|&end| end > piece.start && end <= piece.end) {
+                for t_c in starts.into_iter().flatten() {
+                    if t_c.hi < end {
+                        known.push_between(omega, t_c, end);
+                    }
+                }
+            }
         }
     }
 
@@ -1031,6 +1086,7 @@ fn slide<M: ArcMotion>(
     mut on_max: impl FnMut(f64, Point),
 ) -> Slide {
     let (s, piece) = (f64::from(dir), prepared.piece);
+    let known = prepared.known.as_ref();
     let accel = arc.sign_changes(s, &prepared.accel[side(dir)]);
     let from = arc.t_start();
     // Zeros of a strictly after `from`: a slip shorter than the event resolution still makes
@@ -1075,7 +1131,7 @@ fn slide<M: ArcMotion>(
             (p, speed_p) = (q, None);
             continue;
         }
-        let mut point_p = || arc.at_near(p, &mut seed);
+        let mut point_p = || arc.at_near(p, &mut seed, known);
         let at_p = if at_max {
             let point = arc.at_accel_zero(p).unwrap_or_else(point_p);
             on_max(p, point);
@@ -1083,13 +1139,14 @@ fn slide<M: ArcMotion>(
         } else {
             speed_p.unwrap_or_else(|| s * point_p().v)
         };
-        let point_q = arc.at_near(q, &mut seed);
+        let point_q = arc.at_near(q, &mut seed, known);
         let at_q = s * point_q.v;
         let at_zero_of_a = i + 1 < bounds.len();
         stick = if at_p <= 0.0 {
             Some(p)
         } else if at_q <= 0.0 {
             let f = |t: f64| {
+                // The iterates are no piece's known times.
                 let at = arc.at_iterate(t, &mut seed, &mut iterate);
                 (s * at.v, s * at.a, s * at.jerk)
             };
@@ -1126,7 +1183,7 @@ fn slide<M: ArcMotion>(
         end: if iterate.is_some() {
             arc.at_iterate(end, &mut seed, &mut iterate)
         } else {
-            arc.at_near(end, &mut seed)
+            arc.at_near(end, &mut seed, known)
         },
         normal_work: normal_start.map_or(0.0, |n_c| {
             arc.integrate_normal_times_speed(n_c, piece.normal.c1, end)
