@@ -130,8 +130,8 @@
 //! unchanged at 894, 979 and 880): set B 481,158 / 8,182 = **58.8×**, woodpecker 676,058 / 15,927
 //! = **42.4×**. The 50× held on set B; on the woodpecker it needed about 13,520
 //! instructions per run. With the known half angles set up only from a run's second integrated
-//! period and the kept periods' events written in place: set B 481,158 / 7,398 = **65.0×**,
-//! woodpecker 676,058 / 13,515 = **50.0×** (the tool's DOPRI5: 96.2× and 71.9×).
+//! period and the kept periods' events written in place: set B 481,158 / 7,384 = **65.2×**,
+//! woodpecker 676,058 / 13,482 = **50.1×** (the tool's DOPRI5: 96.3× and 72.1×).
 //!
 //! The lean method takes fewer steps than ours (480 against 660 on set B, 621 against 802 on the
 //! woodpecker: ours ends a step at every period boundary) and no right-hand side while stuck

@@ -403,17 +403,20 @@ impl Split {
     /// Splits `ops` into this (empty) split; false when they have more than [`SPLIT_MAX`]
     /// moves or events.
     fn fill(&mut self, ops: &[Op]) -> bool {
+        let (mut n_moves, mut n_events) = (0, 0);
         for op in ops {
             match *op {
                 Op::Move { dx } => {
-                    let Some(place) = self.moves.get_mut(self.n_moves) else {
+                    let Some(place) = self.moves.get_mut(n_moves) else {
                         return false;
                     };
                     *place = dx;
-                    self.n_moves += 1;
+                    n_moves += 1;
                 }
                 Op::Event { t, kind, dx, v, .. } => {
-                    let Some(place) = self.events.get_mut(self.n_events) else {
+                    let (Some(place), Some(after)) =
+                        (self.events.get_mut(n_events), self.after.get_mut(n_events))
+                    else {
                         return false;
                     };
                     *place = Event {
@@ -423,12 +426,13 @@ impl Split {
                         x: dx.unwrap_or(0.0),
                         v,
                     };
-                    self.after[self.n_events] = self.n_moves as u8;
-                    self.n_events += 1;
+                    *after = n_moves as u8;
+                    n_events += 1;
                 }
                 Op::Retract { .. } | Op::Segment { .. } => {}
             }
         }
+        (self.n_moves, self.n_events) = (n_moves, n_events);
         true
     }
 

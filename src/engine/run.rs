@@ -18,7 +18,7 @@
 //! c426ece (main)            7,852         8,833        10,896       17,411
 //! c426ece (again, linear)   7,846         8,717        10,884       17,181
 //! c9e0e1a (linear)          6,829         8,182         9,371       15,927
-//! lazy known angles         6,541         7,398         8,459       13,515
+//! lazy known angles         6,525         7,384         8,426       13,482
 //! ```
 //!
 //! All four repeat from the first period, so a run is one integrated period, 19 replayed ones
@@ -90,9 +90,9 @@
 //! in place (before: a push each, then a copy and a pass over it); two-element arrays are built
 //! without `array::map`, which one build left out of line. The random sets' mix of
 //! `engine_instructions fingerprint` takes 123.7 M instructions (129.5 M with the cache from
-//! the first period, 125.3 M without it). Harmonic woodpecker 50.0× a lean DOPRI5, set B
-//! 65.0×: the woodpecker's margin is a few instructions, less than what the compiler's layout
-//! moves a run between unrelated changes (1–2 %).
+//! the first period, 125.3 M without it). Harmonic woodpecker 50.1× a lean DOPRI5, set B
+//! 65.2×: the woodpecker's margin is about 40 instructions, less than what the compiler's
+//! layout moves a run between unrelated changes (1–2 %).
 
 use super::accel::SignChanges;
 use super::arc::{phase_from, Arc, ArcMotion, KnownAngles, Point, PolyArc, Start, TrigArc};
