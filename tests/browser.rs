@@ -41,6 +41,8 @@ fn print_tools() -> Option<(PathBuf, PathBuf, PathBuf)> {
 fn chromium(browser: &Path, profile: &Path, args: &[String]) -> std::process::Output {
     Command::new(browser)
         .args(HEADLESS_FLAGS)
+        // The one-shot print's page without header or footer, as the tool's DevTools print.
+        .arg("--no-pdf-header-footer")
         .arg("--hide-scrollbars")
         .arg(format!("--user-data-dir={}", profile.display()))
         .args(args)

@@ -47,10 +47,12 @@ fn tools() -> Option<(PathBuf, PathBuf)> {
     None
 }
 
-/// Prints `html` to `pdf` as `stickslip … --pdf` does.
+/// Prints `html` to `pdf` with `stickslip … --pdf`'s flags, by the browser's one-shot print
+/// (no page header or footer, as the tool's DevTools print asks).
 fn print(browser: &Path, profile: &Path, html: &Path, pdf: &Path) {
     let out = Command::new(browser)
         .args(HEADLESS_FLAGS)
+        .arg("--no-pdf-header-footer")
         .arg(format!("--user-data-dir={}", profile.display()))
         .arg(format!("--print-to-pdf={}", pdf.display()))
         .arg(html)

@@ -155,7 +155,7 @@ impl Session {
     /// to it over `transport`; its stderr goes to `log`.
     pub fn start(
         browser: &Path,
-        flags: &[String],
+        flags: &[&str],
         profile: &Path,
         log: File,
         transport: Transport,
@@ -513,11 +513,11 @@ mod tests {
     fn a_browser_killed_mid_session_is_an_error_not_a_hang_and_the_next_one_prints() {
         let browser = crate::handout::pdf::locate().expect("Chromium for the PDF tests");
         let dir = tempfile::tempdir().unwrap();
-        let flags = crate::handout::pdf::session_flags();
+        let flags = crate::handout::pdf::HEADLESS_FLAGS;
         for transport in [Transport::Pipe, Transport::WebSocket] {
             let profile = dir.path().join(format!("{transport:?}"));
             let log = File::create(dir.path().join(format!("{transport:?}.log"))).unwrap();
-            let mut session = Session::start(&browser, &flags, &profile, log, transport).unwrap();
+            let mut session = Session::start(&browser, flags, &profile, log, transport).unwrap();
             let pdf = session.print(&page(dir.path(), "a.html", "one")).unwrap();
             assert!(pdf.starts_with(b"%PDF"), "{transport:?}");
             session.child.kill().unwrap();
@@ -528,7 +528,7 @@ mod tests {
             drop(session);
             // The next browser on the same profile is not misled by the killed one's port file.
             let log = File::create(dir.path().join(format!("{transport:?}-2.log"))).unwrap();
-            let mut session = Session::start(&browser, &flags, &profile, log, transport).unwrap();
+            let mut session = Session::start(&browser, flags, &profile, log, transport).unwrap();
             let pdf = session.print(&page(dir.path(), "c.html", "three")).unwrap();
             assert!(pdf.starts_with(b"%PDF"), "{transport:?}");
             session.close();

@@ -159,7 +159,9 @@ fn is_executable(path: &Path) -> bool {
 }
 
 /// Chromium's flags for printing offline without a desktop: headless, no sandbox (CI runs as
-/// root), no GPU, no network of its own, no page header or footer.
+/// root), no GPU, no network of its own. No page header or footer: the DevTools print command
+/// says `displayHeaderFooter: false` (the flag `--no-pdf-header-footer` would put the browser
+/// in its one-shot print mode, which ends the session).
 pub const HEADLESS_FLAGS: &[&str] = &[
     "--headless",
     "--no-sandbox",
@@ -169,19 +171,7 @@ pub const HEADLESS_FLAGS: &[&str] = &[
     "--disable-background-networking",
     "--disable-component-update",
     "--disable-sync",
-    "--no-pdf-header-footer",
 ];
-
-/// [`HEADLESS_FLAGS`] for a DevTools session: `--no-pdf-header-footer` puts the browser in its
-/// one-shot print mode, which ends the session; the print command says
-/// `displayHeaderFooter: false`.
-pub(super) fn session_flags() -> Vec<String> {
-    HEADLESS_FLAGS
-        .iter()
-        .filter(|f| **f != "--no-pdf-header-footer")
-        .map(|f| f.to_string())
-        .collect()
-}
 
 /// Prefix of the private temporary folder of one print (page, profile, PDF, log).
 const WORK_PREFIX: &str = "stickslip-pdf-";
@@ -308,7 +298,7 @@ impl Printer {
             self.session = Some(
                 Session::start(
                     &self.browser,
-                    &session_flags(),
+                    HEADLESS_FLAGS,
                     &profile,
                     log_file,
                     self.transport,
